@@ -1,7 +1,6 @@
-#include <fourier_ssi/harmonic.h>
-
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/numbers.h>
+#include <fourier_ssi/harmonic.h>
 
 namespace FourierSSI
 {

@@ -1,0 +1,69 @@
+/**
+ * Boundary conditions and loads of one harmonic, all given as amplitude
+ * expressions in (r, z) (deal.II FunctionParser syntax, constants pi, n):
+ *   Dirichlet: prescribed amplitude of any of u (radial), v (axial),
+ *              w (circumferential) on a boundary id;
+ *   Traction:  amplitudes (r, z, theta) of the surface traction [kPa];
+ *   Body force amplitudes (r, z, theta) [kN/m^3].
+ * The amplitudes carry the trigonometric factors of the harmonic's family
+ * (thesis eq. 3.1): (r, z) with cos n t and theta with sin n t (symmetric),
+ * or sin n t and cos n t (antisymmetric).
+ */
+#ifndef fourier_ssi_boundary_conditions_h
+#define fourier_ssi_boundary_conditions_h
+
+#include <array>
+#include <deal.II/base/function_parser.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/types.h>
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace FourierSSI
+{
+  using namespace dealii;
+
+  /** Split at separators that are not inside parentheses. */
+  std::vector<std::string>
+  split_top_level(const std::string &text, const char separator);
+
+  /** Three optional component expressions, e.g. from "u=0, w=0.01*z". */
+  struct ComponentExpressions
+  {
+    std::array<std::string, 3> expression;
+    std::array<bool, 3>        given = {{false, false, false}};
+  };
+
+  class BoundaryConditions
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /**
+     * Parse "id: key=expr, ...; id: ..." with keys `keys` (component order).
+     * `entry` names the .prm entry in error messages.
+     */
+    static std::map<types::boundary_id, ComponentExpressions>
+    parse_boundary_map(const std::string                &text,
+                       const std::array<std::string, 3> &keys,
+                       const std::string                &entry);
+
+    /** A 3-component FunctionParser for the given expressions (missing=0). */
+    static std::unique_ptr<FunctionParser<2>>
+    make_function(const ComponentExpressions &expressions,
+                  const unsigned int          harmonic_n,
+                  const std::string          &entry);
+
+    std::map<types::boundary_id, ComponentExpressions> dirichlet;
+    std::map<types::boundary_id, ComponentExpressions> traction;
+    ComponentExpressions                               body_force;
+  };
+} // namespace FourierSSI
+
+#endif

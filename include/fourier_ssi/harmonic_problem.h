@@ -1,0 +1,155 @@
+/**
+ * One Fourier harmonic (n, family) as a 2D (r, z) elasticity problem:
+ *   K = integral B^T W D B r dr dz   (doc/theory.md, thesis eq. 3.3),
+ * W holding the theta-integrals of the squared trig factors (pi, 2 pi, 0).
+ * Unknowns: FESystem(FE_Q(p), 3) amplitudes (U, V, W), p = 2 or 4 with
+ * equidistant support points (they carry the 6- and 10-node interface
+ * elements of the thesis).
+ */
+#ifndef fourier_ssi_harmonic_problem_h
+#define fourier_ssi_harmonic_problem_h
+
+#include <deal.II/base/function_parser.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/sparsity_pattern.h>
+#include <deal.II/lac/vector.h>
+#include <fourier_ssi/harmonic_operator.h>
+#include <fourier_ssi/linear_solver.h>
+#include <fourier_ssi/parameters.h>
+#include <map>
+#include <memory>
+
+namespace FourierSSI
+{
+  using namespace dealii;
+
+  /** The 3D force and moment resultants of the reactions on a boundary. */
+  struct BoundaryResultant
+  {
+    /** Sums of nodal reaction amplitudes per component (r, z, theta). */
+    std::array<double, 3> component_sums = {{0., 0., 0.}};
+    /**
+     * n = 0 symmetric: vertical force F_z. n = 1: horizontal force H along x
+     * (symmetric) or y (antisymmetric). Otherwise 0.
+     */
+    double force = 0.;
+    /**
+     * n = 1: overturning moment about the y axis (symmetric) or the -x axis
+     * (antisymmetric), about the origin (r, z) = (0, 0); n = 0 antisymmetric:
+     * torque about z. Otherwise 0.
+     */
+    double moment = 0.;
+    /** Sum of reaction times displacement over the boundary DoFs [kJ]. */
+    double work = 0.;
+  };
+
+  struct ErrorNorms
+  {
+    double l2          = 0.; // (int |u_h - u|^2 r dr dz)^(1/2)
+    double h1_seminorm = 0.; // (int |grad(u_h - u)|^2 r dr dz)^(1/2)
+    double l2_exact    = 0.; // same norms of the exact amplitudes
+    double h1_exact    = 0.;
+  };
+
+  /** Create FESystem(FE_Q(degree), 3) with equidistant support points. */
+  std::unique_ptr<FESystem<2>>
+  make_displacement_element(const unsigned int degree);
+
+  class HarmonicProblem
+  {
+  public:
+    HarmonicProblem(const AllParameters    &parameters,
+                    const Harmonic         &harmonic,
+                    const Triangulation<2> &triangulation);
+
+    /** DoFs, constraints (hanging nodes, Dirichlet, axis), sparsity. */
+    void
+    setup_system();
+
+    /** Stiffness matrix and load vector, constraints applied. */
+    void
+    assemble_system();
+
+    SolverReport
+    solve();
+
+    /** setup + assemble + solve. */
+    SolverReport
+    run();
+
+    /** Half the 3D strain energy product: 1/2 x^T K x (unconstrained K). */
+    double
+    strain_energy(const Vector<double> &field) const;
+
+    /** Reaction amplitudes K u - f without constraints (nodal forces). */
+    Vector<double>
+    nodal_reactions() const;
+
+    BoundaryResultant
+    boundary_resultant(const types::boundary_id boundary_id,
+                       const Vector<double>    &reactions) const;
+
+    ErrorNorms
+    compute_errors() const;
+
+    void
+    write_vtu(const std::string &filename) const;
+
+    const DoFHandler<2> &
+    get_dof_handler() const
+    {
+      return dof_handler;
+    }
+
+    const Vector<double> &
+    get_solution() const
+    {
+      return solution;
+    }
+
+    const AffineConstraints<double> &
+    get_constraints() const
+    {
+      return constraints;
+    }
+
+    const HarmonicOperator &
+    get_operator() const
+    {
+      return harmonic_operator;
+    }
+
+    unsigned int n_axis_nodes = 0;
+
+  private:
+    /** Local stiffness of one cell and, if requested, its body-force load. */
+    void
+    local_matrix(const typename DoFHandler<2>::active_cell_iterator &cell,
+                 FullMatrix<double>                                 &matrix,
+                 Vector<double>                                     *rhs) const;
+
+    /** Add the surface tractions of one cell to its local load. */
+    void
+    local_traction(const typename DoFHandler<2>::active_cell_iterator &cell,
+                   Vector<double> &rhs) const;
+
+    const AllParameters               &parameters;
+    const HarmonicOperator             harmonic_operator;
+    std::unique_ptr<FESystem<2>>       fe;
+    DoFHandler<2>                      dof_handler;
+    AffineConstraints<double>          constraints;
+    SparsityPattern                    sparsity_pattern;
+    SparseMatrix<double>               system_matrix;
+    Vector<double>                     system_rhs;
+    Vector<double>                     solution;
+    double                             axis_tolerance;
+    std::unique_ptr<FunctionParser<2>> body_force;
+    std::map<types::boundary_id, std::unique_ptr<FunctionParser<2>>> tractions;
+  };
+} // namespace FourierSSI
+
+#endif

@@ -1,0 +1,50 @@
+/**
+ * Linear solvers for one harmonic's system: sparse direct (UMFPACK, the
+ * default and the reference) or CG preconditioned by Trilinos ML algebraic
+ * multigrid with the per-component constant near-null space. A failure is an
+ * error with a one-line message, never a silent result.
+ */
+#ifndef fourier_ssi_linear_solver_h
+#define fourier_ssi_linear_solver_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+#include <string>
+
+namespace FourierSSI
+{
+  using namespace dealii;
+
+  struct SolverReport
+  {
+    std::string  method;
+    unsigned int iterations        = 0;  // 0 for the direct solver
+    double       relative_residual = 0.; // ||b - A x|| / ||b||
+  };
+
+  class LinearSolver
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /** Solve A x = b; x is the initial guess for iterative methods. */
+    SolverReport
+    solve(const SparseMatrix<double> &A,
+          Vector<double>             &x,
+          const Vector<double>       &b,
+          const DoFHandler<2>        &dof_handler) const;
+
+    std::string  method         = "direct";
+    double       tolerance      = 1e-10;
+    unsigned int max_iterations = 2000;
+    double       residual_check = 1e-6;
+  };
+} // namespace FourierSSI
+
+#endif

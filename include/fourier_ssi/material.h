@@ -1,0 +1,82 @@
+/**
+ * Linear isotropic elastic materials per material id, with the power-law
+ * non-homogeneity of thesis eq. 4.3 (Booker et al. 1985):
+ *   G(depth) = G_ref (depth / depth_ref)^alpha,  nu constant,
+ * alpha = 0 homogeneous, alpha = 1 Gibson soil. depth = surface elevation - z.
+ */
+#ifndef fourier_ssi_material_h
+#define fourier_ssi_material_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/types.h>
+#include <map>
+#include <string>
+
+namespace FourierSSI
+{
+  using namespace dealii;
+
+  struct ElasticMaterial
+  {
+    double shear_modulus_ref = 0.; // G at depth_ref (or everywhere if alpha=0)
+    double poisson_ratio     = 0.;
+    double alpha             = 0.; // non-homogeneity exponent
+    double depth_ref         = 1.; // depth at which G = shear_modulus_ref
+
+    /** Shear modulus at depth d >= 0 (thesis eq. 4.3). */
+    double
+    shear_modulus(const double depth) const;
+
+    /** Lame's first parameter lambda = 2 G nu / (1 - 2 nu). */
+    double
+    lambda(const double depth) const;
+  };
+
+  class MaterialLibrary
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /**
+     * Parse a material list "id: key=value, ...; id: ...". Keys: E or G (one of
+     * them, > 0), nu (-1 < nu < 0.5), alpha (>= 0, default 0), depth_ref (> 0,
+     * default 1). Throws with a one-line message naming the offending text.
+     */
+    void
+    parse_material_list(const std::string &text);
+
+    bool
+    has(const types::material_id id) const
+    {
+      return materials.count(id) > 0;
+    }
+
+    const ElasticMaterial &
+    get(const types::material_id id) const;
+
+    /** Depth below the ground surface of a point at elevation z (>= 0). */
+    double
+    depth(const double z) const
+    {
+      const double d = surface_elevation - z;
+      return d > 0. ? d : 0.;
+    }
+
+    void
+    set(const types::material_id id, const ElasticMaterial &material)
+    {
+      materials[id] = material;
+    }
+
+    double surface_elevation = 0.;
+
+  private:
+    std::map<types::material_id, ElasticMaterial> materials;
+  };
+} // namespace FourierSSI
+
+#endif

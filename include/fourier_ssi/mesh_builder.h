@@ -1,0 +1,64 @@
+/**
+ * The (r, z) half-plane meshes of a scene: built-in graded rectangles, the
+ * thick cylinder, or a gmsh .msh/.geo file with physical tags.
+ *
+ * Built-in rectangle, boundary ids (deal.II colorize convention):
+ *
+ *      z_max  +----------3------------+
+ *             |                       |
+ *   (axis if  0                       1
+ *    r_min=0) |                       |
+ *      z_min  +----------2------------+
+ *           r_min                   r_max
+ *
+ * plus id 4 for the top faces with r < "Surface patch radius" (a footing
+ * contact patch), when that radius is positive.
+ */
+#ifndef fourier_ssi_mesh_builder_h
+#define fourier_ssi_mesh_builder_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/grid/tria.h>
+#include <string>
+#include <vector>
+
+namespace FourierSSI
+{
+  using namespace dealii;
+
+  /**
+   * Cell sizes of a graded 1D line given as segments: breakpoints
+   * x_0 < x_1 < ... < x_k, cells per segment, and per segment the growth
+   * ratio h_{i+1}/h_i of consecutive cells (1 = uniform, < 1 shrinks toward
+   * the segment end).
+   */
+  std::vector<double>
+  graded_steps(const std::vector<double>       &breakpoints,
+               const std::vector<unsigned int> &cells,
+               const std::vector<double>       &growth,
+               const std::string               &entry);
+
+  class MeshBuilder
+  {
+  public:
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /** Build the coarse mesh and apply the initial global refinements. */
+    void
+    build(Triangulation<2> &triangulation) const;
+
+    std::string               type = "rectangle";
+    std::vector<double>       r_breakpoints, z_breakpoints, r_growth, z_growth;
+    std::vector<unsigned int> r_cells, z_cells;
+    double                    surface_patch_radius = 0.;
+    double                    distortion           = 0.;
+    unsigned int              global_refinements   = 0;
+    std::string               mesh_file;
+  };
+} // namespace FourierSSI
+
+#endif

@@ -1,0 +1,86 @@
+/**
+ * All run-time parameters of fourier-ssi, one struct per .prm subsection
+ * (deal.II step-44 habit), combined in AllParameters.
+ */
+#ifndef fourier_ssi_parameters_h
+#define fourier_ssi_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <fourier_ssi/boundary_conditions.h>
+#include <fourier_ssi/harmonic.h>
+#include <fourier_ssi/linear_solver.h>
+#include <fourier_ssi/material.h>
+#include <fourier_ssi/mesh_builder.h>
+#include <string>
+#include <vector>
+
+namespace FourierSSI
+{
+  using namespace dealii;
+
+  /** Which harmonics to solve and with which element. */
+  struct DiscretizationParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    std::vector<Harmonic> harmonics;
+    unsigned int          degree            = 2;
+    unsigned int          refinement_cycles = 1;
+  };
+
+  /** Optional exact amplitudes for error norms (tests, verification). */
+  struct ExactSolutionParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    bool                 enabled = false;
+    ComponentExpressions amplitudes;
+  };
+
+  struct OutputParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    std::string directory    = "output";
+    std::string results_file = "results.csv";
+    bool        write_vtu    = true;
+  };
+
+  struct AllParameters
+  {
+    AllParameters();
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /** Read a .prm file; errors name the file and the entry. */
+    void
+    read_file(const std::string &filename);
+
+    /** Read .prm text (tests). */
+    void
+    read_string(const std::string &text);
+
+    DiscretizationParameters discretization;
+    MeshBuilder              mesh;
+    MaterialLibrary          materials;
+    BoundaryConditions       boundary_conditions;
+    LinearSolver             solver;
+    ExactSolutionParameters  exact_solution;
+    OutputParameters         output;
+  };
+} // namespace FourierSSI
+
+#endif

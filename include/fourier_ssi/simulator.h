@@ -1,0 +1,30 @@
+/**
+ * The driver: .prm parameters -> mesh -> for each refinement cycle and each
+ * requested harmonic, one HarmonicProblem -> results (CSV, VTU). Files are
+ * written only for a run that succeeded; a failure removes what this run
+ * wrote, so nothing partial is left looking like a result.
+ */
+#ifndef fourier_ssi_simulator_h
+#define fourier_ssi_simulator_h
+
+#include <fourier_ssi/parameters.h>
+#include <fourier_ssi/results_table.h>
+#include <ostream>
+
+namespace FourierSSI
+{
+  class Simulator
+  {
+  public:
+    explicit Simulator(const AllParameters &parameters);
+
+    /** Run everything; returns the scalar results (also written as CSV). */
+    ResultsTable
+    run(std::ostream &log, const bool write_files = true);
+
+  private:
+    const AllParameters &parameters;
+  };
+} // namespace FourierSSI
+
+#endif

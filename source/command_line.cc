@@ -1,0 +1,79 @@
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/utilities.h>
+#include <fourier_ssi/command_line.h>
+#include <fourier_ssi/parameters.h>
+#include <fourier_ssi/simulator.h>
+#include <iostream>
+#include <sstream>
+
+namespace FourierSSI
+{
+  std::string
+  one_line_message(const std::exception &e)
+  {
+    // deal.II exceptions carry file/line boilerplate; the user needs only the
+    // message, which ExcMessage prints after "Additional information:".
+    const std::string text = e.what();
+    const auto        info = text.find("Additional information:");
+    std::string       body =
+      info == std::string::npos ? text : text.substr(info + 23);
+    const auto stack = body.find("Stacktrace:");
+    if (stack != std::string::npos)
+      body = body.substr(0, stack);
+    std::istringstream in(body);
+    std::string        line, result;
+    while (std::getline(in, line))
+      {
+        line = Utilities::trim(line);
+        if (line.empty() || line.rfind("----", 0) == 0)
+          continue;
+        result += (result.empty() ? "" : " ") + line;
+      }
+    return result;
+  }
+
+  int
+  run_command_line(int argc, char **argv)
+  {
+    std::string prm_file = std::string(FSSI_SOURCE_DIR) + "/prm/default.prm";
+    try
+      {
+        if (argc > 1 && std::string(argv[1]) == "--print-parameters")
+          {
+            ParameterHandler prm;
+            AllParameters::declare_parameters(prm);
+            prm.print_parameters(std::cout, ParameterHandler::PRM);
+            return 0;
+          }
+        if (argc > 1 &&
+            (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h"))
+          {
+            std::cout << "usage: fourier-ssi [PARAMS.prm]\n"
+                         "       fourier-ssi --print-parameters\n";
+            return 0;
+          }
+        if (argc > 2)
+          {
+            std::cerr << "fourier-ssi: error: expected at most one argument "
+                         "(the .prm file), got "
+                      << argc - 1 << std::endl;
+            return 1;
+          }
+        if (argc == 2)
+          prm_file = argv[1];
+
+        AllParameters parameters;
+        parameters.read_file(prm_file);
+        std::cout << "fourier-ssi: " << prm_file << std::endl;
+        Simulator simulator(parameters);
+        simulator.run(std::cout);
+      }
+    catch (const std::exception &e)
+      {
+        std::cerr << "fourier-ssi: error: " << one_line_message(e) << std::endl;
+        return 1;
+      }
+    return 0;
+  }
+} // namespace FourierSSI

@@ -1,0 +1,412 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/numerics/data_out.h>
+#include <deal.II/numerics/vector_tools.h>
+#include <fourier_ssi/axis_constraints.h>
+#include <fourier_ssi/harmonic_problem.h>
+#include <fourier_ssi/stress_postprocessor.h>
+#include <fstream>
+
+namespace FourierSSI
+{
+  std::unique_ptr<FESystem<2>>
+  make_displacement_element(const unsigned int degree)
+  {
+    AssertThrow(degree == 2 || degree == 4,
+                ExcMessage("Discretization/Polynomial degree must be 2 or 4"));
+    // Equidistant support points: the interface elements of the thesis
+    // (3 and 5 node pairs) are defined on equally spaced nodes.
+    const FE_Q<2> fe_q(QIterated<1>(QTrapezoid<1>(), degree));
+    return std::make_unique<FESystem<2>>(fe_q, 3);
+  }
+
+  HarmonicProblem::HarmonicProblem(const AllParameters    &parameters,
+                                   const Harmonic         &harmonic,
+                                   const Triangulation<2> &triangulation)
+    : parameters(parameters)
+    , harmonic_operator(harmonic)
+    , fe(make_displacement_element(parameters.discretization.degree))
+    , dof_handler(triangulation)
+  {
+    const auto &bc = parameters.boundary_conditions;
+    body_force     = BoundaryConditions::make_function(bc.body_force,
+                                                   harmonic.n,
+                                                   "Body force");
+    for (const auto &[id, e] : bc.traction)
+      tractions[id] =
+        BoundaryConditions::make_function(e,
+                                          harmonic.n,
+                                          "Boundary conditions/Traction");
+    axis_tolerance = 1e-10 * GridTools::diameter(triangulation);
+  }
+
+  void
+  HarmonicProblem::setup_system()
+  {
+    dof_handler.distribute_dofs(*fe);
+
+    // Every boundary id named in the .prm must exist on the mesh.
+    const auto boundary_ids =
+      dof_handler.get_triangulation().get_boundary_ids();
+    const auto check_id = [&](const types::boundary_id id,
+                              const std::string       &entry) {
+      AssertThrow(std::find(boundary_ids.begin(), boundary_ids.end(), id) !=
+                    boundary_ids.end(),
+                  ExcMessage(entry + ": boundary id " + std::to_string(id) +
+                             " does not exist on the mesh"));
+    };
+    for (const auto &[id, e] : parameters.boundary_conditions.dirichlet)
+      check_id(id, "Boundary conditions/Dirichlet");
+    for (const auto &[id, e] : parameters.boundary_conditions.traction)
+      check_id(id, "Boundary conditions/Traction");
+
+    constraints.clear();
+    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
+    for (const auto &[id, e] : parameters.boundary_conditions.dirichlet)
+      {
+        const auto function =
+          BoundaryConditions::make_function(e,
+                                            harmonic_operator.get_harmonic().n,
+                                            "Boundary conditions/Dirichlet");
+        VectorTools::interpolate_boundary_values(
+          dof_handler,
+          id,
+          *function,
+          constraints,
+          ComponentMask(std::vector<bool>(e.given.begin(), e.given.end())));
+      }
+    n_axis_nodes = add_axis_constraints(dof_handler,
+                                        harmonic_operator.get_harmonic(),
+                                        axis_tolerance,
+                                        constraints);
+    constraints.close();
+
+    DynamicSparsityPattern dsp(dof_handler.n_dofs());
+    DoFTools::make_sparsity_pattern(dof_handler,
+                                    dsp,
+                                    constraints,
+                                    /*keep_constrained_dofs=*/false);
+    sparsity_pattern.copy_from(dsp);
+    system_matrix.reinit(sparsity_pattern);
+    system_rhs.reinit(dof_handler.n_dofs());
+    solution.reinit(dof_handler.n_dofs());
+  }
+
+  void
+  HarmonicProblem::local_matrix(
+    const typename DoFHandler<2>::active_cell_iterator &cell,
+    FullMatrix<double>                                 &matrix,
+    Vector<double>                                     *rhs) const
+  {
+    const QGauss<2> quadrature(fe->degree + 2);
+    FEValues<2>     fe_values(*fe,
+                          quadrature,
+                          update_values | update_gradients |
+                            update_quadrature_points | update_JxW_values);
+    fe_values.reinit(cell);
+    const unsigned int dofs_per_cell = fe->n_dofs_per_cell();
+    matrix.reinit(dofs_per_cell, dofs_per_cell);
+    if (rhs)
+      rhs->reinit(dofs_per_cell);
+
+    const ElasticMaterial &material =
+      parameters.materials.get(cell->material_id());
+    std::vector<StrainVector> strain(dofs_per_cell), stress(dofs_per_cell);
+    std::vector<unsigned int> component(dofs_per_cell);
+    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+      component[i] = fe->system_to_component_index(i).first;
+    Vector<double> force(3);
+
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        const Point<2> &x      = fe_values.quadrature_point(q);
+        const double    r      = x[0];
+        const double    depth  = parameters.materials.depth(x[1]);
+        const double    mu     = material.shear_modulus(depth);
+        const double    lambda = material.lambda(depth);
+        const double    dV     = r * fe_values.JxW(q);
+
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          {
+            strain[i] =
+              harmonic_operator.strain_of_component(component[i],
+                                                    fe_values.shape_value(i, q),
+                                                    fe_values.shape_grad(i, q),
+                                                    r);
+            // Stress weighted with the theta integral of each strain's trig
+            // factor, so that strain[i] . stress[j] is the 3D energy product.
+            stress[i] = hooke_stress(strain[i], lambda, mu);
+            for (unsigned int k = 0; k < 6; ++k)
+              stress[i][k] *= harmonic_operator.weight(k) * dV;
+          }
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          for (unsigned int j = 0; j <= i; ++j)
+            {
+              double sum = 0.;
+              for (unsigned int k = 0; k < 6; ++k)
+                sum += strain[i][k] * stress[j][k];
+              matrix(i, j) += sum;
+            }
+
+        if (rhs)
+          {
+            body_force->vector_value(x, force);
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              {
+                const unsigned int c = component[i];
+                const double       w = c == Component::circumferential ?
+                                         harmonic_operator.weight(StrainIndex::zt) :
+                                         harmonic_operator.weight(StrainIndex::rr);
+                (*rhs)(i) += w * force(c) * fe_values.shape_value(i, q) * dV;
+              }
+          }
+      }
+    for (unsigned int i = 0; i < dofs_per_cell; ++i)
+      for (unsigned int j = i + 1; j < dofs_per_cell; ++j)
+        matrix(i, j) = matrix(j, i);
+
+    if (rhs)
+      local_traction(cell, *rhs);
+  }
+
+  void
+  HarmonicProblem::local_traction(
+    const typename DoFHandler<2>::active_cell_iterator &cell,
+    Vector<double>                                     &rhs) const
+  {
+    if (tractions.empty())
+      return;
+    const QGauss<1> quadrature(fe->degree + 2);
+    FEFaceValues<2> fe_face_values(*fe,
+                                   quadrature,
+                                   update_values | update_quadrature_points |
+                                     update_JxW_values);
+    Vector<double>  traction(3);
+    for (const auto f : cell->face_indices())
+      {
+        if (!cell->face(f)->at_boundary())
+          continue;
+        const auto it = tractions.find(cell->face(f)->boundary_id());
+        if (it == tractions.end())
+          continue;
+        fe_face_values.reinit(cell, f);
+        for (const unsigned int q : fe_face_values.quadrature_point_indices())
+          {
+            const Point<2> &x = fe_face_values.quadrature_point(q);
+            it->second->vector_value(x, traction);
+            const double dA = x[0] * fe_face_values.JxW(q);
+            for (unsigned int i = 0; i < fe->n_dofs_per_cell(); ++i)
+              {
+                const unsigned int c = fe->system_to_component_index(i).first;
+                const double       w = c == Component::circumferential ?
+                                         harmonic_operator.weight(StrainIndex::zt) :
+                                         harmonic_operator.weight(StrainIndex::rr);
+                rhs(i) +=
+                  w * traction(c) * fe_face_values.shape_value(i, q) * dA;
+              }
+          }
+      }
+  }
+
+  void
+  HarmonicProblem::assemble_system()
+  {
+    system_matrix = 0.;
+    system_rhs    = 0.;
+    FullMatrix<double>                   cell_matrix;
+    Vector<double>                       cell_rhs;
+    std::vector<types::global_dof_index> dof_indices(fe->n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        local_matrix(cell, cell_matrix, &cell_rhs);
+        cell->get_dof_indices(dof_indices);
+        constraints.distribute_local_to_global(
+          cell_matrix, cell_rhs, dof_indices, system_matrix, system_rhs);
+      }
+  }
+
+  SolverReport
+  HarmonicProblem::solve()
+  {
+    const SolverReport report =
+      parameters.solver.solve(system_matrix, solution, system_rhs, dof_handler);
+    constraints.distribute(solution);
+    return report;
+  }
+
+  SolverReport
+  HarmonicProblem::run()
+  {
+    setup_system();
+    assemble_system();
+    return solve();
+  }
+
+  double
+  HarmonicProblem::strain_energy(const Vector<double> &field) const
+  {
+    FullMatrix<double>                   cell_matrix;
+    std::vector<types::global_dof_index> dof_indices(fe->n_dofs_per_cell());
+    Vector<double> local(fe->n_dofs_per_cell()), product(fe->n_dofs_per_cell());
+    double         energy = 0.;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        local_matrix(cell, cell_matrix, nullptr);
+        cell->get_dof_indices(dof_indices);
+        for (unsigned int i = 0; i < dof_indices.size(); ++i)
+          local(i) = field(dof_indices[i]);
+        cell_matrix.vmult(product, local);
+        energy += 0.5 * (local * product);
+      }
+    return energy;
+  }
+
+  Vector<double>
+  HarmonicProblem::nodal_reactions() const
+  {
+    FullMatrix<double>                   cell_matrix;
+    Vector<double>                       cell_rhs;
+    std::vector<types::global_dof_index> dof_indices(fe->n_dofs_per_cell());
+    Vector<double> local(fe->n_dofs_per_cell()), product(fe->n_dofs_per_cell());
+    Vector<double> reactions(dof_handler.n_dofs());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        local_matrix(cell, cell_matrix, &cell_rhs);
+        cell->get_dof_indices(dof_indices);
+        for (unsigned int i = 0; i < dof_indices.size(); ++i)
+          local(i) = solution(dof_indices[i]);
+        cell_matrix.vmult(product, local);
+        product -= cell_rhs;
+        for (unsigned int i = 0; i < dof_indices.size(); ++i)
+          reactions(dof_indices[i]) += product(i);
+      }
+    return reactions;
+  }
+
+  BoundaryResultant
+  HarmonicProblem::boundary_resultant(const types::boundary_id boundary_id,
+                                      const Vector<double>    &reactions) const
+  {
+    BoundaryResultant result;
+    const IndexSet    boundary_dofs =
+      DoFTools::extract_boundary_dofs(dof_handler,
+                                      ComponentMask(),
+                                      {boundary_id});
+    std::map<types::global_dof_index, Point<2>> positions;
+    DoFTools::map_dofs_to_support_points(MappingQ1<2>(),
+                                         dof_handler,
+                                         positions);
+
+    const Harmonic &h    = harmonic_operator.get_harmonic();
+    const double    sign = family_sign(h.family);
+    // Component of each DoF: the FESystem numbering is not component-wise,
+    // so look it up per cell once.
+    std::vector<unsigned int>            component_of(dof_handler.n_dofs());
+    std::vector<types::global_dof_index> dof_indices(fe->n_dofs_per_cell());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dof_indices);
+        for (unsigned int i = 0; i < dof_indices.size(); ++i)
+          component_of[dof_indices[i]] = fe->system_to_component_index(i).first;
+      }
+    for (const auto i : boundary_dofs)
+      {
+        const unsigned int c = component_of[i];
+        const double       R = reactions(i);
+        const Point<2>    &x = positions[i];
+        result.component_sums[c] += R;
+        result.work += R * solution(i);
+        if (h.n == 1)
+          {
+            // H = sum R_r - s R_theta; M = sum z (R_r - s R_theta) - r R_z,
+            // from the resultant of t_r, t_theta, t_z over the full circle.
+            const double horizontal =
+              (c == 0 ? R : 0.) - (c == 2 ? sign * R : 0.);
+            result.force += horizontal;
+            result.moment += x[1] * horizontal - (c == 1 ? x[0] * R : 0.);
+          }
+        else if (h.n == 0 && h.family == Family::symmetric && c == 1)
+          result.force += R;
+        else if (h.n == 0 && h.family == Family::antisymmetric && c == 2)
+          result.moment += x[0] * R;
+      }
+    return result;
+  }
+
+  ErrorNorms
+  HarmonicProblem::compute_errors() const
+  {
+    ErrorNorms errors;
+    AssertThrow(parameters.exact_solution.enabled,
+                ExcMessage("Exact solution/Enabled is false"));
+    FunctionParser<2> exact(3, 0., 1e-4);
+    {
+      const auto &e = parameters.exact_solution.amplitudes.expression;
+      exact.initialize("r,z",
+                       std::vector<std::string>(e.begin(), e.end()),
+                       {{"pi", numbers::PI},
+                        {"n", double(harmonic_operator.get_harmonic().n)}});
+      exact.set_formula(AutoDerivativeFunction<2>::FourthOrder);
+    }
+    const QGauss<2>             quadrature(fe->degree + 3);
+    FEValues<2>                 fe_values(*fe,
+                          quadrature,
+                          update_values | update_gradients |
+                            update_quadrature_points | update_JxW_values);
+    std::vector<Vector<double>> values(quadrature.size(), Vector<double>(3));
+    std::vector<std::vector<Tensor<1, 2>>> gradients(
+      quadrature.size(), std::vector<Tensor<1, 2>>(3));
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        fe_values.get_function_values(solution, values);
+        fe_values.get_function_gradients(solution, gradients);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const Point<2> &x  = fe_values.quadrature_point(q);
+            const double    dV = x[0] * fe_values.JxW(q);
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                const double       u  = exact.value(x, c);
+                const Tensor<1, 2> du = exact.gradient(x, c);
+                errors.l2 += (values[q](c) - u) * (values[q](c) - u) * dV;
+                errors.h1_seminorm += (gradients[q][c] - du).norm_square() * dV;
+                errors.l2_exact += u * u * dV;
+                errors.h1_exact += du.norm_square() * dV;
+              }
+          }
+      }
+    errors.l2          = std::sqrt(errors.l2);
+    errors.h1_seminorm = std::sqrt(errors.h1_seminorm);
+    errors.l2_exact    = std::sqrt(errors.l2_exact);
+    errors.h1_exact    = std::sqrt(errors.h1_exact);
+    return errors;
+  }
+
+  void
+  HarmonicProblem::write_vtu(const std::string &filename) const
+  {
+    StressPostprocessor postprocessor(harmonic_operator, parameters.materials);
+    DataOut<2>          data_out;
+    data_out.attach_dof_handler(dof_handler);
+    data_out.add_data_vector(solution,
+                             std::vector<std::string>{"U_radial",
+                                                      "V_axial",
+                                                      "W_circumferential"});
+    data_out.add_data_vector(solution, postprocessor);
+    Vector<float> material_ids(
+      dof_handler.get_triangulation().n_active_cells());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      material_ids(cell->active_cell_index()) = cell->material_id();
+    data_out.add_data_vector(material_ids, "material_id");
+    data_out.build_patches(fe->degree);
+    std::ofstream out(filename);
+    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+    data_out.write_vtu(out);
+  }
+} // namespace FourierSSI

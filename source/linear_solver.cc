@@ -1,0 +1,123 @@
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/lac/precondition.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/lac/sparse_direct.h>
+#include <deal.II/lac/trilinos_precondition.h>
+#include <fourier_ssi/linear_solver.h>
+
+namespace FourierSSI
+{
+  void
+  LinearSolver::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Linear solver");
+    prm.declare_entry("Method",
+                      "direct",
+                      Patterns::Selection("direct|cg-amg"),
+                      "direct: UMFPACK sparse LU; cg-amg: conjugate gradients "
+                      "with Trilinos ML algebraic multigrid.");
+    prm.declare_entry("Tolerance",
+                      "1e-10",
+                      Patterns::Double(0.),
+                      "Relative residual reduction for cg-amg.");
+    prm.declare_entry("Max iterations",
+                      "2000",
+                      Patterns::Integer(1),
+                      "Iteration limit for cg-amg; reaching it is an error.");
+    prm.declare_entry("Residual check",
+                      "1e-6",
+                      Patterns::Double(0.),
+                      "After any solve, ||b - A x|| / ||b|| above this value "
+                      "is reported as a solver failure (catches singular "
+                      "systems, e.g. a missing support).");
+    prm.leave_subsection();
+  }
+
+  void
+  LinearSolver::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Linear solver");
+    method         = prm.get("Method");
+    tolerance      = prm.get_double("Tolerance");
+    max_iterations = prm.get_integer("Max iterations");
+    residual_check = prm.get_double("Residual check");
+    prm.leave_subsection();
+  }
+
+  SolverReport
+  LinearSolver::solve(const SparseMatrix<double> &A,
+                      Vector<double>             &x,
+                      const Vector<double>       &b,
+                      const DoFHandler<2>        &dof_handler) const
+  {
+    SolverReport report;
+    report.method = method;
+    if (method == "direct")
+      {
+        SparseDirectUMFPACK direct;
+        try
+          {
+            direct.initialize(A);
+          }
+        catch (const std::exception &)
+          {
+            AssertThrow(false,
+                        ExcMessage("Linear solver: UMFPACK could not factorize "
+                                   "the matrix (singular system: is the body "
+                                   "free to move? check the supports)"));
+          }
+        direct.vmult(x, b);
+      }
+    else
+      {
+        TrilinosWrappers::PreconditionAMG                 amg;
+        TrilinosWrappers::PreconditionAMG::AdditionalData data;
+        data.elliptic              = true;
+        data.higher_order_elements = dof_handler.get_fe().degree > 1;
+        data.smoother_sweeps       = 2;
+        data.aggregation_threshold = 0.02;
+        // Near-null space: a constant in each of the three components.
+        std::vector<std::vector<bool>> constant_modes;
+        DoFTools::extract_constant_modes(dof_handler,
+                                         ComponentMask(3, true),
+                                         constant_modes);
+        data.constant_modes = constant_modes;
+        amg.initialize(A, data);
+        SolverControl control(max_iterations, tolerance * b.l2_norm());
+        SolverCG<Vector<double>> cg(control);
+        try
+          {
+            cg.solve(A, x, b, amg);
+          }
+        catch (const SolverControl::NoConvergence &e)
+          {
+            AssertThrow(false,
+                        ExcMessage(
+                          "Linear solver: cg-amg did not converge in " +
+                          std::to_string(e.last_step) +
+                          " iterations (residual " +
+                          std::to_string(e.last_residual) +
+                          "); raise 'Max iterations' or use "
+                          "Method = direct"));
+          }
+        report.iterations = control.last_step();
+      }
+
+    Vector<double> residual(b.size());
+    A.vmult(residual, x);
+    residual -= b;
+    const double b_norm = b.l2_norm();
+    report.relative_residual =
+      b_norm > 0. ? residual.l2_norm() / b_norm : residual.l2_norm();
+    AssertThrow(std::isfinite(report.relative_residual) &&
+                  report.relative_residual <= residual_check,
+                ExcMessage("Linear solver: relative residual " +
+                           std::to_string(report.relative_residual) +
+                           " exceeds 'Residual check' = " +
+                           std::to_string(residual_check) +
+                           " (singular or ill-posed system: check supports "
+                           "and interface stiffness)"));
+    return report;
+  }
+} // namespace FourierSSI

@@ -1,0 +1,174 @@
+#include <cmath>
+#include <deal.II/base/utilities.h>
+#include <deal.II/grid/grid_generator.h>
+#include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
+#include <fourier_ssi/mesh_builder.h>
+#include <fstream>
+
+namespace FourierSSI
+{
+  std::vector<double>
+  graded_steps(const std::vector<double>       &breakpoints,
+               const std::vector<unsigned int> &cells,
+               const std::vector<double>       &growth,
+               const std::string               &entry)
+  {
+    AssertThrow(breakpoints.size() >= 2 &&
+                  cells.size() == breakpoints.size() - 1 &&
+                  growth.size() == cells.size(),
+                ExcMessage(entry + ": need k+1 breakpoints, k cell counts and "
+                                   "k growth ratios"));
+    std::vector<double> steps;
+    for (unsigned int s = 0; s < cells.size(); ++s)
+      {
+        const double length = breakpoints[s + 1] - breakpoints[s];
+        AssertThrow(length > 0.,
+                    ExcMessage(entry + ": breakpoints must increase"));
+        AssertThrow(cells[s] > 0,
+                    ExcMessage(entry + ": every segment needs >= 1 cell"));
+        AssertThrow(growth[s] > 0.,
+                    ExcMessage(entry + ": growth ratios must be > 0"));
+        const double q = growth[s];
+        // h0 (1 + q + ... + q^(m-1)) = length
+        const double sum =
+          (q == 1.) ? cells[s] : (std::pow(q, cells[s]) - 1.) / (q - 1.);
+        double h = length / sum;
+        for (unsigned int i = 0; i < cells[s]; ++i, h *= q)
+          steps.push_back(h);
+      }
+    return steps;
+  }
+
+  void
+  MeshBuilder::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    prm.declare_entry("Type",
+                      "rectangle",
+                      Patterns::Selection("rectangle|gmsh"),
+                      "rectangle: built-in graded (r, z) rectangle; gmsh: "
+                      "read 'Mesh file' (.msh), physical curve tags are "
+                      "boundary ids, physical surface tags material ids.");
+    prm.declare_entry("Mesh file", "", Patterns::FileName(), "gmsh .msh file.");
+    prm.declare_entry("R breakpoints",
+                      "0, 1",
+                      Patterns::List(Patterns::Double()),
+                      "Radial segment ends [m].");
+    prm.declare_entry("R cells",
+                      "4",
+                      Patterns::List(Patterns::Integer(1)),
+                      "Cells per radial segment.");
+    prm.declare_entry("R growth",
+                      "1",
+                      Patterns::List(Patterns::Double(0.)),
+                      "Per radial segment, size ratio of consecutive cells "
+                      "(1 uniform, <1 shrinking toward the segment end).");
+    prm.declare_entry("Z breakpoints",
+                      "0, 1",
+                      Patterns::List(Patterns::Double()),
+                      "Vertical segment ends [m], bottom to top.");
+    prm.declare_entry("Z cells",
+                      "4",
+                      Patterns::List(Patterns::Integer(1)),
+                      "Cells per vertical segment.");
+    prm.declare_entry("Z growth",
+                      "1",
+                      Patterns::List(Patterns::Double(0.)),
+                      "Per vertical segment, size ratio of consecutive cells.");
+    prm.declare_entry("Surface patch radius",
+                      "0",
+                      Patterns::Double(0.),
+                      "If > 0, top faces with r below it get boundary id 4.");
+    prm.declare_entry("Distortion",
+                      "0",
+                      Patterns::Double(0., 0.4),
+                      "Random interior vertex displacement as a fraction of "
+                      "the local edge length (tests on distorted meshes).");
+    prm.declare_entry("Global refinements",
+                      "0",
+                      Patterns::Integer(0, 12),
+                      "Uniform refinements of the coarse mesh.");
+    prm.leave_subsection();
+  }
+
+  namespace
+  {
+    template <typename T>
+    std::vector<T>
+    to_list(const std::string &text)
+    {
+      std::vector<T> values;
+      for (const std::string &s : Utilities::split_string_list(text))
+        values.push_back(static_cast<T>(Utilities::string_to_double(s)));
+      return values;
+    }
+  } // namespace
+
+  void
+  MeshBuilder::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Mesh");
+    type                 = prm.get("Type");
+    mesh_file            = prm.get("Mesh file");
+    r_breakpoints        = to_list<double>(prm.get("R breakpoints"));
+    r_cells              = to_list<unsigned int>(prm.get("R cells"));
+    r_growth             = to_list<double>(prm.get("R growth"));
+    z_breakpoints        = to_list<double>(prm.get("Z breakpoints"));
+    z_cells              = to_list<unsigned int>(prm.get("Z cells"));
+    z_growth             = to_list<double>(prm.get("Z growth"));
+    surface_patch_radius = prm.get_double("Surface patch radius");
+    distortion           = prm.get_double("Distortion");
+    global_refinements   = prm.get_integer("Global refinements");
+    prm.leave_subsection();
+    if (type == "rectangle")
+      AssertThrow(r_breakpoints.front() >= 0.,
+                  ExcMessage("Mesh/R breakpoints: r must be >= 0"));
+  }
+
+  void
+  MeshBuilder::build(Triangulation<2> &triangulation) const
+  {
+    triangulation.clear();
+    if (type == "gmsh")
+      {
+        std::ifstream in(mesh_file);
+        AssertThrow(in,
+                    ExcMessage("Mesh/Mesh file: cannot open '" + mesh_file +
+                               "'"));
+        GridIn<2> grid_in(triangulation);
+        grid_in.read_msh(in);
+        for (const auto &v : triangulation.get_vertices())
+          AssertThrow(v[0] > -1e-12,
+                      ExcMessage("Mesh/Mesh file: '" + mesh_file +
+                                 "' has a vertex at r < 0"));
+      }
+    else
+      {
+        const std::vector<std::vector<double>> steps = {
+          graded_steps(r_breakpoints, r_cells, r_growth, "Mesh/R"),
+          graded_steps(z_breakpoints, z_cells, z_growth, "Mesh/Z")};
+        GridGenerator::subdivided_hyper_rectangle(
+          triangulation,
+          steps,
+          Point<2>(r_breakpoints.front(), z_breakpoints.front()),
+          Point<2>(r_breakpoints.back(), z_breakpoints.back()),
+          /*colorize=*/true);
+        // colorize also numbers the material ids; one material here.
+        for (const auto &cell : triangulation.active_cell_iterators())
+          cell->set_material_id(0);
+        if (surface_patch_radius > 0.)
+          for (const auto &cell : triangulation.active_cell_iterators())
+            for (const auto &face : cell->face_iterators())
+              if (face->at_boundary() && face->boundary_id() == 3 &&
+                  face->center()[0] < surface_patch_radius)
+                face->set_boundary_id(4);
+        if (distortion > 0.)
+          GridTools::distort_random(distortion,
+                                    triangulation,
+                                    /*keep_boundary=*/true,
+                                    /*seed=*/20070101);
+      }
+    triangulation.refine_global(global_refinements);
+  }
+} // namespace FourierSSI
