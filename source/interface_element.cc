@@ -4,6 +4,8 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/polynomial.h>
 #include <fourier_ssi/interface_element.h>
+#include <iomanip>
+#include <sstream>
 #include <string>
 
 namespace FourierSSI
@@ -11,6 +13,15 @@ namespace FourierSSI
   namespace
   {
 #include "interface_element_tables.inc"
+
+    /** Short text of a number for error messages ("1e-08", "-0.5"). */
+    std::string
+    to_text(const double x)
+    {
+      std::ostringstream out;
+      out << std::setprecision(6) << x;
+      return out.str();
+    }
 
     template <std::size_t N>
     TripleProductTable
@@ -60,8 +71,8 @@ namespace FourierSSI
                   dealii::ExcMessage(
                     "interface element: the stiffnesses must be finite and "
                     ">= 0, got kn = " +
-                    std::to_string(stiffness.normal) +
-                    ", ks = " + std::to_string(stiffness.shear)));
+                    to_text(stiffness.normal) +
+                    ", ks = " + to_text(stiffness.shear)));
       (void)harmonic;
 
       const dealii::Point<2>    &first  = nodes.front();
@@ -85,17 +96,16 @@ namespace FourierSSI
           AssertThrow(offset <= layout_tolerance * length,
                       dealii::ExcMessage(
                         "interface element: node " + std::to_string(k) +
-                        " is " + std::to_string(offset / length) +
+                        " is " + to_text(offset / length) +
                         " face lengths away from its place on the straight "
                         "equidistant face (tolerance " +
-                        std::to_string(layout_tolerance) +
+                        to_text(layout_tolerance) +
                         "); curved or unevenly spaced faces are not "
                         "supported"));
           AssertThrow(nodes[k][0] >= -1e-12 * length,
-                      dealii::ExcMessage("interface element: node " +
-                                         std::to_string(k) +
-                                         " has negative radius r = " +
-                                         std::to_string(nodes[k][0])));
+                      dealii::ExcMessage(
+                        "interface element: node " + std::to_string(k) +
+                        " has negative radius r = " + to_text(nodes[k][0])));
           geometry.radii[k] = std::max(nodes[k][0], 0.);
         }
       return geometry;
