@@ -206,6 +206,21 @@ def report_six_node():
               (name, i + 1, j + 1, fmt_form(exact)))
         print("    eq %s printed %s   -> %s" % (eq, fmt_form(pr_sym), status))
     print("%d of 6 printed coefficients are wrong" % n_wrong)
+    # Checks that need no integration: (i) a and f, b and e must be mirror
+    # images (r1 <-> r3), c and d palindromic; (ii) partition of unity:
+    # a + d + f + 2 (b + c + e) = int_0^1 r dxi = (r1 + 4 r2 + r3) / 6.
+    P = {k: [sp.Rational(x.numerator, x.denominator) for x in v[1]]
+         for k, v in printed.items()}
+    print("internal checks on the printed values:")
+    print("  a mirrored = %s  vs printed f = %s" %
+          (fmt_form(P["a"][::-1]), fmt_form(P["f"])))
+    print("  d mirrored = %s  vs printed d = %s" %
+          (fmt_form(P["d"][::-1]), fmt_form(P["d"])))
+    total = [P["a"][k] + P["d"][k] + P["f"][k] +
+             2 * (P["b"][k] + P["c"][k] + P["e"][k]) for k in range(3)]
+    print("  a + d + f + 2 (b + c + e) printed = %s, must be %s" %
+          (fmt_form(total), fmt_form([sp.Rational(1, 6), sp.Rational(2, 3),
+                                      sp.Rational(1, 6)])))
     print()
 
 
