@@ -52,8 +52,7 @@ namespace FourierSSI
     FaceGeometry
     check_input(const unsigned int                   degree,
                 const std::vector<dealii::Point<2>> &nodes,
-                const InterfaceStiffness            &stiffness,
-                const Harmonic                      &harmonic)
+                const InterfaceStiffness            &stiffness)
     {
       AssertThrow(degree == 2 || degree == 4,
                   dealii::ExcMessage(
@@ -73,7 +72,6 @@ namespace FourierSSI
                     ">= 0, got kn = " +
                     to_text(stiffness.normal) +
                     ", ks = " + to_text(stiffness.shear)));
-      (void)harmonic;
 
       const dealii::Point<2>    &first  = nodes.front();
       const dealii::Tensor<1, 2> chord  = nodes.back() - first;
@@ -182,11 +180,10 @@ namespace FourierSSI
                    const InterfaceStiffness            &stiffness,
                    const Harmonic                      &harmonic)
   {
-    const FaceGeometry geometry =
-      check_input(degree, nodes, stiffness, harmonic);
-    const TripleProductTable   &table = lagrange_triple_product_table(degree);
-    const unsigned int          m     = degree + 1;
-    const std::array<double, 3> d     = weighted_stiffness(stiffness, harmonic);
+    const FaceGeometry        geometry = check_input(degree, nodes, stiffness);
+    const TripleProductTable &table    = lagrange_triple_product_table(degree);
+    const unsigned int        m        = degree + 1;
+    const std::array<double, 3> d = weighted_stiffness(stiffness, harmonic);
 
     // Scalar face integrals int_0^l N_i N_j r ds = l sum_k T_ijk r_k; for
     // degree 2 these are l times the thesis's a..f (eqs 3.17-3.22, 3.24-3.29
@@ -247,8 +244,7 @@ namespace FourierSSI
                                  const Harmonic                      &harmonic,
                                  const dealii::Quadrature<1> &quadrature)
   {
-    const FaceGeometry geometry =
-      check_input(degree, nodes, stiffness, harmonic);
+    const FaceGeometry geometry = check_input(degree, nodes, stiffness);
     AssertThrow(quadrature.size() > 0,
                 dealii::ExcMessage("interface element: empty quadrature rule"));
     const unsigned int          m = degree + 1;
