@@ -1,5 +1,8 @@
 #include <deal.II/base/utilities.h>
+#include <deal.II/lac/vector.h>
 #include <fourier_ssi/boundary_conditions.h>
+#include <iostream>
+#include <sstream>
 
 namespace FourierSSI
 {
@@ -152,17 +155,24 @@ namespace FourierSSI
       if (expressions.given[c] && !expressions.expression[c].empty())
         formulas[c] = expressions.expression[c];
     auto function = std::make_unique<FunctionParser<2>>(3);
+    // deal.II's muparser wrapper prints parse errors to std::cerr before it
+    // throws; keep them off the terminal so the user sees one clean line.
+    std::ostringstream    swallowed;
+    std::streambuf *const cerr_buffer = std::cerr.rdbuf(swallowed.rdbuf());
     try
       {
         function->initialize("r,z",
                              formulas,
                              {{"pi", numbers::PI},
                               {"n", static_cast<double>(harmonic_n)}});
-        // muparser reports some errors only on first evaluation.
-        function->value(Point<2>(0.5, 0.5), 0);
+        // muparser compiles each component lazily, on first evaluation.
+        Vector<double> values(3);
+        function->vector_value(Point<2>(0.5, 0.5), values);
+        std::cerr.rdbuf(cerr_buffer);
       }
     catch (const std::exception &e)
       {
+        std::cerr.rdbuf(cerr_buffer);
         AssertThrow(false,
                     ExcMessage(entry + ": cannot parse '" + formulas[0] +
                                "', '" + formulas[1] + "', '" + formulas[2] +

@@ -122,8 +122,11 @@ namespace FourierSSI
         if (!has_nu)
           fail(where + "nu is missing");
         if (!(material.poisson_ratio > -1. && material.poisson_ratio < 0.5))
-          fail(where + "nu = " + std::to_string(material.poisson_ratio) +
-               " must satisfy -1 < nu < 0.5");
+          {
+            std::ostringstream nu;
+            nu << material.poisson_ratio;
+            fail(where + "nu = " + nu.str() + " must satisfy -1 < nu < 0.5");
+          }
         if ((E > 0.) == (G > 0.) && !(E == -1. && G == -1.))
           {
             if (E != -1. && G != -1.)

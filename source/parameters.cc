@@ -146,13 +146,11 @@ namespace FourierSSI
   {
     std::ifstream in(filename);
     AssertThrow(in, ExcMessage(filename + ": cannot open parameter file"));
-    std::stringstream buffer;
-    buffer << in.rdbuf();
     ParameterHandler prm;
     declare_parameters(prm);
     try
       {
-        prm.parse_input_from_string(buffer.str(), filename);
+        prm.parse_input(in, filename);
         parse_parameters(prm);
       }
     catch (const std::exception &e)

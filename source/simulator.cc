@@ -2,6 +2,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/grid/tria.h>
 #include <filesystem>
+#include <fourier_ssi/command_line.h>
 #include <fourier_ssi/harmonic_problem.h>
 #include <fourier_ssi/simulator.h>
 #include <iomanip>
@@ -35,91 +36,117 @@ namespace FourierSSI
               triangulation.refine_global(1);
             for (const Harmonic &harmonic : parameters.discretization.harmonics)
               {
-                HarmonicProblem problem(parameters, harmonic, triangulation);
-                Timer           timer;
-                problem.setup_system();
-                const double t_setup = timer.wall_time();
-                timer.restart();
-                problem.assemble_system();
-                const double t_assembly = timer.wall_time();
-                timer.restart();
-                const SolverReport report  = problem.solve();
-                const double       t_solve = timer.wall_time();
-
-                const auto add = [&](const std::string &q,
-                                     const double       v,
-                                     const std::string &unit) {
-                  results.add(q, harmonic, cycle, v, unit);
-                };
-                const double n_dofs = problem.get_dof_handler().n_dofs();
-                add("n_cells", triangulation.n_active_cells(), "-");
-                add("n_dofs", n_dofs, "-");
-                add("n_axis_nodes", problem.n_axis_nodes, "-");
-                add("solver_iterations", report.iterations, "-");
-                add("solver_relative_residual", report.relative_residual, "-");
-                add("strain_energy",
-                    problem.strain_energy(problem.get_solution()),
-                    "kJ");
-                add("time_setup", t_setup, "s");
-                add("time_assembly", t_assembly, "s");
-                add("time_solve", t_solve, "s");
-
-                std::ostringstream line;
-                line << "cycle " << cycle << ", " << harmonic.name() << ": "
-                     << n_dofs << " dofs, " << report.method;
-                if (report.iterations > 0)
-                  line << " (" << report.iterations << " it.)";
-                line << ", residual " << std::setprecision(2)
-                     << report.relative_residual;
-
-                if (!parameters.boundary_conditions.dirichlet.empty())
+                try
                   {
-                    const Vector<double> reactions = problem.nodal_reactions();
-                    for (const auto &[id, e] :
-                         parameters.boundary_conditions.dirichlet)
+                    HarmonicProblem problem(parameters,
+                                            harmonic,
+                                            triangulation);
+                    Timer           timer;
+                    problem.setup_system();
+                    const double t_setup = timer.wall_time();
+                    timer.restart();
+                    problem.assemble_system();
+                    const double t_assembly = timer.wall_time();
+                    timer.restart();
+                    const SolverReport report  = problem.solve();
+                    const double       t_solve = timer.wall_time();
+
+                    const auto add = [&](const std::string &q,
+                                         const double       v,
+                                         const std::string &unit) {
+                      results.add(q, harmonic, cycle, v, unit);
+                    };
+                    const double n_dofs = problem.get_dof_handler().n_dofs();
+                    add("n_cells", triangulation.n_active_cells(), "-");
+                    add("n_dofs", n_dofs, "-");
+                    add("n_axis_nodes", problem.n_axis_nodes, "-");
+                    add("solver_iterations", report.iterations, "-");
+                    add("solver_relative_residual",
+                        report.relative_residual,
+                        "-");
+                    add("strain_energy",
+                        problem.strain_energy(problem.get_solution()),
+                        "kJ");
+                    add("time_setup", t_setup, "s");
+                    add("time_assembly", t_assembly, "s");
+                    add("time_solve", t_solve, "s");
+
+                    std::ostringstream line;
+                    line << "cycle " << cycle << ", " << harmonic.name() << ": "
+                         << n_dofs << " dofs, " << report.method;
+                    if (report.iterations > 0)
+                      line << " (" << report.iterations << " it.)";
+                    line << ", residual " << std::setprecision(2)
+                         << report.relative_residual;
+
+                    if (!parameters.boundary_conditions.dirichlet.empty())
                       {
-                        const BoundaryResultant R =
-                          problem.boundary_resultant(id, reactions);
-                        const std::string b = "_boundary_" + std::to_string(id);
-                        add("reaction_force" + b, R.force, "kN");
-                        add("reaction_moment" + b, R.moment, "kN.m");
-                        add("reaction_work" + b, R.work, "kJ");
+                        const Vector<double> reactions =
+                          problem.nodal_reactions();
+                        for (const auto &[id, e] :
+                             parameters.boundary_conditions.dirichlet)
+                          {
+                            const BoundaryResultant R =
+                              problem.boundary_resultant(id, reactions);
+                            const std::string b =
+                              "_boundary_" + std::to_string(id);
+                            add("reaction_force" + b, R.force, "kN");
+                            add("reaction_moment" + b, R.moment, "kN.m");
+                            add("reaction_work" + b, R.work, "kJ");
+                            if (R.force != 0. || R.moment != 0.)
+                              line << "\n    reactions on boundary " << id
+                                   << ": force " << std::setprecision(6)
+                                   << R.force << " kN, moment " << R.moment
+                                   << " kN.m";
+                          }
+                      }
+                    if (parameters.exact_solution.enabled)
+                      {
+                        const ErrorNorms e = problem.compute_errors();
+                        add("error_l2", e.l2, "m.m^1.5");
+                        add("error_h1_seminorm", e.h1_seminorm, "m.m^0.5");
+                        add("relative_error_l2", e.l2 / e.l2_exact, "-");
+                        add("relative_error_h1",
+                            e.h1_seminorm / e.h1_exact,
+                            "-");
+                        line << ", L2 error " << std::setprecision(4) << e.l2
+                             << ", H1 error " << e.h1_seminorm;
+                        if (cycle > 0)
+                          {
+                            const double rate_l2 = std::log2(
+                              results.get("error_l2", harmonic, cycle - 1) /
+                              e.l2);
+                            const double rate_h1 =
+                              std::log2(results.get("error_h1_seminorm",
+                                                    harmonic,
+                                                    cycle - 1) /
+                                        e.h1_seminorm);
+                            add("rate_l2", rate_l2, "-");
+                            add("rate_h1", rate_h1, "-");
+                            line << " (rates " << std::setprecision(3)
+                                 << rate_l2 << ", " << rate_h1 << ")";
+                          }
+                      }
+                    log << line.str() << std::endl;
+
+                    if (write_files && parameters.output.write_vtu)
+                      {
+                        const std::string name =
+                          directory + "/solution-n" +
+                          std::to_string(harmonic.n) + "-" +
+                          to_string(harmonic.family) + "-cycle" +
+                          std::to_string(cycle) + ".vtu";
+                        written.push_back(name);
+                        problem.write_vtu(name);
                       }
                   }
-                if (parameters.exact_solution.enabled)
+                catch (const std::exception &e)
                   {
-                    const ErrorNorms e = problem.compute_errors();
-                    add("error_l2", e.l2, "m.m^1.5");
-                    add("error_h1_seminorm", e.h1_seminorm, "m.m^0.5");
-                    add("relative_error_l2", e.l2 / e.l2_exact, "-");
-                    add("relative_error_h1", e.h1_seminorm / e.h1_exact, "-");
-                    line << ", L2 error " << std::setprecision(4) << e.l2
-                         << ", H1 error " << e.h1_seminorm;
-                    if (cycle > 0)
-                      {
-                        const double rate_l2 = std::log2(
-                          results.get("error_l2", harmonic, cycle - 1) / e.l2);
-                        const double rate_h1 =
-                          std::log2(results.get("error_h1_seminorm",
-                                                harmonic,
-                                                cycle - 1) /
-                                    e.h1_seminorm);
-                        add("rate_l2", rate_l2, "-");
-                        add("rate_h1", rate_h1, "-");
-                        line << " (rates " << std::setprecision(3) << rate_l2
-                             << ", " << rate_h1 << ")";
-                      }
-                  }
-                log << line.str() << std::endl;
-
-                if (write_files && parameters.output.write_vtu)
-                  {
-                    const std::string name =
-                      directory + "/solution-n" + std::to_string(harmonic.n) +
-                      "-" + to_string(harmonic.family) + "-cycle" +
-                      std::to_string(cycle) + ".vtu";
-                    written.push_back(name);
-                    problem.write_vtu(name);
+                    // Say which harmonic and cycle failed.
+                    AssertThrow(false,
+                                ExcMessage("cycle " + std::to_string(cycle) +
+                                           ", " + harmonic.name() + ": " +
+                                           one_line_message(e)));
                   }
               }
           }

@@ -37,10 +37,10 @@ namespace check
     const double scale = std::max(std::abs(reference), floor);
     const double error = std::abs(value - reference) / (scale > 0 ? scale : 1.);
     const bool   ok    = std::isfinite(value) && error <= tolerance;
-    std::cout << (ok ? "  ok   " : "  FAIL ") << what << ": " << std::setprecision(10)
-              << value << " vs " << reference << " (rel. error "
-              << std::setprecision(3) << error << ", tol " << tolerance << ")"
-              << std::endl;
+    std::cout << (ok ? "  ok   " : "  FAIL ") << what << ": "
+              << std::setprecision(10) << value << " vs " << reference
+              << " (rel. error " << std::setprecision(3) << error << ", tol "
+              << tolerance << ")" << std::endl;
     (ok ? n_passed() : n_failed())++;
   }
 

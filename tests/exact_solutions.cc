@@ -17,14 +17,13 @@
 //      A = p a^2 / (2 (lambda + G) (b^2 - a^2)).
 //    Not polynomial: rates must be p+1 (L2) and p (H1) within 0.2 (asymptotic
 //    range reached after one refinement on this smooth solution).
-#include <fourier_ssi/harmonic.h>
-
-#include <cmath>
-#include <iomanip>
-#include <sstream>
-
 #include "check.h"
 #include "test_support.h"
+
+#include <cmath>
+#include <fourier_ssi/harmonic.h>
+#include <iomanip>
+#include <sstream>
 
 using namespace FourierSSI;
 
@@ -45,12 +44,12 @@ namespace
               const double       r_inner)
   {
     const double      kappa = 1e-3, E = 1e5, nu = 0.3;
-    const std::string s     = family == "symmetric" ? "" : "-";
+    const std::string s = family == "symmetric" ? "" : "-";
     const std::string U =
       "-" + std::to_string(kappa / 2) + "*(z^2+" + std::to_string(nu) + "*r^2)";
     const std::string V = std::to_string(kappa) + "*r*z";
-    const std::string W = s + std::to_string(kappa / 2) + "*(z^2-" +
-                          std::to_string(nu) + "*r^2)";
+    const std::string W =
+      s + std::to_string(kappa / 2) + "*(z^2-" + std::to_string(nu) + "*r^2)";
     const std::string all = "u=" + U + ", v=" + V + ", w=" + W;
     return "subsection Discretization\n set Harmonics = 1\n set Family = " +
            family + "\n set Polynomial degree = " + std::to_string(degree) +
@@ -94,12 +93,11 @@ main(int argc, char **argv)
         }
 
   // Lame cylinder a = 1, b = 2, p = 100 kPa, E = 1e5 kPa, nu = 0.3.
-  const double a = 1, b = 2, p = 100, E = 1e5, nu = 0.3;
-  const double G = E / (2 * (1 + nu)), lambda = 2 * G * nu / (1 - 2 * nu);
-  const double B = p * a * a * b * b / (2 * G * (b * b - a * a));
-  const double A = p * a * a / (2 * (lambda + G) * (b * b - a * a));
-  const std::string U =
-    str(A) + "*r + " + str(B) + "/r";
+  const double      a = 1, b = 2, p = 100, E = 1e5, nu = 0.3;
+  const double      G = E / (2 * (1 + nu)), lambda = 2 * G * nu / (1 - 2 * nu);
+  const double      B = p * a * a * b * b / (2 * G * (b * b - a * a));
+  const double      A = p * a * a / (2 * (lambda + G) * (b * b - a * a));
+  const std::string U = str(A) + "*r + " + str(B) + "/r";
   for (const unsigned int degree : {2u, 4u})
     {
       const std::string prm =

@@ -7,14 +7,12 @@
 // sums of O(100) quadrature terms of magnitude ~1 in double precision.
 // The same fields with the family sign flipped are NOT rigid and must have
 // energy of order one: this shows the check can fail.
-#include <deal.II/grid/tria.h>
-
-#include <deal.II/numerics/vector_tools.h>
-
-#include <fourier_ssi/harmonic_problem.h>
-
 #include "check.h"
 #include "test_support.h"
+
+#include <deal.II/grid/tria.h>
+#include <deal.II/numerics/vector_tools.h>
+#include <fourier_ssi/harmonic_problem.h>
 
 using namespace FourierSSI;
 
@@ -71,19 +69,54 @@ main(int argc, char **argv)
         Harmonic    harmonic;
         std::string name, U, V, W, U_bad, V_bad, W_bad;
       };
-      const std::vector<Mode> modes = {
-        {{0, Family::symmetric}, "axial translation", "0", "1", "0",
-         "0.1", "1", "0"},
-        {{0, Family::antisymmetric}, "torsional rotation", "0", "0", "r",
-         "0", "0", "1"},
-        {{1, Family::symmetric}, "lateral translation", "1", "0", "-1",
-         "1", "0", "1"},
-        {{1, Family::symmetric}, "rotation about horizontal axis", "z", "-r",
-         "-z", "z", "r", "-z"},
-        {{1, Family::antisymmetric}, "lateral translation", "1", "0", "1",
-         "1", "0", "-1"},
-        {{1, Family::antisymmetric}, "rotation about horizontal axis", "z",
-         "-r", "z", "z", "-r", "-z"}};
+      const std::vector<Mode> modes = {{{0, Family::symmetric},
+                                        "axial translation",
+                                        "0",
+                                        "1",
+                                        "0",
+                                        "0.1",
+                                        "1",
+                                        "0"},
+                                       {{0, Family::antisymmetric},
+                                        "torsional rotation",
+                                        "0",
+                                        "0",
+                                        "r",
+                                        "0",
+                                        "0",
+                                        "1"},
+                                       {{1, Family::symmetric},
+                                        "lateral translation",
+                                        "1",
+                                        "0",
+                                        "-1",
+                                        "1",
+                                        "0",
+                                        "1"},
+                                       {{1, Family::symmetric},
+                                        "rotation about horizontal axis",
+                                        "z",
+                                        "-r",
+                                        "-z",
+                                        "z",
+                                        "r",
+                                        "-z"},
+                                       {{1, Family::antisymmetric},
+                                        "lateral translation",
+                                        "1",
+                                        "0",
+                                        "1",
+                                        "1",
+                                        "0",
+                                        "-1"},
+                                       {{1, Family::antisymmetric},
+                                        "rotation about horizontal axis",
+                                        "z",
+                                        "-r",
+                                        "z",
+                                        "z",
+                                        "-r",
+                                        "-z"}};
       for (const Mode &m : modes)
         {
           const double e_rigid =

@@ -4,10 +4,8 @@
 #define fourier_ssi_tests_test_support_h
 
 #include <deal.II/base/mpi.h>
-
 #include <fourier_ssi/parameters.h>
 #include <fourier_ssi/simulator.h>
-
 #include <iostream>
 #include <string>
 

@@ -1,0 +1,28 @@
+# Whole-program runs of the fourier-ssi executable.
+
+# Bad input: one-line error naming the file/entry, non-zero exit, no output.
+# Each tests/prm/bad_*.prm starts with a line "# expect: <regex>".
+file(GLOB FSSI_BAD_PRMS ${CMAKE_CURRENT_SOURCE_DIR}/prm/bad_*.prm)
+foreach(prm ${FSSI_BAD_PRMS})
+  get_filename_component(name ${prm} NAME_WE)
+  file(STRINGS ${prm} expect_line LIMIT_COUNT 1 REGEX "^# expect: ")
+  string(REGEX REPLACE "^# expect: " "" expected "${expect_line}")
+  add_test(NAME input_${name}
+    COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi> -DPRM=${prm}
+            -DEXPECTED=${expected}
+            -DOUTPUT_DIR=${CMAKE_CURRENT_BINARY_DIR}/bad_output
+            -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}
+            -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_failure.cmake)
+  set_tests_properties(input_${name} PROPERTIES RESOURCE_LOCK bad_output)
+endforeach()
+
+# The bundled default scene runs and writes its results.
+add_test(NAME program_default_scene
+  COMMAND fourier-ssi ${CMAKE_SOURCE_DIR}/prm/default.prm
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties(program_default_scene PROPERTIES
+  PASS_REGULAR_EXPRESSION "results written to")
+
+add_test(NAME program_print_parameters COMMAND fourier-ssi --print-parameters)
+set_tests_properties(program_print_parameters PROPERTIES
+  PASS_REGULAR_EXPRESSION "subsection Materials")
