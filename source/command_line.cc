@@ -2,6 +2,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 #include <fourier_ssi/command_line.h>
+#include <fourier_ssi/interface_integrator.h>
 #include <fourier_ssi/parameters.h>
 #include <fourier_ssi/simulator.h>
 #include <iostream>
@@ -49,8 +50,19 @@ namespace FourierSSI
         if (argc > 1 &&
             (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h"))
           {
-            std::cout << "usage: fourier-ssi [PARAMS.prm]\n"
-                         "       fourier-ssi --print-parameters\n";
+            std::cout
+              << "usage: fourier-ssi [PARAMS.prm]\n"
+                 "       fourier-ssi --print-parameters\n"
+                 "       fourier-ssi --interface-matrix p=2 n=1 family=sym "
+                 "r=0.5,0.5,0.5 z=0,0.5,1 kn=1e10 ks=1e10\n"
+                 "         (closed-form interface element matrix; n defaults "
+                 "to 0, family to sym)\n";
+            return 0;
+          }
+        if (argc > 1 && std::string(argv[1]) == "--interface-matrix")
+          {
+            interface_matrix_command(
+              std::vector<std::string>(argv + 2, argv + argc), std::cout);
             return 0;
           }
         if (argc > 2)

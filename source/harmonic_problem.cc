@@ -43,6 +43,10 @@ namespace FourierSSI
                                           harmonic.n,
                                           "Boundary conditions/Traction");
     axis_tolerance = 1e-10 * GridTools::diameter(triangulation);
+    if (parameters.interfaces.enabled())
+      interfaces = std::make_unique<InterfaceIntegrator>(parameters.interfaces,
+                                                         parameters.materials,
+                                                         harmonic);
   }
 
   void
@@ -91,6 +95,11 @@ namespace FourierSSI
                                     dsp,
                                     constraints,
                                     /*keep_constrained_dofs=*/false);
+    if (interfaces)
+      {
+        interfaces->setup(dof_handler);
+        interfaces->add_sparsity(constraints, dsp);
+      }
     sparsity_pattern.copy_from(dsp);
     system_matrix.reinit(sparsity_pattern);
     system_rhs.reinit(dof_handler.n_dofs());
@@ -228,6 +237,8 @@ namespace FourierSSI
         constraints.distribute_local_to_global(
           cell_matrix, cell_rhs, dof_indices, system_matrix, system_rhs);
       }
+    if (interfaces)
+      interfaces->assemble(constraints, system_matrix, system_rhs);
   }
 
   SolverReport
@@ -263,6 +274,8 @@ namespace FourierSSI
         cell_matrix.vmult(product, local);
         energy += 0.5 * (local * product);
       }
+    if (interfaces)
+      energy += interfaces->energy(field);
     return energy;
   }
 
@@ -285,6 +298,8 @@ namespace FourierSSI
         for (unsigned int i = 0; i < dof_indices.size(); ++i)
           reactions(dof_indices[i]) += product(i);
       }
+    if (interfaces)
+      interfaces->add_reactions(solution, reactions);
     return reactions;
   }
 

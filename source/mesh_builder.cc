@@ -3,6 +3,7 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
+#include <fourier_ssi/interface_pairing.h>
 #include <fourier_ssi/mesh_builder.h>
 #include <fstream>
 
@@ -89,6 +90,14 @@ namespace FourierSSI
                       "0",
                       Patterns::Integer(0, 12),
                       "Uniform refinements of the coarse mesh.");
+    prm.declare_entry("Interface lines",
+                      "",
+                      Patterns::Anything(),
+                      "Rectangle only: straight lines where the mesh is split "
+                      "with double nodes, e.g. 'id: r=1, z=-2..0; id: z=-2, "
+                      "r=0..1'; the faces on both sides get the boundary id "
+                      "(declare its law in Interfaces/Interfaces). Lines and "
+                      "their ends must be on the breakpoints.");
     prm.leave_subsection();
   }
 
@@ -120,7 +129,11 @@ namespace FourierSSI
     surface_patch_radius = prm.get_double("Surface patch radius");
     distortion           = prm.get_double("Distortion");
     global_refinements   = prm.get_integer("Global refinements");
+    interface_lines      = parse_interface_lines(prm.get("Interface lines"));
     prm.leave_subsection();
+    AssertThrow(interface_lines.empty() || type == "rectangle",
+                ExcMessage("Mesh/Interface lines: only for Type = rectangle "
+                           "(duplicate the curve in gmsh instead)"));
     if (type == "rectangle")
       AssertThrow(r_breakpoints.front() >= 0.,
                   ExcMessage("Mesh/R breakpoints: r must be >= 0"));
@@ -157,6 +170,11 @@ namespace FourierSSI
         // colorize also numbers the material ids; one material here.
         for (const auto &cell : triangulation.active_cell_iterators())
           cell->set_material_id(0);
+        if (!interface_lines.empty())
+          split_along_interface_lines(triangulation,
+                                      interface_lines,
+                                      r_breakpoints,
+                                      z_breakpoints);
         if (surface_patch_radius > 0.)
           for (const auto &cell : triangulation.active_cell_iterators())
             for (const auto &face : cell->face_iterators())

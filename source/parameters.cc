@@ -126,6 +126,7 @@ namespace FourierSSI
     LinearSolver::declare_parameters(prm);
     ExactSolutionParameters::declare_parameters(prm);
     OutputParameters::declare_parameters(prm);
+    InterfaceParameters::declare_parameters(prm);
   }
 
   void
@@ -138,6 +139,7 @@ namespace FourierSSI
     solver.parse_parameters(prm);
     exact_solution.parse_parameters(prm);
     output.parse_parameters(prm);
+    interfaces.parse_parameters(prm);
   }
 
 

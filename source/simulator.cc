@@ -139,6 +139,19 @@ namespace FourierSSI
                         written.push_back(name);
                         problem.write_vtu(name);
                       }
+                    if (write_files && problem.get_interfaces())
+                      for (const types::boundary_id id :
+                           problem.get_interfaces()->boundary_ids())
+                        {
+                          const std::string name =
+                            directory + "/interface-" + std::to_string(id) +
+                            "-n" + std::to_string(harmonic.n) + "-" +
+                            to_string(harmonic.family) + "-cycle" +
+                            std::to_string(cycle) + ".csv";
+                          written.push_back(name);
+                          problem.get_interfaces()->write_csv(
+                            id, problem.get_solution(), name);
+                        }
                   }
                 catch (const std::exception &e)
                   {

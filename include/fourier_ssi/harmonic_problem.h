@@ -18,6 +18,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/harmonic_operator.h>
+#include <fourier_ssi/interface_integrator.h>
 #include <fourier_ssi/linear_solver.h>
 #include <fourier_ssi/parameters.h>
 #include <map>
@@ -117,6 +118,13 @@ namespace FourierSSI
       return constraints;
     }
 
+    /** The zero-thickness interfaces, or nullptr if none are declared. */
+    const InterfaceIntegrator *
+    get_interfaces() const
+    {
+      return interfaces.get();
+    }
+
     const HarmonicOperator &
     get_operator() const
     {
@@ -149,6 +157,7 @@ namespace FourierSSI
     double                             axis_tolerance;
     std::unique_ptr<FunctionParser<2>> body_force;
     std::map<types::boundary_id, std::unique_ptr<FunctionParser<2>>> tractions;
+    std::unique_ptr<InterfaceIntegrator> interfaces;
   };
 } // namespace FourierSSI
 

@@ -38,6 +38,18 @@ namespace FourierSSI
                const std::vector<double>       &growth,
                const std::string               &entry);
 
+  /**
+   * A straight interface line of the built-in rectangle, "id: r=1, z=-2..0"
+   * (vertical) or "id: z=-2, r=0..1" (horizontal): the mesh is split there
+   * with double nodes (see split_along_interface_lines()).
+   */
+  struct InterfaceLine
+  {
+    types::boundary_id boundary_id;
+    unsigned int       fixed_coordinate; // 0: r = value, 1: z = value
+    double             value, from, to;
+  };
+
   class MeshBuilder
   {
   public:
@@ -58,6 +70,7 @@ namespace FourierSSI
     double                    distortion           = 0.;
     unsigned int              global_refinements   = 0;
     std::string               mesh_file;
+    std::vector<InterfaceLine> interface_lines;
   };
 } // namespace FourierSSI
 

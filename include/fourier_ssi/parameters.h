@@ -8,6 +8,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <fourier_ssi/boundary_conditions.h>
 #include <fourier_ssi/harmonic.h>
+#include <fourier_ssi/interface_pairing.h>
 #include <fourier_ssi/linear_solver.h>
 #include <fourier_ssi/material.h>
 #include <fourier_ssi/mesh_builder.h>
@@ -80,6 +81,7 @@ namespace FourierSSI
     LinearSolver             solver;
     ExactSolutionParameters  exact_solution;
     OutputParameters         output;
+    InterfaceParameters      interfaces;
   };
 } // namespace FourierSSI
 

@@ -1,0 +1,112 @@
+/**
+ * Zero-thickness interfaces in the harmonic system, part 2: the paired faces
+ * of one DoFHandler become closed-form interface elements (interface_matrix(),
+ * Hernoune 2007 eqs 3.13-3.23 and 7.9-7.55) that are added to the sparsity
+ * pattern, the stiffness matrix, the nodal reactions K u - f and the strain
+ * energy of one harmonic, and whose relative displacements and tractions are
+ * written as CSV (doc/interfaces-usage.md).
+ */
+#ifndef fourier_ssi_interface_integrator_h
+#define fourier_ssi_interface_integrator_h
+
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/sparse_matrix.h>
+#include <deal.II/lac/vector.h>
+#include <fourier_ssi/harmonic.h>
+#include <fourier_ssi/interface_element.h>
+#include <fourier_ssi/interface_pairing.h>
+#include <fourier_ssi/material.h>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace FourierSSI
+{
+  using namespace dealii;
+
+  class InterfaceIntegrator
+  {
+  public:
+    InterfaceIntegrator(const InterfaceParameters &parameters,
+                        const MaterialLibrary     &materials,
+                        const Harmonic            &harmonic);
+
+    /**
+     * Pair the interface faces of dof_handler and compute each pair's
+     * stiffness (eq. 3.8d, or Van Langen & Vermeer's rule) and element matrix.
+     */
+    void
+    setup(const DoFHandler<2> &dof_handler);
+
+    /** Add the couplings across the faces (constrained DoFs eliminated). */
+    void
+    add_sparsity(const AffineConstraints<double> &constraints,
+                 DynamicSparsityPattern          &dsp) const;
+
+    /**
+     * Add every element matrix to the global matrix through the constraints
+     * (inhomogeneous Dirichlet values on interface DoFs go to rhs).
+     */
+    void
+    assemble(const AffineConstraints<double> &constraints,
+             SparseMatrix<double>            &matrix,
+             Vector<double>                  &rhs) const;
+
+    /** reactions += K_interface u (the interface part of K u - f). */
+    void
+    add_reactions(const Vector<double> &u, Vector<double> &reactions) const;
+
+    /** 1/2 u^T K_interface u: the energy stored in the springs. */
+    double
+    energy(const Vector<double> &u) const;
+
+    /** Interface boundary ids, ascending. */
+    std::vector<types::boundary_id>
+    boundary_ids() const;
+
+    /**
+     * CSV of one interface, one row per face and node: face, node, r, z,
+     * relative displacement amplitudes B - A along s, n, theta (m) and
+     * tractions kn d_n, ks d_s, ks d_theta (kPa).
+     */
+    void
+    write_csv(const types::boundary_id boundary_id,
+              const Vector<double>    &u,
+              const std::string       &filename) const;
+
+    const std::vector<InterfacePair> &
+    get_pairs() const
+    {
+      return pairs;
+    }
+
+    const std::vector<InterfaceStiffness> &
+    get_stiffness() const
+    {
+      return stiffness;
+    }
+
+  private:
+    const InterfaceParameters      &parameters;
+    const MaterialLibrary          &materials;
+    const Harmonic                  harmonic;
+    std::vector<InterfacePair>      pairs;
+    std::vector<InterfaceStiffness> stiffness;
+    std::vector<FullMatrix<double>> matrices;
+  };
+
+  /**
+   * The --interface-matrix sub-command: arguments "p=2 n=1 family=sym
+   * r=0.5,0.5,0.5 z=0,0.5,1 kn=1e10 ks=1e10" (n defaults to 0, family to
+   * sym); prints interface_matrix() with print_interface_matrix(). Throws a
+   * one-line message on bad arguments.
+   */
+  void
+  interface_matrix_command(const std::vector<std::string> &arguments,
+                           std::ostream                   &out);
+} // namespace FourierSSI
+
+#endif

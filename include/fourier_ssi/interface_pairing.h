@@ -1,0 +1,135 @@
+/**
+ * Zero-thickness interfaces in the harmonic system, part 1: the .prm
+ * description of the interface laws, the double-node splitting of the
+ * built-in rectangle along straight interface lines, and the pairing of the
+ * coincident boundary faces of the two sides (doc/interfaces-usage.md).
+ *
+ * An interface is a boundary id carried by the faces on BOTH sides of a
+ * line whose vertices are duplicated (double nodes), so that the two sides
+ * are separate boundaries of the mesh. Each face is paired with its
+ * geometric twin; the pair becomes one 6-node (p = 2) or 10-node (p = 4)
+ * interface element of Hernoune (2007), eqs 3.13-3.23 / 7.9-7.55 (see
+ * include/fourier_ssi/interface_element.h).
+ */
+#ifndef fourier_ssi_interface_pairing_h
+#define fourier_ssi_interface_pairing_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/base/types.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/grid/tria.h>
+#include <fourier_ssi/mesh_builder.h>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace FourierSSI
+{
+  using namespace dealii;
+
+  /**
+   * The constitutive law of one interface (eq. 3.8d, D = diag(ks, kn, ks)):
+   * either given stiffnesses (the presets rough: kn = ks = 1e10, smooth:
+   * kn = 1e10, ks = 0, or explicit kn, ks >= 0), or the virtual-thickness
+   * rule of Van Langen & Vermeer (1991): ks = mu G / l,
+   * kn = mu G / ((1 - 2 nu) l), with G, nu of the soil side and l the mean
+   * face length of the interface.
+   */
+  struct InterfaceLaw
+  {
+    bool   vermeer = false;
+    double normal  = 0.; // kn [kPa/m] (not vermeer)
+    double shear   = 0.; // ks [kPa/m] (not vermeer)
+    double mu      = 0.; // Van Langen & Vermeer factor (vermeer)
+    /** Material id of the soil side (vermeer); -1: the side of lower G. */
+    int material = -1;
+  };
+
+  /** Subsection "Interfaces" of the .prm file. */
+  struct InterfaceParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /**
+     * Parse "id: rough; id: smooth; id: kn=1e8, ks=0; id: vermeer, mu=50"
+     * (optionally ", material=m" after vermeer). Throws a one-line message
+     * naming "Interfaces/Interfaces".
+     */
+    static std::map<types::boundary_id, InterfaceLaw>
+    parse_list(const std::string &text);
+
+    /** True if at least one interface is declared. */
+    bool
+    enabled() const
+    {
+      return !laws.empty();
+    }
+
+    std::map<types::boundary_id, InterfaceLaw> laws;
+    /** Twin faces and nodes must coincide within this times face length. */
+    double pairing_tolerance = 1e-8;
+  };
+
+  /**
+   * One interface element: a boundary face of one cell (side A) and its
+   * coincident twin of another cell (side B). The unit normal n points from
+   * A into B and is chosen with n_z > 0, or n_r > 0 on vertical faces; the
+   * nodes are ordered along s = n rotated by -90 degrees, so that
+   * interface_matrix()'s tangent (node 0 to node p) and normal are s and n.
+   * Positive normal relative displacement is opening.
+   */
+  struct InterfacePair
+  {
+    types::boundary_id boundary_id;
+    /** The p + 1 node positions, node 0 to node p. */
+    std::vector<Point<2>> nodes;
+    /** 6 (p + 1) global DoFs in interface_matrix() order: A nodes 0..p
+     * (U_r, U_z, U_theta each), then B nodes 0..p. */
+    std::vector<types::global_dof_index> dof_indices;
+    types::material_id                   material_a, material_b;
+    Point<2>                             center;
+    double                               length;
+    Tensor<1, 2>                         tangent, normal;
+  };
+
+  /**
+   * Pair the active boundary faces carrying any of the given ids (the
+   * FESystem of dof_handler must be FE_Q(p)^3 with equidistant support
+   * points). Throws a one-line error with the face centre if a face has no
+   * twin, more than one, or a twin on the same cell, or if an id does not
+   * exist on the mesh. Pairs are sorted by id, then by face centre.
+   */
+  std::vector<InterfacePair>
+  pair_interface_faces(const DoFHandler<2>                   &dof_handler,
+                       const std::vector<types::boundary_id> &ids,
+                       const double                           tolerance);
+
+  /**
+   * Parse Mesh/Interface lines, "id: r=1, z=-2..0; id: z=-2, r=0..1" (empty:
+   * none). Throws a one-line message naming the entry.
+   */
+  std::vector<InterfaceLine>
+  parse_interface_lines(const std::string &text);
+
+  /**
+   * Double nodes for the built-in rectangle: duplicate the vertices along the
+   * given straight lines so that the cells on the two sides no longer share
+   * them, and give the faces on both sides the line's boundary id. Around a
+   * vertex, cells that still share a non-interface face keep sharing it
+   * (interior line ends stay closed, crossings get up to four copies);
+   * vertices on the axis r = 0 are not duplicated (the axis constraints key
+   * axis nodes by z). Must be called on a coarse (unrefined) mesh; the other
+   * boundary ids are kept. Throws if a line is not on the breakpoints.
+   */
+  void
+  split_along_interface_lines(Triangulation<2>                 &triangulation,
+                              const std::vector<InterfaceLine> &lines,
+                              const std::vector<double>        &r_breakpoints,
+                              const std::vector<double>        &z_breakpoints);
+} // namespace FourierSSI
+
+#endif

@@ -1,0 +1,249 @@
+#include <cmath>
+#include <deal.II/base/utilities.h>
+#include <fourier_ssi/interface_integrator.h>
+#include <fstream>
+#include <iomanip>
+#include <set>
+
+namespace FourierSSI
+{
+  InterfaceIntegrator::InterfaceIntegrator(
+    const InterfaceParameters &parameters,
+    const MaterialLibrary     &materials,
+    const Harmonic            &harmonic)
+    : parameters(parameters)
+    , materials(materials)
+    , harmonic(harmonic)
+  {}
+
+  std::vector<types::boundary_id>
+  InterfaceIntegrator::boundary_ids() const
+  {
+    std::vector<types::boundary_id> ids;
+    for (const auto &[id, law] : parameters.laws)
+      ids.push_back(id);
+    return ids;
+  }
+
+  void
+  InterfaceIntegrator::setup(const DoFHandler<2> &dof_handler)
+  {
+    pairs = pair_interface_faces(dof_handler,
+                                 boundary_ids(),
+                                 parameters.pairing_tolerance);
+    // Mean face length per interface (Van Langen & Vermeer's l).
+    std::map<types::boundary_id, std::pair<double, unsigned int>> lengths;
+    for (const InterfacePair &pair : pairs)
+      {
+        lengths[pair.boundary_id].first += pair.length;
+        ++lengths[pair.boundary_id].second;
+      }
+    stiffness.clear();
+    matrices.clear();
+    for (const InterfacePair &pair : pairs)
+      {
+        const InterfaceLaw &law = parameters.laws.at(pair.boundary_id);
+        InterfaceStiffness  k{law.normal, law.shear};
+        if (law.vermeer)
+          {
+            // G, nu of the soil side at the face centre's depth.
+            const double depth = materials.depth(pair.center[1]);
+            const auto   check = [&](const int id) -> const ElasticMaterial   &{
+              AssertThrow(materials.has(id),
+                          ExcMessage("Interfaces/Interfaces: material " +
+                                     std::to_string(id) + " of interface " +
+                                     std::to_string(pair.boundary_id) +
+                                     " is not defined"));
+              return materials.get(id);
+            };
+            const ElasticMaterial *soil = nullptr;
+            if (law.material >= 0)
+              soil = &check(law.material);
+            else
+              {
+                const ElasticMaterial &a = check(pair.material_a);
+                const ElasticMaterial &b = check(pair.material_b);
+                soil =
+                  a.shear_modulus(depth) <= b.shear_modulus(depth) ? &a : &b;
+              }
+            const auto &[sum, count] = lengths[pair.boundary_id];
+            const double l           = sum / count;
+            const double G           = soil->shear_modulus(depth);
+            k.shear                  = law.mu * G / l;
+            k.normal = law.mu * G / ((1. - 2. * soil->poisson_ratio) * l);
+          }
+        stiffness.push_back(k);
+        matrices.push_back(
+          interface_matrix(pair.nodes.size() - 1, pair.nodes, k, harmonic));
+      }
+  }
+
+  void
+  InterfaceIntegrator::add_sparsity(
+    const AffineConstraints<double> &constraints,
+    DynamicSparsityPattern          &dsp) const
+  {
+    for (const InterfacePair &pair : pairs)
+      constraints.add_entries_local_to_global(pair.dof_indices,
+                                              dsp,
+                                              /*keep_constrained_dofs=*/false);
+  }
+
+  void
+  InterfaceIntegrator::assemble(const AffineConstraints<double> &constraints,
+                                SparseMatrix<double>            &matrix,
+                                Vector<double>                  &rhs) const
+  {
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      {
+        Vector<double> local_rhs(pairs[i].dof_indices.size());
+        constraints.distribute_local_to_global(
+          matrices[i], local_rhs, pairs[i].dof_indices, matrix, rhs);
+      }
+  }
+
+  void
+  InterfaceIntegrator::add_reactions(const Vector<double> &u,
+                                     Vector<double>       &reactions) const
+  {
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      {
+        const auto    &dofs = pairs[i].dof_indices;
+        Vector<double> local(dofs.size()), product(dofs.size());
+        for (unsigned int k = 0; k < dofs.size(); ++k)
+          local(k) = u(dofs[k]);
+        matrices[i].vmult(product, local);
+        for (unsigned int k = 0; k < dofs.size(); ++k)
+          reactions(dofs[k]) += product(k);
+      }
+  }
+
+  double
+  InterfaceIntegrator::energy(const Vector<double> &u) const
+  {
+    double energy = 0.;
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      {
+        const auto    &dofs = pairs[i].dof_indices;
+        Vector<double> local(dofs.size());
+        for (unsigned int k = 0; k < dofs.size(); ++k)
+          local(k) = u(dofs[k]);
+        energy += 0.5 * matrices[i].matrix_norm_square(local);
+      }
+    return energy;
+  }
+
+  void
+  InterfaceIntegrator::write_csv(const types::boundary_id boundary_id,
+                                 const Vector<double>    &u,
+                                 const std::string       &filename) const
+  {
+    std::ofstream out(filename);
+    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+    out << "face,node,r,z,relative_s,relative_n,relative_theta,traction_n,"
+           "traction_s,traction_theta\n"
+        << std::setprecision(12);
+    unsigned int face = 0;
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      {
+        const InterfacePair &pair = pairs[i];
+        if (pair.boundary_id != boundary_id)
+          continue;
+        const unsigned int n_nodes = pair.nodes.size();
+        for (unsigned int k = 0; k < n_nodes; ++k)
+          {
+            Tensor<1, 2> jump;
+            for (unsigned int c = 0; c < 2; ++c)
+              jump[c] = u(pair.dof_indices[3 * (n_nodes + k) + c]) -
+                        u(pair.dof_indices[3 * k + c]);
+            const double d_s = jump * pair.tangent, d_n = jump * pair.normal;
+            const double d_t = u(pair.dof_indices[3 * (n_nodes + k) + 2]) -
+                               u(pair.dof_indices[3 * k + 2]);
+            out << face << ',' << k << ',' << pair.nodes[k][0] << ','
+                << pair.nodes[k][1] << ',' << d_s << ',' << d_n << ',' << d_t
+                << ',' << stiffness[i].normal * d_n << ','
+                << stiffness[i].shear * d_s << ',' << stiffness[i].shear * d_t
+                << '\n';
+          }
+        ++face;
+      }
+    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+  }
+
+  void
+  interface_matrix_command(const std::vector<std::string> &arguments,
+                           std::ostream                   &out)
+  {
+    const std::string what = "--interface-matrix: ";
+    const auto number = [&](const std::string &key, const std::string &text) {
+      const std::string t   = Utilities::trim(text);
+      char             *end = nullptr;
+      const double      v   = std::strtod(t.c_str(), &end);
+      AssertThrow(!t.empty() && end == t.c_str() + t.size() && std::isfinite(v),
+                  ExcMessage(what + key + ": '" + t + "' is not a number"));
+      return v;
+    };
+    std::map<std::string, std::string> given;
+    for (const std::string &argument : arguments)
+      {
+        const auto eq = argument.find('=');
+        AssertThrow(eq != std::string::npos,
+                    ExcMessage(what + "'" + argument + "' is not key=value"));
+        const std::string                  key  = argument.substr(0, eq);
+        static const std::set<std::string> keys = {
+          "p", "n", "family", "r", "z", "kn", "ks"};
+        AssertThrow(keys.count(key) == 1,
+                    ExcMessage(what + "unknown key '" + key +
+                               "' (expected p, n, family, r, z, kn, ks)"));
+        AssertThrow(given.count(key) == 0,
+                    ExcMessage(what + key + " given twice"));
+        given[key] = argument.substr(eq + 1);
+      }
+    for (const char *key : {"p", "r", "z", "kn", "ks"})
+      AssertThrow(given.count(key),
+                  ExcMessage(what + "missing " + key +
+                             "= (usage: p=2 n=1 family=sym r=0.5,0.5,0.5 "
+                             "z=0,0.5,1 kn=1e10 ks=1e10)"));
+    const double p = number("p", given["p"]);
+    AssertThrow(p == 2. || p == 4., ExcMessage(what + "p must be 2 or 4"));
+    Harmonic harmonic;
+    if (given.count("n"))
+      {
+        const double n = number("n", given["n"]);
+        AssertThrow(n >= 0. && n == std::floor(n) && n < 1e6,
+                    ExcMessage(what + "n must be an integer >= 0"));
+        harmonic.n = static_cast<unsigned int>(n);
+      }
+    if (given.count("family"))
+      {
+        try
+          {
+            harmonic.family = family_from_string(given["family"]);
+          }
+        catch (...)
+          {
+            AssertThrow(false,
+                        ExcMessage(what + "family must be sym or anti, not '" +
+                                   given["family"] + "'"));
+          }
+      }
+    const auto list = [&](const std::string &key) {
+      std::vector<double> values;
+      for (const std::string &s : Utilities::split_string_list(given[key]))
+        values.push_back(number(key, s));
+      AssertThrow(values.size() == static_cast<unsigned int>(p) + 1,
+                  ExcMessage(what + key + " needs p+1 = " +
+                             std::to_string(static_cast<int>(p) + 1) +
+                             " values"));
+      return values;
+    };
+    const std::vector<double> r = list("r"), z = list("z");
+    std::vector<Point<2>>     nodes;
+    for (unsigned int k = 0; k < r.size(); ++k)
+      nodes.emplace_back(r[k], z[k]);
+    const InterfaceStiffness k{number("kn", given["kn"]),
+                               number("ks", given["ks"])};
+    print_interface_matrix(
+      out, interface_matrix(static_cast<unsigned int>(p), nodes, k, harmonic));
+  }
+} // namespace FourierSSI

@@ -1,0 +1,563 @@
+#include <algorithm>
+#include <cmath>
+#include <deal.II/base/utilities.h>
+#include <deal.II/fe/fe.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/tria_description.h>
+#include <fourier_ssi/interface_pairing.h>
+#include <numeric>
+#include <sstream>
+
+namespace FourierSSI
+{
+  namespace
+  {
+    std::string
+    point_text(const Point<2> &x)
+    {
+      std::ostringstream out;
+      out << "(r, z) = (" << x[0] << ", " << x[1] << ")";
+      return out.str();
+    }
+
+    double
+    to_double(const std::string &text, const std::string &entry)
+    {
+      const std::string t   = Utilities::trim(text);
+      char             *end = nullptr;
+      const double      v   = std::strtod(t.c_str(), &end);
+      AssertThrow(!t.empty() && end == t.c_str() + t.size() && std::isfinite(v),
+                  ExcMessage(entry + ": '" + t + "' is not a number"));
+      return v;
+    }
+
+    types::boundary_id
+    to_boundary_id(const std::string &text, const std::string &entry)
+    {
+      const double v = to_double(text, entry);
+      AssertThrow(v >= 0. && v < 255. && v == std::floor(v),
+                  ExcMessage(entry + ": boundary id '" + Utilities::trim(text) +
+                             "' is not an integer in [0, 254]"));
+      return static_cast<types::boundary_id>(v);
+    }
+  } // namespace
+
+  void
+  InterfaceParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Interfaces");
+    prm.declare_entry(
+      "Interfaces",
+      "",
+      Patterns::Anything(),
+      "Zero-thickness interfaces by boundary id (the id carried by the faces "
+      "on both sides of a double-node line), separated by ';': 'id: rough' "
+      "(kn = ks = 1e10 kPa/m), 'id: smooth' (kn = 1e10, ks = 0), "
+      "'id: kn=1e8, ks=0', or 'id: vermeer, mu=50[, material=m]' (Van Langen "
+      "& Vermeer 1991: ks = mu G/l, kn = mu G/((1-2nu) l), G and nu of "
+      "material m or of the side with the lower G, l the mean face length). "
+      "Empty: no interface.");
+    prm.declare_entry("Pairing tolerance",
+                      "1e-8",
+                      Patterns::Double(0.),
+                      "Twin faces and nodes must coincide within this "
+                      "fraction of the face length.");
+    prm.leave_subsection();
+  }
+
+  void
+  InterfaceParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Interfaces");
+    laws              = parse_list(prm.get("Interfaces"));
+    pairing_tolerance = prm.get_double("Pairing tolerance");
+    prm.leave_subsection();
+  }
+
+  std::map<types::boundary_id, InterfaceLaw>
+  InterfaceParameters::parse_list(const std::string &text)
+  {
+    const std::string                          entry = "Interfaces/Interfaces";
+    std::map<types::boundary_id, InterfaceLaw> result;
+    for (const std::string &item : Utilities::split_string_list(text, ';'))
+      {
+        const auto colon = item.find(':');
+        AssertThrow(colon != std::string::npos,
+                    ExcMessage(entry + ": '" + item + "' lacks 'id:'"));
+        const types::boundary_id id =
+          to_boundary_id(item.substr(0, colon), entry);
+        AssertThrow(result.count(id) == 0,
+                    ExcMessage(entry + ": boundary id " + std::to_string(id) +
+                               " given twice"));
+        InterfaceLaw law;
+        bool preset = false, has_kn = false, has_ks = false, has_mu = false,
+             has_material = false;
+        for (const std::string &token :
+             Utilities::split_string_list(item.substr(colon + 1), ','))
+          {
+            const auto eq = token.find('=');
+            if (eq == std::string::npos)
+              {
+                AssertThrow(!preset,
+                            ExcMessage(entry + ": two laws for boundary id " +
+                                       std::to_string(id)));
+                preset = true;
+                if (token == "rough")
+                  law.normal = law.shear = 1e10;
+                else if (token == "smooth")
+                  law.normal = 1e10, law.shear = 0.;
+                else if (token == "vermeer")
+                  law.vermeer = true;
+                else
+                  AssertThrow(false,
+                              ExcMessage(entry + ": unknown law '" + token +
+                                         "' (expected rough, smooth, vermeer "
+                                         "or kn=..., ks=...)"));
+                continue;
+              }
+            const std::string key   = Utilities::trim(token.substr(0, eq));
+            const double      value = to_double(token.substr(eq + 1), entry);
+            AssertThrow(value >= 0.,
+                        ExcMessage(entry + ": " + key + " must be >= 0 in '" +
+                                   item + "'"));
+            if (key == "kn")
+              law.normal = value, has_kn = true;
+            else if (key == "ks")
+              law.shear = value, has_ks = true;
+            else if (key == "mu")
+              law.mu = value, has_mu = true;
+            else if (key == "material")
+              law.material = static_cast<int>(value), has_material = true;
+            else
+              AssertThrow(false,
+                          ExcMessage(entry + ": unknown key '" + key +
+                                     "' (expected kn, ks, mu or material)"));
+          }
+        const std::string where = " for boundary id " + std::to_string(id);
+        if (law.vermeer)
+          {
+            AssertThrow(has_mu && law.mu > 0. && !has_kn && !has_ks,
+                        ExcMessage(entry +
+                                   ": vermeer needs mu > 0 and no kn/ks" +
+                                   where));
+          }
+        else if (preset)
+          {
+            AssertThrow(!has_kn && !has_ks && !has_mu && !has_material,
+                        ExcMessage(entry + ": a preset takes no kn/ks/mu" +
+                                   where));
+          }
+        else
+          {
+            AssertThrow(has_kn && has_ks && !has_mu && !has_material,
+                        ExcMessage(entry +
+                                   ": give both kn and ks (or rough, "
+                                   "smooth, vermeer)" +
+                                   where));
+          }
+        result[id] = law;
+      }
+    return result;
+  }
+
+  std::vector<InterfaceLine>
+  parse_interface_lines(const std::string &text)
+  {
+    const std::string          entry = "Mesh/Interface lines";
+    std::vector<InterfaceLine> lines;
+    for (const std::string &item : Utilities::split_string_list(text, ';'))
+      {
+        const auto colon = item.find(':');
+        AssertThrow(colon != std::string::npos,
+                    ExcMessage(entry + ": '" + item + "' lacks 'id:'"));
+        InterfaceLine line;
+        line.boundary_id = to_boundary_id(item.substr(0, colon), entry);
+        bool has_value = false, has_range = false;
+        int  value_coordinate = -1, range_coordinate = -1;
+        for (const std::string &token :
+             Utilities::split_string_list(item.substr(colon + 1), ','))
+          {
+            const auto eq = token.find('=');
+            AssertThrow(eq != std::string::npos,
+                        ExcMessage(entry + ": '" + token +
+                                   "' is not r=... "
+                                   "or z=..."));
+            const std::string key = Utilities::trim(token.substr(0, eq));
+            AssertThrow(key == "r" || key == "z",
+                        ExcMessage(entry + ": unknown coordinate '" + key +
+                                   "' in '" + item + "'"));
+            const int         c    = key == "r" ? 0 : 1;
+            const std::string rhs  = token.substr(eq + 1);
+            const auto        dots = rhs.find("..");
+            if (dots == std::string::npos)
+              {
+                AssertThrow(!has_value,
+                            ExcMessage(entry + ": two fixed coordinates in '" +
+                                       item + "'"));
+                line.value       = to_double(rhs, entry);
+                value_coordinate = c;
+                has_value        = true;
+              }
+            else
+              {
+                AssertThrow(!has_range,
+                            ExcMessage(entry + ": two ranges in '" + item +
+                                       "'"));
+                line.from        = to_double(rhs.substr(0, dots), entry);
+                line.to          = to_double(rhs.substr(dots + 2), entry);
+                range_coordinate = c;
+                has_range        = true;
+              }
+          }
+        AssertThrow(has_value && has_range &&
+                      value_coordinate != range_coordinate,
+                    ExcMessage(entry + ": '" + item +
+                               "' must be 'r=a, z=b..c' or 'z=a, r=b..c'"));
+        if (line.from > line.to)
+          std::swap(line.from, line.to);
+        AssertThrow(line.to > line.from,
+                    ExcMessage(entry + ": empty range in '" + item + "'"));
+        line.fixed_coordinate = value_coordinate;
+        lines.push_back(line);
+      }
+    return lines;
+  }
+
+  void
+  split_along_interface_lines(Triangulation<2>                 &triangulation,
+                              const std::vector<InterfaceLine> &lines,
+                              const std::vector<double>        &r_breakpoints,
+                              const std::vector<double>        &z_breakpoints)
+  {
+    const std::string entry = "Mesh/Interface lines";
+    AssertThrow(triangulation.n_levels() == 1,
+                ExcMessage(entry + ": the mesh must not be refined yet"));
+    const double extent =
+      std::max(r_breakpoints.back() - r_breakpoints.front(),
+               z_breakpoints.back() - z_breakpoints.front());
+    const double               tol            = 1e-10 * extent;
+    const std::vector<double> *breakpoints[2] = {&r_breakpoints,
+                                                 &z_breakpoints};
+    const auto on_breakpoint = [&](const unsigned int c, const double x) {
+      for (const double b : *breakpoints[c])
+        if (std::abs(b - x) <= tol)
+          return true;
+      return false;
+    };
+    const char *name[2] = {"r", "z"};
+    for (const InterfaceLine &line : lines)
+      {
+        const unsigned int c = line.fixed_coordinate, o = 1 - c;
+        std::ostringstream text;
+        text << "line " << line.boundary_id << ": " << name[c] << "="
+             << line.value << ", " << name[o] << "=" << line.from << ".."
+             << line.to;
+        AssertThrow(on_breakpoint(c, line.value) &&
+                      on_breakpoint(o, line.from) && on_breakpoint(o, line.to),
+                    ExcMessage(entry + ": " + text.str() +
+                               " is not on the mesh breakpoints (" + name[c] +
+                               " and both ends of the " + name[o] +
+                               " range must be " + name[c] + "/" + name[o] +
+                               " breakpoints)"));
+        AssertThrow(line.value > breakpoints[c]->front() + tol &&
+                      line.value < breakpoints[c]->back() - tol &&
+                      line.from >= breakpoints[o]->front() - tol &&
+                      line.to <= breakpoints[o]->back() + tol,
+                    ExcMessage(entry + ": " + text.str() +
+                               " is on the mesh boundary or outside it"));
+      }
+
+    // The coarse cells and their vertices.
+    std::vector<Point<2>> vertices   = triangulation.get_vertices();
+    const unsigned int    n_original = vertices.size();
+    std::vector<std::array<unsigned int, 4>> cell_vertices;
+    std::vector<types::material_id>          materials;
+    std::map<std::pair<unsigned int, unsigned int>, types::boundary_id>
+               boundary_ids, interface_ids;
+    const auto key = [](unsigned int a, unsigned int b) {
+      return std::make_pair(std::min(a, b), std::max(a, b));
+    };
+    const auto on_line = [&](const InterfaceLine &line, const Point<2> &x) {
+      const unsigned int c = line.fixed_coordinate, o = 1 - c;
+      return std::abs(x[c] - line.value) <= tol && x[o] >= line.from - tol &&
+             x[o] <= line.to + tol;
+    };
+    std::vector<unsigned int> faces_on_line(lines.size(), 0);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      {
+        std::array<unsigned int, 4> v;
+        for (unsigned int i = 0; i < 4; ++i)
+          v[i] = cell->vertex_index(i);
+        cell_vertices.push_back(v);
+        materials.push_back(cell->material_id());
+        for (const unsigned int f : cell->face_indices())
+          {
+            const auto         face = cell->face(f);
+            const unsigned int a    = face->vertex_index(0),
+                               b    = face->vertex_index(1);
+            if (face->at_boundary())
+              {
+                boundary_ids[key(a, b)] = face->boundary_id();
+                continue;
+              }
+            for (unsigned int l = 0; l < lines.size(); ++l)
+              if (on_line(lines[l], vertices[a]) &&
+                  on_line(lines[l], vertices[b]))
+                {
+                  interface_ids[key(a, b)] = lines[l].boundary_id;
+                  ++faces_on_line[l];
+                }
+          }
+      }
+    for (unsigned int l = 0; l < lines.size(); ++l)
+      AssertThrow(faces_on_line[l] > 0,
+                  ExcMessage(entry + ": line " +
+                             std::to_string(lines[l].boundary_id) +
+                             " runs along no interior mesh face"));
+
+    // Cells around each vertex of an interface face, grouped into the sets
+    // that stay connected through non-interface faces; every set but the
+    // first gets its own copy of the vertex.
+    std::map<unsigned int, std::vector<unsigned int>> cells_at;
+    for (unsigned int c = 0; c < cell_vertices.size(); ++c)
+      for (const unsigned int v : cell_vertices[c])
+        cells_at[v].push_back(c);
+    std::set<unsigned int> split_vertices;
+    for (const auto &[edge, id] : interface_ids)
+      for (const unsigned int v : {edge.first, edge.second})
+        if (vertices[v][0] > tol) // not on the axis
+          split_vertices.insert(v);
+    // Cell edges (as vertex pairs) in deal.II's face numbering.
+    const auto edges_of = [&](const unsigned int c) {
+      const auto &v = cell_vertices[c];
+      return std::array<std::pair<unsigned int, unsigned int>, 4>{
+        {key(v[0], v[2]), key(v[1], v[3]), key(v[0], v[1]), key(v[2], v[3])}};
+    };
+    std::vector<unsigned int> original_of(n_original);
+    std::iota(original_of.begin(), original_of.end(), 0u);
+    for (const unsigned int v : split_vertices)
+      {
+        const std::vector<unsigned int> &around = cells_at[v];
+        std::vector<unsigned int>        group(around.size());
+        std::iota(group.begin(), group.end(), 0u);
+        const std::function<unsigned int(unsigned int)> find =
+          [&](unsigned int i) {
+            return group[i] == i ? i : group[i] = find(group[i]);
+          };
+        for (unsigned int i = 0; i < around.size(); ++i)
+          for (unsigned int j = i + 1; j < around.size(); ++j)
+            for (const auto &e : edges_of(around[i]))
+              {
+                if ((e.first != v && e.second != v) || interface_ids.count(e))
+                  continue;
+                const auto other = edges_of(around[j]);
+                if (std::find(other.begin(), other.end(), e) != other.end())
+                  group[find(i)] = find(j);
+              }
+        std::map<unsigned int, unsigned int> copy_of_group;
+        for (unsigned int i = 0; i < around.size(); ++i)
+          {
+            const unsigned int g = find(i);
+            if (copy_of_group.empty())
+              copy_of_group[g] = v;
+            if (copy_of_group.count(g) == 0)
+              {
+                copy_of_group[g] = vertices.size();
+                vertices.push_back(vertices[v]);
+                original_of.push_back(v);
+              }
+            for (unsigned int &w : cell_vertices[around[i]])
+              if (w == v)
+                w = copy_of_group[g];
+          }
+      }
+
+    std::vector<CellData<2>> cells(cell_vertices.size());
+    for (unsigned int c = 0; c < cells.size(); ++c)
+      {
+        cells[c].vertices = {cell_vertices[c].begin(), cell_vertices[c].end()};
+        cells[c].material_id = materials[c];
+      }
+    triangulation.clear();
+    triangulation.create_triangulation(vertices, cells, SubCellData());
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary())
+          {
+            const auto k = key(original_of[face->vertex_index(0)],
+                               original_of[face->vertex_index(1)]);
+            const auto i = interface_ids.find(k);
+            if (i != interface_ids.end())
+              face->set_boundary_id(i->second);
+            else
+              face->set_boundary_id(boundary_ids.at(k));
+          }
+  }
+
+  std::vector<InterfacePair>
+  pair_interface_faces(const DoFHandler<2>                   &dof_handler,
+                       const std::vector<types::boundary_id> &ids,
+                       const double                           tolerance)
+  {
+    struct FaceRecord
+    {
+      DoFHandler<2>::active_cell_iterator cell;
+      unsigned int                        face_no;
+      Point<2>                            a, b, center;
+      double                              length;
+    };
+    const std::string          entry = "Interfaces/Interfaces";
+    const FiniteElement<2>    &fe    = dof_handler.get_fe();
+    const unsigned int         p     = fe.degree;
+    const MappingQ1<2>         mapping;
+    std::vector<InterfacePair> pairs;
+
+    for (const types::boundary_id id : ids)
+      {
+        std::vector<FaceRecord> faces;
+        for (const auto &cell : dof_handler.active_cell_iterators())
+          for (const unsigned int f : cell->face_indices())
+            if (cell->face(f)->at_boundary() &&
+                cell->face(f)->boundary_id() == id)
+              {
+                const auto face = cell->face(f);
+                faces.push_back({cell,
+                                 f,
+                                 face->vertex(0),
+                                 face->vertex(1),
+                                 face->center(),
+                                 face->vertex(0).distance(face->vertex(1))});
+              }
+        AssertThrow(!faces.empty(),
+                    ExcMessage(entry + ": boundary id " + std::to_string(id) +
+                               " does not exist on the mesh"));
+        std::vector<unsigned int> order(faces.size());
+        std::iota(order.begin(), order.end(), 0u);
+        std::sort(order.begin(),
+                  order.end(),
+                  [&](unsigned int i, unsigned int j) {
+                    return faces[i].center[0] < faces[j].center[0];
+                  });
+        std::vector<double> sorted_r(faces.size());
+        for (unsigned int k = 0; k < order.size(); ++k)
+          sorted_r[k] = faces[order[k]].center[0];
+        std::vector<int> twin(faces.size(), -1);
+
+        for (unsigned int i = 0; i < faces.size(); ++i)
+          {
+            const FaceRecord &fi    = faces[i];
+            const double      tol   = tolerance * fi.length;
+            const std::string where = "interface " + std::to_string(id) +
+                                      ": the face at " + point_text(fi.center);
+            int        found = -1;
+            const auto begin = std::lower_bound(sorted_r.begin(),
+                                                sorted_r.end(),
+                                                fi.center[0] - tol);
+            for (auto k = begin - sorted_r.begin();
+                 k < static_cast<long>(order.size()) &&
+                 sorted_r[k] <= fi.center[0] + tol;
+                 ++k)
+              {
+                const unsigned int j = order[k];
+                if (j == i)
+                  continue;
+                const FaceRecord &fj = faces[j];
+                const bool        same =
+                  (fi.a.distance(fj.a) <= tol && fi.b.distance(fj.b) <= tol) ||
+                  (fi.a.distance(fj.b) <= tol && fi.b.distance(fj.a) <= tol);
+                if (!same)
+                  continue;
+                AssertThrow(found < 0,
+                            ExcMessage(entry + ": " + where +
+                                       " has more than one twin (ambiguous "
+                                       "pairing)"));
+                AssertThrow(fj.cell != fi.cell,
+                            ExcMessage(
+                              entry + ": " + where +
+                              " coincides with a face of its own cell"));
+                found = j;
+              }
+            AssertThrow(found >= 0,
+                        ExcMessage(
+                          entry + ": " + where +
+                          " has no twin (both sides must carry the id, "
+                          "have double nodes and be refined alike)"));
+            twin[i] = found;
+          }
+
+        for (unsigned int i = 0; i < faces.size(); ++i)
+          {
+            const unsigned int j = twin[i];
+            AssertThrow(twin[j] == static_cast<int>(i),
+                        ExcMessage(entry + ": interface " + std::to_string(id) +
+                                   ": the face at " +
+                                   point_text(faces[i].center) +
+                                   " is paired twice"));
+            if (j < i)
+              continue;
+            InterfacePair pair;
+            pair.boundary_id         = id;
+            pair.center              = faces[i].center;
+            pair.length              = faces[i].length;
+            const Tensor<1, 2> along = (faces[i].b - faces[i].a) / pair.length;
+            Tensor<1, 2>       n;
+            n[0] = -along[1];
+            n[1] = along[0];
+            if (n[1] < -1e-12 || (std::abs(n[1]) <= 1e-12 && n[0] < 0.))
+              n = -n;
+            pair.normal     = n;
+            pair.tangent[0] = n[1];
+            pair.tangent[1] = -n[0];
+            // Side A is the one the normal points away from.
+            unsigned int a = i, b = j;
+            if ((faces[i].cell->center() - pair.center) * n > 0.)
+              std::swap(a, b);
+            pair.material_a = faces[a].cell->material_id();
+            pair.material_b = faces[b].cell->material_id();
+            const Point<2> start =
+              (faces[i].a - pair.center) * pair.tangent < 0. ? faces[i].a :
+                                                               faces[i].b;
+            for (unsigned int k = 0; k <= p; ++k)
+              pair.nodes.push_back(start +
+                                   (pair.length * k / p) * pair.tangent);
+
+            pair.dof_indices.assign(6 * (p + 1), numbers::invalid_dof_index);
+            const double tol = tolerance * pair.length;
+            for (unsigned int side = 0; side < 2; ++side)
+              {
+                const FaceRecord &face = faces[side == 0 ? a : b];
+                std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+                face.cell->get_dof_indices(dofs);
+                for (unsigned int d = 0; d < fe.n_dofs_per_cell(); ++d)
+                  {
+                    if (!fe.has_support_on_face(d, face.face_no))
+                      continue;
+                    const Point<2> x = mapping.transform_unit_to_real_cell(
+                      face.cell, fe.get_unit_support_points()[d]);
+                    const double t = (x - start) * pair.tangent / pair.length;
+                    const long   k = std::lround(t * p);
+                    AssertThrow(k >= 0 && k <= static_cast<long>(p) &&
+                                  x.distance(pair.nodes[k]) <= tol,
+                                ExcMessage(
+                                  entry + ": interface " + std::to_string(id) +
+                                  ": a node of the face at " +
+                                  point_text(pair.center) +
+                                  " is not on its equidistant layout"));
+                    const unsigned int c =
+                      fe.system_to_component_index(d).first;
+                    pair.dof_indices[3 * ((p + 1) * side + k) + c] = dofs[d];
+                  }
+              }
+            for (const auto d : pair.dof_indices)
+              AssertThrow(d != numbers::invalid_dof_index,
+                          ExcMessage(
+                            entry + ": interface " + std::to_string(id) +
+                            ": cannot match the nodes of the face at " +
+                            point_text(pair.center)));
+            pairs.push_back(std::move(pair));
+          }
+      }
+    return pairs;
+  }
+} // namespace FourierSSI
