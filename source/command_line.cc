@@ -61,8 +61,9 @@ namespace FourierSSI
           }
         if (argc > 1 && std::string(argv[1]) == "--interface-matrix")
           {
-            interface_matrix_command(
-              std::vector<std::string>(argv + 2, argv + argc), std::cout);
+            interface_matrix_command(std::vector<std::string>(argv + 2,
+                                                              argv + argc),
+                                     std::cout);
             return 0;
           }
         if (argc > 2)

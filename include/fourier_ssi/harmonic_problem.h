@@ -157,7 +157,7 @@ namespace FourierSSI
     double                             axis_tolerance;
     std::unique_ptr<FunctionParser<2>> body_force;
     std::map<types::boundary_id, std::unique_ptr<FunctionParser<2>>> tractions;
-    std::unique_ptr<InterfaceIntegrator> interfaces;
+    std::unique_ptr<InterfaceIntegrator>                             interfaces;
   };
 } // namespace FourierSSI
 

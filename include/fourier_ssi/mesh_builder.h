@@ -63,13 +63,13 @@ namespace FourierSSI
     void
     build(Triangulation<2> &triangulation) const;
 
-    std::string               type = "rectangle";
-    std::vector<double>       r_breakpoints, z_breakpoints, r_growth, z_growth;
-    std::vector<unsigned int> r_cells, z_cells;
-    double                    surface_patch_radius = 0.;
-    double                    distortion           = 0.;
-    unsigned int              global_refinements   = 0;
-    std::string               mesh_file;
+    std::string                type = "rectangle";
+    std::vector<double>        r_breakpoints, z_breakpoints, r_growth, z_growth;
+    std::vector<unsigned int>  r_cells, z_cells;
+    double                     surface_patch_radius = 0.;
+    double                     distortion           = 0.;
+    unsigned int               global_refinements   = 0;
+    std::string                mesh_file;
     std::vector<InterfaceLine> interface_lines;
   };
 } // namespace FourierSSI
