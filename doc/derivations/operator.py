@@ -507,9 +507,9 @@ def divergence_3d(nn, family, U, V, W, lam_f, mu_f):
         for j in range(3):
             for a in range(3):
                 div[i] += sp.diff(sig[i, j], q[a]) * Jinv[a, j]
-    comps = [sp.simplify(er.dot(div)), sp.simplify(ez.dot(div)), sp.simplify(et.dot(div))]
+    comps = [er.dot(div), ez.dot(div), et.dot(div)]
     Rot = sp.Matrix.hstack(er, ez, et)
-    eps_cyl = sp.simplify(Rot.T * eps * Rot)
+    eps_cyl = Rot.T * eps * Rot
     return comps, eps_cyl
 
 
@@ -526,8 +526,17 @@ def equilibrium_general(family):
     M = sp.Function('mu_')(r, z)
     comps, eps_cyl = divergence_3d(n, family, Uf, Vf, Wf, L, M)
     tu, tv, tw = trig_factors(n, family)
-    amps = [sp.simplify(cpt / t) for cpt, t in zip(comps, (tu, tv, tw))]
-    _equilibrium_cache[family] = (amps, eps_cyl, L, M)
+    # component = A * T(n theta) (verified in section e for n = 0..4 with
+    # expand_trig); extract A at theta = 0: T = cos -> value, T = sin ->
+    # d/dtheta / n.  Avoids a costly simplify with symbolic n.
+    amps = []
+    for cpt, t in zip(comps, (tu, tv, tw)):
+        if t == sp.cos(n * th):
+            a = cpt.subs(th, 0)
+        else:
+            a = sp.diff(cpt, th).subs(th, 0) / n
+        amps.append(sp.expand(a.doit()))
+    _equilibrium_cache[family] = (amps, comps, eps_cyl, L, M)
     return _equilibrium_cache[family]
 
 
@@ -536,7 +545,7 @@ def equilibrium_amplitudes(nn, family, U, V, W, lam_val, mu_val):
     U, V, W (sympy expressions in r, z), harmonic nn, family, constant or
     (r, z)-dependent Lame parameters.  The body force of an exact solution is
     f = -A.  Derived in 3D (section e), not from B."""
-    amps, _, L, M = equilibrium_general(family)
+    amps, _, _, L, M = equilibrium_general(family)
     out = []
     for a in amps:
         a = a.subs(n, nn)
@@ -559,11 +568,15 @@ def pretty_derivatives(expr):
 def section_e(Bs):
     print('\n=== e. equilibrium equations from full 3D ===')
     for fam in FAMILIES:
-        amps, eps_cyl, L, M = equilibrium_general(fam)
+        amps, comps, eps_cyl, L, M = equilibrium_general(fam)
         tu, tv, tw = trig_factors(n, fam)
         ok = all(sp.diff(a, th) == 0 for a in amps)
-        check(ok, f'{fam}: div(sigma) components (r, z, theta) carry the trig '
-                  f'factors of (u, v, w)')
+        for nn in range(0, 5):
+            for cpt, a, t in zip(comps, amps, (tu, tv, tw)):
+                d = sp.expand(sp.expand_trig((cpt - a * t).subs(n, nn).doit()))
+                ok &= sp.simplify(d) == 0
+        check(ok, f'{fam}: div(sigma) components (r, z, theta) = amplitude(r, z) * '
+                  f'trig factor of (u, v, w), n = 0..4')
         # the 3D strain tensor reproduces thesis eq 3.3 (engineering shears)
         eps33 = strains_33(Uf * tu, Vf * tv, Wf * tw)
         # eps_cyl basis order (r, z, theta)
