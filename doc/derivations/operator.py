@@ -195,6 +195,14 @@ def section_a():
           'B(n, anti) = S B(n, sym) F_W, S = diag(1,1,1,1,-1,-1), F_W: W -> -W '
           '(S^T D S = D for isotropic D, so K_anti = F_W K_sym F_W)')
     check(is_zero(S.T * isotropic_D() * S - isotropic_D()), 'S^T D S = D (isotropic)')
+    # physical meaning: the symmetric field rotated by pi/(2n) about the axis
+    # is the antisymmetric field with W -> -W
+    ok = True
+    for nn in range(1, 5):
+        ts = [t.subs(th, th - sp.pi / (2 * nn)) for t in trig_factors(nn, SYM)]
+        ta = trig_factors(nn, ANTI)
+        ok &= is_zero(ts[0] - ta[0]) and is_zero(ts[1] - ta[1]) and is_zero(ts[2] + ta[2])
+    check(ok, 'symmetric field rotated by pi/(2n) = antisymmetric field with W -> -W (n = 1..4)')
     # n = 0 specialisation
     for fam in FAMILIES:
         B0 = B_matrix(0, fam)
