@@ -43,6 +43,23 @@ namespace FourierSSI
                                           harmonic.n,
                                           "Boundary conditions/Traction");
     axis_tolerance = 1e-10 * GridTools::diameter(triangulation);
+    // Gauss rule exact for the polynomial part of the integrands; the 1/r
+    // terms are smooth on cells away from the axis and integrable on it.
+    cell_values =
+      std::make_unique<FEValues<2>>(*fe,
+                                    QGauss<2>(fe->degree + 2),
+                                    update_values | update_gradients |
+                                      update_quadrature_points |
+                                      update_JxW_values);
+    face_values = std::make_unique<FEFaceValues<2>>(*fe,
+                                                    QGauss<1>(fe->degree + 2),
+                                                    update_values |
+                                                      update_quadrature_points |
+                                                      update_JxW_values);
+    if (parameters.rigid_foundation.enabled)
+      foundation =
+        std::make_unique<RigidFoundation>(parameters.rigid_foundation,
+                                          harmonic);
     if (parameters.interfaces.enabled())
       interfaces = std::make_unique<InterfaceIntegrator>(parameters.interfaces,
                                                          parameters.materials,
@@ -84,6 +101,9 @@ namespace FourierSSI
           constraints,
           ComponentMask(std::vector<bool>(e.given.begin(), e.given.end())));
       }
+    // The rigid foundation first: its motion satisfies the axis conditions.
+    if (foundation)
+      foundation->add_constraints(dof_handler, constraints);
     n_axis_nodes = add_axis_constraints(dof_handler,
                                         harmonic_operator.get_harmonic(),
                                         axis_tolerance,
@@ -112,11 +132,7 @@ namespace FourierSSI
     FullMatrix<double>                                 &matrix,
     Vector<double>                                     *rhs) const
   {
-    const QGauss<2> quadrature(fe->degree + 2);
-    FEValues<2>     fe_values(*fe,
-                          quadrature,
-                          update_values | update_gradients |
-                            update_quadrature_points | update_JxW_values);
+    FEValues<2> &fe_values = *cell_values;
     fe_values.reinit(cell);
     const unsigned int dofs_per_cell = fe->n_dofs_per_cell();
     matrix.reinit(dofs_per_cell, dofs_per_cell);
@@ -190,12 +206,8 @@ namespace FourierSSI
   {
     if (tractions.empty())
       return;
-    const QGauss<1> quadrature(fe->degree + 2);
-    FEFaceValues<2> fe_face_values(*fe,
-                                   quadrature,
-                                   update_values | update_quadrature_points |
-                                     update_JxW_values);
-    Vector<double>  traction(3);
+    FEFaceValues<2> &fe_face_values = *face_values;
+    Vector<double>   traction(3);
     for (const auto f : cell->face_indices())
       {
         if (!cell->face(f)->at_boundary())
@@ -239,6 +251,9 @@ namespace FourierSSI
       }
     if (interfaces)
       interfaces->assemble(constraints, system_matrix, system_rhs);
+    // Foundation loads act on the (unconstrained) master DoFs.
+    if (foundation)
+      foundation->add_loads(system_rhs);
   }
 
   SolverReport

@@ -127,6 +127,7 @@ namespace FourierSSI
     ExactSolutionParameters::declare_parameters(prm);
     OutputParameters::declare_parameters(prm);
     InterfaceParameters::declare_parameters(prm);
+    RigidFoundationParameters::declare_parameters(prm);
   }
 
   void
@@ -140,6 +141,7 @@ namespace FourierSSI
     exact_solution.parse_parameters(prm);
     output.parse_parameters(prm);
     interfaces.parse_parameters(prm);
+    rigid_foundation.parse_parameters(prm);
   }
 
 

@@ -100,6 +100,25 @@ namespace FourierSSI
                                    << " kN.m";
                           }
                       }
+                    if (const RigidFoundation *foundation =
+                          problem.get_foundation())
+                      {
+                        const RigidMotion m =
+                          foundation->motion(problem.get_solution());
+                        add("foundation_horizontal_displacement",
+                            m.horizontal_displacement,
+                            "m");
+                        add("foundation_rotation", m.rotation, "rad");
+                        add("foundation_vertical_displacement",
+                            m.vertical_displacement,
+                            "m");
+                        add("foundation_twist", m.twist, "rad");
+                        line << "\n    foundation: U_h " << std::setprecision(6)
+                             << m.horizontal_displacement << " m, Theta "
+                             << m.rotation << " rad, W "
+                             << m.vertical_displacement << " m, Phi " << m.twist
+                             << " rad";
+                      }
                     if (parameters.exact_solution.enabled)
                       {
                         const ErrorNorms e = problem.compute_errors();

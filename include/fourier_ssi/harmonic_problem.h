@@ -12,6 +12,7 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/sparse_matrix.h>
@@ -21,6 +22,7 @@
 #include <fourier_ssi/interface_integrator.h>
 #include <fourier_ssi/linear_solver.h>
 #include <fourier_ssi/parameters.h>
+#include <fourier_ssi/rigid_foundation.h>
 #include <map>
 #include <memory>
 
@@ -112,6 +114,13 @@ namespace FourierSSI
       return solution;
     }
 
+    /** The rigid foundation, or nullptr if the scene has none. */
+    const RigidFoundation *
+    get_foundation() const
+    {
+      return foundation.get();
+    }
+
     const AffineConstraints<double> &
     get_constraints() const
     {
@@ -145,16 +154,20 @@ namespace FourierSSI
     local_traction(const typename DoFHandler<2>::active_cell_iterator &cell,
                    Vector<double> &rhs) const;
 
-    const AllParameters               &parameters;
-    const HarmonicOperator             harmonic_operator;
-    std::unique_ptr<FESystem<2>>       fe;
-    DoFHandler<2>                      dof_handler;
-    AffineConstraints<double>          constraints;
-    SparsityPattern                    sparsity_pattern;
-    SparseMatrix<double>               system_matrix;
-    Vector<double>                     system_rhs;
-    Vector<double>                     solution;
-    double                             axis_tolerance;
+    const AllParameters             &parameters;
+    const HarmonicOperator           harmonic_operator;
+    std::unique_ptr<FESystem<2>>     fe;
+    DoFHandler<2>                    dof_handler;
+    AffineConstraints<double>        constraints;
+    SparsityPattern                  sparsity_pattern;
+    SparseMatrix<double>             system_matrix;
+    Vector<double>                   system_rhs;
+    Vector<double>                   solution;
+    double                           axis_tolerance;
+    std::unique_ptr<RigidFoundation> foundation;
+    /** Scratch objects of the cell and face loops (serial code). */
+    std::unique_ptr<FEValues<2>>       cell_values;
+    std::unique_ptr<FEFaceValues<2>>   face_values;
     std::unique_ptr<FunctionParser<2>> body_force;
     std::map<types::boundary_id, std::unique_ptr<FunctionParser<2>>> tractions;
     std::unique_ptr<InterfaceIntegrator>                             interfaces;

@@ -12,6 +12,7 @@
 #include <fourier_ssi/linear_solver.h>
 #include <fourier_ssi/material.h>
 #include <fourier_ssi/mesh_builder.h>
+#include <fourier_ssi/rigid_foundation.h>
 #include <string>
 #include <vector>
 
@@ -82,6 +83,7 @@ namespace FourierSSI
     ExactSolutionParameters  exact_solution;
     OutputParameters         output;
     InterfaceParameters      interfaces;
+    RigidFoundationParameters rigid_foundation;
   };
 } // namespace FourierSSI
 

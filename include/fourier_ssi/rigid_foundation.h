@@ -1,0 +1,102 @@
+/**
+ * A rigid foundation as exact rigid-body kinematics (no "very stiff material"
+ * trick): every tied DoF is constrained to the motion of two (n = 1) or one
+ * (n = 0) master DoFs of one foundation node A = (r_A, z_A), r_A > 0.
+ *
+ * Rigid motions per harmonic (doc/theory.md, rigid-body modes), with the
+ * reference point on the axis at elevation z_ref, s = +1 (symmetric) or -1:
+ *   n = 1: U = U_h + Theta (z - z_ref),  W = -s U,  V = -Theta r
+ *          (U_h: horizontal translation, Theta: rotation; symmetric family:
+ *          translation along x, rotation about +y: M_y = M)
+ *   n = 0, symmetric:     U = 0, V = W_v            (vertical translation)
+ *   n = 0, antisymmetric: W = Phi r                 (torsion about z)
+ *   n >= 2: a rigid body does not move (U = V = W = 0).
+ * Loads (H, M), V, T act on the masters through their virtual work:
+ * H dU_h + M dTheta with U_h = U_A + V_A (z_A - z_ref) / r_A,
+ * Theta = -V_A / r_A, i.e. nodal forces H on U_A and (H (z_A - z_ref) - M)/r_A
+ * on V_A. The harmonic system's nodal forces are 3D virtual-work coefficients
+ * (theta weights included), so these are the physical 3D loads.
+ */
+#ifndef fourier_ssi_rigid_foundation_h
+#define fourier_ssi_rigid_foundation_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/vector.h>
+#include <fourier_ssi/harmonic.h>
+#include <string>
+
+namespace FourierSSI
+{
+  using namespace dealii;
+
+  struct RigidFoundationParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    bool         enabled     = false;
+    std::string  tie         = "material"; // "material" or "boundary"
+    unsigned int id          = 1;
+    bool         normal_only = false; // tie only V (a frictionless contact)
+    double       reference_elevation = 0.;
+    double       horizontal_force    = 0.; // H [kN], n = 1
+    double       moment              = 0.; // M [kN.m], n = 1
+    double       vertical_force      = 0.; // V [kN], n = 0 symmetric
+    double       torque              = 0.; // T [kN.m], n = 0 antisymmetric
+  };
+
+  /** The rigid motion read back from a solution. */
+  struct RigidMotion
+  {
+    double horizontal_displacement = 0.; // U_h [m]
+    double rotation                = 0.; // Theta [rad]
+    double vertical_displacement   = 0.; // W_v [m]
+    double twist                   = 0.; // Phi [rad]
+  };
+
+  class RigidFoundation
+  {
+  public:
+    RigidFoundation(const RigidFoundationParameters &parameters,
+                    const Harmonic                  &harmonic);
+
+    /**
+     * Constrain the tied DoFs to the master DoFs. Call before the axis
+     * conditions (a rigid motion satisfies them, so the axis DoFs of the
+     * foundation are simply tied). DoFs already constrained (hanging nodes,
+     * Dirichlet) are left alone. Throws if nothing is tied.
+     */
+    void
+    add_constraints(const DoFHandler<2>       &dof_handler,
+                    AffineConstraints<double> &constraints);
+
+    /** Add the foundation loads of this harmonic to the global load vector. */
+    void
+    add_loads(Vector<double> &rhs) const;
+
+    RigidMotion
+    motion(const Vector<double> &solution) const;
+
+    unsigned int
+    n_tied_dofs() const
+    {
+      return n_tied;
+    }
+
+  private:
+    const RigidFoundationParameters &parameters;
+    const Harmonic                   harmonic;
+    Point<2>                         master_position;
+    types::global_dof_index          master_U = numbers::invalid_dof_index;
+    types::global_dof_index          master_V = numbers::invalid_dof_index;
+    types::global_dof_index          master_W = numbers::invalid_dof_index;
+    unsigned int                     n_tied   = 0;
+  };
+} // namespace FourierSSI
+
+#endif

@@ -1,0 +1,263 @@
+#include <deal.II/fe/fe.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <fourier_ssi/rigid_foundation.h>
+#include <map>
+
+namespace FourierSSI
+{
+  void
+  RigidFoundationParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Rigid foundation");
+    prm.declare_entry("Enabled",
+                      "false",
+                      Patterns::Bool(),
+                      "Tie DoFs to an exact rigid-body motion.");
+    prm.declare_entry("Tie",
+                      "material",
+                      Patterns::Selection("material|boundary"),
+                      "material: all DoFs of cells with material id 'Id' (a "
+                      "rigid footing or pile body); boundary: the DoFs on "
+                      "boundary id 'Id' (a rigid plate in contact).");
+    prm.declare_entry("Id", "1", Patterns::Integer(0, 254), "See 'Tie'.");
+    prm.declare_entry("Tied components",
+                      "all",
+                      Patterns::Selection("all|normal"),
+                      "all: u, v, w follow the rigid motion; normal: only "
+                      "the axial component v (frictionless horizontal "
+                      "contact).");
+    prm.declare_entry("Reference elevation",
+                      "0",
+                      Patterns::Double(),
+                      "z [m] of the point on the axis about which M and "
+                      "Theta are taken (default: ground surface z = 0).");
+    prm.declare_entry("Horizontal force",
+                      "0",
+                      Patterns::Double(),
+                      "H [kN] along x (harmonic 1, symmetric).");
+    prm.declare_entry("Moment",
+                      "0",
+                      Patterns::Double(),
+                      "M [kN.m] about +y through the reference point "
+                      "(harmonic 1, symmetric).");
+    prm.declare_entry("Vertical force",
+                      "0",
+                      Patterns::Double(),
+                      "V [kN] along +z (harmonic 0, symmetric).");
+    prm.declare_entry("Torque",
+                      "0",
+                      Patterns::Double(),
+                      "T [kN.m] about +z (harmonic 0, antisymmetric).");
+    prm.leave_subsection();
+  }
+
+  void
+  RigidFoundationParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Rigid foundation");
+    enabled             = prm.get_bool("Enabled");
+    tie                 = prm.get("Tie");
+    id                  = prm.get_integer("Id");
+    normal_only         = prm.get("Tied components") == "normal";
+    reference_elevation = prm.get_double("Reference elevation");
+    horizontal_force    = prm.get_double("Horizontal force");
+    moment              = prm.get_double("Moment");
+    vertical_force      = prm.get_double("Vertical force");
+    torque              = prm.get_double("Torque");
+    prm.leave_subsection();
+  }
+
+  RigidFoundation::RigidFoundation(const RigidFoundationParameters &parameters,
+                                   const Harmonic                  &harmonic)
+    : parameters(parameters)
+    , harmonic(harmonic)
+  {}
+
+  void
+  RigidFoundation::add_constraints(const DoFHandler<2>       &dof_handler,
+                                   AffineConstraints<double> &constraints)
+  {
+    const FiniteElement<2> &fe = dof_handler.get_fe();
+    const MappingQ1<2>      mapping;
+    const auto             &unit_points = fe.get_unit_support_points();
+    const auto             &face_points = fe.get_unit_face_support_points();
+
+    // Tied nodes: position -> DoF of each component.
+    std::map<std::pair<double, double>, std::array<types::global_dof_index, 3>>
+                                         nodes;
+    std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+    const auto                           record = [&](const Point<2>               &x,
+                            const unsigned int            component,
+                            const types::global_dof_index dof) {
+      auto &entry = nodes
+                      .emplace(std::make_pair(x[0], x[1]),
+                               std::array<types::global_dof_index, 3>{
+                                 {numbers::invalid_dof_index,
+                                  numbers::invalid_dof_index,
+                                  numbers::invalid_dof_index}})
+                      .first->second;
+      entry[component] = dof;
+    };
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        if (parameters.tie == "material")
+          {
+            if (cell->material_id() != parameters.id)
+              continue;
+            cell->get_dof_indices(cell_dofs);
+            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+              record(mapping.transform_unit_to_real_cell(cell, unit_points[i]),
+                     fe.system_to_component_index(i).first,
+                     cell_dofs[i]);
+          }
+        else
+          for (const unsigned int f : cell->face_indices())
+            {
+              if (!cell->face(f)->at_boundary() ||
+                  cell->face(f)->boundary_id() != parameters.id)
+                continue;
+              cell->face(f)->get_dof_indices(face_dofs);
+              for (unsigned int i = 0; i < fe.n_dofs_per_face(); ++i)
+                {
+                  // Face support points mapped through the straight face.
+                  const Point<2> a = cell->face(f)->vertex(0),
+                                 b = cell->face(f)->vertex(1);
+                  const Point<2> x = a + face_points[i][0] * (b - a);
+                  record(x,
+                         fe.face_system_to_component_index(i).first,
+                         face_dofs[i]);
+                }
+            }
+      }
+    AssertThrow(!nodes.empty(),
+                ExcMessage("Rigid foundation: no DoFs found on " +
+                           parameters.tie + " id " +
+                           std::to_string(parameters.id)));
+
+    // Master node: the tied node farthest from the axis whose DoFs are free
+    // (r_A > 0 is needed to read the rotation from V_A = -Theta r_A).
+    double best_r = 0.;
+    for (const auto &[x, dofs] : nodes)
+      if (x.first > best_r && !constraints.is_constrained(dofs[0]) &&
+          !constraints.is_constrained(dofs[1]) &&
+          !constraints.is_constrained(dofs[2]))
+        {
+          best_r          = x.first;
+          master_position = Point<2>(x.first, x.second);
+          master_U        = dofs[0];
+          master_V        = dofs[1];
+          master_W        = dofs[2];
+        }
+    AssertThrow(best_r > 0.,
+                ExcMessage("Rigid foundation: no free tied node off the axis"));
+
+    const double s      = family_sign(harmonic.family);
+    const double r_A    = master_position[0];
+    const double z_A    = master_position[1];
+    const bool   tie_uw = !parameters.normal_only;
+    const auto   tie =
+      [&](const types::global_dof_index dof,
+          const std::vector<std::pair<types::global_dof_index, double>>
+            &entries) {
+        if (dof == numbers::invalid_dof_index ||
+            constraints.is_constrained(dof))
+          return;
+        constraints.add_line(dof);
+        for (const auto &[master, weight] : entries)
+          if (weight != 0.)
+            constraints.add_entry(dof, master, weight);
+        ++n_tied;
+      };
+
+    for (const auto &[x, dofs] : nodes)
+      {
+        const double r = x.first, z = x.second;
+        if (harmonic.n == 1)
+          {
+            // U_j = U_A + V_A (z_A - z_j) / r_A, W_j = -s U_j,
+            // V_j = V_A r_j / r_A.
+            if (dofs[1] != master_V)
+              tie(dofs[1], {{master_V, r / r_A}});
+            if (tie_uw)
+              {
+                if (dofs[0] != master_U)
+                  tie(dofs[0], {{master_U, 1.}, {master_V, (z_A - z) / r_A}});
+                tie(dofs[2],
+                    {{master_U, -s}, {master_V, -s * (z_A - z) / r_A}});
+              }
+          }
+        else if (harmonic.n == 0 && harmonic.family == Family::symmetric)
+          {
+            if (dofs[1] != master_V)
+              tie(dofs[1], {{master_V, 1.}});
+            if (tie_uw)
+              tie(dofs[0], {});
+          }
+        else if (harmonic.n == 0)
+          {
+            if (tie_uw && dofs[2] != master_W)
+              tie(dofs[2], {{master_W, r / r_A}});
+          }
+        else
+          for (unsigned int c = 0; c < 3; ++c)
+            if (c == 1 || tie_uw)
+              tie(dofs[c], {});
+      }
+    // Master DoFs that a harmonic does not move are fixed too.
+    if (harmonic.n >= 2)
+      {
+        tie(master_U, {});
+        tie(master_V, {});
+        tie(master_W, {});
+      }
+    else if (harmonic.n == 0 && harmonic.family == Family::antisymmetric)
+      {
+        if (tie_uw)
+          {
+            tie(master_U, {});
+            tie(master_V, {});
+          }
+      }
+    else if (harmonic.n == 0 && tie_uw)
+      tie(master_U, {});
+  }
+
+  void
+  RigidFoundation::add_loads(Vector<double> &rhs) const
+  {
+    const double r_A = master_position[0];
+    const double z_A = master_position[1] - parameters.reference_elevation;
+    if (harmonic.n == 1 && harmonic.family == Family::symmetric)
+      {
+        rhs(master_U) += parameters.horizontal_force;
+        rhs(master_V) +=
+          (parameters.horizontal_force * z_A - parameters.moment) / r_A;
+      }
+    else if (harmonic.n == 0 && harmonic.family == Family::symmetric)
+      rhs(master_V) += parameters.vertical_force;
+    else if (harmonic.n == 0)
+      rhs(master_W) += parameters.torque / r_A;
+  }
+
+  RigidMotion
+  RigidFoundation::motion(const Vector<double> &solution) const
+  {
+    RigidMotion  m;
+    const double r_A = master_position[0];
+    const double z_A = master_position[1] - parameters.reference_elevation;
+    if (harmonic.n == 1)
+      {
+        m.rotation = -solution(master_V) / r_A;
+        // With only the normal component tied the translation is not a
+        // rigid-body unknown; it stays 0 rather than report a soil value.
+        if (!parameters.normal_only)
+          m.horizontal_displacement = solution(master_U) - m.rotation * z_A;
+      }
+    else if (harmonic.n == 0 && harmonic.family == Family::symmetric)
+      m.vertical_displacement = solution(master_V);
+    else if (harmonic.n == 0)
+      m.twist = solution(master_W) / r_A;
+    return m;
+  }
+} // namespace FourierSSI
