@@ -3,9 +3,11 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
+#include <fourier_ssi/boundary_conditions.h>
 #include <fourier_ssi/interface_pairing.h>
 #include <fourier_ssi/mesh_builder.h>
 #include <fstream>
+#include <set>
 
 namespace FourierSSI
 {
@@ -90,6 +92,19 @@ namespace FourierSSI
                       "0",
                       Patterns::Integer(0, 12),
                       "Uniform refinements of the coarse mesh.");
+    prm.declare_entry("Material regions",
+                      "",
+                      Patterns::Anything(),
+                      "Rectangle only: 'id: r0, r1, z0, z1; ...' gives the "
+                      "cells whose centre lies in each box that material id "
+                      "(later boxes win; default material 0).");
+    prm.declare_entry("Removed regions",
+                      "",
+                      Patterns::Anything(),
+                      "Rectangle only: 'r0, r1, z0, z1; ...' removes the "
+                      "cells whose centre lies in each box (e.g. the air "
+                      "beside a footing standing on the surface); the new "
+                      "boundary faces get id 3 (free surface).");
     prm.declare_entry("Interface lines",
                       "",
                       Patterns::Anything(),
@@ -130,6 +145,33 @@ namespace FourierSSI
     distortion           = prm.get_double("Distortion");
     global_refinements   = prm.get_integer("Global refinements");
     interface_lines      = parse_interface_lines(prm.get("Interface lines"));
+    material_regions.clear();
+    for (const std::string &item :
+         split_top_level(prm.get("Material regions"), ';'))
+      {
+        const auto colon = item.find(':');
+        AssertThrow(colon != std::string::npos,
+                    ExcMessage("Mesh/Material regions: '" + item +
+                               "' lacks 'id:'"));
+        int id = -1;
+        try
+          {
+            id =
+              Utilities::string_to_int(Utilities::trim(item.substr(0, colon)));
+          }
+        catch (...)
+          {}
+        AssertThrow(id >= 0 && id < 255,
+                    ExcMessage("Mesh/Material regions: bad material id in '" +
+                               item + "'"));
+        material_regions.emplace_back(id,
+                                      parse_box(item.substr(colon + 1),
+                                                "Mesh/Material regions"));
+      }
+    removed_regions.clear();
+    for (const std::string &item :
+         split_top_level(prm.get("Removed regions"), ';'))
+      removed_regions.push_back(parse_box(item, "Mesh/Removed regions"));
     prm.leave_subsection();
     AssertThrow(interface_lines.empty() || type == "rectangle",
                 ExcMessage("Mesh/Interface lines: only for Type = rectangle "
@@ -137,6 +179,26 @@ namespace FourierSSI
     if (type == "rectangle")
       AssertThrow(r_breakpoints.front() >= 0.,
                   ExcMessage("Mesh/R breakpoints: r must be >= 0"));
+  }
+
+  BoundingBox<2>
+  parse_box(const std::string &text, const std::string &entry)
+  {
+    std::vector<double> v;
+    try
+      {
+        for (const std::string &x : Utilities::split_string_list(text, ','))
+          v.push_back(Utilities::string_to_double(x));
+      }
+    catch (...)
+      {
+        v.clear();
+      }
+    AssertThrow(v.size() == 4 && v[0] < v[1] && v[2] < v[3],
+                ExcMessage(entry + ": '" + text +
+                           "' is not 'r0, r1, z0, z1' with r0 < r1, z0 < z1"));
+    return BoundingBox<2>(
+      std::make_pair(Point<2>(v[0], v[2]), Point<2>(v[1], v[3])));
   }
 
   void
@@ -167,9 +229,50 @@ namespace FourierSSI
           Point<2>(r_breakpoints.front(), z_breakpoints.front()),
           Point<2>(r_breakpoints.back(), z_breakpoints.back()),
           /*colorize=*/true);
-        // colorize also numbers the material ids; one material here.
+        // colorize also numbers the material ids: reset, then paint the
+        // material regions (cell centres inside a box).
         for (const auto &cell : triangulation.active_cell_iterators())
-          cell->set_material_id(0);
+          {
+            cell->set_material_id(0);
+            for (const auto &[id, box] : material_regions)
+              if (box.point_inside(cell->center()))
+                cell->set_material_id(id);
+          }
+        if (!removed_regions.empty())
+          {
+            std::set<Triangulation<2>::active_cell_iterator> removed;
+            for (const auto &cell : triangulation.active_cell_iterators())
+              for (const auto &box : removed_regions)
+                if (box.point_inside(cell->center()))
+                  removed.insert(cell);
+            AssertThrow(removed.size() < triangulation.n_active_cells(),
+                        ExcMessage("Mesh/Removed regions: every cell removed"));
+            Triangulation<2> full;
+            full.copy_triangulation(triangulation);
+            triangulation.clear();
+            std::set<Triangulation<2>::active_cell_iterator> removed_in_full;
+            for (const auto &cell : full.active_cell_iterators())
+              for (const auto &box : removed_regions)
+                if (box.point_inside(cell->center()))
+                  removed_in_full.insert(cell);
+            GridGenerator::create_triangulation_with_removed_cells(
+              full, removed_in_full, triangulation);
+            // Boundary ids by position (the sketch above); the new faces
+            // left by the removal are free surface (3).
+            const double tol =
+              1e-10 * (r_breakpoints.back() - r_breakpoints.front());
+            for (const auto &cell : triangulation.active_cell_iterators())
+              for (const auto &face : cell->face_iterators())
+                if (face->at_boundary())
+                  {
+                    const Point<2> c = face->center();
+                    face->set_boundary_id(
+                      std::abs(c[0] - r_breakpoints.front()) < tol ? 0 :
+                      std::abs(c[0] - r_breakpoints.back()) < tol  ? 1 :
+                      std::abs(c[1] - z_breakpoints.front()) < tol ? 2 :
+                                                                     3);
+                  }
+          }
         if (!interface_lines.empty())
           split_along_interface_lines(triangulation,
                                       interface_lines,

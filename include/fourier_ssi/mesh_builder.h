@@ -17,6 +17,7 @@
 #ifndef fourier_ssi_mesh_builder_h
 #define fourier_ssi_mesh_builder_h
 
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/grid/tria.h>
 #include <string>
@@ -50,6 +51,10 @@ namespace FourierSSI
     double             value, from, to;
   };
 
+  /** Parse "r0, r1, z0, z1" into a box; `entry` names the .prm entry. */
+  BoundingBox<2>
+  parse_box(const std::string &text, const std::string &entry);
+
   class MeshBuilder
   {
   public:
@@ -63,14 +68,18 @@ namespace FourierSSI
     void
     build(Triangulation<2> &triangulation) const;
 
-    std::string                type = "rectangle";
-    std::vector<double>        r_breakpoints, z_breakpoints, r_growth, z_growth;
-    std::vector<unsigned int>  r_cells, z_cells;
-    double                     surface_patch_radius = 0.;
-    double                     distortion           = 0.;
-    unsigned int               global_refinements   = 0;
-    std::string                mesh_file;
-    std::vector<InterfaceLine> interface_lines;
+    std::string               type = "rectangle";
+    std::vector<double>       r_breakpoints, z_breakpoints, r_growth, z_growth;
+    std::vector<unsigned int> r_cells, z_cells;
+    double                    surface_patch_radius = 0.;
+    double                    distortion           = 0.;
+    unsigned int              global_refinements   = 0;
+    std::string               mesh_file;
+    /** (material id, box) pairs: cells with centre in the box get the id. */
+    std::vector<std::pair<types::material_id, BoundingBox<2>>> material_regions;
+    /** Cells with centre in one of these boxes are removed. */
+    std::vector<BoundingBox<2>> removed_regions;
+    std::vector<InterfaceLine>  interface_lines;
   };
 } // namespace FourierSSI
 
