@@ -5,6 +5,7 @@
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/sparse_direct.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
 #include <fourier_ssi/axis_constraints.h>
@@ -271,6 +272,25 @@ namespace FourierSSI
     setup_system();
     assemble_system();
     return solve();
+  }
+
+  FoundationCoefficients
+  HarmonicProblem::foundation_coefficients() const
+  {
+    AssertThrow(foundation, ExcMessage("Rigid foundation is not enabled"));
+    SparseDirectUMFPACK direct;
+    direct.initialize(system_matrix);
+    std::array<RigidMotion, 2> motions;
+    for (const unsigned int load_case : {0u, 1u})
+      {
+        Vector<double> x =
+          foundation->unit_load(load_case, dof_handler.n_dofs());
+        // The master DoFs are unconstrained: their values are final without
+        // distributing the constraints (which would add Dirichlet data).
+        direct.solve(x);
+        motions[load_case] = foundation->motion(x);
+      }
+    return foundation->coefficients(motions[0], motions[1]);
   }
 
   double

@@ -48,6 +48,23 @@ namespace FourierSSI
                       "0",
                       Patterns::Double(),
                       "T [kN.m] about +z (harmonic 0, antisymmetric).");
+    prm.declare_entry("Stiffness coefficients",
+                      "false",
+                      Patterns::Bool(),
+                      "For n = 1: also solve unit H and unit M and report "
+                      "I_H, I_M, I_MH and K_H, K_M, K_MH (thesis eqs 4.2-4.5), "
+                      "normalised with the two entries below.");
+    prm.declare_entry("Reference shear modulus",
+                      "1",
+                      Patterns::Double(0.),
+                      "G [kPa] of the normalisation: G at depth e for an "
+                      "embedded footing (thesis eq. 4.2), at depth L for a "
+                      "pile (eq. 6.1).");
+    prm.declare_entry("Reference length",
+                      "1",
+                      Patterns::Double(0.),
+                      "Length [m] of the normalisation: footing radius a, pile "
+                      "radius r.");
     prm.leave_subsection();
   }
 
@@ -55,15 +72,21 @@ namespace FourierSSI
   RigidFoundationParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Rigid foundation");
-    enabled             = prm.get_bool("Enabled");
-    tie                 = prm.get("Tie");
-    id                  = prm.get_integer("Id");
-    normal_only         = prm.get("Tied components") == "normal";
-    reference_elevation = prm.get_double("Reference elevation");
-    horizontal_force    = prm.get_double("Horizontal force");
-    moment              = prm.get_double("Moment");
-    vertical_force      = prm.get_double("Vertical force");
-    torque              = prm.get_double("Torque");
+    enabled                 = prm.get_bool("Enabled");
+    tie                     = prm.get("Tie");
+    id                      = prm.get_integer("Id");
+    normal_only             = prm.get("Tied components") == "normal";
+    reference_elevation     = prm.get_double("Reference elevation");
+    horizontal_force        = prm.get_double("Horizontal force");
+    moment                  = prm.get_double("Moment");
+    vertical_force          = prm.get_double("Vertical force");
+    torque                  = prm.get_double("Torque");
+    stiffness_coefficients  = prm.get_bool("Stiffness coefficients");
+    reference_shear_modulus = prm.get_double("Reference shear modulus");
+    reference_length        = prm.get_double("Reference length");
+    AssertThrow(reference_shear_modulus > 0. && reference_length > 0.,
+                ExcMessage("Rigid foundation: 'Reference shear modulus' and "
+                           "'Reference length' must be positive"));
     prm.leave_subsection();
   }
 
@@ -259,5 +282,42 @@ namespace FourierSSI
     else if (harmonic.n == 0)
       m.twist = solution(master_W) / r_A;
     return m;
+  }
+
+  Vector<double>
+  RigidFoundation::unit_load(const unsigned int load_case,
+                             const unsigned int n_dofs) const
+  {
+    AssertThrow(harmonic.n == 1,
+                ExcMessage("Rigid foundation: unit H/M loads need n = 1"));
+    Vector<double> rhs(n_dofs);
+    const double   r_A = master_position[0];
+    const double   z_A = master_position[1] - parameters.reference_elevation;
+    const double   H = load_case == 0 ? 1. : 0., M = load_case == 1 ? 1. : 0.;
+    rhs(master_U) += H;
+    rhs(master_V) += (H * z_A - M) / r_A;
+    return rhs;
+  }
+
+  FoundationCoefficients
+  RigidFoundation::coefficients(const RigidMotion &under_unit_H,
+                                const RigidMotion &under_unit_M) const
+  {
+    const double           G = parameters.reference_shear_modulus;
+    const double           a = parameters.reference_length;
+    FoundationCoefficients c;
+    // Thesis eq. 4.4 with H = 1 (M = 0) and M = 1 (H = 0).
+    c.I_H         = under_unit_H.horizontal_displacement * G * a;
+    c.I_MH_from_H = under_unit_H.rotation * G * a * a;
+    c.I_MH_from_M = under_unit_M.horizontal_displacement * G * a * a;
+    c.I_M         = under_unit_M.rotation * G * a * a * a;
+    // K = I^-1 (eq. 4.5; the printed K_MH lacks the minus sign of the
+    // inverse, see doc/scenes.md).
+    const double I_MH = 0.5 * (c.I_MH_from_H + c.I_MH_from_M);
+    const double det  = c.I_H * c.I_M - I_MH * I_MH;
+    c.K_H             = c.I_M / det;
+    c.K_M             = c.I_H / det;
+    c.K_MH            = -I_MH / det;
+    return c;
   }
 } // namespace FourierSSI

@@ -113,6 +113,26 @@ namespace FourierSSI
                             m.vertical_displacement,
                             "m");
                         add("foundation_twist", m.twist, "rad");
+                        if (parameters.rigid_foundation
+                              .stiffness_coefficients &&
+                            harmonic.n == 1 &&
+                            harmonic.family == Family::symmetric)
+                          {
+                            const FoundationCoefficients c =
+                              problem.foundation_coefficients();
+                            add("I_H", c.I_H, "-");
+                            add("I_M", c.I_M, "-");
+                            add("I_MH_from_H", c.I_MH_from_H, "-");
+                            add("I_MH_from_M", c.I_MH_from_M, "-");
+                            add("K_H", c.K_H, "-");
+                            add("K_M", c.K_M, "-");
+                            add("K_MH", c.K_MH, "-");
+                            line << "\n    stiffness: K_H "
+                                 << std::setprecision(6) << c.K_H << ", K_M "
+                                 << c.K_M << ", K_MH " << c.K_MH
+                                 << " (I_MH from H " << c.I_MH_from_H
+                                 << ", from M " << c.I_MH_from_M << ")";
+                          }
                         line << "\n    foundation: U_h " << std::setprecision(6)
                              << m.horizontal_displacement << " m, Theta "
                              << m.rotation << " rad, W "

@@ -84,6 +84,13 @@ namespace FourierSSI
     SolverReport
     run();
 
+    /**
+     * Stiffness coefficients of the rigid foundation: solves the unit H and
+     * unit M cases with one factorization of the assembled matrix.
+     */
+    FoundationCoefficients
+    foundation_coefficients() const;
+
     /** Half the 3D strain energy product: 1/2 x^T K x (unconstrained K). */
     double
     strain_energy(const Vector<double> &field) const;

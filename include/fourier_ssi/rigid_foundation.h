@@ -48,6 +48,23 @@ namespace FourierSSI
     double       moment              = 0.; // M [kN.m], n = 1
     double       vertical_force      = 0.; // V [kN], n = 0 symmetric
     double       torque              = 0.; // T [kN.m], n = 0 antisymmetric
+    /** Also solve the unit H and unit M cases (thesis eqs 4.2-4.5). */
+    bool   stiffness_coefficients  = false;
+    double reference_shear_modulus = 1.; // G_se (footing) or G_L (pile)
+    double reference_length        = 1.; // a (footing radius) or r (pile)
+  };
+
+  /**
+   * Dimensionless influence and stiffness coefficients of a rigid
+   * foundation under (H, M), thesis eqs 4.2-4.5 (6.1-6.3 for piles):
+   *   [u_H / a, theta]^T = [[I_H, I_MH], [I_MH, I_M]] [H/(G a^2), M/(G a^3)]^T
+   * and K = I^-1. I_MH is read from both load cases (the flexibility matrix
+   * must be symmetric: a check of the whole system).
+   */
+  struct FoundationCoefficients
+  {
+    double I_H = 0., I_M = 0., I_MH_from_H = 0., I_MH_from_M = 0.;
+    double K_H = 0., K_M = 0., K_MH = 0.;
   };
 
   /** The rigid motion read back from a solution. */
@@ -81,6 +98,21 @@ namespace FourierSSI
 
     RigidMotion
     motion(const Vector<double> &solution) const;
+
+    /**
+     * The load vector of a unit horizontal force (load_case 0) or a unit
+     * moment (load_case 1); n = 1 only.
+     */
+    Vector<double>
+    unit_load(const unsigned int load_case, const unsigned int n_dofs) const;
+
+    /**
+     * Influence and stiffness coefficients from the motions (U_h, Theta) under
+     * unit H and under unit M.
+     */
+    FoundationCoefficients
+    coefficients(const RigidMotion &under_unit_H,
+                 const RigidMotion &under_unit_M) const;
 
     unsigned int
     n_tied_dofs() const
