@@ -1,0 +1,253 @@
+#!/usr/bin/python3
+"""Convergence study for Table 4.1 of Hernoune (2007), section 4.2: rotation
+of a rigid circular surface footing (a = 1) under a moment M, reported as
+theta E_s a^3 / M, for nu in {0, 0.1, 0.2, 0.3, 0.4, 0.49} and five contact
+models:
+  bonded  -- "sans interface": soil surface nodes r < a tied to the rigid
+             motion in u, v, w (Tie = boundary, Id = 4);
+  k1e6, k1e8, k1e10 -- rigid block (material 1, 0 <= z <= 0.2) resting on
+             a zero-thickness interface at z = 0 with kn = ks = k [kPa/m];
+  smooth  -- only the normal component tied (frictionless), exact
+             3 (1 - nu^2) / 4 (Poulos & Davis 1974, thesis eq. 4.1).
+Soil: G = 1000 kPa (thesis 4.2: "le module de cisaillement est fixe a 1000"),
+E_s = 2 G (1 + nu); M = 1 kN.m, so theta E_s a^3 / M = theta E_s.
+
+Mesh: domain radius = depth = L (fixed far boundaries), geometric grading
+toward the footing edge (r, z) = (a, 0) with edge cell size h_e on the coarse
+mesh; each run solves 'levels' uniformly refined meshes (Refinement cycles).
+The value is Richardson-extrapolated from the last three levels with the
+observed order.
+
+Usage: benchmarks/table-4-1/run.py [--exe BUILD/fourier-ssi] [--levels 4]
+       [--L 100] [--out benchmarks/table-4-1] [--rows bonded,k1e10,...]
+       [--nus 0,0.3]
+Writes OUT/table-4-1.csv (one row per nu, model, level) and OUT/table-4-1.md.
+"""
+import argparse
+import csv
+import math
+import os
+import subprocess
+import sys
+import tempfile
+import time
+
+THESIS = {
+    "bonded": [0.66060, 0.67329, 0.67255, 0.65629, 0.62132, 0.56882],
+    "k1e6": [0.68860, 0.70063, 0.69912, 0.68193, 0.64596, 0.59293],
+    "k1e8": [0.6706, 0.67375, 0.67298, 0.65671, 0.62168, 0.56924],
+    "k1e10": [0.66062, 0.67331, 0.67255, 0.65629, 0.62132, 0.56882],
+}
+NUS = [0.0, 0.1, 0.2, 0.3, 0.4, 0.49]
+ROWS = ["bonded", "k1e6", "k1e8", "k1e10", "smooth"]
+LABEL = {
+    "bonded": "without interface (bonded)",
+    "k1e6": "interface k = 1e6",
+    "k1e8": "interface k = 1e8",
+    "k1e10": "interface k = 1e10",
+    "smooth": "smooth, exact 3(1-nu^2)/4",
+}
+
+
+def growth_for(n, length, h_end):
+    """Ratio g of n geometric cells summing to 'length' whose LAST cell is
+    h_end (g < 1 shrinks toward the segment end)."""
+    if abs(n * h_end - length) < 1e-12:
+        return 1.0
+
+    def total(g):  # first cell h_end / g^(n-1)
+        return sum(h_end / g ** (n - 1 - i) for i in range(n))
+
+    lo, hi = (1e-3, 1.0) if n * h_end < length else (1.0, 1e3)
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if (total(mid) > length) == (n * h_end < length):
+            lo = mid
+        else:
+            hi = mid
+    return 0.5 * (lo + hi)
+
+
+def mesh_entries(L, h_edge=0.05, n_foot=6, n_out=14, n_depth=16):
+    """Graded (r, z) rectangle: n_foot cells on 0 < r < a shrinking to h_edge
+    at r = a, n_out cells on a < r < L growing from h_edge, n_depth cells on
+    -L < z < 0 shrinking to h_edge at z = 0."""
+    g_foot = growth_for(n_foot, 1.0, h_edge)
+    g_out = 1.0 / growth_for(n_out, L - 1.0, h_edge)  # reversed: grows
+    g_depth = growth_for(n_depth, L, h_edge)
+    return g_foot, g_out, g_depth
+
+
+def prm_text(row, nu, L, levels, directory):
+    G = 1000.0
+    E = 2 * G * (1 + nu)
+    g_foot, g_out, g_depth = mesh_entries(L)
+    block = row.startswith("k")
+    lines = [
+        "subsection Discretization",
+        "  set Harmonics = 1",
+        f"  set Refinement cycles = {levels}",
+        "end",
+        "subsection Mesh",
+        f"  set R breakpoints = 0, 1, {L:g}",
+        "  set R cells = 6, 14",
+        f"  set R growth = {g_foot:.12g}, {g_out:.12g}",
+    ]
+    if block:
+        lines += [
+            f"  set Z breakpoints = -{L:g}, 0, 0.2",
+            "  set Z cells = 16, 1",
+            f"  set Z growth = {g_depth:.12g}, 1",
+            "  set Material regions = 1: 0, 1, 0, 0.2",
+            f"  set Removed regions = 1, {L:g}, 0, 0.2",
+            "  set Interface lines = 5: z=0, r=0..1",
+        ]
+    else:
+        lines += [
+            f"  set Z breakpoints = -{L:g}, 0",
+            "  set Z cells = 16",
+            f"  set Z growth = {g_depth:.12g}",
+            "  set Surface patch radius = 1",
+        ]
+    lines += ["end", "subsection Materials"]
+    if block:
+        lines.append(f"  set Materials = 0: E={E:g}, nu={nu:g}; 1: E=1e6, nu=0.2")
+    else:
+        lines.append(f"  set Materials = 0: E={E:g}, nu={nu:g}")
+    lines.append("end")
+    if block:
+        k = row[1:]
+        lines += ["subsection Interfaces", f"  set Interfaces = 5: kn={k}, ks={k}", "end"]
+    lines += [
+        "subsection Boundary conditions",
+        "  set Dirichlet = 1: u=0, v=0, w=0; 2: u=0, v=0, w=0",
+        "end",
+        "subsection Rigid foundation",
+        "  set Enabled = true",
+    ]
+    if block:
+        lines += ["  set Tie = material", "  set Id = 1"]
+    else:
+        lines += [
+            "  set Tie = boundary",
+            "  set Id = 4",
+            "  set Tied components = " + ("normal" if row == "smooth" else "all"),
+        ]
+    lines += [
+        "  set Moment = 1",
+        "end",
+        "subsection Output",
+        f"  set Directory = {directory}",
+        "  set Write vtu = false",
+        "end",
+    ]
+    return "\n".join(lines) + "\n", E
+
+
+def richardson(v):
+    """Extrapolate from the last three values (meshes h, h/2, h/4)."""
+    k0, k1, k2 = v[-3:]
+    d1, d2 = k1 - k0, k2 - k1
+    if d1 == 0 or d2 == 0 or d1 / d2 <= 1.0:  # no asymptotic range
+        return k2, float("nan")
+    p = math.log2(d1 / d2)
+    return k2 + d2 / (2.0 ** p - 1.0), p
+
+
+def exact_smooth(nu):
+    return 0.75 * (1 - nu * nu)
+
+
+def reference(row, i, nu):
+    return exact_smooth(nu) if row == "smooth" else THESIS[row][i]
+
+
+def main():
+    here = os.path.dirname(os.path.abspath(__file__))
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--exe", default=os.path.join(here, "../../build/fourier-ssi"))
+    ap.add_argument("--levels", type=int, default=4)
+    ap.add_argument("--L", type=float, default=100.0)
+    ap.add_argument("--out", default=here)
+    ap.add_argument("--rows", default=",".join(ROWS))
+    ap.add_argument("--nus", default=",".join(str(n) for n in NUS))
+    ap.add_argument("--tag", default="table-4-1")
+    args = ap.parse_args()
+    rows = args.rows.split(",")
+    nus = [float(x) for x in args.nus.split(",")]
+
+    records = []
+    work = tempfile.mkdtemp(prefix="table41-")
+    for row in rows:
+        for nu in nus:
+            i = NUS.index(nu)
+            out = os.path.join(work, f"{row}-{nu}")
+            text, E = prm_text(row, nu, args.L, args.levels, out)
+            prm = out + ".prm"
+            with open(prm, "w") as f:
+                f.write(text)
+            t0 = time.time()
+            subprocess.run([args.exe, prm], check=True, stdout=subprocess.DEVNULL)
+            dt = time.time() - t0
+            theta, dofs = {}, {}
+            with open(os.path.join(out, "results.csv")) as f:
+                for r in csv.DictReader(f):
+                    if r["quantity"] == "foundation_rotation":
+                        theta[int(r["cycle"])] = float(r["value"])
+                    if r["quantity"] == "n_dofs":
+                        dofs[int(r["cycle"])] = int(float(r["value"]))
+            values = [theta[c] * E for c in sorted(theta)]
+            ext, p = richardson(values)
+            ref = reference(row, i, nu)
+            for c, v in enumerate(values):
+                records.append(dict(model=row, nu=nu, L=args.L, level=c,
+                                    dofs=dofs.get(c, ""), value=f"{v:.6f}",
+                                    reference=f"{ref:.5f}"))
+            records.append(dict(model=row, nu=nu, L=args.L, level="extrapolated",
+                                dofs="", value=f"{ext:.6f}",
+                                reference=f"{ref:.5f}", order=f"{p:.3f}",
+                                diff_percent=f"{100 * (ext / ref - 1):+.3f}"))
+            print(f"{row:7s} nu={nu:<5g} " + " ".join(f"{v:.5f}" for v in values)
+                  + f" -> {ext:.5f} (p={p:.2f}) ref {ref:.5f} "
+                  f"({100 * (ext / ref - 1):+.2f}%) {dt:.1f}s", flush=True)
+
+    fields = ["model", "nu", "L", "level", "dofs", "value", "reference",
+              "order", "diff_percent"]
+    csv_path = os.path.join(args.out, args.tag + ".csv")
+    with open(csv_path, "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=fields)
+        w.writeheader()
+        for r in records:
+            w.writerow(r)
+    write_markdown(records, rows, nus, args, os.path.join(args.out, args.tag + ".md"))
+
+
+def write_markdown(records, rows, nus, args, path):
+    get = {}
+    for r in records:
+        get[(r["model"], r["nu"], r["level"])] = r
+    out = [f"# Table 4.1 convergence study (L = {args.L:g} a, "
+           f"{args.levels} levels)", "",
+           "theta E_s a^3 / M; levels 0.. are uniform refinements of the graded "
+           "coarse mesh; 'extr.' is Richardson from the last three levels with "
+           "the observed order p; 'ref' is the thesis value (smooth: exact "
+           "3(1-nu^2)/4).", ""]
+    for row in rows:
+        out += [f"## {LABEL[row]}", "",
+                "| nu | " + " | ".join(f"level {c}" for c in range(args.levels))
+                + " | extr. | p | ref | diff % |",
+                "|---" * (args.levels + 6) + "|"]
+        for nu in nus:
+            lv = [get[(row, nu, c)]["value"] for c in range(args.levels)]
+            e = get[(row, nu, "extrapolated")]
+            out.append(f"| {nu:g} | " + " | ".join(lv) + f" | {e['value']} | "
+                       f"{e['order']} | {e['reference']} | {e['diff_percent']} |")
+        out.append("")
+    dofs = [str(get[(rows[0], nus[0], c)]["dofs"]) for c in range(args.levels)]
+    out.append(f"DoFs per level ({rows[0]}): " + ", ".join(dofs))
+    with open(path, "w") as f:
+        f.write("\n".join(out) + "\n")
+
+
+if __name__ == "__main__":
+    sys.exit(main())

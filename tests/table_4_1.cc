@@ -1,0 +1,216 @@
+// Table 4.1 of Hernoune (2007), section 4.2 (issue #4 item 6, verify 1): a
+// rigid circular surface footing (a = 1) under a moment M, rotation reported
+// as theta E_s a^3 / M for nu = 0 ... 0.49 and five contact models:
+//   bonded ("sans interface"): soil surface nodes r < a follow the rigid
+//     motion in u, v, w (Tie = boundary, Id = 4);
+//   k = 1e6, 1e8, 1e10: a rigid block (material 1, 0 < z < 0.2) resting on
+//     a zero-thickness interface at z = 0 with kn = ks = k [kPa/m];
+//   smooth: only the normal component tied; exact 3 (1 - nu^2) / 4 (Poulos &
+//     Davis 1974, thesis eq. 4.1).
+// Soil G = 1000 kPa (thesis 4.2), E_s = 2 G (1 + nu), M = 1 kN.m.
+// The footing edge is a stress singularity, so the rotation converges as
+// O(h): every value checked against a reference is Richardson-extrapolated
+// from three uniformly refined graded meshes with the observed order.
+// Mesh sizes and tolerances come from the committed convergence study
+// benchmarks/table-4-1/ (doc/table-4-1.md): a finer base mesh and a fourth
+// level move the extrapolated values by < 0.1%, and the domain truncation at
+// L = 100 a (vs 400 a) makes the footing stiffer by ~0.1%.
+#include "check.h"
+#include "test_support.h"
+
+#include <chrono>
+#include <cmath>
+#include <fourier_ssi/harmonic.h>
+#include <sstream>
+
+using namespace FourierSSI;
+
+namespace
+{
+  const double nus[6] = {0.0, 0.1, 0.2, 0.3, 0.4, 0.49};
+  // Thesis Table 4.1, theta_M E_s a^3 / M.
+  const double thesis_bonded[6] =
+    {0.66060, 0.67329, 0.67255, 0.65629, 0.62132, 0.56882};
+  const double thesis_k1e10[6] =
+    {0.66062, 0.67331, 0.67255, 0.65629, 0.62132, 0.56882};
+
+  /** Ratio g of n geometric cells summing to 'length' whose last cell is
+   * h_end (same as benchmarks/table-4-1/run.py). */
+  double
+  growth_for(const unsigned int n, const double length, const double h_end)
+  {
+    const bool shrink = n * h_end < length;
+    double     lo = shrink ? 1e-3 : 1., hi = shrink ? 1. : 1e3;
+    for (unsigned int it = 0; it < 200; ++it)
+      {
+        const double g = 0.5 * (lo + hi);
+        double       total = 0;
+        for (unsigned int i = 0; i < n; ++i)
+          total += h_end / std::pow(g, double(n - 1 - i));
+        if ((total > length) == shrink)
+          lo = g;
+        else
+          hi = g;
+      }
+    return 0.5 * (lo + hi);
+  }
+
+  enum class Model
+  {
+    bonded,
+    interface,
+    smooth
+  };
+
+  /**
+   * Domain radius = depth = L = 100 a; coarse mesh graded toward the footing
+   * edge (r, z) = (a, 0) with edge cells h_e = 0.08 a: 4 cells on the
+   * footing, 10 beyond, 12 in depth (the study's base mesh is 6, 14, 16 with
+   * h_e = 0.05; see doc/table-4-1.md for the comparison).
+   */
+  std::string
+  footing_prm(const Model        model,
+              const double       nu,
+              const double       k,
+              const unsigned int cycles)
+  {
+    const double       L = 100, h_e = 0.08;
+    const unsigned int n_foot = 4, n_out = 10, n_depth = 12;
+    const double       E = 2 * 1000. * (1 + nu);
+    std::ostringstream s;
+    s << std::setprecision(12);
+    s << "subsection Discretization\n set Harmonics = 1\n"
+      << " set Refinement cycles = " << cycles << "\nend\n"
+      << "subsection Mesh\n set R breakpoints = 0, 1, " << L
+      << "\n set R cells = " << n_foot << ", " << n_out
+      << "\n set R growth = " << growth_for(n_foot, 1., h_e) << ", "
+      << 1. / growth_for(n_out, L - 1., h_e) << "\n";
+    const double g_depth = growth_for(n_depth, L, h_e);
+    if (model == Model::interface)
+      s << " set Z breakpoints = -" << L << ", 0, 0.2\n set Z cells = "
+        << n_depth << ", 1\n set Z growth = " << g_depth << ", 1\n"
+        << " set Material regions = 1: 0, 1, 0, 0.2\n"
+        << " set Removed regions = 1, " << L << ", 0, 0.2\n"
+        << " set Interface lines = 5: z=0, r=0..1\nend\n"
+        << "subsection Materials\n set Materials = 0: E=" << E
+        << ", nu=" << nu << "; 1: E=1e6, nu=0.2\nend\n"
+        << "subsection Interfaces\n set Interfaces = 5: kn=" << k
+        << ", ks=" << k << "\nend\n"
+        << "subsection Rigid foundation\n set Enabled = true\n"
+        << " set Tie = material\n set Id = 1\n set Moment = 1\nend\n";
+    else
+      s << " set Z breakpoints = -" << L << ", 0\n set Z cells = " << n_depth
+        << "\n set Z growth = " << g_depth
+        << "\n set Surface patch radius = 1\nend\n"
+        << "subsection Materials\n set Materials = 0: E=" << E
+        << ", nu=" << nu << "\nend\n"
+        << "subsection Rigid foundation\n set Enabled = true\n"
+        << " set Tie = boundary\n set Id = 4\n set Tied components = "
+        << (model == Model::smooth ? "normal" : "all")
+        << "\n set Moment = 1\nend\n";
+    s << "subsection Boundary conditions\n"
+         " set Dirichlet = 1: u=0, v=0, w=0; 2: u=0, v=0, w=0\nend\n";
+    return s.str();
+  }
+
+  /** theta E_s a^3 / M on each refinement cycle. */
+  std::vector<double>
+  rotations(const Model        model,
+            const double       nu,
+            const double       k,
+            const unsigned int cycles)
+  {
+    const ResultsTable  results = test_support::run(footing_prm(model, nu, k, cycles));
+    const double        E       = 2 * 1000. * (1 + nu);
+    std::vector<double> values;
+    for (unsigned int c = 0; c < cycles; ++c)
+      values.push_back(
+        E * results.get("foundation_rotation", Harmonic{1, Family::symmetric}, c));
+    return values;
+  }
+
+  /** Richardson extrapolation from meshes h, h/2, h/4 (observed order). */
+  double
+  extrapolate(const std::vector<double> &v, double &order)
+  {
+    const double d1 = v[1] - v[0], d2 = v[2] - v[1];
+    order           = std::log2(d1 / d2);
+    return v[2] + d2 / (std::pow(2., order) - 1.);
+  }
+
+  std::string
+  label(const char *what, const double nu)
+  {
+    std::ostringstream s;
+    s << what << ", nu = " << nu;
+    return s.str();
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const auto start = std::chrono::steady_clock::now();
+
+  for (unsigned int i = 0; i < 6; ++i)
+    {
+      const double nu = nus[i];
+      double       p_b, p_k, p_s;
+      const std::vector<double> bonded = rotations(Model::bonded, nu, 0, 3);
+      const std::vector<double> k1e10 =
+        rotations(Model::interface, nu, 1e10, 3);
+      const std::vector<double> smooth = rotations(Model::smooth, nu, 0, 3);
+      const double ext_b = extrapolate(bonded, p_b);
+      const double ext_k = extrapolate(k1e10, p_k);
+      const double ext_s = extrapolate(smooth, p_s);
+      std::cout << std::setprecision(6) << "  nu = " << nu << ": bonded " << bonded[0] << " "
+                << bonded[1] << " " << bonded[2] << " -> " << ext_b
+                << " (p = " << p_b << "); k=1e10 -> " << ext_k
+                << " (p = " << p_k << "); smooth " << smooth[2] << " -> "
+                << ext_s << " (p = " << p_s << ")" << std::endl;
+
+      // The edge singularity gives O(h); an order far from 1 means the
+      // meshes are not in the asymptotic range and the extrapolation is
+      // not to be trusted.
+      check::in_range(label("observed order, bonded", nu), p_b, 0.6, 1.6);
+      check::in_range(label("observed order, smooth", nu), p_s, 0.6, 1.6);
+
+      // 2% (issue text): the thesis used one coarse 8-node mesh on a
+      // 20 a x 25 e domain; our converged values (study: 4 levels, finer
+      // base mesh) agree with the thesis within 0.3% (0.6% at nu = 0), the
+      // test's mesh adds < 0.1%, the L = 100 a truncation ~0.1%.
+      check::relative(label("bonded vs thesis", nu), ext_b, thesis_bonded[i],
+                      0.02);
+      check::relative(label("k = 1e10 vs thesis", nu), ext_k, thesis_k1e10[i],
+                      0.02);
+      // k a / E_s >= 3e6: the interface compliance is ~ E_s / (k a) < 1e-6
+      // of the rotation, so the k = 1e10 interface reproduces the bonded
+      // contact (thesis: "parfaitement identiques") to round-off of the
+      // extrapolation; 1e-4 allows for the different mesh (footing block).
+      check::relative(label("k = 1e10 vs bonded (same model)", nu), ext_k,
+                      ext_b, 1e-4);
+      // 1% (issue text); the study shows < 0.1% at this mesh, the rest is
+      // margin for truncation (stiffer by ~0.1% at L = 100 a).
+      check::relative(label("smooth vs 3(1-nu^2)/4", nu), ext_s,
+                      0.75 * (1 - nu * nu), 0.01);
+
+      // Ordering of the interface rows (thesis: the rotation decreases as
+      // the interface stiffness grows): on the same coarse mesh the
+      // interface compliance adds a positive rotation ~ 1/k, so a strict
+      // ordering needs no extrapolation.
+      const double k1e6 = rotations(Model::interface, nu, 1e6, 1)[0];
+      const double k1e8 = rotations(Model::interface, nu, 1e8, 1)[0];
+      std::cout << std::setprecision(6) << "  nu = " << nu << ", coarse mesh: k=1e6 " << k1e6
+                << ", k=1e8 " << k1e8 << ", k=1e10 " << k1e10[0]
+                << std::endl;
+      check::that(label("theta(1e6) > theta(1e8) > theta(1e10)", nu),
+                  k1e6 > k1e8 && k1e8 > k1e10[0]);
+    }
+  std::cout << "  wall time "
+            << std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                             start)
+                 .count()
+            << " s" << std::endl;
+  return check::summary();
+}
