@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <deal.II/base/utilities.h>
 #include <fourier_ssi/interface_integrator.h>
@@ -84,9 +85,17 @@ namespace FourierSSI
     DynamicSparsityPattern          &dsp) const
   {
     for (const InterfacePair &pair : pairs)
-      constraints.add_entries_local_to_global(pair.dof_indices,
-                                              dsp,
-                                              /*keep_constrained_dofs=*/false);
+      {
+        // Distinct indices only: deal.II's sorted insertion assumes them
+        // (an interface line ending inside the mesh repeats its end node).
+        std::vector<types::global_dof_index> dofs(pair.dof_indices);
+        std::sort(dofs.begin(), dofs.end());
+        dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+        constraints.add_entries_local_to_global(
+          dofs,
+          dsp,
+          /*keep_constrained_dofs=*/false);
+      }
   }
 
   void
@@ -96,9 +105,27 @@ namespace FourierSSI
   {
     for (unsigned int i = 0; i < pairs.size(); ++i)
       {
-        Vector<double> local_rhs(pairs[i].dof_indices.size());
+        // Where an interface line ends inside the mesh the last node pair is
+        // one shared DoF set (the "crack tip" is closed): merge repeated
+        // indices, since distribute_local_to_global expects distinct ones
+        // (repeated ones corrupted the sparse matrix in release builds).
+        const std::vector<types::global_dof_index> &dofs = pairs[i].dof_indices;
+        std::vector<types::global_dof_index>        unique_dofs(dofs);
+        std::sort(unique_dofs.begin(), unique_dofs.end());
+        unique_dofs.erase(std::unique(unique_dofs.begin(), unique_dofs.end()),
+                          unique_dofs.end());
+        std::vector<unsigned int> position(dofs.size());
+        for (unsigned int k = 0; k < dofs.size(); ++k)
+          position[k] =
+            std::lower_bound(unique_dofs.begin(), unique_dofs.end(), dofs[k]) -
+            unique_dofs.begin();
+        FullMatrix<double> merged(unique_dofs.size(), unique_dofs.size());
+        for (unsigned int a = 0; a < dofs.size(); ++a)
+          for (unsigned int b = 0; b < dofs.size(); ++b)
+            merged(position[a], position[b]) += matrices[i](a, b);
+        Vector<double> local_rhs(unique_dofs.size());
         constraints.distribute_local_to_global(
-          matrices[i], local_rhs, pairs[i].dof_indices, matrix, rhs);
+          merged, local_rhs, unique_dofs, matrix, rhs);
       }
   }
 
