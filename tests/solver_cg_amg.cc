@@ -7,6 +7,11 @@
 // against a generous bound of 500 only: they depend on the ML version.
 #include <fourier_ssi/harmonic.h>
 
+#include <tuple>
+
+#include "check.h"
+#include "test_support.h"
+
 using namespace FourierSSI;
 
 int
