@@ -275,7 +275,8 @@ namespace FourierSSI
   }
 
   FoundationCoefficients
-  HarmonicProblem::foundation_coefficients() const
+  HarmonicProblem::foundation_coefficients(
+    std::vector<Vector<double>> *unit_solutions) const
   {
     AssertThrow(foundation, ExcMessage("Rigid foundation is not enabled"));
     SparseDirectUMFPACK direct;
@@ -289,6 +290,11 @@ namespace FourierSSI
         // distributing the constraints (which would add Dirichlet data).
         direct.solve(x);
         motions[load_case] = foundation->motion(x);
+        if (unit_solutions)
+          {
+            constraints.distribute(x);
+            unit_solutions->push_back(x);
+          }
       }
     return foundation->coefficients(motions[0], motions[1]);
   }

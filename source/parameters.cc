@@ -128,6 +128,7 @@ namespace FourierSSI
     OutputParameters::declare_parameters(prm);
     InterfaceParameters::declare_parameters(prm);
     RigidFoundationParameters::declare_parameters(prm);
+    AdaptivityParameters::declare_parameters(prm);
   }
 
   void
@@ -142,6 +143,7 @@ namespace FourierSSI
     output.parse_parameters(prm);
     interfaces.parse_parameters(prm);
     rigid_foundation.parse_parameters(prm);
+    adaptivity.parse_parameters(prm);
   }
 
 

@@ -2,6 +2,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/grid/tria.h>
 #include <filesystem>
+#include <fourier_ssi/adaptivity.h>
 #include <fourier_ssi/command_line.h>
 #include <fourier_ssi/harmonic_problem.h>
 #include <fourier_ssi/simulator.h>
@@ -23,7 +24,8 @@ namespace FourierSSI
       {
         if (write_files)
           std::filesystem::create_directories(directory);
-        Triangulation<2> triangulation;
+        Triangulation<2>                     triangulation;
+        std::unique_ptr<RefinementIndicator> indicator;
         parameters.mesh.build(triangulation);
         for (const auto &cell : triangulation.active_cell_iterators())
           parameters.materials.get(cell->material_id()); // throws if missing
@@ -33,7 +35,20 @@ namespace FourierSSI
              ++cycle)
           {
             if (cycle > 0)
-              triangulation.refine_global(1);
+              {
+                if (parameters.adaptivity.strategy == "kelly")
+                  {
+                    std::set<types::boundary_id> interface_ids;
+                    for (const auto &[id, law] : parameters.interfaces.laws)
+                      interface_ids.insert(id);
+                    indicator->refine(triangulation,
+                                      parameters.adaptivity.refine_fraction,
+                                      interface_ids);
+                  }
+                else
+                  triangulation.refine_global(1);
+              }
+            indicator = std::make_unique<RefinementIndicator>(triangulation);
             for (const Harmonic &harmonic : parameters.discretization.harmonics)
               {
                 try
@@ -48,8 +63,11 @@ namespace FourierSSI
                     problem.assemble_system();
                     const double t_assembly = timer.wall_time();
                     timer.restart();
-                    const SolverReport report  = problem.solve();
-                    const double       t_solve = timer.wall_time();
+                    const SolverReport report = problem.solve();
+                    if (parameters.adaptivity.strategy == "kelly")
+                      indicator->add_kelly(problem.get_dof_handler(),
+                                           problem.get_solution());
+                    const double t_solve = timer.wall_time();
 
                     const auto add = [&](const std::string &q,
                                          const double       v,
@@ -118,8 +136,15 @@ namespace FourierSSI
                             harmonic.n == 1 &&
                             harmonic.family == Family::symmetric)
                           {
+                            std::vector<Vector<double>>  unit_solutions;
                             const FoundationCoefficients c =
-                              problem.foundation_coefficients();
+                              problem.foundation_coefficients(&unit_solutions);
+                            // The scene's own load may be zero: let the
+                            // unit-H and unit-M fields steer the mesh.
+                            if (parameters.adaptivity.strategy == "kelly")
+                              for (const auto &field : unit_solutions)
+                                indicator->add_kelly(problem.get_dof_handler(),
+                                                     field);
                             add("I_H", c.I_H, "-");
                             add("I_M", c.I_M, "-");
                             add("I_MH_from_H", c.I_MH_from_H, "-");

@@ -86,10 +86,12 @@ namespace FourierSSI
 
     /**
      * Stiffness coefficients of the rigid foundation: solves the unit H and
-     * unit M cases with one factorization of the assembled matrix.
+     * unit M cases with one factorization of the assembled matrix; the two
+     * fields go to `unit_solutions` if given (adaptivity needs them).
      */
     FoundationCoefficients
-    foundation_coefficients() const;
+    foundation_coefficients(
+      std::vector<Vector<double>> *unit_solutions = nullptr) const;
 
     /** Half the 3D strain energy product: 1/2 x^T K x (unconstrained K). */
     double

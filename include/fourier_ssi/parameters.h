@@ -6,6 +6,7 @@
 #define fourier_ssi_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <fourier_ssi/adaptivity.h>
 #include <fourier_ssi/boundary_conditions.h>
 #include <fourier_ssi/harmonic.h>
 #include <fourier_ssi/interface_pairing.h>
@@ -75,15 +76,16 @@ namespace FourierSSI
     void
     read_string(const std::string &text);
 
-    DiscretizationParameters discretization;
-    MeshBuilder              mesh;
-    MaterialLibrary          materials;
-    BoundaryConditions       boundary_conditions;
-    LinearSolver             solver;
-    ExactSolutionParameters  exact_solution;
-    OutputParameters         output;
-    InterfaceParameters      interfaces;
+    DiscretizationParameters  discretization;
+    MeshBuilder               mesh;
+    MaterialLibrary           materials;
+    BoundaryConditions        boundary_conditions;
+    LinearSolver              solver;
+    ExactSolutionParameters   exact_solution;
+    OutputParameters          output;
+    InterfaceParameters       interfaces;
     RigidFoundationParameters rigid_foundation;
+    AdaptivityParameters      adaptivity;
   };
 } // namespace FourierSSI
 

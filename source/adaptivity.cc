@@ -1,0 +1,106 @@
+#include <cmath>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/grid/grid_refinement.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/numerics/error_estimator.h>
+#include <fourier_ssi/adaptivity.h>
+#include <map>
+
+namespace FourierSSI
+{
+  void
+  AdaptivityParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Adaptivity");
+    prm.declare_entry("Strategy",
+                      "global",
+                      Patterns::Selection("global|kelly"),
+                      "Refinement between cycles: global (uniform) or kelly "
+                      "(Kelly indicators summed over the harmonics; both "
+                      "sides of an interface are refined alike).");
+    prm.declare_entry("Refine fraction",
+                      "0.3",
+                      Patterns::Double(0., 1.),
+                      "kelly: the cells holding this fraction of the summed "
+                      "indicator are refined per cycle (deal.II fixed "
+                      "fraction).");
+    prm.leave_subsection();
+  }
+
+  void
+  AdaptivityParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Adaptivity");
+    strategy        = prm.get("Strategy");
+    refine_fraction = prm.get_double("Refine fraction");
+    prm.leave_subsection();
+  }
+
+  RefinementIndicator::RefinementIndicator(
+    const Triangulation<2> &triangulation)
+    : indicators(triangulation.n_active_cells())
+  {}
+
+  void
+  RefinementIndicator::add_kelly(const DoFHandler<2>  &dof_handler,
+                                 const Vector<double> &solution)
+  {
+    Vector<float> kelly(indicators.size());
+    // Interface faces are boundary faces of the mesh: no jump across them
+    // is counted, as it should (the interface allows a jump).
+    KellyErrorEstimator<2>::estimate(dof_handler,
+                                     QGauss<1>(dof_handler.get_fe().degree + 1),
+                                     {},
+                                     solution,
+                                     kelly);
+    const double norm = kelly.l2_norm();
+    if (norm > 0.)
+      for (unsigned int i = 0; i < kelly.size(); ++i)
+        indicators(i) += kelly(i) / norm;
+  }
+
+  void
+  RefinementIndicator::refine(
+    Triangulation<2>                   &triangulation,
+    const double                        fraction,
+    const std::set<types::boundary_id> &interface_ids) const
+  {
+    GridRefinement::refine_and_coarsen_fixed_fraction(triangulation,
+                                                      indicators,
+                                                      fraction,
+                                                      0.);
+    // Twin interface faces, matched by their centres (rounded to a grid far
+    // below the smallest face length).
+    std::map<std::pair<long long, long long>,
+             std::vector<Triangulation<2>::active_cell_iterator>>
+                 cells_at_face;
+    const double scale = 1e-9 * GridTools::minimal_cell_diameter(triangulation);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() && interface_ids.count(face->boundary_id()))
+          cells_at_face[{std::llround(face->center()[0] / scale),
+                         std::llround(face->center()[1] / scale)}]
+            .push_back(cell);
+    // Mesh smoothing (2:1 rule) may flag more cells: repeat until the two
+    // sides of every interface agree.
+    for (bool changed = true; changed;)
+      {
+        triangulation.prepare_coarsening_and_refinement();
+        changed = false;
+        for (auto &[key, cells] : cells_at_face)
+          {
+            bool any = false;
+            for (const auto &cell : cells)
+              any |= cell->refine_flag_set();
+            if (any)
+              for (const auto &cell : cells)
+                if (!cell->refine_flag_set())
+                  {
+                    cell->set_refine_flag();
+                    changed = true;
+                  }
+          }
+      }
+    triangulation.execute_coarsening_and_refinement();
+  }
+} // namespace FourierSSI
