@@ -30,10 +30,15 @@ namespace FourierSSI
           constrain_to_zero(i);
       }
 
-    // Collect, per axis node (keyed by z), the DoF of each component.
-    std::map<double, std::array<types::global_dof_index, 3>> axis_nodes;
+    // Collect the axis nodes with the DoF of each component. A node is keyed
+    // by its radial DoF, not by its position: where an interface meets the
+    // axis the two sides have distinct nodes at the same point, and each
+    // obeys the axis conditions on its own.
+    std::map<types::global_dof_index, std::array<types::global_dof_index, 3>>
+                                         axis_nodes;
     std::vector<types::global_dof_index> dof_indices(fe.n_dofs_per_cell());
-    const std::vector<Point<2>> &unit_points = fe.get_unit_support_points();
+    const FiniteElement<2>              &base = fe.base_element(0);
+    const std::vector<Point<2>> &unit_points  = base.get_unit_support_points();
     const MappingQ1<2>           mapping;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
@@ -43,31 +48,22 @@ namespace FourierSSI
         if (!touches_axis)
           continue;
         cell->get_dof_indices(dof_indices);
-        for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+        for (unsigned int k = 0; k < base.n_dofs_per_cell(); ++k)
           {
             // Straight-sided cells: the bilinear map gives the position.
             const Point<2> p =
-              mapping.transform_unit_to_real_cell(cell, unit_points[i]);
+              mapping.transform_unit_to_real_cell(cell, unit_points[k]);
             if (p[0] > axis_tolerance)
               continue;
-            // Round z so the three components of one node share a key.
-            const double key =
-              std::round(p[1] / axis_tolerance) * axis_tolerance;
-            auto it = axis_nodes.find(key);
-            if (it == axis_nodes.end())
-              it = axis_nodes
-                     .emplace(key,
-                              std::array<types::global_dof_index, 3>{
-                                {numbers::invalid_dof_index,
-                                 numbers::invalid_dof_index,
-                                 numbers::invalid_dof_index}})
-                     .first;
-            it->second[fe.system_to_component_index(i).first] = dof_indices[i];
+            std::array<types::global_dof_index, 3> node;
+            for (unsigned int c = 0; c < 3; ++c)
+              node[c] = dof_indices[fe.component_to_system_index(c, k)];
+            axis_nodes[node[0]] = node;
           }
       }
 
     const double sign = family_sign(harmonic.family);
-    for (const auto &[z, dofs] : axis_nodes)
+    for (const auto &[key, dofs] : axis_nodes)
       {
         const auto U = dofs[0], V = dofs[1], W = dofs[2];
         Assert(U != numbers::invalid_dof_index &&

@@ -262,6 +262,8 @@ namespace FourierSSI
   {
     const SolverReport report =
       parameters.solver.solve(system_matrix, solution, system_rhs, dof_handler);
+    if (foundation)
+      foundation->check_supported(solution, constraints);
     constraints.distribute(solution);
     return report;
   }
@@ -289,6 +291,7 @@ namespace FourierSSI
         // The master DoFs are unconstrained: their values are final without
         // distributing the constraints (which would add Dirichlet data).
         direct.solve(x);
+        foundation->check_supported(x, constraints);
         motions[load_case] = foundation->motion(x);
         if (unit_solutions)
           {

@@ -324,10 +324,13 @@ namespace FourierSSI
       for (const unsigned int v : cell_vertices[c])
         cells_at[v].push_back(c);
     std::set<unsigned int> split_vertices;
+    // Axis vertices are split too: a shared axis node would pin the two
+    // sides together at r = 0 (a spurious point restraint that, e.g., gave a
+    // smooth surface footing a mesh-dependent horizontal stiffness). Each
+    // copy gets the axis conditions (axis_constraints.cc keys nodes by DoF).
     for (const auto &[edge, id] : interface_ids)
       for (const unsigned int v : {edge.first, edge.second})
-        if (vertices[v][0] > tol) // not on the axis
-          split_vertices.insert(v);
+        split_vertices.insert(v);
     // Cell edges (as vertex pairs) in deal.II's face numbering.
     const auto edges_of = [&](const unsigned int c) {
       const auto &v = cell_vertices[c];

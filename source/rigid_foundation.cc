@@ -1,3 +1,4 @@
+#include <cmath>
 #include <deal.II/fe/fe.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <fourier_ssi/rigid_foundation.h>
@@ -72,15 +73,19 @@ namespace FourierSSI
   RigidFoundationParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Rigid foundation");
-    enabled                 = prm.get_bool("Enabled");
-    tie                     = prm.get("Tie");
-    id                      = prm.get_integer("Id");
-    normal_only             = prm.get("Tied components") == "normal";
-    reference_elevation     = prm.get_double("Reference elevation");
-    horizontal_force        = prm.get_double("Horizontal force");
-    moment                  = prm.get_double("Moment");
-    vertical_force          = prm.get_double("Vertical force");
-    torque                  = prm.get_double("Torque");
+    enabled             = prm.get_bool("Enabled");
+    tie                 = prm.get("Tie");
+    id                  = prm.get_integer("Id");
+    normal_only         = prm.get("Tied components") == "normal";
+    reference_elevation = prm.get_double("Reference elevation");
+    horizontal_force    = prm.get_double("Horizontal force");
+    moment              = prm.get_double("Moment");
+    vertical_force      = prm.get_double("Vertical force");
+    torque              = prm.get_double("Torque");
+    AssertThrow(!(normal_only && enabled && horizontal_force != 0.),
+                ExcMessage("Rigid foundation: 'Tied components = normal' is a "
+                           "frictionless contact with no horizontal stiffness; "
+                           "a Horizontal force makes the system singular"));
     stiffness_coefficients  = prm.get_bool("Stiffness coefficients");
     reference_shear_modulus = prm.get_double("Reference shear modulus");
     reference_length        = prm.get_double("Reference length");
@@ -319,5 +324,27 @@ namespace FourierSSI
     c.K_M             = c.I_H / det;
     c.K_MH            = -I_MH / det;
     return c;
+  }
+
+  void
+  RigidFoundation::check_supported(
+    const Vector<double>            &solution,
+    const AffineConstraints<double> &constraints) const
+  {
+    double foundation = 0., free = 0.;
+    for (const auto dof : {master_U, master_V, master_W})
+      if (dof != numbers::invalid_dof_index && !constraints.is_constrained(dof))
+        foundation = std::max(foundation, std::abs(solution(dof)));
+    for (unsigned int i = 0; i < solution.size(); ++i)
+      if (!constraints.is_constrained(i) && i != master_U && i != master_V &&
+          i != master_W)
+        free = std::max(free, std::abs(solution(i)));
+    AssertThrow(std::isfinite(foundation) && foundation <= 1e6 * free,
+                ExcMessage(
+                  "Rigid foundation: singular system, nothing resists "
+                  "the foundation's motion in harmonic " +
+                  harmonic.name() +
+                  " (e.g. a smooth interface or a normal-only contact "
+                  "under a horizontal load: no horizontal stiffness)"));
   }
 } // namespace FourierSSI

@@ -13,8 +13,6 @@
 
 #include <cmath>
 #include <fourier_ssi/harmonic.h>
-#include <fstream>
-#include <sstream>
 
 using namespace FourierSSI;
 
@@ -23,11 +21,8 @@ namespace
   std::string
   scene(const std::string &strategy, const unsigned int cycles)
   {
-    std::ifstream     in(std::string(FSSI_SOURCE_DIR) +
-                     "/prm/embedded-footing.prm");
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str() + "subsection Discretization\n set Refinement cycles = " +
+    return test_support::bundled_prm("prm/embedded-footing.prm") +
+           "subsection Discretization\n set Refinement cycles = " +
            std::to_string(cycles) +
            "\nend\nsubsection Adaptivity\n set Strategy = " + strategy +
            "\nend\n";

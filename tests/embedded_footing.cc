@@ -15,8 +15,6 @@
 
 #include <cmath>
 #include <fourier_ssi/harmonic.h>
-#include <fstream>
-#include <sstream>
 
 using namespace FourierSSI;
 
@@ -25,11 +23,8 @@ namespace
   std::string
   scene(const std::string &interface, const unsigned int cycles)
   {
-    std::ifstream     in(std::string(FSSI_SOURCE_DIR) +
-                     "/prm/embedded-footing.prm");
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str() + "subsection Discretization\n set Refinement cycles = " +
+    return test_support::bundled_prm("prm/embedded-footing.prm") +
+           "subsection Discretization\n set Refinement cycles = " +
            std::to_string(cycles) +
            "\nend\nsubsection Interfaces\n set Interfaces = 5: " + interface +
            "\nend\n";

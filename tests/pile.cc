@@ -14,8 +14,6 @@
 
 #include <cmath>
 #include <fourier_ssi/harmonic.h>
-#include <fstream>
-#include <sstream>
 
 using namespace FourierSSI;
 
@@ -24,10 +22,7 @@ namespace
   std::string
   scene(const std::string &interface, const unsigned int cycles)
   {
-    std::ifstream     in(std::string(FSSI_SOURCE_DIR) + "/prm/pile.prm");
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str() +
+    return test_support::bundled_prm("prm/pile.prm") +
            "subsection Mesh\n set Global refinements = 0\nend\n"
            "subsection Discretization\n set Refinement cycles = " +
            std::to_string(cycles) +

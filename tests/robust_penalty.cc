@@ -11,8 +11,11 @@
 //    k = 1e14 (measured 6e-6 / 8e-6) and <= 5e-3 at k = 1e16 (measured
 //    1.9e-3 / 1.7e-3): the result is still usable, but no longer improves;
 //  - I_MH from unit H equals I_MH from unit M (Maxwell-Betti) to 1e-6 up to
-//    k = 1e12 (measured <= 3.5e-8), 1e-4 at 1e14 (2.3e-5), 2e-3 at 1e16
-//    (5.2e-4): the loss of symmetry measures the round-off of the solve;
+//    k = 1e12 (measured <= 3.5e-8), 1e-4 at 1e14 (2.3e-5), and at 1e16 a
+//    bound from the round-off estimate 10 (k / G) eps = 10 * 1e13 * 1.1e-16
+//    ~ 1e-2 (measured 5.2e-4 first; 3.6e-3 once interface nodes on the axis
+//    were split, which adds the axis springs to the ill-conditioned part):
+//    the loss of symmetry measures the round-off of the solve;
 //  - the stiffness-coefficient solves (unit H, unit M; the scene's own load
 //    is zero, so its residual is trivially 0) give finite values for every k.
 // Found while writing this test: with a unit H load on the scene the
@@ -74,7 +77,7 @@ main(int argc, char **argv)
       check::relative(what.str() + ": I_MH from H vs from M",
                       r.get("I_MH_from_H", h, 0),
                       r.get("I_MH_from_M", h, 0),
-                      k <= 1e12 ? 1e-6 : (k <= 1e14 ? 1e-4 : 2e-3));
+                      k <= 1e12 ? 1e-6 : (k <= 1e14 ? 1e-4 : 1e-2));
     }
   for (unsigned int i = 0; i + 1 < 4; ++i)
     check::that("K_H, K_M increase from k = " + std::to_string(i) +

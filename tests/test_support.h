@@ -6,7 +6,10 @@
 #include <deal.II/base/mpi.h>
 #include <fourier_ssi/parameters.h>
 #include <fourier_ssi/simulator.h>
+#include <fstream>
 #include <iostream>
+#include <sstream>
+#include <stdexcept>
 #include <string>
 
 namespace test_support
@@ -17,6 +20,18 @@ namespace test_support
     FourierSSI::AllParameters parameters;
     parameters.read_string(prm_text);
     return parameters;
+  }
+
+  /** Text of a bundled parameter file, path relative to the project root. */
+  inline std::string
+  bundled_prm(const std::string &relative_path)
+  {
+    std::ifstream in(std::string(FSSI_SOURCE_DIR) + "/" + relative_path);
+    if (!in)
+      throw std::runtime_error("cannot open " + relative_path);
+    std::stringstream text;
+    text << in.rdbuf();
+    return text.str();
   }
 
   inline FourierSSI::ResultsTable

@@ -114,6 +114,17 @@ namespace FourierSSI
     coefficients(const RigidMotion &under_unit_H,
                  const RigidMotion &under_unit_M) const;
 
+    /**
+     * Throw a one-line "singular" error if the foundation moves more than
+     * 1e6 times the largest displacement of the free (untied, unconstrained)
+     * DoFs: nothing resists that motion (e.g. a smooth interface under a
+     * horizontal load on a surface footing), and the direct solver returned
+     * an arbitrary multiple of the free rigid-body mode.
+     */
+    void
+    check_supported(const Vector<double>            &solution,
+                    const AffineConstraints<double> &constraints) const;
+
     unsigned int
     n_tied_dofs() const
     {
