@@ -53,6 +53,14 @@ namespace FourierSSI
   {
     SolverReport report;
     report.method = method;
+    // A zero load (e.g. a stiffness scene, whose unit-H/M cases are solved
+    // separately) has the zero solution: skip the factorization.
+    if (b.l2_norm() == 0.)
+      {
+        x = 0.;
+        report.method += " (zero load, skipped)";
+        return report;
+      }
     if (method == "direct")
       {
         SparseDirectUMFPACK direct;
