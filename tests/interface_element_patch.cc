@@ -5,6 +5,8 @@
 // others), with w the theta weight of the component and, for a straight
 // face, int r ds = l (r_0 + r_p) / 2; face A carries the opposite resultant.
 
+#include "interface_test_support.h"
+
 #include <check.h>
 #include <cmath>
 #include <deal.II/lac/vector.h>
@@ -17,22 +19,6 @@ using namespace FourierSSI;
 
 namespace
 {
-  std::vector<dealii::Point<2>>
-  straight_face(const unsigned int      degree,
-                const dealii::Point<2> &start,
-                const double            angle,
-                const double            length)
-  {
-    std::vector<dealii::Point<2>> nodes(degree + 1);
-    for (unsigned int k = 0; k <= degree; ++k)
-      {
-        const double t = length * k / degree;
-        nodes[k] =
-          start + dealii::Point<2>(t * std::cos(angle), t * std::sin(angle));
-      }
-    return nodes;
-  }
-
   struct Face
   {
     std::string      name;

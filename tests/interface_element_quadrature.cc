@@ -4,6 +4,8 @@
 // faces touching or lying on the axis r = 0, harmonics n = 0, 1, 3 in both
 // families.
 
+#include "interface_test_support.h"
+
 #include <check.h>
 #include <cmath>
 #include <deal.II/base/quadrature_lib.h>
@@ -17,32 +19,6 @@ using namespace FourierSSI;
 
 namespace
 {
-  std::vector<dealii::Point<2>>
-  straight_face(const unsigned int      degree,
-                const dealii::Point<2> &start,
-                const double            angle,
-                const double            length)
-  {
-    std::vector<dealii::Point<2>> nodes(degree + 1);
-    for (unsigned int k = 0; k <= degree; ++k)
-      {
-        const double t = length * k / degree;
-        nodes[k] =
-          start + dealii::Point<2>(t * std::cos(angle), t * std::sin(angle));
-      }
-    return nodes;
-  }
-
-  double
-  max_norm(const dealii::FullMatrix<double> &a)
-  {
-    double m = 0.;
-    for (unsigned int i = 0; i < a.m(); ++i)
-      for (unsigned int j = 0; j < a.n(); ++j)
-        m = std::max(m, std::abs(a(i, j)));
-    return m;
-  }
-
   /** max |a - b| / max |a| (or max |a - b| if a vanishes). */
   double
   relative_difference(const dealii::FullMatrix<double> &a,

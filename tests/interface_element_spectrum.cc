@@ -5,6 +5,8 @@
 // of components adds (p + 1) or 2 (p + 1) further zero modes. Also: for
 // n >= 1 the matrix does not depend on n or on the family.
 
+#include "interface_test_support.h"
+
 #include <algorithm>
 #include <check.h>
 #include <cmath>
@@ -20,32 +22,6 @@ using namespace FourierSSI;
 
 namespace
 {
-  std::vector<dealii::Point<2>>
-  straight_face(const unsigned int      degree,
-                const dealii::Point<2> &start,
-                const double            angle,
-                const double            length)
-  {
-    std::vector<dealii::Point<2>> nodes(degree + 1);
-    for (unsigned int k = 0; k <= degree; ++k)
-      {
-        const double t = length * k / degree;
-        nodes[k] =
-          start + dealii::Point<2>(t * std::cos(angle), t * std::sin(angle));
-      }
-    return nodes;
-  }
-
-  double
-  max_norm(const dealii::FullMatrix<double> &a)
-  {
-    double m = 0.;
-    for (unsigned int i = 0; i < a.m(); ++i)
-      for (unsigned int j = 0; j < a.n(); ++j)
-        m = std::max(m, std::abs(a(i, j)));
-    return m;
-  }
-
   /** Sorted real eigenvalues; also returns the largest imaginary part. */
   std::vector<double>
   eigenvalues(const dealii::FullMatrix<double> &k, double &max_imaginary)
