@@ -43,13 +43,10 @@ namespace
               const std::string &family,
               const double       r_inner)
   {
-    const double      kappa = 1e-3, E = 1e5, nu = 0.3;
-    const std::string s = family == "symmetric" ? "" : "-";
-    const std::string U =
-      "-" + std::to_string(kappa / 2) + "*(z^2+" + std::to_string(nu) + "*r^2)";
-    const std::string V = std::to_string(kappa) + "*r*z";
-    const std::string W =
-      s + std::to_string(kappa / 2) + "*(z^2-" + std::to_string(nu) + "*r^2)";
+    const double       kappa = 1e-3, E = 1e5, nu = 0.3;
+    const auto         amplitudes = test_support::bending_amplitudes(family);
+    const std::string &U = amplitudes[0], &V = amplitudes[1],
+                      &W  = amplitudes[2];
     const std::string all = "u=" + U + ", v=" + V + ", w=" + W;
     return "subsection Discretization\n set Harmonics = 1\n set Family = " +
            family + "\n set Polynomial degree = " + std::to_string(degree) +

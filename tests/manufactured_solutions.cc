@@ -18,18 +18,6 @@
 
 using namespace FourierSSI;
 
-namespace
-{
-  /** Insert the material constants into a generated expression. */
-  std::string
-  with_constants(const std::string &expression)
-  {
-    const std::string e =
-      std::regex_replace(expression, std::regex("\\bE\\b"), "(100000.0)");
-    return std::regex_replace(e, std::regex("\\bnu\\b"), "(0.3)");
-  }
-} // namespace
-
 int
 main(int argc, char **argv)
 {
@@ -42,9 +30,10 @@ main(int argc, char **argv)
         const Harmonic                   harmonic{s.n,
                                 s.symmetric ? Family::symmetric :
                                                                 Family::antisymmetric};
-        const std::string U = with_constants(s.U), V = with_constants(s.V),
-                          W   = with_constants(s.W);
-        const std::string all = "u=" + U + ", v=" + V + ", w=" + W;
+        const std::string                U = test_support::with_constants(s.U),
+                          V                = test_support::with_constants(s.V),
+                          W                = test_support::with_constants(s.W);
+        const std::string all              = "u=" + U + ", v=" + V + ", w=" + W;
         const std::string prm =
           "subsection Discretization\n set Harmonics = " + std::to_string(s.n) +
           "\n set Family = " + to_string(harmonic.family) +
@@ -60,8 +49,10 @@ main(int argc, char **argv)
           all + "; 2: " + all + "; 3: " + all +
           "\nend\n"
           "subsection Body force\n set Radial = " +
-          with_constants(s.f_r) + "\n set Axial = " + with_constants(s.f_z) +
-          "\n set Circumferential = " + with_constants(s.f_theta) +
+          test_support::with_constants(s.f_r) +
+          "\n set Axial = " + test_support::with_constants(s.f_z) +
+          "\n set Circumferential = " +
+          test_support::with_constants(s.f_theta) +
           "\nend\n"
           "subsection Exact solution\n set Enabled = true\n set U = " +
           U + "\n set V = " + V + "\n set W = " + W + "\nend\n";

@@ -10,8 +10,9 @@
 // and p = 4: relative L2 and H1 errors <= 5e-7 (measured 1.2e-7 / 1.5e-7 L2,
 // 1.6e-7 H1: round-off of a condition ~ k / E x 100^2) and the solver
 // relative residual <= 1e-6, the program's own check (measured 4.9e-7: this
-// combination is at the edge; a larger k is rejected by that check). Also the same mesh without the interface
-// (aspect ratio alone): L2 <= 1e-10, H1 <= 1e-9 as in exact_solutions.cc.
+// combination is at the edge; a larger k is rejected by that check). Also the
+// same mesh without the interface (aspect ratio alone): L2 <= 1e-10, H1 <= 1e-9
+// as in exact_solutions.cc.
 #include "check.h"
 #include "test_support.h"
 
@@ -29,13 +30,10 @@ namespace
               const std::string &family,
               const bool         interface)
   {
-    const double      kappa = 1e-3, E = 1e5, nu = 0.3;
-    const std::string s = family == "symmetric" ? "" : "-";
-    const std::string U =
-      "-" + std::to_string(kappa / 2) + "*(z^2+" + std::to_string(nu) + "*r^2)";
-    const std::string V = std::to_string(kappa) + "*r*z";
-    const std::string W =
-      s + std::to_string(kappa / 2) + "*(z^2-" + std::to_string(nu) + "*r^2)";
+    const double       kappa = 1e-3, E = 1e5, nu = 0.3;
+    const auto         amplitudes = test_support::bending_amplitudes(family);
+    const std::string &U = amplitudes[0], &V = amplitudes[1],
+                      &W  = amplitudes[2];
     const std::string all = "u=" + U + ", v=" + V + ", w=" + W;
     return "subsection Discretization\n set Harmonics = 1\n set Family = " +
            family + "\n set Polynomial degree = " + std::to_string(degree) +
@@ -66,10 +64,9 @@ main(int argc, char **argv)
     for (const std::string family : {"symmetric", "antisymmetric"})
       for (const bool interface : {false, true})
         {
-          const std::string what = "bending, " + family + ", p=" +
-                                   std::to_string(degree) +
-                                   (interface ? ", interface k=1e14" :
-                                                ", no interface");
+          const std::string what =
+            "bending, " + family + ", p=" + std::to_string(degree) +
+            (interface ? ", interface k=1e14" : ", no interface");
           const ResultsTable r =
             test_support::run(bending_prm(degree, family, interface));
           const Harmonic h{1, family_from_string(family)};

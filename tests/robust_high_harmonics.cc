@@ -18,17 +18,6 @@
 
 using namespace FourierSSI;
 
-namespace
-{
-  std::string
-  with_constants(const std::string &expression)
-  {
-    const std::string e =
-      std::regex_replace(expression, std::regex("\\bE\\b"), "(100000.0)");
-    return std::regex_replace(e, std::regex("\\bnu\\b"), "(0.3)");
-  }
-} // namespace
-
 int
 main(int argc, char **argv)
 {
@@ -36,11 +25,12 @@ main(int argc, char **argv)
   for (const unsigned int degree : {2u, 4u})
     for (unsigned int k = 0; k < mms_high::n_solutions; ++k)
       {
-        const unsigned int n_cycles = degree == 2 ? 5 : 4;
-        const mms_high::ManufacturedSolution &s = mms_high::solutions[k];
-        const Harmonic    harmonic{s.n, Family::symmetric};
-        const std::string U = with_constants(s.U), V = with_constants(s.V),
-                          W   = with_constants(s.W);
+        const unsigned int                    n_cycles = degree == 2 ? 5 : 4;
+        const mms_high::ManufacturedSolution &s        = mms_high::solutions[k];
+        const Harmonic                        harmonic{s.n, Family::symmetric};
+        const std::string U   = test_support::with_constants(s.U),
+                          V   = test_support::with_constants(s.V),
+                          W   = test_support::with_constants(s.W);
         const std::string all = "u=" + U + ", v=" + V + ", w=" + W;
         const std::string prm =
           "subsection Discretization\n set Harmonics = " + std::to_string(s.n) +
@@ -57,8 +47,10 @@ main(int argc, char **argv)
           all + "; 2: " + all + "; 3: " + all +
           "\nend\n"
           "subsection Body force\n set Radial = " +
-          with_constants(s.f_r) + "\n set Axial = " + with_constants(s.f_z) +
-          "\n set Circumferential = " + with_constants(s.f_theta) +
+          test_support::with_constants(s.f_r) +
+          "\n set Axial = " + test_support::with_constants(s.f_z) +
+          "\n set Circumferential = " +
+          test_support::with_constants(s.f_theta) +
           "\nend\n"
           "subsection Exact solution\n set Enabled = true\n set U = " +
           U + "\n set V = " + V + "\n set W = " + W + "\nend\n";
@@ -67,10 +59,11 @@ main(int argc, char **argv)
           std::cout << "  n = " << s.n << ", p = " << degree << ", cycle "
                     << cycle << ": relative L2 error "
                     << results.get("relative_error_l2", harmonic, cycle)
-                    << ", rates L2 "
-                    << results.get("rate_l2", harmonic, cycle) << ", H1 "
-                    << results.get("rate_h1", harmonic, cycle) << std::endl;
-        for (unsigned int cycle = n_cycles - (degree == 2 ? 2 : 1); cycle < n_cycles;
+                    << ", rates L2 " << results.get("rate_l2", harmonic, cycle)
+                    << ", H1 " << results.get("rate_h1", harmonic, cycle)
+                    << std::endl;
+        for (unsigned int cycle = n_cycles - (degree == 2 ? 2 : 1);
+             cycle < n_cycles;
              ++cycle)
           {
             const std::string what = harmonic.name() +
