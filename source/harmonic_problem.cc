@@ -26,23 +26,28 @@ namespace FourierSSI
     return std::make_unique<FESystem<2>>(fe_q, 3);
   }
 
-  HarmonicProblem::HarmonicProblem(const AllParameters    &parameters,
-                                   const Harmonic         &harmonic,
-                                   const Triangulation<2> &triangulation)
+  HarmonicProblem::HarmonicProblem(const AllParameters     &parameters,
+                                   const Harmonic          &harmonic,
+                                   const Triangulation<2>  &triangulation,
+                                   const LoadDecomposition *loads)
     : parameters(parameters)
     , harmonic_operator(harmonic)
     , fe(make_displacement_element(parameters.discretization.degree))
     , dof_handler(triangulation)
+    , loads(loads)
   {
+    AssertThrow(loads || !parameters.loads.any(),
+                ExcMessage("the Loads subsection needs a scene plan"));
     const auto &bc = parameters.boundary_conditions;
     body_force     = BoundaryConditions::make_function(bc.body_force,
                                                    harmonic.n,
                                                    "Body force");
     for (const auto &[id, e] : bc.traction)
-      tractions[id] =
-        BoundaryConditions::make_function(e,
-                                          harmonic.n,
-                                          "Boundary conditions/Traction");
+      tractions[id].push_back(BoundaryConditions::make_function(
+        e, harmonic.n, "Boundary conditions/Traction"));
+    if (loads)
+      for (const auto &[id, load] : loads->traction)
+        tractions[id].push_back(load->amplitude_function(harmonic));
     axis_tolerance = 1e-10 * GridTools::diameter(triangulation);
     // Gauss rule exact for the polynomial part of the integrands; the 1/r
     // terms are smooth on cells away from the axis and integrable on it.
@@ -102,6 +107,18 @@ namespace FourierSSI
           constraints,
           ComponentMask(std::vector<bool>(e.given.begin(), e.given.end())));
       }
+    if (loads)
+      for (const auto &[id, load] : loads->displacement)
+        {
+          const std::array<bool, 3> &given =
+            loads->displacement_components.at(id);
+          VectorTools::interpolate_boundary_values(
+            dof_handler,
+            id,
+            *load->amplitude_function(harmonic_operator.get_harmonic()),
+            constraints,
+            ComponentMask(std::vector<bool>(given.begin(), given.end())));
+        }
     // The rigid foundation first: its motion satisfies the axis conditions.
     if (foundation)
       foundation->add_constraints(dof_handler, constraints);
@@ -220,7 +237,13 @@ namespace FourierSSI
         for (const unsigned int q : fe_face_values.quadrature_point_indices())
           {
             const Point<2> &x = fe_face_values.quadrature_point(q);
-            it->second->vector_value(x, traction);
+            traction          = 0.;
+            for (const auto &function : it->second)
+              {
+                Vector<double> part(3);
+                function->vector_value(x, part);
+                traction += part;
+              }
             const double dA = x[0] * fe_face_values.JxW(q);
             for (unsigned int i = 0; i < fe->n_dofs_per_cell(); ++i)
               {
@@ -300,6 +323,14 @@ namespace FourierSSI
           }
       }
     return foundation->coefficients(motions[0], motions[1]);
+  }
+
+  void
+  HarmonicProblem::free_system()
+  {
+    system_matrix.clear();
+    sparsity_pattern.reinit(0, 0, 0);
+    system_rhs.reinit(0);
   }
 
   double
@@ -457,7 +488,8 @@ namespace FourierSSI
                              std::vector<std::string>{"U_radial",
                                                       "V_axial",
                                                       "W_circumferential"});
-    data_out.add_data_vector(solution, postprocessor);
+    if (parameters.output.write_stresses)
+      data_out.add_data_vector(solution, postprocessor);
     Vector<float> material_ids(
       dof_handler.get_triangulation().n_active_cells());
     for (const auto &cell : dof_handler.active_cell_iterators())

@@ -11,9 +11,12 @@ namespace FourierSSI
   {
     prm.enter_subsection("Discretization");
     prm.declare_entry("Harmonics",
-                      "1",
-                      Patterns::List(Patterns::Integer(0, 256)),
-                      "Fourier harmonics n to solve.");
+                      "auto",
+                      Patterns::Anything(),
+                      "Fourier harmonics n to solve: 'auto' (those the loads "
+                      "contain: foundation resultants and the Loads "
+                      "subsection, decomposed in theta) or a list such as "
+                      "'0, 1, 3' (with Family).");
     prm.declare_entry("Family",
                       "symmetric",
                       Patterns::Selection("symmetric|antisymmetric|both"),
@@ -27,6 +30,11 @@ namespace FourierSSI
                       "FE_Q degree of the solid elements: 2 (pairs with the "
                       "6-node interface element) or 4 (equidistant nodes, "
                       "pairs with the 10-node interface element).");
+    prm.declare_entry("Concurrent harmonics",
+                      "0",
+                      Patterns::Integer(0, 256),
+                      "Harmonics solved at the same time in threads (they "
+                      "are independent systems); 0: one per core.");
     prm.declare_entry("Refinement cycles",
                       "1",
                       Patterns::Integer(1, 12),
@@ -41,17 +49,29 @@ namespace FourierSSI
     prm.enter_subsection("Discretization");
     const std::string family = prm.get("Family");
     harmonics.clear();
-    for (const std::string &s :
-         Utilities::split_string_list(prm.get("Harmonics")))
+    const std::string list = Utilities::trim(prm.get("Harmonics"));
+    automatic              = list == "auto";
+    for (const std::string &s : automatic ? std::vector<std::string>() :
+                                            Utilities::split_string_list(list))
       {
-        const unsigned int n = Utilities::string_to_int(s);
+        int n = -1;
+        try
+          {
+            n = Utilities::string_to_int(s);
+          }
+        catch (...)
+          {}
+        AssertThrow(n >= 0 && n <= 1024,
+                    ExcMessage("Discretization/Harmonics: '" + s +
+                               "' is not 'auto' or a harmonic number 0..1024"));
         if (family != "antisymmetric")
           harmonics.push_back({n, Family::symmetric});
         if (family != "symmetric")
           harmonics.push_back({n, Family::antisymmetric});
       }
-    degree            = prm.get_integer("Polynomial degree");
-    refinement_cycles = prm.get_integer("Refinement cycles");
+    degree               = prm.get_integer("Polynomial degree");
+    refinement_cycles    = prm.get_integer("Refinement cycles");
+    concurrent_harmonics = prm.get_integer("Concurrent harmonics");
     prm.leave_subsection();
   }
 
@@ -100,7 +120,37 @@ namespace FourierSSI
     prm.declare_entry("Write vtu",
                       "true",
                       Patterns::Bool(),
-                      "Write displacement and stress amplitudes as VTU.");
+                      "Write the displacement amplitudes of each harmonic "
+                      "as VTU.");
+    prm.declare_entry("Write stresses",
+                      "true",
+                      Patterns::Bool(),
+                      "Add the six stress amplitudes to the VTU (stress "
+                      "recovery is skipped otherwise).");
+    prm.declare_entry("Write interface tractions",
+                      "true",
+                      Patterns::Bool(),
+                      "Write relative displacements and tractions per "
+                      "interface node pair (CSV per interface and harmonic).");
+    prm.declare_entry("Lines 3D",
+                      "",
+                      Patterns::Anything(),
+                      "3D reconstruction (sum of the harmonics) along "
+                      "straight lines: 'r0, z0 -> r1, z1 : points; ...'; "
+                      "written to lines-3d.csv at the angles below.");
+    prm.declare_entry("Theta values",
+                      "0",
+                      Patterns::List(Patterns::Double()),
+                      "Angles [degrees] of the Lines 3D output.");
+    prm.declare_entry("Write 3D vtu",
+                      "false",
+                      Patterns::Bool(),
+                      "Write the mesh revolved about the axis with the 3D "
+                      "displacement (solution-3d.vtu, for ParaView).");
+    prm.declare_entry("Theta divisions",
+                      "36",
+                      Patterns::Integer(3, 720),
+                      "Sectors of the revolved 3D VTU.");
     prm.leave_subsection();
   }
 
@@ -108,9 +158,53 @@ namespace FourierSSI
   OutputParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Output");
-    directory    = prm.get("Directory");
-    results_file = prm.get("Results file");
-    write_vtu    = prm.get_bool("Write vtu");
+    directory                 = prm.get("Directory");
+    results_file              = prm.get("Results file");
+    write_vtu                 = prm.get_bool("Write vtu");
+    write_stresses            = prm.get_bool("Write stresses");
+    write_interface_tractions = prm.get_bool("Write interface tractions");
+    write_3d_vtu              = prm.get_bool("Write 3D vtu");
+    theta_divisions           = prm.get_integer("Theta divisions");
+    theta_degrees.clear();
+    for (const std::string &t :
+         Utilities::split_string_list(prm.get("Theta values")))
+      theta_degrees.push_back(Utilities::string_to_double(t));
+    lines.clear();
+    for (const std::string &item : split_top_level(prm.get("Lines 3D"), ';'))
+      {
+        const auto fail = [&]() {
+          AssertThrow(false,
+                      ExcMessage("Output/Lines 3D: '" + item +
+                                 "' is not 'r0, z0 -> r1, z1 : points'"));
+        };
+        const auto arrow = item.find("->");
+        const auto colon = item.find(':');
+        if (arrow == std::string::npos || colon == std::string::npos ||
+            colon < arrow)
+          fail();
+        OutputLine line;
+        try
+          {
+            const auto a = Utilities::split_string_list(item.substr(0, arrow));
+            const auto b = Utilities::split_string_list(
+              item.substr(arrow + 2, colon - arrow - 2));
+            if (a.size() != 2 || b.size() != 2)
+              fail();
+            line.start = Point<2>(Utilities::string_to_double(a[0]),
+                                  Utilities::string_to_double(a[1]));
+            line.end   = Point<2>(Utilities::string_to_double(b[0]),
+                                Utilities::string_to_double(b[1]));
+            line.n_points =
+              Utilities::string_to_int(Utilities::trim(item.substr(colon + 1)));
+          }
+        catch (...)
+          {
+            fail();
+          }
+        if (line.n_points < 1)
+          fail();
+        lines.push_back(line);
+      }
     prm.leave_subsection();
   }
 
@@ -129,6 +223,7 @@ namespace FourierSSI
     InterfaceParameters::declare_parameters(prm);
     RigidFoundationParameters::declare_parameters(prm);
     AdaptivityParameters::declare_parameters(prm);
+    LoadParameters::declare_parameters(prm);
   }
 
   void
@@ -144,6 +239,12 @@ namespace FourierSSI
     interfaces.parse_parameters(prm);
     rigid_foundation.parse_parameters(prm);
     adaptivity.parse_parameters(prm);
+    loads.parse_parameters(prm);
+    for (const auto &[id, e] : loads.displacement)
+      AssertThrow(boundary_conditions.dirichlet.count(id) == 0,
+                  ExcMessage("Loads/Prescribed displacement: boundary id " +
+                             std::to_string(id) +
+                             " is also in Boundary conditions/Dirichlet"));
   }
 
 

@@ -35,11 +35,20 @@ namespace FourierSSI
     prm.declare_entry("Horizontal force",
                       "0",
                       Patterns::Double(),
-                      "H [kN] along x (harmonic 1, symmetric).");
+                      "H_x [kN] along x (harmonic 1, symmetric).");
+    prm.declare_entry("Horizontal force y",
+                      "0",
+                      Patterns::Double(),
+                      "H_y [kN] along y (harmonic 1, antisymmetric).");
+    prm.declare_entry("Moment x",
+                      "0",
+                      Patterns::Double(),
+                      "M_x [kN.m] about +x through the reference point "
+                      "(harmonic 1, antisymmetric).");
     prm.declare_entry("Moment",
                       "0",
                       Patterns::Double(),
-                      "M [kN.m] about +y through the reference point "
+                      "M_y [kN.m] about +y through the reference point "
                       "(harmonic 1, symmetric).");
     prm.declare_entry("Vertical force",
                       "0",
@@ -80,9 +89,12 @@ namespace FourierSSI
     reference_elevation = prm.get_double("Reference elevation");
     horizontal_force    = prm.get_double("Horizontal force");
     moment              = prm.get_double("Moment");
+    horizontal_force_y  = prm.get_double("Horizontal force y");
+    moment_x            = prm.get_double("Moment x");
     vertical_force      = prm.get_double("Vertical force");
     torque              = prm.get_double("Torque");
-    AssertThrow(!(normal_only && enabled && horizontal_force != 0.),
+    AssertThrow(!(normal_only && enabled &&
+                  (horizontal_force != 0. || horizontal_force_y != 0.)),
                 ExcMessage("Rigid foundation: 'Tied components = normal' is a "
                            "frictionless contact with no horizontal stiffness; "
                            "a Horizontal force makes the system singular"));
@@ -256,11 +268,17 @@ namespace FourierSSI
   {
     const double r_A = master_position[0];
     const double z_A = master_position[1] - parameters.reference_elevation;
-    if (harmonic.n == 1 && harmonic.family == Family::symmetric)
+    if (harmonic.n == 1)
       {
-        rhs(master_U) += parameters.horizontal_force;
-        rhs(master_V) +=
-          (parameters.horizontal_force * z_A - parameters.moment) / r_A;
+        // The antisymmetric family's rigid motion is the symmetric one turned
+        // by 90 degrees: translation along y and rotation about -x, so its
+        // (H, M) are (H_y, -M_x).
+        const bool   symmetric = harmonic.family == Family::symmetric;
+        const double H         = symmetric ? parameters.horizontal_force :
+                                             parameters.horizontal_force_y;
+        const double M = symmetric ? parameters.moment : -parameters.moment_x;
+        rhs(master_U) += H;
+        rhs(master_V) += (H * z_A - M) / r_A;
       }
     else if (harmonic.n == 0 && harmonic.family == Family::symmetric)
       rhs(master_V) += parameters.vertical_force;

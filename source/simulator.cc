@@ -1,15 +1,249 @@
+#include <atomic>
 #include <cmath>
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/grid/tria.h>
+#include <exception>
 #include <filesystem>
 #include <fourier_ssi/adaptivity.h>
 #include <fourier_ssi/command_line.h>
 #include <fourier_ssi/harmonic_problem.h>
+#include <fourier_ssi/scene_plan.h>
 #include <fourier_ssi/simulator.h>
 #include <iomanip>
+#include <thread>
 
 namespace FourierSSI
 {
+  namespace
+  {
+    /** What solving one harmonic produced, merged in order afterwards. */
+    struct HarmonicOutcome
+    {
+      std::shared_ptr<HarmonicProblem> problem;
+      std::vector<Vector<double>>      unit_solutions;
+      struct Row
+      {
+        std::string quantity;
+        double      value;
+        std::string unit;
+      };
+      std::vector<Row>         rows;
+      std::string              log;
+      std::vector<std::string> files;
+      std::exception_ptr       error;
+    };
+
+    /**
+     * Solve one harmonic and post-process it. Runs in a worker thread: it
+     * reads the shared mesh and the previous cycles' results only.
+     */
+    void
+    solve_harmonic(const AllParameters     &parameters,
+                   const Harmonic          &harmonic,
+                   const Triangulation<2>  &triangulation,
+                   const LoadDecomposition &loads,
+                   const unsigned int       cycle,
+                   const ResultsTable      &previous,
+                   const bool               write_files,
+                   HarmonicOutcome         &outcome)
+    {
+      const std::string &directory = parameters.output.directory;
+      {
+        auto problem_pointer     = std::make_shared<HarmonicProblem>(parameters,
+                                                                 harmonic,
+                                                                 triangulation,
+                                                                 &loads);
+        outcome.problem          = problem_pointer;
+        HarmonicProblem &problem = *problem_pointer;
+        Timer            timer;
+        problem.setup_system();
+        const double t_setup = timer.wall_time();
+        timer.restart();
+        problem.assemble_system();
+        const double t_assembly = timer.wall_time();
+        timer.restart();
+        const SolverReport report  = problem.solve();
+        const double       t_solve = timer.wall_time();
+
+        const auto add =
+          [&](const std::string &q, const double v, const std::string &unit) {
+            outcome.rows.push_back({q, v, unit});
+          };
+        const double n_dofs = problem.get_dof_handler().n_dofs();
+        add("n_cells", triangulation.n_active_cells(), "-");
+        add("n_dofs", n_dofs, "-");
+        add("n_axis_nodes", problem.n_axis_nodes, "-");
+        add("solver_iterations", report.iterations, "-");
+        add("solver_relative_residual", report.relative_residual, "-");
+        add("strain_energy",
+            problem.strain_energy(problem.get_solution()),
+            "kJ");
+        add("time_setup", t_setup, "s");
+        add("time_assembly", t_assembly, "s");
+        add("time_solve", t_solve, "s");
+
+        std::ostringstream line;
+        line << "cycle " << cycle << ", " << harmonic.name() << ": " << n_dofs
+             << " dofs, " << report.method;
+        if (report.iterations > 0)
+          line << " (" << report.iterations << " it.)";
+        line << ", residual " << std::setprecision(2)
+             << report.relative_residual;
+
+        if (!parameters.boundary_conditions.dirichlet.empty())
+          {
+            const Vector<double> reactions = problem.nodal_reactions();
+            for (const auto &[id, e] : parameters.boundary_conditions.dirichlet)
+              {
+                const BoundaryResultant R =
+                  problem.boundary_resultant(id, reactions);
+                const std::string b = "_boundary_" + std::to_string(id);
+                add("reaction_force" + b, R.force, "kN");
+                add("reaction_moment" + b, R.moment, "kN.m");
+                add("reaction_work" + b, R.work, "kJ");
+                if (R.force != 0. || R.moment != 0.)
+                  line << "\n    reactions on boundary " << id << ": force "
+                       << std::setprecision(6) << R.force << " kN, moment "
+                       << R.moment << " kN.m";
+              }
+          }
+        if (const RigidFoundation *foundation = problem.get_foundation())
+          {
+            const RigidMotion m = foundation->motion(problem.get_solution());
+            add("foundation_horizontal_displacement",
+                m.horizontal_displacement,
+                "m");
+            add("foundation_rotation", m.rotation, "rad");
+            add("foundation_vertical_displacement",
+                m.vertical_displacement,
+                "m");
+            add("foundation_twist", m.twist, "rad");
+            if (parameters.rigid_foundation.stiffness_coefficients &&
+                harmonic.n == 1 && harmonic.family == Family::symmetric)
+              {
+                // The scene's own load may be zero: the unit-H
+                // and unit-M fields also steer the mesh.
+                const FoundationCoefficients c =
+                  problem.foundation_coefficients(&outcome.unit_solutions);
+                add("I_H", c.I_H, "-");
+                add("I_M", c.I_M, "-");
+                add("I_MH_from_H", c.I_MH_from_H, "-");
+                add("I_MH_from_M", c.I_MH_from_M, "-");
+                add("K_H", c.K_H, "-");
+                add("K_M", c.K_M, "-");
+                add("K_MH", c.K_MH, "-");
+                line << "\n    stiffness: K_H " << std::setprecision(6) << c.K_H
+                     << ", K_M " << c.K_M << ", K_MH " << c.K_MH
+                     << " (I_MH from H " << c.I_MH_from_H << ", from M "
+                     << c.I_MH_from_M << ")";
+              }
+            line << "\n    foundation: U_h " << std::setprecision(6)
+                 << m.horizontal_displacement << " m, Theta " << m.rotation
+                 << " rad, W " << m.vertical_displacement << " m, Phi "
+                 << m.twist << " rad";
+          }
+        if (parameters.exact_solution.enabled)
+          {
+            const ErrorNorms e = problem.compute_errors();
+            add("error_l2", e.l2, "m.m^1.5");
+            add("error_h1_seminorm", e.h1_seminorm, "m.m^0.5");
+            add("relative_error_l2", e.l2 / e.l2_exact, "-");
+            add("relative_error_h1", e.h1_seminorm / e.h1_exact, "-");
+            line << ", L2 error " << std::setprecision(4) << e.l2
+                 << ", H1 error " << e.h1_seminorm;
+            if (cycle > 0)
+              {
+                const double rate_l2 = std::log2(
+                  previous.get("error_l2", harmonic, cycle - 1) / e.l2);
+                const double rate_h1 = std::log2(
+                  previous.get("error_h1_seminorm", harmonic, cycle - 1) /
+                  e.h1_seminorm);
+                add("rate_l2", rate_l2, "-");
+                add("rate_h1", rate_h1, "-");
+                line << " (rates " << std::setprecision(3) << rate_l2 << ", "
+                     << rate_h1 << ")";
+              }
+          }
+        outcome.log = line.str();
+
+        if (write_files && parameters.output.write_vtu)
+          {
+            const std::string name = directory + "/solution-n" +
+                                     std::to_string(harmonic.n) + "-" +
+                                     to_string(harmonic.family) + "-cycle" +
+                                     std::to_string(cycle) + ".vtu";
+            outcome.files.push_back(name);
+            problem.write_vtu(name);
+          }
+        if (write_files && problem.get_interfaces() &&
+            parameters.output.write_interface_tractions)
+          for (const types::boundary_id id :
+               problem.get_interfaces()->boundary_ids())
+            {
+              const std::string name =
+                directory + "/interface-" + std::to_string(id) + "-n" +
+                std::to_string(harmonic.n) + "-" + to_string(harmonic.family) +
+                "-cycle" + std::to_string(cycle) + ".csv";
+              outcome.files.push_back(name);
+              problem.get_interfaces()->write_csv(id,
+                                                  problem.get_solution(),
+                                                  name);
+            }
+      }
+
+      // Keep the solution for the 3D reconstruction, not the matrix.
+      outcome.problem->free_system();
+    }
+
+    /**
+     * Run the harmonics on up to `n_threads` threads: they are independent
+     * systems on the same (read-only) mesh.
+     */
+    std::vector<HarmonicOutcome>
+    solve_harmonics(const AllParameters         &parameters,
+                    const std::vector<Harmonic> &harmonics,
+                    const Triangulation<2>      &triangulation,
+                    const LoadDecomposition     &loads,
+                    const unsigned int           cycle,
+                    const ResultsTable          &previous,
+                    const bool                   write_files,
+                    const unsigned int           n_threads)
+    {
+      std::vector<HarmonicOutcome> outcomes(harmonics.size());
+      std::atomic<unsigned int>    next(0);
+      const auto                   work = [&]() {
+        for (unsigned int i = next++; i < harmonics.size(); i = next++)
+          try
+            {
+              solve_harmonic(parameters,
+                             harmonics[i],
+                             triangulation,
+                             loads,
+                             cycle,
+                             previous,
+                             write_files,
+                             outcomes[i]);
+            }
+          catch (...)
+            {
+              outcomes[i].error = std::current_exception();
+            }
+      };
+      if (n_threads <= 1)
+        work();
+      else
+        {
+          std::vector<std::thread> threads;
+          for (unsigned int t = 0; t < n_threads; ++t)
+            threads.emplace_back(work);
+          for (auto &thread : threads)
+            thread.join();
+        }
+      return outcomes;
+    }
+  } // namespace
+
   Simulator::Simulator(const AllParameters &parameters)
     : parameters(parameters)
   {}
@@ -29,6 +263,9 @@ namespace FourierSSI
         parameters.mesh.build(triangulation);
         for (const auto &cell : triangulation.active_cell_iterators())
           parameters.materials.get(cell->material_id()); // throws if missing
+        const ScenePlan plan = plan_scene(parameters, triangulation);
+        for (const std::string &line : plan.log_lines)
+          log << line << std::endl;
 
         for (unsigned int cycle = 0;
              cycle < parameters.discretization.refinement_cycles;
@@ -49,183 +286,79 @@ namespace FourierSSI
                   triangulation.refine_global(1);
               }
             indicator = std::make_unique<RefinementIndicator>(triangulation);
-            for (const Harmonic &harmonic : parameters.discretization.harmonics)
+            const unsigned int n_threads = std::min<unsigned int>(
+              plan.harmonics.size(),
+              parameters.discretization.concurrent_harmonics > 0 ?
+                parameters.discretization.concurrent_harmonics :
+                MultithreadInfo::n_cores());
+            Timer                        cycle_timer;
+            std::vector<HarmonicOutcome> outcomes =
+              solve_harmonics(parameters,
+                              plan.harmonics,
+                              triangulation,
+                              plan.loads,
+                              cycle,
+                              results,
+                              write_files,
+                              n_threads);
+            const double cycle_time = cycle_timer.wall_time();
+            for (const HarmonicOutcome &outcome : outcomes)
+              written.insert(written.end(),
+                             outcome.files.begin(),
+                             outcome.files.end());
+            reconstruction = FieldReconstruction();
+            for (unsigned int i = 0; i < outcomes.size(); ++i)
               {
-                try
+                const HarmonicOutcome &outcome  = outcomes[i];
+                const Harmonic        &harmonic = plan.harmonics[i];
+                if (outcome.error)
+                  try
+                    {
+                      std::rethrow_exception(outcome.error);
+                    }
+                  catch (const std::exception &e)
+                    {
+                      // Say which harmonic and cycle failed.
+                      AssertThrow(false,
+                                  ExcMessage("cycle " + std::to_string(cycle) +
+                                             ", " + harmonic.name() + ": " +
+                                             one_line_message(e)));
+                    }
+                for (const auto &row : outcome.rows)
+                  results.add(
+                    row.quantity, harmonic, cycle, row.value, row.unit);
+                log << outcome.log << std::endl;
+                if (parameters.adaptivity.strategy == "kelly")
                   {
-                    HarmonicProblem problem(parameters,
-                                            harmonic,
-                                            triangulation);
-                    Timer           timer;
-                    problem.setup_system();
-                    const double t_setup = timer.wall_time();
-                    timer.restart();
-                    problem.assemble_system();
-                    const double t_assembly = timer.wall_time();
-                    timer.restart();
-                    const SolverReport report = problem.solve();
-                    if (parameters.adaptivity.strategy == "kelly")
-                      indicator->add_kelly(problem.get_dof_handler(),
-                                           problem.get_solution());
-                    const double t_solve = timer.wall_time();
-
-                    const auto add = [&](const std::string &q,
-                                         const double       v,
-                                         const std::string &unit) {
-                      results.add(q, harmonic, cycle, v, unit);
-                    };
-                    const double n_dofs = problem.get_dof_handler().n_dofs();
-                    add("n_cells", triangulation.n_active_cells(), "-");
-                    add("n_dofs", n_dofs, "-");
-                    add("n_axis_nodes", problem.n_axis_nodes, "-");
-                    add("solver_iterations", report.iterations, "-");
-                    add("solver_relative_residual",
-                        report.relative_residual,
-                        "-");
-                    add("strain_energy",
-                        problem.strain_energy(problem.get_solution()),
-                        "kJ");
-                    add("time_setup", t_setup, "s");
-                    add("time_assembly", t_assembly, "s");
-                    add("time_solve", t_solve, "s");
-
-                    std::ostringstream line;
-                    line << "cycle " << cycle << ", " << harmonic.name() << ": "
-                         << n_dofs << " dofs, " << report.method;
-                    if (report.iterations > 0)
-                      line << " (" << report.iterations << " it.)";
-                    line << ", residual " << std::setprecision(2)
-                         << report.relative_residual;
-
-                    if (!parameters.boundary_conditions.dirichlet.empty())
-                      {
-                        const Vector<double> reactions =
-                          problem.nodal_reactions();
-                        for (const auto &[id, e] :
-                             parameters.boundary_conditions.dirichlet)
-                          {
-                            const BoundaryResultant R =
-                              problem.boundary_resultant(id, reactions);
-                            const std::string b =
-                              "_boundary_" + std::to_string(id);
-                            add("reaction_force" + b, R.force, "kN");
-                            add("reaction_moment" + b, R.moment, "kN.m");
-                            add("reaction_work" + b, R.work, "kJ");
-                            if (R.force != 0. || R.moment != 0.)
-                              line << "\n    reactions on boundary " << id
-                                   << ": force " << std::setprecision(6)
-                                   << R.force << " kN, moment " << R.moment
-                                   << " kN.m";
-                          }
-                      }
-                    if (const RigidFoundation *foundation =
-                          problem.get_foundation())
-                      {
-                        const RigidMotion m =
-                          foundation->motion(problem.get_solution());
-                        add("foundation_horizontal_displacement",
-                            m.horizontal_displacement,
-                            "m");
-                        add("foundation_rotation", m.rotation, "rad");
-                        add("foundation_vertical_displacement",
-                            m.vertical_displacement,
-                            "m");
-                        add("foundation_twist", m.twist, "rad");
-                        if (parameters.rigid_foundation
-                              .stiffness_coefficients &&
-                            harmonic.n == 1 &&
-                            harmonic.family == Family::symmetric)
-                          {
-                            std::vector<Vector<double>>  unit_solutions;
-                            const FoundationCoefficients c =
-                              problem.foundation_coefficients(&unit_solutions);
-                            // The scene's own load may be zero: let the
-                            // unit-H and unit-M fields steer the mesh.
-                            if (parameters.adaptivity.strategy == "kelly")
-                              for (const auto &field : unit_solutions)
-                                indicator->add_kelly(problem.get_dof_handler(),
-                                                     field);
-                            add("I_H", c.I_H, "-");
-                            add("I_M", c.I_M, "-");
-                            add("I_MH_from_H", c.I_MH_from_H, "-");
-                            add("I_MH_from_M", c.I_MH_from_M, "-");
-                            add("K_H", c.K_H, "-");
-                            add("K_M", c.K_M, "-");
-                            add("K_MH", c.K_MH, "-");
-                            line << "\n    stiffness: K_H "
-                                 << std::setprecision(6) << c.K_H << ", K_M "
-                                 << c.K_M << ", K_MH " << c.K_MH
-                                 << " (I_MH from H " << c.I_MH_from_H
-                                 << ", from M " << c.I_MH_from_M << ")";
-                          }
-                        line << "\n    foundation: U_h " << std::setprecision(6)
-                             << m.horizontal_displacement << " m, Theta "
-                             << m.rotation << " rad, W "
-                             << m.vertical_displacement << " m, Phi " << m.twist
-                             << " rad";
-                      }
-                    if (parameters.exact_solution.enabled)
-                      {
-                        const ErrorNorms e = problem.compute_errors();
-                        add("error_l2", e.l2, "m.m^1.5");
-                        add("error_h1_seminorm", e.h1_seminorm, "m.m^0.5");
-                        add("relative_error_l2", e.l2 / e.l2_exact, "-");
-                        add("relative_error_h1",
-                            e.h1_seminorm / e.h1_exact,
-                            "-");
-                        line << ", L2 error " << std::setprecision(4) << e.l2
-                             << ", H1 error " << e.h1_seminorm;
-                        if (cycle > 0)
-                          {
-                            const double rate_l2 = std::log2(
-                              results.get("error_l2", harmonic, cycle - 1) /
-                              e.l2);
-                            const double rate_h1 =
-                              std::log2(results.get("error_h1_seminorm",
-                                                    harmonic,
-                                                    cycle - 1) /
-                                        e.h1_seminorm);
-                            add("rate_l2", rate_l2, "-");
-                            add("rate_h1", rate_h1, "-");
-                            line << " (rates " << std::setprecision(3)
-                                 << rate_l2 << ", " << rate_h1 << ")";
-                          }
-                      }
-                    log << line.str() << std::endl;
-
-                    if (write_files && parameters.output.write_vtu)
-                      {
-                        const std::string name =
-                          directory + "/solution-n" +
-                          std::to_string(harmonic.n) + "-" +
-                          to_string(harmonic.family) + "-cycle" +
-                          std::to_string(cycle) + ".vtu";
-                        written.push_back(name);
-                        problem.write_vtu(name);
-                      }
-                    if (write_files && problem.get_interfaces())
-                      for (const types::boundary_id id :
-                           problem.get_interfaces()->boundary_ids())
-                        {
-                          const std::string name =
-                            directory + "/interface-" + std::to_string(id) +
-                            "-n" + std::to_string(harmonic.n) + "-" +
-                            to_string(harmonic.family) + "-cycle" +
-                            std::to_string(cycle) + ".csv";
-                          written.push_back(name);
-                          problem.get_interfaces()->write_csv(
-                            id, problem.get_solution(), name);
-                        }
+                    indicator->add_kelly(outcome.problem->get_dof_handler(),
+                                         outcome.problem->get_solution());
+                    for (const auto &field : outcome.unit_solutions)
+                      indicator->add_kelly(outcome.problem->get_dof_handler(),
+                                           field);
                   }
-                catch (const std::exception &e)
-                  {
-                    // Say which harmonic and cycle failed.
-                    AssertThrow(false,
-                                ExcMessage("cycle " + std::to_string(cycle) +
-                                           ", " + harmonic.name() + ": " +
-                                           one_line_message(e)));
-                  }
+                reconstruction.add(outcome.problem);
               }
+            log << "cycle " << cycle << ": " << plan.harmonics.size()
+                << " harmonic(s) on " << n_threads << " thread(s), "
+                << std::setprecision(3) << cycle_time << " s" << std::endl;
+          }
+        if (write_files && !parameters.output.lines.empty())
+          {
+            const std::string name = directory + "/lines-3d.csv";
+            written.push_back(name);
+            reconstruction.write_lines_csv(parameters.output.lines,
+                                           parameters.output.theta_degrees,
+                                           name);
+            log << "3D reconstruction along " << parameters.output.lines.size()
+                << " line(s) written to " << name << std::endl;
+          }
+        if (write_files && parameters.output.write_3d_vtu)
+          {
+            const std::string name = directory + "/solution-3d.vtu";
+            written.push_back(name);
+            reconstruction.write_revolved_vtu(parameters.output.theta_divisions,
+                                              name);
+            log << "revolved 3D field written to " << name << std::endl;
           }
         if (write_files)
           {

@@ -21,6 +21,7 @@
 #include <fourier_ssi/harmonic_operator.h>
 #include <fourier_ssi/interface_integrator.h>
 #include <fourier_ssi/linear_solver.h>
+#include <fourier_ssi/load_decomposition.h>
 #include <fourier_ssi/parameters.h>
 #include <fourier_ssi/rigid_foundation.h>
 #include <map>
@@ -65,9 +66,15 @@ namespace FourierSSI
   class HarmonicProblem
   {
   public:
-    HarmonicProblem(const AllParameters    &parameters,
-                    const Harmonic         &harmonic,
-                    const Triangulation<2> &triangulation);
+    /**
+     * `loads`: the scene's theta-dependent loads (ScenePlan); their
+     * amplitudes for this harmonic join the amplitude expressions of the
+     * Boundary conditions subsection.
+     */
+    HarmonicProblem(const AllParameters     &parameters,
+                    const Harmonic          &harmonic,
+                    const Triangulation<2>  &triangulation,
+                    const LoadDecomposition *loads = nullptr);
 
     /** DoFs, constraints (hanging nodes, Dirichlet, axis), sparsity. */
     void
@@ -149,6 +156,19 @@ namespace FourierSSI
       return harmonic_operator;
     }
 
+    const MaterialLibrary &
+    get_materials() const
+    {
+      return parameters.materials;
+    }
+
+    /**
+     * Free the matrix and load vector once everything that needs them is
+     * done; the solution and DoFs stay for post-processing.
+     */
+    void
+    free_system();
+
     unsigned int n_axis_nodes = 0;
 
   private:
@@ -178,8 +198,11 @@ namespace FourierSSI
     std::unique_ptr<FEValues<2>>       cell_values;
     std::unique_ptr<FEFaceValues<2>>   face_values;
     std::unique_ptr<FunctionParser<2>> body_force;
-    std::map<types::boundary_id, std::unique_ptr<FunctionParser<2>>> tractions;
-    std::unique_ptr<InterfaceIntegrator>                             interfaces;
+    /** Traction amplitudes per boundary id (expressions and theta loads). */
+    std::map<types::boundary_id, std::vector<std::unique_ptr<Function<2>>>>
+                                         tractions;
+    const LoadDecomposition             *loads;
+    std::unique_ptr<InterfaceIntegrator> interfaces;
   };
 } // namespace FourierSSI
 

@@ -72,6 +72,12 @@ namespace FourierSSI
       materials[id] = material;
     }
 
+    const std::map<types::material_id, ElasticMaterial> &
+    all() const
+    {
+      return materials;
+    }
+
     double surface_elevation = 0.;
 
   private:

@@ -11,6 +11,7 @@
 #include <fourier_ssi/harmonic.h>
 #include <fourier_ssi/interface_pairing.h>
 #include <fourier_ssi/linear_solver.h>
+#include <fourier_ssi/load_decomposition.h>
 #include <fourier_ssi/material.h>
 #include <fourier_ssi/mesh_builder.h>
 #include <fourier_ssi/rigid_foundation.h>
@@ -29,9 +30,13 @@ namespace FourierSSI
     void
     parse_parameters(ParameterHandler &prm);
 
+    /** Harmonics chosen from the loads (Harmonics = auto), see ScenePlan. */
+    bool                  automatic = false;
     std::vector<Harmonic> harmonics;
     unsigned int          degree            = 2;
     unsigned int          refinement_cycles = 1;
+    /** Harmonics solved at the same time (threads); 0: one per core. */
+    unsigned int concurrent_harmonics = 0;
   };
 
   /** Optional exact amplitudes for error norms (tests, verification). */
@@ -46,6 +51,13 @@ namespace FourierSSI
     ComponentExpressions amplitudes;
   };
 
+  /** A straight line in the (r, z) plane sampled at n_points points. */
+  struct OutputLine
+  {
+    Point<2>     start, end;
+    unsigned int n_points = 2;
+  };
+
   struct OutputParameters
   {
     static void
@@ -56,6 +68,16 @@ namespace FourierSSI
     std::string directory    = "output";
     std::string results_file = "results.csv";
     bool        write_vtu    = true;
+    /** Stress amplitudes in the per-harmonic VTU. */
+    bool write_stresses = true;
+    /** Relative displacement and traction per interface node pair (CSV). */
+    bool write_interface_tractions = true;
+    /** 3D reconstruction along lines at the angles theta_degrees. */
+    std::vector<OutputLine> lines;
+    std::vector<double>     theta_degrees;
+    /** The mesh revolved about the axis with the 3D displacement. */
+    bool         write_3d_vtu    = false;
+    unsigned int theta_divisions = 36;
   };
 
   struct AllParameters
@@ -86,6 +108,7 @@ namespace FourierSSI
     InterfaceParameters       interfaces;
     RigidFoundationParameters rigid_foundation;
     AdaptivityParameters      adaptivity;
+    LoadParameters            loads;
   };
 } // namespace FourierSSI
 

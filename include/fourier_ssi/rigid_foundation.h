@@ -46,6 +46,8 @@ namespace FourierSSI
     double       reference_elevation = 0.;
     double       horizontal_force    = 0.; // H [kN], n = 1
     double       moment              = 0.; // M [kN.m], n = 1
+    double       horizontal_force_y  = 0.; // H_y [kN], n = 1 antisymmetric
+    double       moment_x            = 0.; // M_x [kN.m], n = 1 antisymmetric
     double       vertical_force      = 0.; // V [kN], n = 0 symmetric
     double       torque              = 0.; // T [kN.m], n = 0 antisymmetric
     /** Also solve the unit H and unit M cases (thesis eqs 4.2-4.5). */

@@ -1,12 +1,15 @@
 /**
- * The driver: .prm parameters -> mesh -> for each refinement cycle and each
- * requested harmonic, one HarmonicProblem -> results (CSV, VTU). Files are
+ * The driver: .prm parameters -> mesh -> scene plan (the harmonics the loads
+ * need, the effects to simulate) -> for each refinement cycle, the harmonics
+ * as independent HarmonicProblems solved concurrently -> results (CSV, VTU,
+ * 3D reconstruction of the last cycle). Files are
  * written only for a run that succeeded; a failure removes what this run
  * wrote, so nothing partial is left looking like a result.
  */
 #ifndef fourier_ssi_simulator_h
 #define fourier_ssi_simulator_h
 
+#include <fourier_ssi/field_reconstruction.h>
 #include <fourier_ssi/parameters.h>
 #include <fourier_ssi/results_table.h>
 #include <ostream>
@@ -22,8 +25,16 @@ namespace FourierSSI
     ResultsTable
     run(std::ostream &log, const bool write_files = true);
 
+    /** The harmonics of the last cycle, summed in 3D (after run()). */
+    const FieldReconstruction &
+    get_reconstruction() const
+    {
+      return reconstruction;
+    }
+
   private:
     const AllParameters &parameters;
+    FieldReconstruction  reconstruction;
   };
 } // namespace FourierSSI
 
