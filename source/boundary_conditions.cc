@@ -2,6 +2,7 @@
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/boundary_conditions.h>
 #include <iostream>
+#include <mutex>
 #include <sstream>
 
 namespace FourierSSI
@@ -155,6 +156,10 @@ namespace FourierSSI
       if (expressions.given[c] && !expressions.expression[c].empty())
         formulas[c] = expressions.expression[c];
     auto function = std::make_unique<FunctionParser<2>>(3);
+    // std::cerr is process-wide and harmonics are set up in several threads:
+    // one redirection at a time, or a thread restores another's buffer.
+    static std::mutex           cerr_mutex;
+    std::lock_guard<std::mutex> lock(cerr_mutex);
     // deal.II's muparser wrapper prints parse errors to std::cerr before it
     // throws; keep them off the terminal so the user sees one clean line.
     std::ostringstream    swallowed;

@@ -3,6 +3,7 @@
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/load_decomposition.h>
 #include <iostream>
+#include <mutex>
 #include <sstream>
 
 namespace FourierSSI
@@ -69,6 +70,10 @@ namespace FourierSSI
       if (expressions.given[c] && !expressions.expression[c].empty())
         formulas[c] = expressions.expression[c];
     auto function = std::make_shared<FunctionParser<3>>(3);
+    // std::cerr is process-wide and harmonics are set up in several threads:
+    // one redirection at a time, or a thread restores another's buffer.
+    static std::mutex           cerr_mutex;
+    std::lock_guard<std::mutex> lock(cerr_mutex);
     // muparser reports parse errors on std::cerr before throwing: keep the
     // terminal to the one-line error.
     std::ostringstream    swallowed;

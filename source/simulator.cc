@@ -258,7 +258,8 @@ namespace FourierSSI
       {
         if (write_files)
           std::filesystem::create_directories(directory);
-        Triangulation<2>                     triangulation;
+        reconstruction = FieldReconstruction();
+        triangulation.clear();
         std::unique_ptr<RefinementIndicator> indicator;
         parameters.mesh.build(triangulation);
         for (const auto &cell : triangulation.active_cell_iterators())
@@ -273,6 +274,9 @@ namespace FourierSSI
           {
             if (cycle > 0)
               {
+                // Release the previous cycle's fields before the mesh
+                // changes under their DoF handlers.
+                reconstruction = FieldReconstruction();
                 if (parameters.adaptivity.strategy == "kelly")
                   {
                     std::set<types::boundary_id> interface_ids;
@@ -306,7 +310,6 @@ namespace FourierSSI
               written.insert(written.end(),
                              outcome.files.begin(),
                              outcome.files.end());
-            reconstruction = FieldReconstruction();
             for (unsigned int i = 0; i < outcomes.size(); ++i)
               {
                 const HarmonicOutcome &outcome  = outcomes[i];

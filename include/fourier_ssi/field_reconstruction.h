@@ -42,6 +42,13 @@ namespace FourierSSI
       return problems.empty();
     }
 
+    /** The solved harmonics, in the order they were added. */
+    const std::vector<std::shared_ptr<const HarmonicProblem>> &
+    get_problems() const
+    {
+      return problems;
+    }
+
     /** The amplitudes (no trig factor) of one harmonic at a point. */
     static FieldValues
     amplitudes(const HarmonicProblem &problem, const Point<2> &point);

@@ -9,6 +9,7 @@
 #ifndef fourier_ssi_simulator_h
 #define fourier_ssi_simulator_h
 
+#include <deal.II/grid/tria.h>
 #include <fourier_ssi/field_reconstruction.h>
 #include <fourier_ssi/parameters.h>
 #include <fourier_ssi/results_table.h>
@@ -34,7 +35,9 @@ namespace FourierSSI
 
   private:
     const AllParameters &parameters;
-    FieldReconstruction  reconstruction;
+    /** Owned here: the reconstruction's DoF handlers live on it. */
+    Triangulation<2>    triangulation;
+    FieldReconstruction reconstruction;
   };
 } // namespace FourierSSI
 
