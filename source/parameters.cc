@@ -29,7 +29,7 @@ namespace FourierSSI
                       "pairs with the 10-node interface element).");
     prm.declare_entry("Refinement cycles",
                       "1",
-                      Patterns::Integer(1, 12),
+                      Patterns::Integer(1, 40),
                       "Solve, refine globally, solve again ... (convergence "
                       "studies).");
     prm.leave_subsection();

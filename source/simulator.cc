@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <fourier_ssi/adaptivity.h>
 #include <fourier_ssi/command_line.h>
+#include <fourier_ssi/goal_estimator.h>
 #include <fourier_ssi/harmonic_problem.h>
 #include <fourier_ssi/simulator.h>
 #include <iomanip>
@@ -26,6 +27,11 @@ namespace FourierSSI
           std::filesystem::create_directories(directory);
         Triangulation<2>                     triangulation;
         std::unique_ptr<RefinementIndicator> indicator;
+        const std::string &strategy = parameters.adaptivity.strategy;
+        const bool         adaptive = strategy == "kelly" || strategy == "goal";
+        std::unique_ptr<GoalEstimator> goal_estimator;
+        if (strategy == "goal")
+          goal_estimator = std::make_unique<GoalEstimator>(parameters);
         parameters.mesh.build(triangulation);
         for (const auto &cell : triangulation.active_cell_iterators())
           parameters.materials.get(cell->material_id()); // throws if missing
@@ -36,7 +42,7 @@ namespace FourierSSI
           {
             if (cycle > 0)
               {
-                if (parameters.adaptivity.strategy == "kelly")
+                if (adaptive)
                   {
                     std::set<types::boundary_id> interface_ids;
                     for (const auto &[id, law] : parameters.interfaces.laws)
@@ -49,6 +55,13 @@ namespace FourierSSI
                   triangulation.refine_global(1);
               }
             indicator = std::make_unique<RefinementIndicator>(triangulation);
+            // Per-cycle record (summed over the harmonics): DoFs, phase
+            // times setup, cell assembly, interface assembly, solve (scene
+            // and unit loads), estimate; the goal error (goal strategy).
+            double                cycle_dofs       = 0.;
+            std::array<double, 5> cycle_times      = {{0., 0., 0., 0., 0.}};
+            double                cycle_goal_error = -1.;
+            std::string           cycle_goal_values;
             for (const Harmonic &harmonic : parameters.discretization.harmonics)
               {
                 try
@@ -61,13 +74,30 @@ namespace FourierSSI
                     const double t_setup = timer.wall_time();
                     timer.restart();
                     problem.assemble_system();
-                    const double t_assembly = timer.wall_time();
+                    const double t_interface = problem.time_interface_assembly;
+                    const double t_assembly  = timer.wall_time() - t_interface;
                     timer.restart();
-                    const SolverReport report = problem.solve();
-                    if (parameters.adaptivity.strategy == "kelly")
-                      indicator->add_kelly(problem.get_dof_handler(),
-                                           problem.get_solution());
-                    const double t_solve = timer.wall_time();
+                    // A stiffness scene solves its load and the unit-H and
+                    // unit-M loads with one factorization.
+                    const bool coefficients =
+                      parameters.rigid_foundation.stiffness_coefficients &&
+                      harmonic.n == 1 && harmonic.family == Family::symmetric &&
+                      problem.get_foundation();
+                    FoundationCoefficients      c;
+                    std::vector<Vector<double>> unit_solutions;
+                    const SolverReport          report =
+                      coefficients ?
+                                 problem.solve_with_unit_loads(c, &unit_solutions) :
+                                 problem.solve();
+                    double t_solve    = timer.wall_time();
+                    double t_estimate = 0.;
+                    if (strategy == "kelly")
+                      {
+                        timer.restart();
+                        indicator->add_kelly(problem.get_dof_handler(),
+                                             problem.get_solution());
+                        t_estimate += timer.wall_time();
+                      }
 
                     const auto add = [&](const std::string &q,
                                          const double       v,
@@ -85,9 +115,6 @@ namespace FourierSSI
                     add("strain_energy",
                         problem.strain_energy(problem.get_solution()),
                         "kJ");
-                    add("time_setup", t_setup, "s");
-                    add("time_assembly", t_assembly, "s");
-                    add("time_solve", t_solve, "s");
 
                     std::ostringstream line;
                     line << "cycle " << cycle << ", " << harmonic.name() << ": "
@@ -131,20 +158,55 @@ namespace FourierSSI
                             m.vertical_displacement,
                             "m");
                         add("foundation_twist", m.twist, "rad");
-                        if (parameters.rigid_foundation
-                              .stiffness_coefficients &&
-                            harmonic.n == 1 &&
-                            harmonic.family == Family::symmetric)
+                        if (coefficients)
                           {
-                            std::vector<Vector<double>>  unit_solutions;
-                            const FoundationCoefficients c =
-                              problem.foundation_coefficients(&unit_solutions);
+                            timer.restart();
                             // The scene's own load may be zero: let the
                             // unit-H and unit-M fields steer the mesh.
-                            if (parameters.adaptivity.strategy == "kelly")
+                            if (strategy == "kelly")
                               for (const auto &field : unit_solutions)
                                 indicator->add_kelly(problem.get_dof_handler(),
                                                      field);
+                            if (goal_estimator)
+                              {
+                                const GoalEstimate g =
+                                  goal_estimator->estimate(harmonic,
+                                                           triangulation,
+                                                           problem,
+                                                           unit_solutions,
+                                                           c);
+                                indicator->add(g.indicators);
+                                add("goal_error_K_H", g.relative_error[0], "-");
+                                add("goal_error_K_M", g.relative_error[1], "-");
+                                add("goal_error_K_MH",
+                                    g.relative_error[2],
+                                    "-");
+                                add("goal_error", g.goal_error, "-");
+                                add("goal_cell_share", g.cell_share, "-");
+                                add("enriched_n_dofs", g.enriched_dofs, "-");
+                                add("K_H_enriched", g.enriched.K_H, "-");
+                                add("K_M_enriched", g.enriched.K_M, "-");
+                                add("K_MH_enriched", g.enriched.K_MH, "-");
+                                line << "\n    goal ("
+                                     << parameters.adaptivity.goal
+                                     << "): estimated relative error K_H "
+                                     << std::setprecision(2)
+                                     << g.relative_error[0] << ", K_M "
+                                     << g.relative_error[1] << ", K_MH "
+                                     << g.relative_error[2]
+                                     << "; FE_Q(4) on this mesh ("
+                                     << g.enriched_dofs << " dofs): K_H "
+                                     << std::setprecision(7) << g.enriched.K_H
+                                     << ", K_M " << g.enriched.K_M << ", K_MH "
+                                     << g.enriched.K_MH;
+                                cycle_goal_error =
+                                  std::max(cycle_goal_error, g.goal_error);
+                                std::ostringstream v;
+                                v << ", K_H " << std::setprecision(7) << c.K_H
+                                  << ", K_M " << c.K_M << ", K_MH " << c.K_MH;
+                                cycle_goal_values = v.str();
+                              }
+                            t_estimate += timer.wall_time();
                             add("I_H", c.I_H, "-");
                             add("I_M", c.I_M, "-");
                             add("I_MH_from_H", c.I_MH_from_H, "-");
@@ -191,6 +253,16 @@ namespace FourierSSI
                                  << rate_l2 << ", " << rate_h1 << ")";
                           }
                       }
+                    add("time_setup", t_setup, "s");
+                    add("time_assembly", t_assembly, "s");
+                    add("time_interface_assembly", t_interface, "s");
+                    add("time_solve", t_solve, "s");
+                    add("time_estimate", t_estimate, "s");
+                    cycle_dofs += n_dofs;
+                    const std::array<double, 5> t = {
+                      {t_setup, t_assembly, t_interface, t_solve, t_estimate}};
+                    for (unsigned int i = 0; i < t.size(); ++i)
+                      cycle_times[i] += t[i];
                     log << line.str() << std::endl;
 
                     if (write_files && parameters.output.write_vtu)
@@ -225,6 +297,25 @@ namespace FourierSSI
                                            ", " + harmonic.name() + ": " +
                                            one_line_message(e)));
                   }
+              }
+            std::ostringstream summary;
+            summary << "cycle " << cycle << " summary: " << cycle_dofs
+                    << " dofs";
+            if (cycle_goal_error >= 0.)
+              summary << ", estimated goal error " << std::setprecision(2)
+                      << cycle_goal_error << cycle_goal_values;
+            summary << "; wall time [s] setup " << std::setprecision(3)
+                    << cycle_times[0] << ", assembly " << cycle_times[1]
+                    << ", interface assembly " << cycle_times[2] << ", solve "
+                    << cycle_times[3] << ", estimate " << cycle_times[4];
+            log << summary.str() << std::endl;
+            // Stop once the estimated goal error meets the tolerance.
+            if (cycle_goal_error >= 0. &&
+                cycle_goal_error < parameters.adaptivity.goal_tolerance)
+              {
+                log << "goal tolerance " << parameters.adaptivity.goal_tolerance
+                    << " reached: stop after cycle " << cycle << std::endl;
+                break;
               }
           }
         if (write_files)
