@@ -14,16 +14,35 @@ namespace FourierSSI
     prm.enter_subsection("Adaptivity");
     prm.declare_entry("Strategy",
                       "global",
-                      Patterns::Selection("global|kelly"),
-                      "Refinement between cycles: global (uniform) or kelly "
-                      "(Kelly indicators summed over the harmonics; both "
-                      "sides of an interface are refined alike).");
+                      Patterns::Selection("global|kelly|goal"),
+                      "Refinement between cycles: global (uniform), kelly "
+                      "(Kelly indicators summed over the harmonics) or goal "
+                      "(dual-weighted residual for the rigid-foundation "
+                      "stiffness named by 'Goal': needs Rigid foundation/"
+                      "Stiffness coefficients = true, harmonic n = 1 "
+                      "symmetric and Polynomial degree = 2; the error is "
+                      "estimated with an FE_Q(4) solve on the same mesh, "
+                      "doc/accuracy-vs-time.md). Both sides of an interface "
+                      "are refined alike.");
     prm.declare_entry("Refine fraction",
                       "0.3",
                       Patterns::Double(0., 1.),
-                      "kelly: the cells holding this fraction of the summed "
-                      "indicator are refined per cycle (deal.II fixed "
-                      "fraction).");
+                      "kelly, goal: the cells holding this fraction of the "
+                      "summed indicator are refined per cycle (deal.II fixed "
+                      "fraction; goal indicators are squared quantities, so "
+                      "a larger fraction, e.g. 0.8, suits them).");
+    prm.declare_entry("Goal",
+                      "all",
+                      Patterns::Selection("K_H|K_M|K_MH|all"),
+                      "goal: the stiffness coefficient whose error steers "
+                      "the mesh and stops the cycles (all: the largest "
+                      "relative error of K_H, K_M, K_MH).");
+    prm.declare_entry("Goal tolerance",
+                      "0",
+                      Patterns::Double(0.),
+                      "goal: stop refining once the estimated relative error "
+                      "of the goal is below this value (0: run every "
+                      "Refinement cycle).");
     prm.leave_subsection();
   }
 
@@ -33,6 +52,8 @@ namespace FourierSSI
     prm.enter_subsection("Adaptivity");
     strategy        = prm.get("Strategy");
     refine_fraction = prm.get_double("Refine fraction");
+    goal            = prm.get("Goal");
+    goal_tolerance  = prm.get_double("Goal tolerance");
     prm.leave_subsection();
   }
 
@@ -57,6 +78,13 @@ namespace FourierSSI
     if (norm > 0.)
       for (unsigned int i = 0; i < kelly.size(); ++i)
         indicators(i) += kelly(i) / norm;
+  }
+
+  void
+  RefinementIndicator::add(const Vector<float> &cell_indicators)
+  {
+    AssertDimension(cell_indicators.size(), indicators.size());
+    indicators += cell_indicators;
   }
 
   void

@@ -1,4 +1,5 @@
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
@@ -274,7 +275,11 @@ namespace FourierSSI
           cell_matrix, cell_rhs, dof_indices, system_matrix, system_rhs);
       }
     if (interfaces)
-      interfaces->assemble(constraints, system_matrix, system_rhs);
+      {
+        Timer timer;
+        interfaces->assemble(constraints, system_matrix, system_rhs);
+        time_interface_assembly = timer.wall_time();
+      }
     // Foundation loads act on the (unconstrained) master DoFs.
     if (foundation)
       foundation->add_loads(system_rhs);
@@ -306,6 +311,62 @@ namespace FourierSSI
     AssertThrow(foundation, ExcMessage("Rigid foundation is not enabled"));
     SparseDirectUMFPACK direct;
     direct.initialize(system_matrix);
+    return unit_load_coefficients(direct, unit_solutions);
+  }
+
+  SolverReport
+  HarmonicProblem::solve_with_unit_loads(
+    FoundationCoefficients      &coefficients,
+    std::vector<Vector<double>> *unit_solutions)
+  {
+    AssertThrow(foundation, ExcMessage("Rigid foundation is not enabled"));
+    if (parameters.solver.method != "direct" || system_rhs.l2_norm() == 0.)
+      {
+        // Nothing to share: an iterative scene solve, or a zero load (its
+        // factorization is skipped).
+        const SolverReport report = solve();
+        coefficients              = foundation_coefficients(unit_solutions);
+        return report;
+      }
+    SparseDirectUMFPACK direct;
+    try
+      {
+        direct.initialize(system_matrix);
+      }
+    catch (const std::exception &)
+      {
+        AssertThrow(false,
+                    ExcMessage("Linear solver: UMFPACK could not factorize "
+                               "the matrix (singular system: is the body "
+                               "free to move? check the supports)"));
+      }
+    SolverReport report;
+    report.method = "direct (factorization shared with the unit H, M cases)";
+    direct.vmult(solution, system_rhs);
+    // The same residual check as LinearSolver::solve().
+    Vector<double> residual(system_rhs.size());
+    system_matrix.vmult(residual, solution);
+    residual -= system_rhs;
+    report.relative_residual = residual.l2_norm() / system_rhs.l2_norm();
+    AssertThrow(std::isfinite(report.relative_residual) &&
+                  report.relative_residual <= parameters.solver.residual_check,
+                ExcMessage("Linear solver: relative residual " +
+                           std::to_string(report.relative_residual) +
+                           " exceeds 'Residual check' = " +
+                           std::to_string(parameters.solver.residual_check) +
+                           " (singular or ill-posed system: check supports "
+                           "and interface stiffness)"));
+    foundation->check_supported(solution, constraints);
+    constraints.distribute(solution);
+    coefficients = unit_load_coefficients(direct, unit_solutions);
+    return report;
+  }
+
+  FoundationCoefficients
+  HarmonicProblem::unit_load_coefficients(
+    const SparseDirectUMFPACK   &direct,
+    std::vector<Vector<double>> *unit_solutions) const
+  {
     std::array<RigidMotion, 2> motions;
     for (const unsigned int load_case : {0u, 1u})
       {
@@ -352,6 +413,40 @@ namespace FourierSSI
     if (interfaces)
       energy += interfaces->energy(field);
     return energy;
+  }
+
+  void
+  HarmonicProblem::cell_energy_products(const Vector<double> &x,
+                                        const Vector<double> &y,
+                                        Vector<double>       &xx,
+                                        Vector<double>       &yy,
+                                        Vector<double>       &xy) const
+  {
+    const unsigned int n_cells =
+      dof_handler.get_triangulation().n_active_cells();
+    xx.reinit(n_cells);
+    yy.reinit(n_cells);
+    xy.reinit(n_cells);
+    FullMatrix<double>                   cell_matrix;
+    std::vector<types::global_dof_index> dof_indices(fe->n_dofs_per_cell());
+    Vector<double> local_x(fe->n_dofs_per_cell()), local_y(local_x),
+      product_x(local_x), product_y(local_x);
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        local_matrix(cell, cell_matrix, nullptr);
+        cell->get_dof_indices(dof_indices);
+        for (unsigned int i = 0; i < dof_indices.size(); ++i)
+          {
+            local_x(i) = x(dof_indices[i]);
+            local_y(i) = y(dof_indices[i]);
+          }
+        cell_matrix.vmult(product_x, local_x);
+        cell_matrix.vmult(product_y, local_y);
+        const unsigned int c = cell->active_cell_index();
+        xx(c)                = local_x * product_x;
+        yy(c)                = local_y * product_y;
+        xy(c)                = local_x * product_y;
+      }
   }
 
   Vector<double>

@@ -37,7 +37,7 @@ namespace FourierSSI
                       "are independent systems); 0: one per core.");
     prm.declare_entry("Refinement cycles",
                       "1",
-                      Patterns::Integer(1, 12),
+                      Patterns::Integer(1, 40),
                       "Solve, refine globally, solve again ... (convergence "
                       "studies).");
     prm.leave_subsection();

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fourier_ssi/adaptivity.h>
 #include <fourier_ssi/command_line.h>
+#include <fourier_ssi/goal_estimator.h>
 #include <fourier_ssi/harmonic_problem.h>
 #include <fourier_ssi/scene_plan.h>
 #include <fourier_ssi/simulator.h>
@@ -28,7 +29,13 @@ namespace FourierSSI
         double      value;
         std::string unit;
       };
-      std::vector<Row>         rows;
+      std::vector<Row> rows;
+      /** Phase times: setup, cells, interfaces, solve, estimate [s]. */
+      std::array<double, 5> times = {{0., 0., 0., 0., 0.}};
+      /** Goal strategy: the DWR indicators and estimated goal error. */
+      Vector<float>            goal_indicators;
+      double                   goal_error = -1.;
+      std::string              goal_values;
       std::string              log;
       std::vector<std::string> files;
       std::exception_ptr       error;
@@ -46,6 +53,7 @@ namespace FourierSSI
                    const unsigned int       cycle,
                    const ResultsTable      &previous,
                    const bool               write_files,
+                   const GoalEstimator     *goal_estimator,
                    HarmonicOutcome         &outcome)
     {
       const std::string &directory = parameters.output.directory;
@@ -61,10 +69,22 @@ namespace FourierSSI
         const double t_setup = timer.wall_time();
         timer.restart();
         problem.assemble_system();
-        const double t_assembly = timer.wall_time();
+        const double t_interface = problem.time_interface_assembly;
+        const double t_assembly  = timer.wall_time() - t_interface;
         timer.restart();
-        const SolverReport report  = problem.solve();
-        const double       t_solve = timer.wall_time();
+        // A stiffness scene solves its load and the unit-H and unit-M loads
+        // with one factorization.
+        const bool coefficients =
+          parameters.rigid_foundation.stiffness_coefficients &&
+          harmonic.n == 1 && harmonic.family == Family::symmetric &&
+          problem.get_foundation();
+        FoundationCoefficients c;
+        const SolverReport     report =
+          coefficients ?
+                problem.solve_with_unit_loads(c, &outcome.unit_solutions) :
+                problem.solve();
+        const double t_solve    = timer.wall_time();
+        double       t_estimate = 0.;
 
         const auto add =
           [&](const std::string &q, const double v, const std::string &unit) {
@@ -79,9 +99,6 @@ namespace FourierSSI
         add("strain_energy",
             problem.strain_energy(problem.get_solution()),
             "kJ");
-        add("time_setup", t_setup, "s");
-        add("time_assembly", t_assembly, "s");
-        add("time_solve", t_solve, "s");
 
         std::ostringstream line;
         line << "cycle " << cycle << ", " << harmonic.name() << ": " << n_dofs
@@ -119,13 +136,42 @@ namespace FourierSSI
                 m.vertical_displacement,
                 "m");
             add("foundation_twist", m.twist, "rad");
-            if (parameters.rigid_foundation.stiffness_coefficients &&
-                harmonic.n == 1 && harmonic.family == Family::symmetric)
+            if (coefficients)
               {
-                // The scene's own load may be zero: the unit-H
-                // and unit-M fields also steer the mesh.
-                const FoundationCoefficients c =
-                  problem.foundation_coefficients(&outcome.unit_solutions);
+                if (goal_estimator)
+                  {
+                    timer.restart();
+                    const GoalEstimate g =
+                      goal_estimator->estimate(harmonic,
+                                               triangulation,
+                                               problem,
+                                               outcome.unit_solutions,
+                                               c);
+                    t_estimate += timer.wall_time();
+                    outcome.goal_indicators = g.indicators;
+                    outcome.goal_error      = g.goal_error;
+                    add("goal_error_K_H", g.relative_error[0], "-");
+                    add("goal_error_K_M", g.relative_error[1], "-");
+                    add("goal_error_K_MH", g.relative_error[2], "-");
+                    add("goal_error", g.goal_error, "-");
+                    add("goal_cell_share", g.cell_share, "-");
+                    add("enriched_n_dofs", g.enriched_dofs, "-");
+                    add("K_H_enriched", g.enriched.K_H, "-");
+                    add("K_M_enriched", g.enriched.K_M, "-");
+                    add("K_MH_enriched", g.enriched.K_MH, "-");
+                    line << "\n    goal (" << parameters.adaptivity.goal
+                         << "): estimated relative error K_H "
+                         << std::setprecision(2) << g.relative_error[0]
+                         << ", K_M " << g.relative_error[1] << ", K_MH "
+                         << g.relative_error[2] << "; FE_Q(4) on this mesh ("
+                         << g.enriched_dofs << " dofs): K_H "
+                         << std::setprecision(7) << g.enriched.K_H << ", K_M "
+                         << g.enriched.K_M << ", K_MH " << g.enriched.K_MH;
+                    std::ostringstream v;
+                    v << ", K_H " << std::setprecision(7) << c.K_H << ", K_M "
+                      << c.K_M << ", K_MH " << c.K_MH;
+                    outcome.goal_values = v.str();
+                  }
                 add("I_H", c.I_H, "-");
                 add("I_M", c.I_M, "-");
                 add("I_MH_from_H", c.I_MH_from_H, "-");
@@ -165,7 +211,9 @@ namespace FourierSSI
                      << rate_h1 << ")";
               }
           }
-        outcome.log = line.str();
+        outcome.log   = line.str();
+        outcome.times = {
+          {t_setup, t_assembly, t_interface, t_solve, t_estimate}};
 
         if (write_files && parameters.output.write_vtu)
           {
@@ -208,6 +256,7 @@ namespace FourierSSI
                     const unsigned int           cycle,
                     const ResultsTable          &previous,
                     const bool                   write_files,
+                    const GoalEstimator         *goal_estimator,
                     const unsigned int           n_threads)
     {
       std::vector<HarmonicOutcome> outcomes(harmonics.size());
@@ -223,6 +272,7 @@ namespace FourierSSI
                              cycle,
                              previous,
                              write_files,
+                             goal_estimator,
                              outcomes[i]);
             }
           catch (...)
@@ -261,6 +311,10 @@ namespace FourierSSI
         reconstruction = FieldReconstruction();
         triangulation.clear();
         std::unique_ptr<RefinementIndicator> indicator;
+        const std::string &strategy = parameters.adaptivity.strategy;
+        std::unique_ptr<GoalEstimator> goal_estimator;
+        if (strategy == "goal")
+          goal_estimator = std::make_unique<GoalEstimator>(parameters);
         parameters.mesh.build(triangulation);
         for (const auto &cell : triangulation.active_cell_iterators())
           parameters.materials.get(cell->material_id()); // throws if missing
@@ -277,7 +331,7 @@ namespace FourierSSI
                 // Release the previous cycle's fields before the mesh
                 // changes under their DoF handlers.
                 reconstruction = FieldReconstruction();
-                if (parameters.adaptivity.strategy == "kelly")
+                if (strategy == "kelly" || strategy == "goal")
                   {
                     std::set<types::boundary_id> interface_ids;
                     for (const auto &[id, law] : parameters.interfaces.laws)
@@ -304,16 +358,23 @@ namespace FourierSSI
                               cycle,
                               results,
                               write_files,
+                              goal_estimator.get(),
                               n_threads);
             const double cycle_time = cycle_timer.wall_time();
             for (const HarmonicOutcome &outcome : outcomes)
               written.insert(written.end(),
                              outcome.files.begin(),
                              outcome.files.end());
+            // Per-cycle record (summed over the harmonics): DoFs, phase
+            // times, and the estimated goal error of the goal strategy.
+            double                cycle_dofs       = 0.;
+            std::array<double, 5> cycle_times      = {{0., 0., 0., 0., 0.}};
+            double                cycle_goal_error = -1.;
+            std::string           cycle_goal_values;
             for (unsigned int i = 0; i < outcomes.size(); ++i)
               {
-                const HarmonicOutcome &outcome  = outcomes[i];
-                const Harmonic        &harmonic = plan.harmonics[i];
+                HarmonicOutcome &outcome  = outcomes[i];
+                const Harmonic  &harmonic = plan.harmonics[i];
                 if (outcome.error)
                   try
                     {
@@ -331,19 +392,62 @@ namespace FourierSSI
                   results.add(
                     row.quantity, harmonic, cycle, row.value, row.unit);
                 log << outcome.log << std::endl;
-                if (parameters.adaptivity.strategy == "kelly")
+                Timer timer;
+                if (strategy == "kelly")
                   {
+                    // The scene's own load may be zero: the unit-H and
+                    // unit-M fields also steer the mesh.
                     indicator->add_kelly(outcome.problem->get_dof_handler(),
                                          outcome.problem->get_solution());
                     for (const auto &field : outcome.unit_solutions)
                       indicator->add_kelly(outcome.problem->get_dof_handler(),
                                            field);
                   }
+                if (outcome.goal_indicators.size() > 0)
+                  {
+                    indicator->add(outcome.goal_indicators);
+                    cycle_goal_error =
+                      std::max(cycle_goal_error, outcome.goal_error);
+                    cycle_goal_values = outcome.goal_values;
+                  }
+                outcome.times[4] += timer.wall_time();
+                const std::array<std::string, 5> names = {
+                  {"time_setup",
+                   "time_assembly",
+                   "time_interface_assembly",
+                   "time_solve",
+                   "time_estimate"}};
+                for (unsigned int k = 0; k < 5; ++k)
+                  {
+                    results.add(
+                      names[k], harmonic, cycle, outcome.times[k], "s");
+                    cycle_times[k] += outcome.times[k];
+                  }
+                cycle_dofs += outcome.problem->get_dof_handler().n_dofs();
                 reconstruction.add(outcome.problem);
               }
-            log << "cycle " << cycle << ": " << plan.harmonics.size()
-                << " harmonic(s) on " << n_threads << " thread(s), "
-                << std::setprecision(3) << cycle_time << " s" << std::endl;
+            std::ostringstream summary;
+            summary << "cycle " << cycle << " summary: " << cycle_dofs
+                    << " dofs, " << plan.harmonics.size() << " harmonic(s) on "
+                    << n_threads << " thread(s), wall " << std::setprecision(3)
+                    << cycle_time << " s";
+            if (cycle_goal_error >= 0.)
+              summary << ", estimated goal error " << std::setprecision(2)
+                      << cycle_goal_error << cycle_goal_values;
+            summary << "; summed over harmonics [s]: setup "
+                    << std::setprecision(3) << cycle_times[0] << ", assembly "
+                    << cycle_times[1] << ", interface assembly "
+                    << cycle_times[2] << ", solve " << cycle_times[3]
+                    << ", estimate " << cycle_times[4];
+            log << summary.str() << std::endl;
+            // Stop once the estimated goal error meets the tolerance.
+            if (cycle_goal_error >= 0. &&
+                cycle_goal_error < parameters.adaptivity.goal_tolerance)
+              {
+                log << "goal tolerance " << parameters.adaptivity.goal_tolerance
+                    << " reached: stop after cycle " << cycle << std::endl;
+                break;
+              }
           }
         if (write_files && !parameters.output.lines.empty())
           {

@@ -15,6 +15,12 @@ Runs per case:
       (Global refinements 0), u4 with 3 levels only (4x the DoFs of u2)
   k2  FE_Q(2), Kelly (Strategy = kelly, Refine fraction 0.3)
   k4  FE_Q(4), Kelly on the u4 base mesh
+  g   goal-oriented (Strategy = goal, Goal = all, Refine fraction 0.8,
+      9 cycles) on the u4 base mesh: every cycle solves FE_Q(2) and, for the
+      error estimate, FE_Q(4) on the same mesh. One run gives two curves:
+      g2 = the FE_Q(2) values (DoFs of FE_Q(2)) with their estimated error,
+      g4 = the FE_Q(4) values of the estimator (DoFs of FE_Q(4)); both cost
+      the whole run up to that cycle.
 
 Reference per case and quantity: Richardson extrapolation from the three
 finest u4 meshes with the observed order p = log2(d1/d2); its uncertainty is
@@ -28,10 +34,13 @@ mesh refinement): the honest cost of an adaptive result at cycle k. For a
 uniform level k the cost of a direct run on that mesh is estimated as
 t_start + (t_cum(k) - t_cum(k-1)), t_start = time to the executable's first
 output line. results.csv phases (time_setup + time_assembly + time_solve) are
-kept as t_phases; they exclude the coefficient solves.
+kept as t_phases: setup + assembly + interface assembly + solve (scene and
+unit-load solves) + estimate (since the goal-oriented version; rows of
+cases not re-run keep the older sum, which left out the coefficient solves).
 
 Usage: benchmarks/accuracy-vs-time/run.py [--exe /tmp/build/fourier-ssi]
         [--cases a,b] [--from-csv]
+With --cases, the rows of the other cases are kept from the existing CSV.
 Writes accuracy-vs-time.csv, references.csv, summary.md and one PNG per case
 next to this script. One process at a time (timings: see summary.md).
 """
@@ -60,11 +69,18 @@ CASES["pile-Ld10-a1-nu0.25-rough"] = dict(scene="pile", alpha=1.0, nu=0.25,
 
 # label: (degree, strategy, cycles)
 RUNS = {"u2": (2, "global", 4), "u4": (4, "global", 4),
-        "k2": (2, "kelly", 12), "k4": (4, "kelly", 12)}  # 12: the prm maximum
+        "k2": (2, "kelly", 12), "k4": (4, "kelly", 12),
+        "g": (2, "goal", 9)}
+# curves: a run label, or the two curves of the goal run
+CURVES = ["u2", "u4", "k2", "k4", "g2", "g4"]
 STYLE = {"u2": ("tab:blue", "o", "--", "FE_Q(2) uniform"),
          "u4": ("tab:orange", "s", "--", "FE_Q(4) uniform"),
          "k2": ("tab:green", "^", "-", "FE_Q(2) Kelly"),
-         "k4": ("tab:red", "D", "-", "FE_Q(4) Kelly")}
+         "k4": ("tab:red", "D", "-", "FE_Q(4) Kelly"),
+         "g2": ("tab:purple", "v", "-", "FE_Q(2) goal (DWR)"),
+         "g4": ("black", "*", "-", "FE_Q(4) of the goal estimator")}
+PHASES = ("time_setup", "time_assembly", "time_interface_assembly", "time_solve",
+          "time_estimate")
 
 
 def prm_text(case, degree, strategy, cycles, directory):
@@ -74,7 +90,7 @@ def prm_text(case, degree, strategy, cycles, directory):
     with open(template) as f:
         text = f.read()
     if scene == "footing":
-        if degree == 2:
+        if degree == 2 and strategy != "goal":
             mesh = ["  set R cells = 6, 12", "  set R growth = 0.8, 1.3",
                     "  set Z cells = 12, 6", "  set Z growth = 0.8, 1"]
         else:
@@ -94,7 +110,8 @@ def prm_text(case, degree, strategy, cycles, directory):
              "subsection Discretization", f"  set Polynomial degree = {degree}",
              f"  set Refinement cycles = {cycles}", "end",
              "subsection Adaptivity", f"  set Strategy = {strategy}",
-             "  set Refine fraction = 0.3", "end",
+             f"  set Refine fraction = {0.8 if strategy == 'goal' else 0.3}",
+             "  set Goal = all", "end",
              "subsection Mesh", *mesh, "end",
              "subsection Materials", f"  set Materials = {materials}", "end",
              "subsection Interfaces", f"  set Interfaces = 5: {case['interface']}", "end",
@@ -134,13 +151,24 @@ def run_one(exe, case, label, work):
         # the cycle line arrives when the cycle is done, including the
         # coefficient solves
         dt = stamps[c] - (stamps[c - 1] if c > 0 else t_start)
-        phases = sum(vals[(q, c)] for q in ("time_setup", "time_assembly", "time_solve"))
-        cost = stamps[c] if strategy == "kelly" else t_start + dt
-        rows.append(dict(run=label, degree=degree, strategy=strategy, cycle=c,
-                         n_dofs=int(vals[("n_dofs", c)]),
-                         K_H=vals[("K_H", c)], K_M=vals[("K_M", c)], K_MH=vals[("K_MH", c)],
-                         t_phases=phases, t_cycle=dt, t_cum=stamps[c], t_start=t_start,
-                         cost=cost, t_process=t_total))
+        phases = sum(vals.get((q, c), 0.0) for q in PHASES)
+        cost = stamps[c] if strategy != "global" else t_start + dt
+        common = dict(degree=degree, strategy=strategy, cycle=c, t_phases=phases,
+                      t_cycle=dt, t_cum=stamps[c], t_start=t_start, cost=cost,
+                      t_process=t_total)
+        if strategy != "goal":
+            rows.append(dict(run=label, n_dofs=int(vals[("n_dofs", c)]),
+                             K_H=vals[("K_H", c)], K_M=vals[("K_M", c)],
+                             K_MH=vals[("K_MH", c)], **common))
+            continue
+        est = {f"est_{q}": vals[(f"goal_error_{q}", c)] for q in QUANTITIES}
+        rows.append(dict(run="g2", n_dofs=int(vals[("n_dofs", c)]),
+                         K_H=vals[("K_H", c)], K_M=vals[("K_M", c)],
+                         K_MH=vals[("K_MH", c)], **est, **common))
+        common["degree"] = 4
+        rows.append(dict(run="g4", n_dofs=int(vals[("enriched_n_dofs", c)]),
+                         K_H=vals[("K_H_enriched", c)], K_M=vals[("K_M_enriched", c)],
+                         K_MH=vals[("K_MH_enriched", c)], **est, **common))
     return rows
 
 
@@ -172,7 +200,7 @@ def plot_case(name, rows, ref, path):
     import matplotlib.pyplot as plt
     fig, axes = plt.subplots(3, 2, figsize=(11, 11), sharex="col")
     for i, q in enumerate(QUANTITIES):
-        for label in RUNS:
+        for label in CURVES:
             rr = sorted((r for r in rows if r["run"] == label), key=lambda r: int(r["cycle"]))
             if not rr:
                 continue
@@ -183,6 +211,12 @@ def plot_case(name, rows, ref, path):
             for j, x in enumerate((dofs, cost)):
                 axes[i, j].loglog(x, err, color=color, marker=marker, ls=ls, ms=4,
                                   label=text if (i == 0 and j == 0) else None)
+                if label == "g2":
+                    # the estimated error of the FE_Q(2) values
+                    est = [float(r[f"est_{q}"]) for r in rr]
+                    axes[i, j].loglog(x, est, color=color, ls=":", lw=1.2,
+                                      label="its DWR estimate" if (i == 0 and j == 0)
+                                      else None)
         u = ref[q]["uncertainty"] if math.isfinite(ref[q]["uncertainty"]) else 0.0
         for j in range(2):
             ax = axes[i, j]
@@ -197,7 +231,7 @@ def plot_case(name, rows, ref, path):
                              fontsize=9)
     axes[2, 0].set_xlabel("DoFs")
     axes[2, 1].set_xlabel("wall time [s]: uniform = one run on that mesh,\n"
-                          "Kelly = cumulative cycles 0..k, both incl. process start-up")
+                          "adaptive = cumulative cycles 0..k, both incl. process start-up")
     axes[0, 0].legend(fontsize=8)
     fig.suptitle(f"{name}: relative error vs DoFs and vs wall time\n"
                  "(ref = Richardson from the 3 finest uniform FE_Q(4) meshes; "
@@ -221,7 +255,7 @@ def cost_to_reach(rows, label, q, refval, tol):
 
 
 FIELDS = ["case", "run", "degree", "strategy", "cycle", "n_dofs", "K_H", "K_M", "K_MH",
-          "err_K_H", "err_K_M", "err_K_MH", "t_phases", "t_cycle", "t_cum", "t_start",
+          "err_K_H", "err_K_M", "err_K_MH", "est_K_H", "est_K_M", "est_K_MH", "t_phases", "t_cycle", "t_cum", "t_start",
           "cost", "t_process"]
 
 
@@ -242,6 +276,12 @@ def main():
                 allrows.setdefault(r["case"], []).append(r)
         names = [n for n in names if n in allrows]
     else:
+        kept = {}
+        if os.path.exists(csv_path):
+            with open(csv_path) as f:
+                for r in csv.DictReader(f):
+                    if r["case"] not in names:
+                        kept.setdefault(r["case"], []).append(r)
         work = tempfile.mkdtemp(prefix="avt-")
         t_all = time.monotonic()
         for name in names:
@@ -257,6 +297,11 @@ def main():
                 r["case"] = name
             allrows[name] = rows
         print(f"all runs: {time.monotonic() - t_all:.0f} s")
+        # cases not re-run keep their rows (and are re-plotted)
+        for name in CASES:
+            if name in kept:
+                allrows[name] = kept[name]
+        names = [n for n in CASES if n in allrows]
     refs = {}
     for name in names:
         rows = allrows[name]
@@ -275,7 +320,9 @@ def main():
                     for k in ("K_H", "K_M", "K_MH"):
                         out[k] = f"{float(r[k]):.10g}"
                     for k in FIELDS:
-                        if k.startswith("err_"):
+                        if k.startswith("est_") and r.get(k, "") in ("", None):
+                            out[k] = ""
+                        elif k.startswith("err_") or k.startswith("est_"):
                             out[k] = f"{float(r[k]):.3e}"
                         elif k.startswith("t_") or k == "cost":
                             out[k] = f"{float(r[k]):.3f}"
@@ -308,19 +355,44 @@ def main():
 def write_summary(names, allrows, refs, path):
     out = ["# Accuracy vs time: summary (generated by run.py)", "",
            "Cost to reach a relative error (and stay below it on later cycles), in "
-           "seconds of wall time [DoFs]; uniform: one run on that mesh, Kelly: "
-           "cumulative cycles 0..k incl. process start-up. '-' = not reached.", ""]
+           "seconds of wall time [DoFs]; uniform: one run on that mesh, adaptive: "
+           "cumulative cycles 0..k incl. process start-up. '-' = not reached. "
+           "FE_Q(4) of the goal estimator: DoFs of the FE_Q(4) solve, cost of "
+           "the whole goal run (FE_Q(2) + FE_Q(4) per cycle). Below the "
+           "reference's uncertainty (see the last table) a 'reached' is not "
+           "certified.", ""]
     for q in QUANTITIES:
-        out += [f"## {q}", "", "| case | tol | " + " | ".join(STYLE[l][3] for l in RUNS) + " |",
-                "|---|---|" + "---|" * len(RUNS)]
+        out += [f"## {q}", "", "| case | tol | " + " | ".join(STYLE[l][3] for l in CURVES) + " |",
+                "|---|---|" + "---|" * len(CURVES)]
         for name in names:
-            for tol in (1e-2, 1e-3, 1e-4, 1e-5):
+            for tol in (1e-2, 1e-3, 1e-4, 1e-5, 1e-6):
                 cells = []
-                for label in RUNS:
+                for label in CURVES:
                     c = cost_to_reach(allrows[name], label, q, refs[name][q]["value"], tol)
                     cells.append(f"{c[0]:.2f} s [{c[1]}]" if c else "-")
                 out.append(f"| {name} | {tol:g} | " + " | ".join(cells) + " |")
         out.append("")
+    out += ["## Goal-oriented estimate: effectivity index (estimated / true error of "
+            "the FE_Q(2) value)", "",
+            "Only cycles whose true error exceeds 10x the reference's uncertainty "
+            "(below that the 'true' error is not known well enough).", "",
+            "| case | quantity | cycle | DoFs | true error | estimate | effectivity | "
+            "FE_Q(4) error / estimate |", "|---|---|---|---|---|---|---|---|"]
+    for name in names:
+        g2 = sorted((r for r in allrows[name] if r["run"] == "g2"), key=lambda r: int(r["cycle"]))
+        g4 = {int(r["cycle"]): r for r in allrows[name] if r["run"] == "g4"}
+        for q in QUANTITIES:
+            R = refs[name][q]
+            u = R["uncertainty"] if math.isfinite(R["uncertainty"]) else 0.0
+            for r in g2:
+                err = abs(float(r[q]) / R["value"] - 1.0)
+                est = float(r[f"est_{q}"])
+                if err <= 10 * u:
+                    continue
+                e4 = abs(float(g4[int(r["cycle"])][q]) / R["value"] - 1.0)
+                out.append(f"| {name} | {q} | {r['cycle']} | {r['n_dofs']} | {err:.2e} | "
+                           f"{est:.2e} | {est / err:.2f} | {e4 / est:.2f} |")
+    out.append("")
     out += ["## References (Richardson, 3 finest uniform FE_Q(4))", "",
             "| case | quantity | reference | p (levels 1-3) | p (levels 0-2) | uncertainty |",
             "|---|---|---|---|---|---|"]

@@ -2,8 +2,9 @@
  * Adaptive mesh refinement between cycles: Kelly indicators summed over the
  * harmonics of a run (each harmonic's indicators normalised by their own
  * l2 norm, so every harmonic steers the mesh equally whatever its load
- * magnitude), a fixed fraction of cells refined, and interface pairs kept
- * valid by refining both sides of an interface alike.
+ * magnitude) or goal-oriented indicators (goal_estimator.h), a fixed
+ * fraction of the summed indicator refined, and interface pairs kept valid
+ * by refining both sides of an interface alike.
  */
 #ifndef fourier_ssi_adaptivity_h
 #define fourier_ssi_adaptivity_h
@@ -26,8 +27,10 @@ namespace FourierSSI
     void
     parse_parameters(ParameterHandler &prm);
 
-    std::string strategy        = "global"; // global | kelly
+    std::string strategy        = "global"; // global | kelly | goal
     double      refine_fraction = 0.3;
+    std::string goal            = "all"; // K_H | K_M | K_MH | all
+    double      goal_tolerance  = 0.;    // relative; 0: no stop
   };
 
   /** Collects the indicators of the harmonics of one cycle. */
@@ -39,6 +42,10 @@ namespace FourierSSI
     /** Add the normalised Kelly indicators of one harmonic's solution. */
     void
     add_kelly(const DoFHandler<2> &dof_handler, const Vector<double> &solution);
+
+    /** Add given cell indicators (goal-oriented estimator) unchanged. */
+    void
+    add(const Vector<float> &cell_indicators);
 
     /**
      * Flag the top `fraction` of cells by indicator, mirror the flags across

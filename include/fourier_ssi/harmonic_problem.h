@@ -15,6 +15,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
@@ -100,9 +101,33 @@ namespace FourierSSI
     foundation_coefficients(
       std::vector<Vector<double>> *unit_solutions = nullptr) const;
 
+    /**
+     * solve() and foundation_coefficients() with ONE factorization of the
+     * matrix for the scene's load and the unit-H and unit-M loads (direct
+     * solver; with cg-amg the scene load is solved iteratively and the unit
+     * cases share one factorization, as in foundation_coefficients()).
+     */
+    SolverReport
+    solve_with_unit_loads(FoundationCoefficients      &coefficients,
+                          std::vector<Vector<double>> *unit_solutions);
+
     /** Half the 3D strain energy product: 1/2 x^T K x (unconstrained K). */
     double
     strain_energy(const Vector<double> &field) const;
+
+    /**
+     * Cell-wise energy products of two fields x, y (distributed vectors of
+     * this DoFHandler): xx_K = x_K^T A_K x_K, yy_K = y_K^T A_K y_K,
+     * xy_K = x_K^T A_K y_K with A_K the cell stiffness (interfaces left out),
+     * indexed by active cell index. The goal-oriented estimator uses them as
+     * a_K(e_H, e_H), a_K(e_M, e_M), a_K(e_H, e_M).
+     */
+    void
+    cell_energy_products(const Vector<double> &x,
+                         const Vector<double> &y,
+                         Vector<double>       &xx,
+                         Vector<double>       &yy,
+                         Vector<double>       &xy) const;
 
     /** Reaction amplitudes K u - f without constraints (nodal forces). */
     Vector<double>
@@ -135,6 +160,13 @@ namespace FourierSSI
     get_foundation() const
     {
       return foundation.get();
+    }
+
+    /** The assembled (condensed) matrix: condition estimates, tests. */
+    const SparseMatrix<double> &
+    get_system_matrix() const
+    {
+      return system_matrix;
     }
 
     const AffineConstraints<double> &
@@ -170,6 +202,8 @@ namespace FourierSSI
     free_system();
 
     unsigned int n_axis_nodes = 0;
+    /** Wall time of the interface part of the last assemble_system() [s]. */
+    double time_interface_assembly = 0.;
 
   private:
     /** Local stiffness of one cell and, if requested, its body-force load. */
@@ -177,6 +211,11 @@ namespace FourierSSI
     local_matrix(const typename DoFHandler<2>::active_cell_iterator &cell,
                  FullMatrix<double>                                 &matrix,
                  Vector<double>                                     *rhs) const;
+
+    /** The unit-H and unit-M cases with a given factorization. */
+    FoundationCoefficients
+    unit_load_coefficients(const SparseDirectUMFPACK   &direct,
+                           std::vector<Vector<double>> *unit_solutions) const;
 
     /** Add the surface tractions of one cell to its local load. */
     void
