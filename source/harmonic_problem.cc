@@ -166,6 +166,21 @@ namespace FourierSSI
       component[i] = fe->system_to_component_index(i).first;
     Vector<double> force(3);
 
+    // Strains of every shape function at every quadrature point.
+    const unsigned int                     n_q = fe_values.n_quadrature_points;
+    std::vector<std::vector<StrainVector>> strain_at(
+      n_q, std::vector<StrainVector>(dofs_per_cell));
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      for (unsigned int i = 0; i < dofs_per_cell; ++i)
+        strain_at[q][i] =
+          harmonic_operator.strain_of_component(component[i],
+                                                fe_values.shape_value(i, q),
+                                                fe_values.shape_grad(i, q),
+                                                fe_values.quadrature_point(
+                                                  q)[0]);
+    if (parameters.discretization.volumetric == "bbar" && fe->degree == 2)
+      replace_dilatation(fe_values, strain_at);
+
     for (const unsigned int q : fe_values.quadrature_point_indices())
       {
         const Point<2> &x      = fe_values.quadrature_point(q);
@@ -177,11 +192,7 @@ namespace FourierSSI
 
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           {
-            strain[i] =
-              harmonic_operator.strain_of_component(component[i],
-                                                    fe_values.shape_value(i, q),
-                                                    fe_values.shape_grad(i, q),
-                                                    r);
+            strain[i] = strain_at[q][i];
             // Stress weighted with the theta integral of each strain's trig
             // factor, so that strain[i] . stress[j] is the 3D energy product.
             stress[i] = hooke_stress(strain[i], lambda, mu);
@@ -216,6 +227,70 @@ namespace FourierSSI
 
     if (rhs)
       local_traction(cell, *rhs);
+  }
+
+  void
+  HarmonicProblem::replace_dilatation(
+    const FEValues<2>                      &fe_values,
+    std::vector<std::vector<StrainVector>> &strain_at) const
+  {
+    // B-bar (Hughes 1980): the dilatation e_r + e_z + e_t of each shape
+    // function is replaced by its L2(r dr dz) projection onto the linear
+    // polynomials {1, r - r_c, z - z_c} of the cell, which is the
+    // volumetric space of the stable Q2-P1disc mixed element; the
+    // deviatoric part is kept. The dilatation carries the in-plane trig
+    // factor for every n, so the same projection serves every harmonic.
+    const unsigned int n_q           = strain_at.size();
+    const unsigned int dofs_per_cell = strain_at[0].size();
+    Point<2>           center;
+    double             volume = 0.;
+    for (unsigned int q = 0; q < n_q; ++q)
+      {
+        const double dV = fe_values.quadrature_point(q)[0] * fe_values.JxW(q);
+        center += dV * fe_values.quadrature_point(q);
+        volume += dV;
+      }
+    if (!(volume > 0.))
+      return; // a degenerate cell: leave the strains alone
+    center /= volume;
+    const auto basis = [&](const unsigned int q) {
+      const Tensor<1, 2> d = fe_values.quadrature_point(q) - center;
+      return std::array<double, 3>{{1., d[0], d[1]}};
+    };
+    FullMatrix<double> mass(3, 3), inverse(3, 3);
+    FullMatrix<double> moments(3, dofs_per_cell);
+    for (unsigned int q = 0; q < n_q; ++q)
+      {
+        const double dV = fe_values.quadrature_point(q)[0] * fe_values.JxW(q);
+        const auto   p  = basis(q);
+        for (unsigned int a = 0; a < 3; ++a)
+          {
+            for (unsigned int b = 0; b < 3; ++b)
+              mass(a, b) += p[a] * p[b] * dV;
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              moments(a, i) +=
+                p[a] *
+                (strain_at[q][i][0] + strain_at[q][i][1] + strain_at[q][i][2]) *
+                dV;
+          }
+      }
+    inverse.invert(mass);
+    FullMatrix<double> coefficients(3, dofs_per_cell);
+    inverse.mmult(coefficients, moments);
+    for (unsigned int q = 0; q < n_q; ++q)
+      {
+        const auto p = basis(q);
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          {
+            StrainVector &e         = strain_at[q][i];
+            double        projected = 0.;
+            for (unsigned int a = 0; a < 3; ++a)
+              projected += p[a] * coefficients(a, i);
+            const double shift = (projected - (e[0] + e[1] + e[2])) / 3.;
+            for (unsigned int k = 0; k < 3; ++k)
+              e[k] += shift;
+          }
+      }
   }
 
   void

@@ -30,6 +30,15 @@ namespace FourierSSI
                       "FE_Q degree of the solid elements: 2 (pairs with the "
                       "6-node interface element) or 4 (equidistant nodes, "
                       "pairs with the 10-node interface element).");
+    prm.declare_entry("Volumetric strain",
+                      "standard",
+                      Patterns::Selection("standard|bbar"),
+                      "standard: full integration of the dilatation; bbar: "
+                      "the dilatation projected onto linear polynomials per "
+                      "cell (B-bar, the Q2-P1disc volumetric space), free "
+                      "of volumetric locking as nu -> 0.5. Polynomial "
+                      "degree 2 only (FE_Q(4) does not lock, see "
+                      "doc/robustness.md).");
     prm.declare_entry("Concurrent harmonics",
                       "0",
                       Patterns::Integer(0, 256),
@@ -69,7 +78,11 @@ namespace FourierSSI
         if (family != "symmetric")
           harmonics.push_back({n, Family::antisymmetric});
       }
-    degree               = prm.get_integer("Polynomial degree");
+    degree     = prm.get_integer("Polynomial degree");
+    volumetric = prm.get("Volumetric strain");
+    AssertThrow(volumetric == "standard" || degree == 2,
+                ExcMessage("Discretization/Volumetric strain = bbar needs "
+                           "Polynomial degree = 2"));
     refinement_cycles    = prm.get_integer("Refinement cycles");
     concurrent_harmonics = prm.get_integer("Concurrent harmonics");
     prm.leave_subsection();

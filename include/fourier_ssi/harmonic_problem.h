@@ -217,6 +217,14 @@ namespace FourierSSI
     unit_load_coefficients(const SparseDirectUMFPACK   &direct,
                            std::vector<Vector<double>> *unit_solutions) const;
 
+    /**
+     * B-bar: replace the dilatation in the strains of every shape function
+     * by its projection onto the cell's linear polynomials (p = 2 only).
+     */
+    void
+    replace_dilatation(const FEValues<2>                      &fe_values,
+                       std::vector<std::vector<StrainVector>> &strain_at) const;
+
     /** Add the surface tractions of one cell to its local load. */
     void
     local_traction(const typename DoFHandler<2>::active_cell_iterator &cell,

@@ -33,8 +33,10 @@ namespace FourierSSI
     /** Harmonics chosen from the loads (Harmonics = auto), see ScenePlan. */
     bool                  automatic = false;
     std::vector<Harmonic> harmonics;
-    unsigned int          degree            = 2;
-    unsigned int          refinement_cycles = 1;
+    unsigned int          degree = 2;
+    /** "standard" or "bbar" (projected dilatation, p = 2). */
+    std::string  volumetric        = "standard";
+    unsigned int refinement_cycles = 1;
     /** Harmonics solved at the same time (threads); 0: one per core. */
     unsigned int concurrent_harmonics = 0;
   };
