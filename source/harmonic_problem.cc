@@ -123,6 +123,13 @@ namespace FourierSSI
     // The rigid foundation first: its motion satisfies the axis conditions.
     if (foundation)
       foundation->add_constraints(dof_handler, constraints);
+    // Exact interface ties next: a tied twin then follows the foundation or
+    // the axis condition of its partner.
+    if (interfaces)
+      {
+        interfaces->setup(dof_handler);
+        interfaces->add_tie_constraints(constraints);
+      }
     n_axis_nodes = add_axis_constraints(dof_handler,
                                         harmonic_operator.get_harmonic(),
                                         axis_tolerance,
@@ -136,7 +143,6 @@ namespace FourierSSI
                                     /*keep_constrained_dofs=*/false);
     if (interfaces)
       {
-        interfaces->setup(dof_handler);
         interfaces->add_sparsity(constraints, dsp);
       }
     sparsity_pattern.copy_from(dsp);

@@ -44,7 +44,9 @@ namespace FourierSSI
     for (const InterfacePair &pair : pairs)
       {
         const InterfaceLaw &law = parameters.laws.at(pair.boundary_id);
-        InterfaceStiffness  k{law.normal, law.shear};
+        // Tied laws are constraints, not springs.
+        InterfaceStiffness k{law.tied || law.tied_normal ? 0. : law.normal,
+                             law.tied || law.tied_normal ? 0. : law.shear};
         if (law.vermeer)
           {
             // G, nu of the soil side at the face centre's depth.
@@ -77,6 +79,97 @@ namespace FourierSSI
         matrices.push_back(
           interface_matrix(pair.nodes.size() - 1, pair.nodes, k, harmonic));
       }
+  }
+
+  unsigned int
+  InterfaceIntegrator::add_tie_constraints(
+    AffineConstraints<double> &constraints) const
+  {
+    unsigned int n_added = 0;
+    std::set<std::pair<types::global_dof_index, types::global_dof_index>> done;
+    // Does the constraint chain of `dof` reach `target`? (A twin may already
+    // follow its partner through another interface, e.g. where two
+    // interfaces cross: tying the partner back would close a cycle.)
+    const auto reaches = [&](types::global_dof_index       dof,
+                             const types::global_dof_index target) {
+      for (unsigned int step = 0; step < 64; ++step)
+        {
+          if (dof == target)
+            return true;
+          if (!constraints.is_constrained(dof))
+            return false;
+          const auto *entries = constraints.get_constraint_entries(dof);
+          if (entries == nullptr || entries->size() != 1)
+            return false;
+          dof = (*entries)[0].first;
+        }
+      return false;
+    };
+    // Constrain `slave` = sum of `terms` unless it is already constrained.
+    const auto tie =
+      [&](
+        const types::global_dof_index                                  slave,
+        const std::vector<std::pair<types::global_dof_index, double>> &terms) {
+        if (constraints.is_constrained(slave))
+          return false;
+        constraints.add_line(slave);
+        constraints.add_entries(slave, terms);
+        ++n_added;
+        return true;
+      };
+    for (const InterfacePair &pair : pairs)
+      {
+        const InterfaceLaw &law = parameters.laws.at(pair.boundary_id);
+        if (!law.tied && !law.tied_normal)
+          continue;
+        const unsigned int n_nodes = pair.nodes.size();
+        for (unsigned int k = 0; k < n_nodes; ++k)
+          {
+            const auto a = [&](const unsigned int c) {
+              return pair.dof_indices[3 * k + c];
+            };
+            const auto b = [&](const unsigned int c) {
+              return pair.dof_indices[3 * (n_nodes + k) + c];
+            };
+            // Face ends belong to two pairs: tie each node pair once.
+            if (!done.insert({a(0), b(0)}).second)
+              continue;
+            if (law.tied)
+              for (unsigned int c = 0; c < 3; ++c)
+                {
+                  if (a(c) == b(c) || reaches(a(c), b(c)) ||
+                      reaches(b(c), a(c)) ||
+                      (constraints.is_constrained(a(c)) &&
+                       constraints.is_constrained(b(c))))
+                    continue;
+                  if (!tie(b(c), {{a(c), 1.}}))
+                    tie(a(c), {{b(c), 1.}});
+                }
+            else
+              {
+                // n . (u_B - u_A) = 0 with n = (n_r, n_z): solve for the
+                // component along the larger normal entry.
+                const unsigned int m =
+                  std::abs(pair.normal[0]) >= std::abs(pair.normal[1]) ? 0 : 1;
+                const unsigned int o     = 1 - m;
+                const double       ratio = pair.normal[o] / pair.normal[m];
+                std::vector<std::pair<types::global_dof_index, double>> from_a =
+                  {{a(m), 1.}};
+                std::vector<std::pair<types::global_dof_index, double>> from_b =
+                  {{b(m), 1.}};
+                if (ratio != 0.)
+                  {
+                    from_a.push_back({a(o), ratio});
+                    from_a.push_back({b(o), -ratio});
+                    from_b.push_back({b(o), ratio});
+                    from_b.push_back({a(o), -ratio});
+                  }
+                if (a(m) != b(m) && !tie(b(m), from_a))
+                  tie(a(m), from_b);
+              }
+          }
+      }
+    return n_added;
   }
 
   void

@@ -57,7 +57,9 @@ namespace FourierSSI
       "'id: kn=1e8, ks=0', or 'id: vermeer, mu=50[, material=m]' (Van Langen "
       "& Vermeer 1991: ks = mu G/l, kn = mu G/((1-2nu) l), G and nu of "
       "material m or of the side with the lower G, l the mean face length). "
-      "Empty: no interface.");
+      "Exact limits without penalty (constraints, no conditioning cost): "
+      "'id: tied' (kn = ks = infinity) and 'id: tied-normal' (kn = infinity, "
+      "ks = 0). Empty: no interface.");
     prm.declare_entry("Pairing tolerance",
                       "1e-8",
                       Patterns::Double(0.),
@@ -109,11 +111,16 @@ namespace FourierSSI
                   law.normal = 1e10, law.shear = 0.;
                 else if (token == "vermeer")
                   law.vermeer = true;
+                else if (token == "tied")
+                  law.tied = true;
+                else if (token == "tied-normal")
+                  law.tied_normal = true;
                 else
                   AssertThrow(false,
                               ExcMessage(entry + ": unknown law '" + token +
-                                         "' (expected rough, smooth, vermeer "
-                                         "or kn=..., ks=...)"));
+                                         "' (expected rough, smooth, tied, "
+                                         "tied-normal, vermeer or kn=..., "
+                                         "ks=...)"));
                 continue;
               }
             const std::string key   = Utilities::trim(token.substr(0, eq));

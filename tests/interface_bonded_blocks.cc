@@ -13,7 +13,15 @@
 //  - rough preset: difference in [1e-7, 1e-4] and the ratio rough / 1e13 in
 //    [100, 10000] (the difference is the spring compliance, linear in 1/k);
 //  - the number of interface pairs (2 + 2 coarse faces, refined once: 8);
-//  - the strain energy (interface springs included) agrees to 1e-6.
+//  - the strain energy (interface springs included) agrees to 1e-6;
+//  - the exact limit 'tied' (constraints, no springs) IS the monolithic
+//    discretization: nodal difference and energy to 1e-12 (round-off of two
+//    direct solves of differently numbered but equal systems);
+//  - 'tied-normal' (kn = infinity, ks = 0) against springs kn = 1e13,
+//    ks = 0: the same E/(k L) ~ 1e-8 penalty gap, bound 1e-6, and it is a
+//    different answer from the fully tied one (the twins slide: > 1e-3);
+//    n = 0 only (for n >= 1 the frictionless quadrants are free to
+//    translate: singular with springs and ties alike).
 #include "check.h"
 #include "test_support.h"
 
@@ -135,6 +143,28 @@ main()
                         stiff.energy,
                         monolithic.energy,
                         1e-6);
+        const Solution tied = solve(prm(degree, "5: tied; 6: tied"), harmonic);
+        check::small("tied (exact) vs monolithic, max nodal difference / "
+                     "max |u|",
+                     difference(tied, monolithic),
+                     1e-12);
+        check::relative("strain energy, tied vs monolithic",
+                        tied.energy,
+                        monolithic.energy,
+                        1e-12);
+        // Frictionless on both lines, n >= 1 lets the upper quadrants
+        // translate horizontally as rigid bodies (singular): n = 0 only.
+        if (n > 0)
+          continue;
+        const Solution normal =
+          solve(prm(degree, "5: tied-normal; 6: tied-normal"), harmonic);
+        const Solution normal_springs =
+          solve(prm(degree, "5: kn=1e13, ks=0; 6: kn=1e13, ks=0"), harmonic);
+        check::small("tied-normal vs springs kn=1e13, ks=0",
+                     difference(normal, normal_springs),
+                     1e-6);
+        check::that("tied-normal differs from tied (the twins slide)",
+                    difference(normal, monolithic) > 1e-3);
       }
   return check::summary();
 }

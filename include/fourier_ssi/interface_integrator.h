@@ -42,6 +42,17 @@ namespace FourierSSI
     setup(const DoFHandler<2> &dof_handler);
 
     /** Add the couplings across the faces (constrained DoFs eliminated). */
+    /**
+     * The exact limits of the tied laws as constraints: each twin DoF of a
+     * node pair equals its partner (tied), or the normal displacements of
+     * the twins are equal (tied-normal). Call after setup() and before the
+     * axis conditions; DoFs already constrained (hanging nodes, Dirichlet,
+     * rigid foundation) are left alone and the partner is constrained
+     * instead. Returns the number of constraints added.
+     */
+    unsigned int
+    add_tie_constraints(AffineConstraints<double> &constraints) const;
+
     void
     add_sparsity(const AffineConstraints<double> &constraints,
                  DynamicSparsityPattern          &dsp) const;

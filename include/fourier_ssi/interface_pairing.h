@@ -44,6 +44,12 @@ namespace FourierSSI
     double mu      = 0.; // Van Langen & Vermeer factor (vermeer)
     /** Material id of the soil side (vermeer); -1: the side of lower G. */
     int material = -1;
+    /**
+     * Exact limits instead of penalty springs (no stiffness assembled):
+     * tied = kn = ks = infinity (the twins move together), tied_normal =
+     * kn = infinity, ks = 0 (only the normal displacement is continuous).
+     */
+    bool tied = false, tied_normal = false;
   };
 
   /** Subsection "Interfaces" of the .prm file. */
