@@ -10,8 +10,10 @@
 
 namespace FourierSSI
 {
-  Simulator::Simulator(const AllParameters &parameters)
+  Simulator::Simulator(const AllParameters &parameters,
+                       const MPI_Comm       communicator)
     : parameters(parameters)
+    , communicator(communicator)
   {}
 
   ResultsTable
@@ -20,6 +22,10 @@ namespace FourierSSI
     ResultsTable             results;
     std::vector<std::string> written;
     const std::string       &directory = parameters.output.directory;
+    // Rank 0 writes the CSV files (each rank writes its VTU piece).
+    const bool write_csv =
+      write_files && (!Utilities::MPI::job_supports_mpi() ||
+                      Utilities::MPI::this_mpi_process(communicator) == 0);
     try
       {
         if (write_files)
@@ -55,7 +61,8 @@ namespace FourierSSI
                   {
                     HarmonicProblem problem(parameters,
                                             harmonic,
-                                            triangulation);
+                                            triangulation,
+                                            communicator);
                     Timer           timer;
                     problem.setup_system();
                     const double t_setup = timer.wall_time();
@@ -203,7 +210,7 @@ namespace FourierSSI
                         written.push_back(name);
                         problem.write_vtu(name);
                       }
-                    if (write_files && problem.get_interfaces())
+                    if (write_csv && problem.get_interfaces())
                       for (const types::boundary_id id :
                            problem.get_interfaces()->boundary_ids())
                         {
@@ -227,7 +234,7 @@ namespace FourierSSI
                   }
               }
           }
-        if (write_files)
+        if (write_csv)
           {
             const std::string name =
               directory + "/" + parameters.output.results_file;

@@ -18,6 +18,8 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
+#include <deal.II/numerics/data_out.h>
+#include <fourier_ssi/distributed_linear_system.h>
 #include <fourier_ssi/harmonic_operator.h>
 #include <fourier_ssi/interface_integrator.h>
 #include <fourier_ssi/linear_solver.h>
@@ -65,9 +67,14 @@ namespace FourierSSI
   class HarmonicProblem
   {
   public:
+    /**
+     * On a communicator of more than one rank the linear system is
+     * distributed (DistributedLinearSystem); the default is the serial code.
+     */
     HarmonicProblem(const AllParameters    &parameters,
                     const Harmonic         &harmonic,
-                    const Triangulation<2> &triangulation);
+                    const Triangulation<2> &triangulation,
+                    const MPI_Comm          communicator = MPI_COMM_SELF);
 
     /** DoFs, constraints (hanging nodes, Dirichlet, axis), sparsity. */
     void
@@ -136,6 +143,13 @@ namespace FourierSSI
       return constraints;
     }
 
+    /** The distributed system, or nullptr on one rank. */
+    const DistributedLinearSystem *
+    get_distributed() const
+    {
+      return distributed.get();
+    }
+
     /** The zero-thickness interfaces, or nullptr if none are declared. */
     const InterfaceIntegrator *
     get_interfaces() const
@@ -152,6 +166,10 @@ namespace FourierSSI
     unsigned int n_axis_nodes = 0;
 
   private:
+    /** Parallel output: this rank's cells and, on rank 0, the .pvtu. */
+    void
+    write_vtu_pieces(DataOut<2> &data_out, const std::string &filename) const;
+
     /** Local stiffness of one cell and, if requested, its body-force load. */
     void
     local_matrix(const typename DoFHandler<2>::active_cell_iterator &cell,
@@ -180,6 +198,8 @@ namespace FourierSSI
     std::unique_ptr<FunctionParser<2>> body_force;
     std::map<types::boundary_id, std::unique_ptr<FunctionParser<2>>> tractions;
     std::unique_ptr<InterfaceIntegrator>                             interfaces;
+    /** Mutable: the stiffness solves reuse its factorization/AMG. */
+    mutable std::unique_ptr<DistributedLinearSystem> distributed;
   };
 } // namespace FourierSSI
 

@@ -7,6 +7,7 @@
 #ifndef fourier_ssi_simulator_h
 #define fourier_ssi_simulator_h
 
+#include <deal.II/base/mpi.h>
 #include <fourier_ssi/parameters.h>
 #include <fourier_ssi/results_table.h>
 #include <ostream>
@@ -16,7 +17,13 @@ namespace FourierSSI
   class Simulator
   {
   public:
-    explicit Simulator(const AllParameters &parameters);
+    /**
+     * On a communicator of more than one rank each harmonic's linear system
+     * is distributed (the mesh and postprocessing are replicated); only rank
+     * 0 writes the CSV files, every rank its piece of the VTU output.
+     */
+    explicit Simulator(const AllParameters &parameters,
+                       const MPI_Comm       communicator = MPI_COMM_SELF);
 
     /** Run everything; returns the scalar results (also written as CSV). */
     ResultsTable
@@ -24,6 +31,7 @@ namespace FourierSSI
 
   private:
     const AllParameters &parameters;
+    const MPI_Comm       communicator;
   };
 } // namespace FourierSSI
 
