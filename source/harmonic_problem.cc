@@ -68,7 +68,8 @@ namespace FourierSSI
                                                          harmonic);
     // (Library users and unit tests may not have initialized MPI.)
     if (Utilities::MPI::job_supports_mpi() &&
-        Utilities::MPI::n_mpi_processes(communicator) > 1)
+        (Utilities::MPI::n_mpi_processes(communicator) > 1 ||
+         parameters.solver.distributed == "always"))
       distributed =
         std::make_unique<DistributedLinearSystem>(communicator,
                                                   parameters.solver);
