@@ -196,7 +196,7 @@ namespace FourierSSI
             amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
             amg->initialize(matrix, data);
           }
-        SolverControl              control(parameters.max_iterations,
+        SolverControl control(parameters.max_iterations,
                               parameters.tolerance * b_owned.l2_norm());
         // deal.II's CG, as in the serial path: AztecOO's CG stops with "loss
         // of precision" on the stiff-interface systems (kn = 1e10).
