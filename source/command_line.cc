@@ -1,6 +1,8 @@
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
+#include <fourier_ssi/batch_runner.h>
 #include <fourier_ssi/command_line.h>
 #include <fourier_ssi/interface_integrator.h>
 #include <fourier_ssi/parameters.h>
@@ -38,39 +40,54 @@ namespace FourierSSI
   run_command_line(int argc, char **argv)
   {
     std::string prm_file = std::string(FSSI_SOURCE_DIR) + "/prm/default.prm";
+    // Under mpirun every rank runs this; only rank 0 talks (a stream without
+    // a buffer swallows the output of the others).
+    const MPI_Comm communicator = MPI_COMM_WORLD;
+    std::ostream   silent(nullptr);
+    const bool     root = Utilities::MPI::this_mpi_process(communicator) == 0;
+    std::ostream  &out  = root ? std::cout : silent;
+    std::ostream  &err  = root ? std::cerr : silent;
     try
       {
         if (argc > 1 && std::string(argv[1]) == "--print-parameters")
           {
             ParameterHandler prm;
             AllParameters::declare_parameters(prm);
-            prm.print_parameters(std::cout, ParameterHandler::PRM);
+            prm.print_parameters(out, ParameterHandler::PRM);
             return 0;
           }
         if (argc > 1 &&
             (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h"))
           {
-            std::cout
-              << "usage: fourier-ssi [PARAMS.prm]\n"
-                 "       fourier-ssi --print-parameters\n"
-                 "       fourier-ssi --interface-matrix p=2 n=1 family=sym "
-                 "r=0.5,0.5,0.5 z=0,0.5,1 kn=1e10 ks=1e10\n"
-                 "         (closed-form interface element matrix; n defaults "
-                 "to 0, family to sym)\n";
+            out << "usage: fourier-ssi [PARAMS.prm]\n"
+                   "       fourier-ssi --print-parameters\n"
+                   "       mpirun -np N fourier-ssi PARAMS.prm   (distributed "
+                   "solve)\n"
+                   "       mpirun -np N fourier-ssi --batch [--csv FILE] "
+                   "CASE.prm... | LIST...\n"
+                   "       fourier-ssi --interface-matrix p=2 n=1 family=sym "
+                   "r=0.5,0.5,0.5 z=0,0.5,1 kn=1e10 ks=1e10\n"
+                   "         (closed-form interface element matrix; n defaults "
+                   "to 0, family to sym)\n";
             return 0;
           }
         if (argc > 1 && std::string(argv[1]) == "--interface-matrix")
           {
             interface_matrix_command(std::vector<std::string>(argv + 2,
                                                               argv + argc),
-                                     std::cout);
+                                     out);
             return 0;
           }
+        if (argc > 1 && std::string(argv[1]) == "--batch")
+          return run_batch(std::vector<std::string>(argv + 2, argv + argc),
+                           communicator,
+                           out,
+                           err);
         if (argc > 2)
           {
-            std::cerr << "fourier-ssi: error: expected at most one argument "
-                         "(the .prm file), got "
-                      << argc - 1 << std::endl;
+            err << "fourier-ssi: error: expected at most one argument "
+                   "(the .prm file), got "
+                << argc - 1 << std::endl;
             return 1;
           }
         if (argc == 2)
@@ -78,13 +95,13 @@ namespace FourierSSI
 
         AllParameters parameters;
         parameters.read_file(prm_file);
-        std::cout << "fourier-ssi: " << prm_file << std::endl;
-        Simulator simulator(parameters);
-        simulator.run(std::cout);
+        out << "fourier-ssi: " << prm_file << std::endl;
+        Simulator simulator(parameters, communicator);
+        simulator.run(out);
       }
     catch (const std::exception &e)
       {
-        std::cerr << "fourier-ssi: error: " << one_line_message(e) << std::endl;
+        err << "fourier-ssi: error: " << one_line_message(e) << std::endl;
         return 1;
       }
     return 0;

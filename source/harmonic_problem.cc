@@ -30,7 +30,8 @@ namespace FourierSSI
   HarmonicProblem::HarmonicProblem(const AllParameters     &parameters,
                                    const Harmonic          &harmonic,
                                    const Triangulation<2>  &triangulation,
-                                   const LoadDecomposition *loads)
+                                   const LoadDecomposition *loads,
+                                   const MPI_Comm           communicator)
     : parameters(parameters)
     , harmonic_operator(harmonic)
     , fe(make_displacement_element(parameters.discretization.degree))
@@ -71,6 +72,13 @@ namespace FourierSSI
       interfaces = std::make_unique<InterfaceIntegrator>(parameters.interfaces,
                                                          parameters.materials,
                                                          harmonic);
+    // (Library users and unit tests may not have initialized MPI.)
+    if (Utilities::MPI::job_supports_mpi() &&
+        (Utilities::MPI::n_mpi_processes(communicator) > 1 ||
+         parameters.solver.distributed == "always"))
+      distributed =
+        std::make_unique<DistributedLinearSystem>(communicator,
+                                                  parameters.solver);
   }
 
   void
@@ -136,6 +144,15 @@ namespace FourierSSI
                                         constraints);
     constraints.close();
 
+    system_rhs.reinit(dof_handler.n_dofs());
+    solution.reinit(dof_handler.n_dofs());
+    if (distributed)
+      {
+        if (interfaces)
+          interfaces->setup(dof_handler);
+        distributed->setup(dof_handler, constraints, interfaces.get());
+        return;
+      }
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
     DoFTools::make_sparsity_pattern(dof_handler,
                                     dsp,
@@ -147,8 +164,6 @@ namespace FourierSSI
       }
     sparsity_pattern.copy_from(dsp);
     system_matrix.reinit(sparsity_pattern);
-    system_rhs.reinit(dof_handler.n_dofs());
-    solution.reinit(dof_handler.n_dofs());
   }
 
   void
@@ -343,6 +358,17 @@ namespace FourierSSI
   void
   HarmonicProblem::assemble_system()
   {
+    if (distributed)
+      {
+        distributed->assemble(
+          [this](const auto &cell, auto &matrix, auto *rhs) {
+            local_matrix(cell, matrix, rhs);
+          },
+          system_rhs);
+        if (foundation)
+          foundation->add_loads(system_rhs);
+        return;
+      }
     system_matrix = 0.;
     system_rhs    = 0.;
     FullMatrix<double>                   cell_matrix;
@@ -369,8 +395,12 @@ namespace FourierSSI
   SolverReport
   HarmonicProblem::solve()
   {
-    const SolverReport report =
-      parameters.solver.solve(system_matrix, solution, system_rhs, dof_handler);
+    const SolverReport report = distributed ?
+                                  distributed->solve(solution, system_rhs) :
+                                  parameters.solver.solve(system_matrix,
+                                                          solution,
+                                                          system_rhs,
+                                                          dof_handler);
     if (foundation)
       foundation->check_supported(solution, constraints);
     constraints.distribute(solution);
@@ -391,7 +421,8 @@ namespace FourierSSI
   {
     AssertThrow(foundation, ExcMessage("Rigid foundation is not enabled"));
     SparseDirectUMFPACK direct;
-    direct.initialize(system_matrix);
+    if (!distributed)
+      direct.initialize(system_matrix);
     return unit_load_coefficients(direct, unit_solutions);
   }
 
@@ -401,10 +432,12 @@ namespace FourierSSI
     std::vector<Vector<double>> *unit_solutions)
   {
     AssertThrow(foundation, ExcMessage("Rigid foundation is not enabled"));
-    if (parameters.solver.method != "direct" || system_rhs.l2_norm() == 0.)
+    if (distributed || parameters.solver.method != "direct" ||
+        system_rhs.l2_norm() == 0.)
       {
-        // Nothing to share: an iterative scene solve, or a zero load (its
-        // factorization is skipped).
+        // Nothing to share here: a distributed system (it keeps its own
+        // factorization for the unit loads), an iterative scene solve, or a
+        // zero load (its factorization is skipped).
         const SolverReport report = solve();
         coefficients              = foundation_coefficients(unit_solutions);
         return report;
@@ -455,7 +488,14 @@ namespace FourierSSI
           foundation->unit_load(load_case, dof_handler.n_dofs());
         // The master DoFs are unconstrained: their values are final without
         // distributing the constraints (which would add Dirichlet data).
-        direct.solve(x);
+        if (distributed)
+          {
+            const Vector<double> load(x);
+            x = 0.; // the CG initial guess
+            distributed->solve(x, load);
+          }
+        else
+          direct.solve(x);
         foundation->check_supported(x, constraints);
         motions[load_case] = foundation->motion(x);
         if (unit_solutions)
@@ -671,9 +711,59 @@ namespace FourierSSI
     for (const auto &cell : dof_handler.active_cell_iterators())
       material_ids(cell->active_cell_index()) = cell->material_id();
     data_out.add_data_vector(material_ids, "material_id");
+    if (distributed)
+      {
+        write_vtu_pieces(data_out, filename);
+        return;
+      }
     data_out.build_patches(fe->degree);
     std::ofstream out(filename);
     AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
     data_out.write_vtu(out);
+  }
+
+  void
+  HarmonicProblem::write_vtu_pieces(DataOut<2>        &data_out,
+                                    const std::string &filename) const
+  {
+    // Each rank writes its own cells as NAME.rankR.vtu; rank 0 writes the
+    // NAME.pvtu record that ParaView opens.
+    const unsigned int rank = distributed->this_rank();
+    const unsigned int n_ranks =
+      Utilities::MPI::n_mpi_processes(distributed->get_communicator());
+    Vector<float> ranks(dof_handler.get_triangulation().n_active_cells());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      ranks(cell->active_cell_index()) =
+        distributed->cell_owner(cell->active_cell_index());
+    data_out.add_data_vector(ranks, "rank");
+    data_out.set_cell_selection(
+      [this, rank](const typename Triangulation<2>::cell_iterator &cell) {
+        return cell->is_active() &&
+               distributed->cell_owner(cell->active_cell_index()) == rank;
+      });
+    data_out.build_patches(fe->degree);
+    const std::string base =
+      filename.size() > 4 && filename.substr(filename.size() - 4) == ".vtu" ?
+        filename.substr(0, filename.size() - 4) :
+        filename;
+    const auto piece = [&](const unsigned int r) {
+      return base + ".rank" + std::to_string(r) + ".vtu";
+    };
+    std::ofstream out(piece(rank));
+    AssertThrow(out, ExcMessage("Output: cannot write '" + piece(rank) + "'"));
+    data_out.write_vtu(out);
+    if (rank == 0)
+      {
+        std::vector<std::string> pieces;
+        for (unsigned int r = 0; r < n_ranks; ++r)
+          {
+            const std::string p = piece(r);
+            pieces.push_back(p.substr(p.find_last_of('/') + 1));
+          }
+        std::ofstream record(base + ".pvtu");
+        AssertThrow(record,
+                    ExcMessage("Output: cannot write '" + base + ".pvtu'"));
+        data_out.write_pvtu_record(record, pieces);
+      }
   }
 } // namespace FourierSSI

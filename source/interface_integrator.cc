@@ -192,30 +192,41 @@ namespace FourierSSI
   }
 
   void
+  InterfaceIntegrator::merged_matrix(
+    const unsigned int                    i,
+    FullMatrix<double>                   &merged,
+    std::vector<types::global_dof_index> &unique_dofs) const
+  {
+    // Where an interface line ends inside the mesh the last node pair is
+    // one shared DoF set (the "crack tip" is closed): merge repeated
+    // indices, since distribute_local_to_global expects distinct ones
+    // (repeated ones corrupted the sparse matrix in release builds).
+    const std::vector<types::global_dof_index> &dofs = pairs[i].dof_indices;
+    unique_dofs                                      = dofs;
+    std::sort(unique_dofs.begin(), unique_dofs.end());
+    unique_dofs.erase(std::unique(unique_dofs.begin(), unique_dofs.end()),
+                      unique_dofs.end());
+    std::vector<unsigned int> position(dofs.size());
+    for (unsigned int k = 0; k < dofs.size(); ++k)
+      position[k] =
+        std::lower_bound(unique_dofs.begin(), unique_dofs.end(), dofs[k]) -
+        unique_dofs.begin();
+    merged.reinit(unique_dofs.size(), unique_dofs.size());
+    for (unsigned int a = 0; a < dofs.size(); ++a)
+      for (unsigned int b = 0; b < dofs.size(); ++b)
+        merged(position[a], position[b]) += matrices[i](a, b);
+  }
+
+  void
   InterfaceIntegrator::assemble(const AffineConstraints<double> &constraints,
                                 SparseMatrix<double>            &matrix,
                                 Vector<double>                  &rhs) const
   {
+    FullMatrix<double>                   merged;
+    std::vector<types::global_dof_index> unique_dofs;
     for (unsigned int i = 0; i < pairs.size(); ++i)
       {
-        // Where an interface line ends inside the mesh the last node pair is
-        // one shared DoF set (the "crack tip" is closed): merge repeated
-        // indices, since distribute_local_to_global expects distinct ones
-        // (repeated ones corrupted the sparse matrix in release builds).
-        const std::vector<types::global_dof_index> &dofs = pairs[i].dof_indices;
-        std::vector<types::global_dof_index>        unique_dofs(dofs);
-        std::sort(unique_dofs.begin(), unique_dofs.end());
-        unique_dofs.erase(std::unique(unique_dofs.begin(), unique_dofs.end()),
-                          unique_dofs.end());
-        std::vector<unsigned int> position(dofs.size());
-        for (unsigned int k = 0; k < dofs.size(); ++k)
-          position[k] =
-            std::lower_bound(unique_dofs.begin(), unique_dofs.end(), dofs[k]) -
-            unique_dofs.begin();
-        FullMatrix<double> merged(unique_dofs.size(), unique_dofs.size());
-        for (unsigned int a = 0; a < dofs.size(); ++a)
-          for (unsigned int b = 0; b < dofs.size(); ++b)
-            merged(position[a], position[b]) += matrices[i](a, b);
+        merged_matrix(i, merged, unique_dofs);
         Vector<double> local_rhs(unique_dofs.size());
         constraints.distribute_local_to_global(
           merged, local_rhs, unique_dofs, matrix, rhs);

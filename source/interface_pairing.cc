@@ -525,6 +525,8 @@ namespace FourierSSI
               std::swap(a, b);
             pair.material_a = faces[a].cell->material_id();
             pair.material_b = faces[b].cell->material_id();
+            pair.cells      = {{faces[a].cell->active_cell_index(),
+                                faces[b].cell->active_cell_index()}};
             const Point<2> start =
               (faces[i].a - pair.center) * pair.tangent < 0. ? faces[i].a :
                                                                faces[i].b;

@@ -31,6 +31,14 @@ namespace FourierSSI
                       "After any solve, ||b - A x|| / ||b|| above this value "
                       "is reported as a solver failure (catches singular "
                       "systems, e.g. a missing support).");
+    prm.declare_entry("Distributed",
+                      "auto",
+                      Patterns::Selection("auto|always"),
+                      "auto: the Trilinos path (MUMPS for direct, CG + ML "
+                      "for cg-amg, doc/scaling.md) when run on more than "
+                      "one MPI rank, the serial solvers otherwise; always: "
+                      "the Trilinos path on one rank too (a one-rank "
+                      "baseline for scaling measurements).");
     prm.leave_subsection();
   }
 
@@ -42,6 +50,7 @@ namespace FourierSSI
     tolerance      = prm.get_double("Tolerance");
     max_iterations = prm.get_integer("Max iterations");
     residual_check = prm.get_double("Residual check");
+    distributed    = prm.get("Distributed");
     prm.leave_subsection();
   }
 

@@ -74,9 +74,11 @@ namespace FourierSSI
                     ExcMessage("Discretization/Harmonics: '" + s +
                                "' is not 'auto' or a harmonic number 0..1024"));
         if (family != "antisymmetric")
-          harmonics.push_back({n, Family::symmetric});
+          harmonics.push_back(
+            {static_cast<unsigned int>(n), Family::symmetric});
         if (family != "symmetric")
-          harmonics.push_back({n, Family::antisymmetric});
+          harmonics.push_back(
+            {static_cast<unsigned int>(n), Family::antisymmetric});
       }
     degree     = prm.get_integer("Polynomial degree");
     volumetric = prm.get("Volumetric strain");

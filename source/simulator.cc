@@ -50,6 +50,7 @@ namespace FourierSSI
                    const Harmonic          &harmonic,
                    const Triangulation<2>  &triangulation,
                    const LoadDecomposition &loads,
+                   const MPI_Comm           communicator,
                    const unsigned int       cycle,
                    const ResultsTable      &previous,
                    const bool               write_files,
@@ -58,10 +59,8 @@ namespace FourierSSI
     {
       const std::string &directory = parameters.output.directory;
       {
-        auto problem_pointer     = std::make_shared<HarmonicProblem>(parameters,
-                                                                 harmonic,
-                                                                 triangulation,
-                                                                 &loads);
+        auto problem_pointer = std::make_shared<HarmonicProblem>(
+          parameters, harmonic, triangulation, &loads, communicator);
         outcome.problem          = problem_pointer;
         HarmonicProblem &problem = *problem_pointer;
         Timer            timer;
@@ -224,7 +223,11 @@ namespace FourierSSI
             outcome.files.push_back(name);
             problem.write_vtu(name);
           }
-        if (write_files && problem.get_interfaces() &&
+        // Rank 0 writes the CSV files (each rank writes its VTU piece).
+        const bool write_csv =
+          write_files && (!Utilities::MPI::job_supports_mpi() ||
+                          Utilities::MPI::this_mpi_process(communicator) == 0);
+        if (write_csv && problem.get_interfaces() &&
             parameters.output.write_interface_tractions)
           for (const types::boundary_id id :
                problem.get_interfaces()->boundary_ids())
@@ -253,6 +256,7 @@ namespace FourierSSI
                     const std::vector<Harmonic> &harmonics,
                     const Triangulation<2>      &triangulation,
                     const LoadDecomposition     &loads,
+                    const MPI_Comm               communicator,
                     const unsigned int           cycle,
                     const ResultsTable          &previous,
                     const bool                   write_files,
@@ -269,6 +273,7 @@ namespace FourierSSI
                              harmonics[i],
                              triangulation,
                              loads,
+                             communicator,
                              cycle,
                              previous,
                              write_files,
@@ -294,8 +299,10 @@ namespace FourierSSI
     }
   } // namespace
 
-  Simulator::Simulator(const AllParameters &parameters)
+  Simulator::Simulator(const AllParameters &parameters,
+                       const MPI_Comm       communicator)
     : parameters(parameters)
+    , communicator(communicator)
   {}
 
   ResultsTable
@@ -304,6 +311,10 @@ namespace FourierSSI
     ResultsTable             results;
     std::vector<std::string> written;
     const std::string       &directory = parameters.output.directory;
+    // Rank 0 writes the CSV files (each rank writes its VTU piece).
+    const bool write_csv =
+      write_files && (!Utilities::MPI::job_supports_mpi() ||
+                      Utilities::MPI::this_mpi_process(communicator) == 0);
     try
       {
         if (write_files)
@@ -344,17 +355,24 @@ namespace FourierSSI
                   triangulation.refine_global(1);
               }
             indicator = std::make_unique<RefinementIndicator>(triangulation);
+            // A distributed system's collective MPI calls must not
+            // interleave on one communicator: one harmonic at a time then.
+            const bool distributed =
+              Utilities::MPI::job_supports_mpi() &&
+              Utilities::MPI::n_mpi_processes(communicator) > 1;
             const unsigned int n_threads = std::min<unsigned int>(
               plan.harmonics.size(),
+              distributed ? 1 :
               parameters.discretization.concurrent_harmonics > 0 ?
-                parameters.discretization.concurrent_harmonics :
-                MultithreadInfo::n_cores());
+                            parameters.discretization.concurrent_harmonics :
+                            MultithreadInfo::n_cores());
             Timer                        cycle_timer;
             std::vector<HarmonicOutcome> outcomes =
               solve_harmonics(parameters,
                               plan.harmonics,
                               triangulation,
                               plan.loads,
+                              communicator,
                               cycle,
                               results,
                               write_files,
@@ -449,7 +467,7 @@ namespace FourierSSI
                 break;
               }
           }
-        if (write_files && !parameters.output.lines.empty())
+        if (write_csv && !parameters.output.lines.empty())
           {
             const std::string name = directory + "/lines-3d.csv";
             written.push_back(name);
@@ -459,7 +477,7 @@ namespace FourierSSI
             log << "3D reconstruction along " << parameters.output.lines.size()
                 << " line(s) written to " << name << std::endl;
           }
-        if (write_files && parameters.output.write_3d_vtu)
+        if (write_csv && parameters.output.write_3d_vtu)
           {
             const std::string name = directory + "/solution-3d.vtu";
             written.push_back(name);
@@ -467,7 +485,7 @@ namespace FourierSSI
                                               name);
             log << "revolved 3D field written to " << name << std::endl;
           }
-        if (write_files)
+        if (write_csv)
           {
             const std::string name =
               directory + "/" + parameters.output.results_file;

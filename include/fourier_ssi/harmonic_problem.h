@@ -19,6 +19,8 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
+#include <deal.II/numerics/data_out.h>
+#include <fourier_ssi/distributed_linear_system.h>
 #include <fourier_ssi/harmonic_operator.h>
 #include <fourier_ssi/interface_integrator.h>
 #include <fourier_ssi/linear_solver.h>
@@ -70,12 +72,15 @@ namespace FourierSSI
     /**
      * `loads`: the scene's theta-dependent loads (ScenePlan); their
      * amplitudes for this harmonic join the amplitude expressions of the
-     * Boundary conditions subsection.
+     * Boundary conditions subsection. On a communicator of more than one
+     * rank the linear system is distributed (DistributedLinearSystem); the
+     * default is the serial code.
      */
     HarmonicProblem(const AllParameters     &parameters,
                     const Harmonic          &harmonic,
                     const Triangulation<2>  &triangulation,
-                    const LoadDecomposition *loads = nullptr);
+                    const LoadDecomposition *loads        = nullptr,
+                    const MPI_Comm           communicator = MPI_COMM_SELF);
 
     /** DoFs, constraints (hanging nodes, Dirichlet, axis), sparsity. */
     void
@@ -175,6 +180,13 @@ namespace FourierSSI
       return constraints;
     }
 
+    /** The distributed system, or nullptr on one rank. */
+    const DistributedLinearSystem *
+    get_distributed() const
+    {
+      return distributed.get();
+    }
+
     /** The zero-thickness interfaces, or nullptr if none are declared. */
     const InterfaceIntegrator *
     get_interfaces() const
@@ -206,6 +218,10 @@ namespace FourierSSI
     double time_interface_assembly = 0.;
 
   private:
+    /** Parallel output: this rank's cells and, on rank 0, the .pvtu. */
+    void
+    write_vtu_pieces(DataOut<2> &data_out, const std::string &filename) const;
+
     /** Local stiffness of one cell and, if requested, its body-force load. */
     void
     local_matrix(const typename DoFHandler<2>::active_cell_iterator &cell,
@@ -250,6 +266,8 @@ namespace FourierSSI
                                          tractions;
     const LoadDecomposition             *loads;
     std::unique_ptr<InterfaceIntegrator> interfaces;
+    /** Mutable: the stiffness solves reuse its factorization/AMG. */
+    mutable std::unique_ptr<DistributedLinearSystem> distributed;
   };
 } // namespace FourierSSI
 

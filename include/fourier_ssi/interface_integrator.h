@@ -66,6 +66,16 @@ namespace FourierSSI
              SparseMatrix<double>            &matrix,
              Vector<double>                  &rhs) const;
 
+    /**
+     * The element matrix of pair i on its distinct DoFs (repeated indices of
+     * an interface ending inside the mesh merged), ready for
+     * distribute_local_to_global.
+     */
+    void
+    merged_matrix(const unsigned int                    i,
+                  FullMatrix<double>                   &merged,
+                  std::vector<types::global_dof_index> &unique_dofs) const;
+
     /** reactions += K_interface u (the interface part of K u - f). */
     void
     add_reactions(const Vector<double> &u, Vector<double> &reactions) const;

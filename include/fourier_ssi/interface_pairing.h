@@ -14,6 +14,7 @@
 #ifndef fourier_ssi_interface_pairing_h
 #define fourier_ssi_interface_pairing_h
 
+#include <array>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/types.h>
@@ -97,9 +98,12 @@ namespace FourierSSI
      * (U_r, U_z, U_theta each), then B nodes 0..p. */
     std::vector<types::global_dof_index> dof_indices;
     types::material_id                   material_a, material_b;
-    Point<2>                             center;
-    double                               length;
-    Tensor<1, 2>                         tangent, normal;
+    /** Active cell index of the cells of side A and side B (a parallel run
+     * assembles the pair on the rank of cell A). */
+    std::array<unsigned int, 2> cells = {{0, 0}};
+    Point<2>                    center;
+    double                      length;
+    Tensor<1, 2>                tangent, normal;
   };
 
   /**

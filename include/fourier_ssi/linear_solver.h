@@ -44,6 +44,8 @@ namespace FourierSSI
     double       tolerance      = 1e-10;
     unsigned int max_iterations = 2000;
     double       residual_check = 1e-6;
+    /** "auto" or "always" (HarmonicProblem picks DistributedLinearSystem). */
+    std::string distributed = "auto";
   };
 } // namespace FourierSSI
 

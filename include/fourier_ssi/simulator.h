@@ -9,6 +9,7 @@
 #ifndef fourier_ssi_simulator_h
 #define fourier_ssi_simulator_h
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/grid/tria.h>
 #include <fourier_ssi/field_reconstruction.h>
 #include <fourier_ssi/parameters.h>
@@ -20,7 +21,13 @@ namespace FourierSSI
   class Simulator
   {
   public:
-    explicit Simulator(const AllParameters &parameters);
+    /**
+     * On a communicator of more than one rank each harmonic's linear system
+     * is distributed (the mesh and postprocessing are replicated); only rank
+     * 0 writes the CSV files, every rank its piece of the VTU output.
+     */
+    explicit Simulator(const AllParameters &parameters,
+                       const MPI_Comm       communicator = MPI_COMM_SELF);
 
     /** Run everything; returns the scalar results (also written as CSV). */
     ResultsTable
@@ -35,6 +42,7 @@ namespace FourierSSI
 
   private:
     const AllParameters &parameters;
+    const MPI_Comm       communicator;
     /** Owned here: the reconstruction's DoF handlers live on it. */
     Triangulation<2>    triangulation;
     FieldReconstruction reconstruction;

@@ -1,0 +1,142 @@
+#include <boost/serialization/string.hpp>
+#include <boost/serialization/vector.hpp>
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+#include <filesystem>
+#include <fourier_ssi/batch_runner.h>
+#include <fourier_ssi/command_line.h>
+#include <fourier_ssi/parameters.h>
+#include <fourier_ssi/simulator.h>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace FourierSSI
+{
+  std::vector<std::string>
+  batch_cases(const std::vector<std::string> &arguments)
+  {
+    std::vector<std::string> cases;
+    for (const std::string &argument : arguments)
+      {
+        if (argument.size() > 4 &&
+            argument.substr(argument.size() - 4) == ".prm")
+          {
+            cases.push_back(argument);
+            continue;
+          }
+        std::ifstream in(argument);
+        AssertThrow(in,
+                    ExcMessage("--batch: cannot read the case list '" +
+                               argument + "'"));
+        const std::filesystem::path directory =
+          std::filesystem::path(argument).parent_path();
+        std::string line;
+        while (std::getline(in, line))
+          {
+            line = Utilities::trim(line.substr(0, line.find('#')));
+            if (line.empty())
+              continue;
+            const std::filesystem::path path(line);
+            cases.push_back(path.is_absolute() ? line :
+                                                 (directory / path).string());
+          }
+      }
+    AssertThrow(!cases.empty(),
+                ExcMessage("--batch: no cases given (usage: fourier-ssi "
+                           "--batch [--csv FILE] CASE.prm... | LIST...)"));
+    return cases;
+  }
+
+  int
+  run_batch(const std::vector<std::string> &arguments,
+            const MPI_Comm                  communicator,
+            std::ostream                   &out,
+            std::ostream                   &err)
+  {
+    const unsigned int rank    = Utilities::MPI::this_mpi_process(communicator);
+    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
+    std::string        csv_file = "batch.csv";
+    std::vector<std::string> rest;
+    for (unsigned int i = 0; i < arguments.size(); ++i)
+      if (arguments[i] == "--csv" && i + 1 < arguments.size())
+        csv_file = arguments[++i];
+      else
+        rest.push_back(arguments[i]);
+    // Every rank expands the list itself (same files, same result), so an
+    // unreadable list fails on all ranks alike.
+    const std::vector<std::string> cases = batch_cases(rest);
+
+    // Per case: status ("ok" or the error), log, CSV rows. Cases of other
+    // ranks stay empty strings.
+    std::vector<std::string> status(cases.size()), logs(cases.size()),
+      rows(cases.size());
+    for (unsigned int c = rank; c < cases.size(); c += n_ranks)
+      {
+        std::ostringstream log;
+        try
+          {
+            AllParameters parameters;
+            parameters.read_file(cases[c]);
+            log << "fourier-ssi: " << cases[c] << '\n';
+            Simulator          simulator(parameters); // serial: MPI_COMM_SELF
+            const ResultsTable results = simulator.run(log);
+            std::ostringstream csv;
+            csv << std::setprecision(12);
+            for (const ResultRow &row : results.rows())
+              if (row.quantity.rfind("time_", 0) != 0)
+                csv << cases[c] << ',' << row.quantity << ',' << row.harmonic.n
+                    << ',' << to_string(row.harmonic.family) << ',' << row.cycle
+                    << ',' << row.value << ',' << row.unit << '\n';
+            rows[c]   = csv.str();
+            status[c] = "ok";
+          }
+        catch (const std::exception &e)
+          {
+            status[c] = one_line_message(e);
+          }
+        logs[c] = log.str();
+      }
+
+    const std::vector<std::vector<std::string>> all_status =
+      Utilities::MPI::gather(communicator, status, 0);
+    const std::vector<std::vector<std::string>> all_logs =
+      Utilities::MPI::gather(communicator, logs, 0);
+    const std::vector<std::vector<std::string>> all_rows =
+      Utilities::MPI::gather(communicator, rows, 0);
+    int exit_code = 0;
+    if (rank == 0)
+      {
+        std::ostringstream csv;
+        csv << "case,quantity,n,family,cycle,value,unit\n";
+        for (unsigned int c = 0; c < cases.size(); ++c)
+          {
+            const unsigned int owner = c % n_ranks;
+            out << all_logs[owner][c];
+            if (all_status[owner][c] != "ok")
+              {
+                err << "fourier-ssi: error: " << cases[c] << ": "
+                    << all_status[owner][c] << std::endl;
+                exit_code = 1;
+              }
+            csv << all_rows[owner][c];
+          }
+        // Like a single run: no results file unless every case succeeded.
+        if (exit_code == 0)
+          {
+            std::ofstream file(csv_file);
+            file << csv.str();
+            if (!file)
+              {
+                err << "fourier-ssi: error: --batch: cannot write '" << csv_file
+                    << "'" << std::endl;
+                exit_code = 1;
+              }
+            else
+              out << cases.size() << " cases on " << n_ranks
+                  << " ranks, results written to " << csv_file << std::endl;
+          }
+      }
+    return Utilities::MPI::broadcast(communicator, exit_code, 0);
+  }
+} // namespace FourierSSI
