@@ -146,36 +146,34 @@ namespace FourierSSI
     return result;
   }
 
-  std::unique_ptr<FunctionParser<2>>
-  BoundaryConditions::make_function(const ComponentExpressions &expressions,
-                                    const unsigned int          harmonic_n,
-                                    const std::string          &entry)
+  template <int dim>
+  void
+  initialize_parser(FunctionParser<dim>                 &function,
+                    const ComponentExpressions          &expressions,
+                    const std::string                   &variables,
+                    const std::map<std::string, double> &constants,
+                    const std::string                   &entry)
   {
     std::vector<std::string> formulas(3, "0");
     for (unsigned int c = 0; c < 3; ++c)
       if (expressions.given[c] && !expressions.expression[c].empty())
         formulas[c] = expressions.expression[c];
-    auto function = std::make_unique<FunctionParser<2>>(3);
-    // std::cerr is process-wide and harmonics are set up in several threads:
-    // one redirection at a time, or a thread restores another's buffer.
     static std::mutex           cerr_mutex;
     std::lock_guard<std::mutex> lock(cerr_mutex);
-    // deal.II's muparser wrapper prints parse errors to std::cerr before it
-    // throws; keep them off the terminal so the user sees one clean line.
-    std::ostringstream    swallowed;
+    std::ostringstream          swallowed;
     std::streambuf *const cerr_buffer = std::cerr.rdbuf(swallowed.rdbuf());
     try
       {
-        function->initialize("r,z",
-                             formulas,
-                             {{"pi", numbers::PI},
-                              {"n", static_cast<double>(harmonic_n)}});
+        function.initialize(variables, formulas, constants);
         // muparser compiles each component lazily, on first evaluation.
         Vector<double> values(3);
-        function->vector_value(Point<2>(0.5, 0.5), values);
+        Point<dim>     probe;
+        for (unsigned int d = 0; d < dim; ++d)
+          probe[d] = 0.5;
+        function.vector_value(probe, values);
         std::cerr.rdbuf(cerr_buffer);
       }
-    catch (const std::exception &e)
+    catch (const std::exception &)
       {
         std::cerr.rdbuf(cerr_buffer);
         AssertThrow(false,
@@ -183,6 +181,33 @@ namespace FourierSSI
                                "', '" + formulas[1] + "', '" + formulas[2] +
                                "'"));
       }
+  }
+
+  template void
+  initialize_parser<2>(FunctionParser<2> &,
+                       const ComponentExpressions &,
+                       const std::string &,
+                       const std::map<std::string, double> &,
+                       const std::string &);
+  template void
+  initialize_parser<3>(FunctionParser<3> &,
+                       const ComponentExpressions &,
+                       const std::string &,
+                       const std::map<std::string, double> &,
+                       const std::string &);
+
+  std::unique_ptr<FunctionParser<2>>
+  BoundaryConditions::make_function(const ComponentExpressions &expressions,
+                                    const unsigned int          harmonic_n,
+                                    const std::string          &entry)
+  {
+    auto function = std::make_unique<FunctionParser<2>>(3);
+    initialize_parser(*function,
+                      expressions,
+                      "r,z",
+                      {{"pi", numbers::PI},
+                       {"n", static_cast<double>(harmonic_n)}},
+                      entry);
     return function;
   }
 } // namespace FourierSSI

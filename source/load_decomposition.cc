@@ -65,34 +65,9 @@ namespace FourierSSI
   make_theta_function(const ComponentExpressions &expressions,
                       const std::string          &entry)
   {
-    std::vector<std::string> formulas(3, "0");
-    for (unsigned int c = 0; c < 3; ++c)
-      if (expressions.given[c] && !expressions.expression[c].empty())
-        formulas[c] = expressions.expression[c];
     auto function = std::make_shared<FunctionParser<3>>(3);
-    // std::cerr is process-wide and harmonics are set up in several threads:
-    // one redirection at a time, or a thread restores another's buffer.
-    static std::mutex           cerr_mutex;
-    std::lock_guard<std::mutex> lock(cerr_mutex);
-    // muparser reports parse errors on std::cerr before throwing: keep the
-    // terminal to the one-line error.
-    std::ostringstream    swallowed;
-    std::streambuf *const cerr_buffer = std::cerr.rdbuf(swallowed.rdbuf());
-    try
-      {
-        function->initialize("r,z,theta", formulas, {{"pi", numbers::PI}});
-        Vector<double> values(3);
-        function->vector_value(Point<3>(0.5, 0.5, 0.5), values);
-        std::cerr.rdbuf(cerr_buffer);
-      }
-    catch (const std::exception &)
-      {
-        std::cerr.rdbuf(cerr_buffer);
-        AssertThrow(false,
-                    ExcMessage(entry + ": cannot parse '" + formulas[0] +
-                               "', '" + formulas[1] + "', '" + formulas[2] +
-                               "'"));
-      }
+    initialize_parser(
+      *function, expressions, "r,z,theta", {{"pi", numbers::PI}}, entry);
     return function;
   }
 

@@ -36,6 +36,22 @@ namespace FourierSSI
     std::array<bool, 3>        given = {{false, false, false}};
   };
 
+  /**
+   * Initialize a 3-component FunctionParser from the expressions (missing
+   * ones are 0) and evaluate it once at `probe`, so that a bad expression
+   * fails now with one line naming `entry`. muparser prints its own message
+   * on std::cerr first; that stream is silenced meanwhile (one thread at a
+   * time: std::cerr is process-wide and harmonics are set up concurrently).
+   * Defined for dim = 2 (variables r, z) and 3 (r, z, theta).
+   */
+  template <int dim>
+  void
+  initialize_parser(FunctionParser<dim>                 &function,
+                    const ComponentExpressions          &expressions,
+                    const std::string                   &variables,
+                    const std::map<std::string, double> &constants,
+                    const std::string                   &entry);
+
   class BoundaryConditions
   {
   public:
