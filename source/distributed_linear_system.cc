@@ -207,14 +207,7 @@ namespace FourierSSI
           }
         catch (const SolverControl::NoConvergence &e)
           {
-            AssertThrow(false,
-                        ExcMessage(
-                          "Linear solver: cg-amg did not converge in " +
-                          std::to_string(e.last_step) +
-                          " iterations (residual " +
-                          std::to_string(e.last_residual) +
-                          "); raise 'Max iterations' or use "
-                          "Method = direct"));
+            LinearSolver::fail_to_converge(e);
           }
         report.iterations = control.last_step();
       }
@@ -222,17 +215,9 @@ namespace FourierSSI
     TrilinosWrappers::MPI::Vector residual(owned_dofs, communicator);
     matrix.vmult(residual, x_owned);
     residual -= b_owned;
-    const double b_norm = b_owned.l2_norm();
     report.relative_residual =
-      b_norm > 0. ? residual.l2_norm() / b_norm : residual.l2_norm();
-    AssertThrow(std::isfinite(report.relative_residual) &&
-                  report.relative_residual <= parameters.residual_check,
-                ExcMessage("Linear solver: relative residual " +
-                           std::to_string(report.relative_residual) +
-                           " exceeds 'Residual check' = " +
-                           std::to_string(parameters.residual_check) +
-                           " (singular or ill-posed system: check supports "
-                           "and interface stiffness)"));
+      parameters.checked_relative_residual(residual.l2_norm(),
+                                           b_owned.l2_norm());
 
     // Replicate the solution: every rank runs the serial postprocessing.
     Vector<double> part(x.size());

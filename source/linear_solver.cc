@@ -1,3 +1,4 @@
+#include <cstdlib>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/lac/precondition.h>
 #include <deal.II/lac/solver_cg.h>
@@ -109,14 +110,7 @@ namespace FourierSSI
           }
         catch (const SolverControl::NoConvergence &e)
           {
-            AssertThrow(false,
-                        ExcMessage(
-                          "Linear solver: cg-amg did not converge in " +
-                          std::to_string(e.last_step) +
-                          " iterations (residual " +
-                          std::to_string(e.last_residual) +
-                          "); raise 'Max iterations' or use "
-                          "Method = direct"));
+            fail_to_converge(e);
           }
         report.iterations = control.last_step();
       }
@@ -124,17 +118,36 @@ namespace FourierSSI
     Vector<double> residual(b.size());
     A.vmult(residual, x);
     residual -= b;
-    const double b_norm = b.l2_norm();
     report.relative_residual =
-      b_norm > 0. ? residual.l2_norm() / b_norm : residual.l2_norm();
-    AssertThrow(std::isfinite(report.relative_residual) &&
-                  report.relative_residual <= residual_check,
+      checked_relative_residual(residual.l2_norm(), b.l2_norm());
+    return report;
+  }
+
+  double
+  LinearSolver::checked_relative_residual(const double residual_norm,
+                                          const double rhs_norm) const
+  {
+    const double relative =
+      rhs_norm > 0. ? residual_norm / rhs_norm : residual_norm;
+    AssertThrow(std::isfinite(relative) && relative <= residual_check,
                 ExcMessage("Linear solver: relative residual " +
-                           std::to_string(report.relative_residual) +
+                           std::to_string(relative) +
                            " exceeds 'Residual check' = " +
                            std::to_string(residual_check) +
                            " (singular or ill-posed system: check supports "
                            "and interface stiffness)"));
-    return report;
+    return relative;
+  }
+
+  void
+  LinearSolver::fail_to_converge(const SolverControl::NoConvergence &e)
+  {
+    AssertThrow(false,
+                ExcMessage("Linear solver: cg-amg did not converge in " +
+                           std::to_string(e.last_step) +
+                           " iterations (residual " +
+                           std::to_string(e.last_residual) +
+                           "); raise 'Max iterations' or use Method = direct"));
+    std::abort(); // not reached: AssertThrow throws
   }
 } // namespace FourierSSI

@@ -9,6 +9,7 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <string>
@@ -39,6 +40,20 @@ namespace FourierSSI
           Vector<double>             &x,
           const Vector<double>       &b,
           const DoFHandler<2>        &dof_handler) const;
+
+    /**
+     * The accepted-solution test shared by every solve path (serial, shared
+     * factorization, distributed): returns ||b - A x|| / ||b|| (or
+     * ||b - A x|| for b = 0) and throws a one-line error above 'Residual
+     * check'.
+     */
+    double
+    checked_relative_residual(const double residual_norm,
+                              const double rhs_norm) const;
+
+    /** Throw the one-line error of a CG run that did not converge. */
+    [[noreturn]] static void
+    fail_to_converge(const SolverControl::NoConvergence &e);
 
     std::string  method         = "direct";
     double       tolerance      = 1e-10;
