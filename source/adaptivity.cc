@@ -43,6 +43,14 @@ namespace FourierSSI
                       "goal: stop refining once the estimated relative error "
                       "of the goal is below this value (0: run every "
                       "Refinement cycle).");
+    prm.declare_entry("Point refinement",
+                      "",
+                      Patterns::Anything(),
+                      "A priori grading toward singular points, before the "
+                      "first cycle: 'r, z: levels; ...' refines the cells "
+                      "touching each point (a vertex of the mesh, e.g. a "
+                      "foundation edge) that many times, halving their size "
+                      "each time. Empty: none.");
     prm.leave_subsection();
   }
 
@@ -54,6 +62,35 @@ namespace FourierSSI
     refine_fraction = prm.get_double("Refine fraction");
     goal            = prm.get("Goal");
     goal_tolerance  = prm.get_double("Goal tolerance");
+    point_refinements.clear();
+    for (const std::string &item :
+         Utilities::split_string_list(prm.get("Point refinement"), ';'))
+      {
+        const std::vector<std::string> parts =
+          Utilities::split_string_list(item, ':');
+        const std::vector<std::string> coordinates =
+          parts.size() == 2 ? Utilities::split_string_list(parts[0], ',') :
+                              std::vector<std::string>();
+        AssertThrow(coordinates.size() == 2,
+                    ExcMessage("Adaptivity/Point refinement: '" + item +
+                               "' is not 'r, z: levels'"));
+        try
+          {
+            const int levels = Utilities::string_to_int(parts[1]);
+            AssertThrow(levels >= 0, ExcMessage("negative"));
+            point_refinements.emplace_back(
+              Point<2>(Utilities::string_to_double(coordinates[0]),
+                       Utilities::string_to_double(coordinates[1])),
+              static_cast<unsigned int>(levels));
+          }
+        catch (...)
+          {
+            AssertThrow(false,
+                        ExcMessage("Adaptivity/Point refinement: '" + item +
+                                   "' is not 'r, z: levels' with numbers "
+                                   "and levels >= 0"));
+          }
+      }
     prm.leave_subsection();
   }
 
@@ -97,6 +134,14 @@ namespace FourierSSI
                                                       indicators,
                                                       fraction,
                                                       0.);
+    execute_refinement_keeping_interface_twins(triangulation, interface_ids);
+  }
+
+  void
+  execute_refinement_keeping_interface_twins(
+    Triangulation<2>                   &triangulation,
+    const std::set<types::boundary_id> &interface_ids)
+  {
     // Twin interface faces, matched by their centres (rounded to a grid far
     // below the smallest face length).
     std::map<std::pair<long long, long long>,
@@ -130,5 +175,41 @@ namespace FourierSSI
           }
       }
     triangulation.execute_coarsening_and_refinement();
+  }
+
+  void
+  refine_toward_points(
+    Triangulation<2>                                     &triangulation,
+    const std::vector<std::pair<Point<2>, unsigned int>> &point_refinements,
+    const std::set<types::boundary_id>                   &interface_ids)
+  {
+    unsigned int max_levels = 0;
+    for (const auto &[point, levels] : point_refinements)
+      max_levels = std::max(max_levels, levels);
+    for (unsigned int pass = 0; pass < max_levels; ++pass)
+      {
+        const double tolerance =
+          1e-6 * GridTools::minimal_cell_diameter(triangulation);
+        for (const auto &[point, levels] : point_refinements)
+          {
+            if (pass >= levels)
+              continue;
+            bool touched = false;
+            for (const auto &cell : triangulation.active_cell_iterators())
+              for (const unsigned int v : cell->vertex_indices())
+                if (cell->vertex(v).distance(point) < tolerance)
+                  {
+                    cell->set_refine_flag();
+                    touched = true;
+                  }
+            AssertThrow(touched,
+                        ExcMessage("Adaptivity/Point refinement: no mesh "
+                                   "vertex at (" +
+                                   std::to_string(point[0]) + ", " +
+                                   std::to_string(point[1]) + ")"));
+          }
+        execute_refinement_keeping_interface_twins(triangulation,
+                                                   interface_ids);
+      }
   }
 } // namespace FourierSSI

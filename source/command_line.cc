@@ -1,5 +1,7 @@
+#include <cstdlib>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
 #include <fourier_ssi/batch_runner.h>
@@ -8,6 +10,7 @@
 #include <fourier_ssi/parameters.h>
 #include <fourier_ssi/simulator.h>
 #include <iostream>
+#include <memory>
 #include <sstream>
 
 namespace FourierSSI
@@ -36,17 +39,46 @@ namespace FourierSSI
     return result;
   }
 
+  namespace
+  {
+    /** True if an MPI launcher (mpirun, mpiexec, srun) started the process. */
+    bool
+    launched_by_mpi()
+    {
+      for (const char *variable :
+           {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_RANK", "PMI_SIZE"})
+        if (std::getenv(variable) != nullptr)
+          return true;
+      return false;
+    }
+  } // namespace
+
   int
   run_command_line(int argc, char **argv)
   {
+    // MPI is started only where it is used: under an MPI launcher, for
+    // --batch, and for the Trilinos solvers (cg-amg, Distributed = always).
+    // A serial run skips it: OpenMPI's singleton start-up costs about
+    // 0.3 s, a third of a small run (doc/accuracy-vs-time.md).
+    std::unique_ptr<Utilities::MPI::MPI_InitFinalize> mpi;
+    const auto                                        start_mpi = [&]() {
+      if (!mpi)
+        mpi = std::make_unique<Utilities::MPI::MPI_InitFinalize>(argc, argv, 1);
+    };
+    const bool batch = argc > 1 && std::string(argv[1]) == "--batch";
+    if (launched_by_mpi() || batch)
+      start_mpi();
+    else
+      MultithreadInfo::set_thread_limit(1); // as MPI_InitFinalize(.., 1)
     std::string prm_file = std::string(FSSI_SOURCE_DIR) + "/prm/default.prm";
     // Under mpirun every rank runs this; only rank 0 talks (a stream without
     // a buffer swallows the output of the others).
     const MPI_Comm communicator = MPI_COMM_WORLD;
     std::ostream   silent(nullptr);
-    const bool     root = Utilities::MPI::this_mpi_process(communicator) == 0;
-    std::ostream  &out  = root ? std::cout : silent;
-    std::ostream  &err  = root ? std::cerr : silent;
+    const bool     root = !Utilities::MPI::job_supports_mpi() ||
+                      Utilities::MPI::this_mpi_process(communicator) == 0;
+    std::ostream &out = root ? std::cout : silent;
+    std::ostream &err = root ? std::cerr : silent;
     try
       {
         if (argc > 1 && std::string(argv[1]) == "--print-parameters")
@@ -78,7 +110,7 @@ namespace FourierSSI
                                      out);
             return 0;
           }
-        if (argc > 1 && std::string(argv[1]) == "--batch")
+        if (batch)
           return run_batch(std::vector<std::string>(argv + 2, argv + argc),
                            communicator,
                            out,
@@ -95,6 +127,9 @@ namespace FourierSSI
 
         AllParameters parameters;
         parameters.read_file(prm_file);
+        if (!parameters.solver.is_direct() ||
+            parameters.solver.distributed == "always")
+          start_mpi();
         out << "fourier-ssi: " << prm_file << std::endl;
         Simulator simulator(parameters, communicator);
         simulator.run(out);

@@ -133,7 +133,7 @@ namespace FourierSSI
     SolverReport       report;
     report.method =
       parameters.method + " (" + std::to_string(n_ranks) + " ranks, " +
-      (parameters.method == "direct" ? "MUMPS" : "Trilinos") + ")";
+      (parameters.is_direct() ? "MUMPS" : "Trilinos") + ")";
     // Same shortcut as the serial solver: a zero load has the zero solution.
     if (b.l2_norm() == 0.)
       {
@@ -151,7 +151,7 @@ namespace FourierSSI
     b_owned.compress(VectorOperation::insert);
     x_owned.compress(VectorOperation::insert);
 
-    if (parameters.method == "direct")
+    if (parameters.is_direct())
       {
         if (!direct)
           {

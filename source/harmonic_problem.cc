@@ -11,6 +11,7 @@
 #include <deal.II/numerics/vector_tools.h>
 #include <fourier_ssi/axis_constraints.h>
 #include <fourier_ssi/harmonic_problem.h>
+#include <fourier_ssi/sparse_direct.h>
 #include <fourier_ssi/stress_postprocessor.h>
 #include <fstream>
 
@@ -420,7 +421,7 @@ namespace FourierSSI
     std::vector<Vector<double>> *unit_solutions) const
   {
     AssertThrow(foundation, ExcMessage("Rigid foundation is not enabled"));
-    SparseDirectUMFPACK direct;
+    SparseDirect direct(parameters.solver.direct_backend());
     if (!distributed)
       direct.initialize(system_matrix);
     return unit_load_coefficients(direct, unit_solutions);
@@ -432,7 +433,7 @@ namespace FourierSSI
     std::vector<Vector<double>> *unit_solutions)
   {
     AssertThrow(foundation, ExcMessage("Rigid foundation is not enabled"));
-    if (distributed || parameters.solver.method != "direct" ||
+    if (distributed || !parameters.solver.is_direct() ||
         system_rhs.l2_norm() == 0.)
       {
         // Nothing to share here: a distributed system (it keeps its own
@@ -442,20 +443,11 @@ namespace FourierSSI
         coefficients              = foundation_coefficients(unit_solutions);
         return report;
       }
-    SparseDirectUMFPACK direct;
-    try
-      {
-        direct.initialize(system_matrix);
-      }
-    catch (const std::exception &)
-      {
-        AssertThrow(false,
-                    ExcMessage("Linear solver: UMFPACK could not factorize "
-                               "the matrix (singular system: is the body "
-                               "free to move? check the supports)"));
-      }
+    SparseDirect direct(parameters.solver.direct_backend());
+    direct.initialize(system_matrix);
     SolverReport report;
-    report.method = "direct (factorization shared with the unit H, M cases)";
+    report.method = parameters.solver.method +
+                    " (factorization shared with the unit H, M cases)";
     direct.vmult(solution, system_rhs);
     Vector<double> residual(system_rhs.size());
     system_matrix.vmult(residual, solution);
@@ -471,30 +463,32 @@ namespace FourierSSI
 
   FoundationCoefficients
   HarmonicProblem::unit_load_coefficients(
-    const SparseDirectUMFPACK   &direct,
+    const SparseDirect          &direct,
     std::vector<Vector<double>> *unit_solutions) const
   {
+    std::vector<Vector<double>> x;
+    for (const unsigned int load_case : {0u, 1u})
+      x.push_back(foundation->unit_load(load_case, dof_handler.n_dofs()));
+    // The master DoFs are unconstrained: their values are final without
+    // distributing the constraints (which would add Dirichlet data).
+    if (distributed)
+      for (Vector<double> &v : x)
+        {
+          const Vector<double> load(v);
+          v = 0.; // the CG initial guess
+          distributed->solve(v, load);
+        }
+    else
+      direct.solve(x); // both loads in one sweep
     std::array<RigidMotion, 2> motions;
     for (const unsigned int load_case : {0u, 1u})
       {
-        Vector<double> x =
-          foundation->unit_load(load_case, dof_handler.n_dofs());
-        // The master DoFs are unconstrained: their values are final without
-        // distributing the constraints (which would add Dirichlet data).
-        if (distributed)
-          {
-            const Vector<double> load(x);
-            x = 0.; // the CG initial guess
-            distributed->solve(x, load);
-          }
-        else
-          direct.solve(x);
-        foundation->check_supported(x, constraints);
-        motions[load_case] = foundation->motion(x);
+        foundation->check_supported(x[load_case], constraints);
+        motions[load_case] = foundation->motion(x[load_case]);
         if (unit_solutions)
           {
-            constraints.distribute(x);
-            unit_solutions->push_back(x);
+            constraints.distribute(x[load_case]);
+            unit_solutions->push_back(x[load_case]);
           }
       }
     return foundation->coefficients(motions[0], motions[1]);

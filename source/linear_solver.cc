@@ -6,6 +6,7 @@
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <fourier_ssi/linear_solver.h>
+#include <fourier_ssi/sparse_direct.h>
 
 namespace FourierSSI
 {
@@ -15,9 +16,12 @@ namespace FourierSSI
     prm.enter_subsection("Linear solver");
     prm.declare_entry("Method",
                       "direct",
-                      Patterns::Selection("direct|cg-amg"),
-                      "direct: UMFPACK sparse LU; cg-amg: conjugate gradients "
-                      "with Trilinos ML algebraic multigrid.");
+                      Patterns::Selection("direct|direct-lu|cg-amg"),
+                      "direct: CHOLMOD sparse Cholesky (the systems are "
+                      "symmetric positive definite); direct-lu: UMFPACK "
+                      "sparse LU (the reference path); cg-amg: conjugate "
+                      "gradients with Trilinos ML algebraic multigrid. With "
+                      "MPI, both direct methods use MUMPS.");
     prm.declare_entry("Tolerance",
                       "1e-10",
                       Patterns::Double(0.),
@@ -71,20 +75,10 @@ namespace FourierSSI
         report.method += " (zero load, skipped)";
         return report;
       }
-    if (method == "direct")
+    if (is_direct())
       {
-        SparseDirectUMFPACK direct;
-        try
-          {
-            direct.initialize(A);
-          }
-        catch (const std::exception &)
-          {
-            AssertThrow(false,
-                        ExcMessage("Linear solver: UMFPACK could not factorize "
-                                   "the matrix (singular system: is the body "
-                                   "free to move? check the supports)"));
-          }
+        SparseDirect direct(direct_backend());
+        direct.initialize(A);
         direct.vmult(x, b);
       }
     else

@@ -365,7 +365,13 @@ namespace FourierSSI
         std::unique_ptr<GoalEstimator> goal_estimator;
         if (strategy == "goal")
           goal_estimator = std::make_unique<GoalEstimator>(parameters);
+        std::set<types::boundary_id> interface_ids;
+        for (const auto &[id, law] : parameters.interfaces.laws)
+          interface_ids.insert(id);
         parameters.mesh.build(triangulation);
+        refine_toward_points(triangulation,
+                             parameters.adaptivity.point_refinements,
+                             interface_ids);
         for (const auto &cell : triangulation.active_cell_iterators())
           parameters.materials.get(cell->material_id()); // throws if missing
         const ScenePlan plan = plan_scene(parameters, triangulation);
@@ -382,14 +388,9 @@ namespace FourierSSI
                 // changes under their DoF handlers.
                 reconstruction = FieldReconstruction();
                 if (strategy == "kelly" || strategy == "goal")
-                  {
-                    std::set<types::boundary_id> interface_ids;
-                    for (const auto &[id, law] : parameters.interfaces.laws)
-                      interface_ids.insert(id);
-                    indicator->refine(triangulation,
-                                      parameters.adaptivity.refine_fraction,
-                                      interface_ids);
-                  }
+                  indicator->refine(triangulation,
+                                    parameters.adaptivity.refine_fraction,
+                                    interface_ids);
                 else
                   triangulation.refine_global(1);
               }

@@ -15,6 +15,8 @@
 #include <deal.II/lac/vector.h>
 #include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace FourierSSI
 {
@@ -31,7 +33,35 @@ namespace FourierSSI
     double      refine_fraction = 0.3;
     std::string goal            = "all"; // K_H | K_M | K_MH | all
     double      goal_tolerance  = 0.;    // relative; 0: no stop
+    /**
+     * A priori grading: each (point, levels) pair refines the cells that
+     * touch the point `levels` times before the first cycle.
+     */
+    std::vector<std::pair<Point<2>, unsigned int>> point_refinements;
   };
+
+  /**
+   * Refine the cells flagged in `triangulation`, after mirroring the flags
+   * across every interface (faces with an id in `interface_ids` and their
+   * geometric twins) until both sides agree, so interface pairs stay valid.
+   */
+  void
+  execute_refinement_keeping_interface_twins(
+    Triangulation<2>                   &triangulation,
+    const std::set<types::boundary_id> &interface_ids);
+
+  /**
+   * Geometric grading toward singular points (a rigid foundation's edges):
+   * for each (point, levels), refine the cells with a vertex at the point,
+   * `levels` times. Each pass halves the cells at the point, so the mesh
+   * size falls like 2^-k toward it while the cell count grows only by a
+   * constant per pass. A point touching no vertex is an input error.
+   */
+  void
+  refine_toward_points(
+    Triangulation<2>                                     &triangulation,
+    const std::vector<std::pair<Point<2>, unsigned int>> &point_refinements,
+    const std::set<types::boundary_id>                   &interface_ids);
 
   /** Collects the indicators of the harmonics of one cycle. */
   class RefinementIndicator
@@ -48,9 +78,8 @@ namespace FourierSSI
     add(const Vector<float> &cell_indicators);
 
     /**
-     * Flag the top `fraction` of cells by indicator, mirror the flags across
-     * every interface (faces with an id in `interface_ids` and their
-     * geometric twins) until both sides agree, and refine.
+     * Flag the top `fraction` of cells by indicator and refine them, with
+     * execute_refinement_keeping_interface_twins().
      */
     void
     refine(Triangulation<2>                   &triangulation,

@@ -15,7 +15,6 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
@@ -27,6 +26,7 @@
 #include <fourier_ssi/load_decomposition.h>
 #include <fourier_ssi/parameters.h>
 #include <fourier_ssi/rigid_foundation.h>
+#include <fourier_ssi/sparse_direct.h>
 #include <map>
 #include <memory>
 
@@ -230,7 +230,7 @@ namespace FourierSSI
 
     /** The unit-H and unit-M cases with a given factorization. */
     FoundationCoefficients
-    unit_load_coefficients(const SparseDirectUMFPACK   &direct,
+    unit_load_coefficients(const SparseDirect          &direct,
                            std::vector<Vector<double>> *unit_solutions) const;
 
     /**

@@ -1,8 +1,8 @@
 /**
- * Linear solvers for one harmonic's system: sparse direct (UMFPACK, the
- * default and the reference) or CG preconditioned by Trilinos ML algebraic
- * multigrid with the per-component constant near-null space. A failure is an
- * error with a one-line message, never a silent result.
+ * Linear solvers for one harmonic's system: sparse direct (CHOLMOD
+ * Cholesky, the default, or UMFPACK LU, sparse_direct.h) or CG preconditioned
+ * by Trilinos ML algebraic multigrid with the per-component constant near-null
+ * space. A failure is an error with a one-line message, never a silent result.
  */
 #ifndef fourier_ssi_linear_solver_h
 #define fourier_ssi_linear_solver_h
@@ -54,6 +54,20 @@ namespace FourierSSI
     /** Throw the one-line error of a CG run that did not converge. */
     [[noreturn]] static void
     fail_to_converge(const SolverControl::NoConvergence &e);
+
+    /** Method = direct or direct-lu. */
+    bool
+    is_direct() const
+    {
+      return method != "cg-amg";
+    }
+
+    /** The SparseDirect back end of a direct Method. */
+    std::string
+    direct_backend() const
+    {
+      return method == "direct-lu" ? "lu" : "cholesky";
+    }
 
     std::string  method         = "direct";
     double       tolerance      = 1e-10;

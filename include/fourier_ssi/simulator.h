@@ -40,6 +40,13 @@ namespace FourierSSI
       return reconstruction;
     }
 
+    /** The mesh of the last cycle (after run()). */
+    const Triangulation<2> &
+    get_triangulation() const
+    {
+      return triangulation;
+    }
+
   private:
     const AllParameters &parameters;
     const MPI_Comm       communicator;
