@@ -511,10 +511,14 @@ namespace FourierSSI
     double         energy = 0.;
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
-        local_matrix(cell, cell_matrix, nullptr);
         cell->get_dof_indices(dof_indices);
         for (unsigned int i = 0; i < dof_indices.size(); ++i)
           local(i) = field(dof_indices[i]);
+        // A cell at rest stores no energy (e.g. the zero scene field of a
+        // stiffness run): skip its matrix.
+        if (local.linfty_norm() == 0.)
+          continue;
+        local_matrix(cell, cell_matrix, nullptr);
         cell_matrix.vmult(product, local);
         energy += 0.5 * (local * product);
       }
@@ -565,12 +569,31 @@ namespace FourierSSI
     std::vector<types::global_dof_index> dof_indices(fe->n_dofs_per_cell());
     Vector<double> local(fe->n_dofs_per_cell()), product(fe->n_dofs_per_cell());
     Vector<double> reactions(dof_handler.n_dofs());
+    // Without a body force, a cell at rest exerts no nodal force.
+    bool body_force_given = false;
+    for (const std::string &e :
+         parameters.boundary_conditions.body_force.expression)
+      {
+        // Any expression other than a literal zero counts as a body force.
+        const std::string text  = Utilities::trim(e);
+        std::size_t       used  = 0;
+        double            value = 1.;
+        try
+          {
+            value = std::stod(text, &used);
+          }
+        catch (...)
+          {}
+        body_force_given |= !(used == text.size() && value == 0.);
+      }
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
-        local_matrix(cell, cell_matrix, &cell_rhs);
         cell->get_dof_indices(dof_indices);
         for (unsigned int i = 0; i < dof_indices.size(); ++i)
           local(i) = solution(dof_indices[i]);
+        if (!body_force_given && local.linfty_norm() == 0.)
+          continue;
+        local_matrix(cell, cell_matrix, &cell_rhs);
         cell_matrix.vmult(product, local);
         product -= cell_rhs;
         for (unsigned int i = 0; i < dof_indices.size(); ++i)
