@@ -704,7 +704,7 @@ namespace FourierSSI
     return errors;
   }
 
-  void
+  std::vector<std::string>
   HarmonicProblem::write_vtu(const std::string &filename) const
   {
     StressPostprocessor postprocessor(harmonic_operator, parameters.materials);
@@ -722,17 +722,15 @@ namespace FourierSSI
       material_ids(cell->active_cell_index()) = cell->material_id();
     data_out.add_data_vector(material_ids, "material_id");
     if (distributed)
-      {
-        write_vtu_pieces(data_out, filename);
-        return;
-      }
+      return write_vtu_pieces(data_out, filename);
     data_out.build_patches(fe->degree);
     std::ofstream out(filename);
     AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
     data_out.write_vtu(out);
+    return {filename};
   }
 
-  void
+  std::vector<std::string>
   HarmonicProblem::write_vtu_pieces(DataOut<2>        &data_out,
                                     const std::string &filename) const
   {
@@ -759,7 +757,8 @@ namespace FourierSSI
     const auto piece = [&](const unsigned int r) {
       return base + ".rank" + std::to_string(r) + ".vtu";
     };
-    std::ofstream out(piece(rank));
+    std::vector<std::string> written = {piece(rank)};
+    std::ofstream            out(piece(rank));
     AssertThrow(out, ExcMessage("Output: cannot write '" + piece(rank) + "'"));
     data_out.write_vtu(out);
     if (rank == 0)
@@ -774,6 +773,8 @@ namespace FourierSSI
         AssertThrow(record,
                     ExcMessage("Output: cannot write '" + base + ".pvtu'"));
         data_out.write_pvtu_record(record, pieces);
+        written.push_back(base + ".pvtu");
       }
+    return written;
   }
 } // namespace FourierSSI

@@ -221,8 +221,8 @@ namespace FourierSSI
                                      std::to_string(harmonic.n) + "-" +
                                      to_string(harmonic.family) + "-cycle" +
                                      std::to_string(cycle) + ".vtu";
-            outcome.files.push_back(name);
-            problem.write_vtu(name);
+            for (const std::string &file : problem.write_vtu(name))
+              outcome.files.push_back(file);
           }
         // Rank 0 writes the CSV files (each rank writes its VTU piece).
         const bool write_csv =

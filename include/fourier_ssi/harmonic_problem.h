@@ -145,7 +145,12 @@ namespace FourierSSI
     ErrorNorms
     compute_errors() const;
 
-    void
+    /**
+     * Write the amplitudes (and stresses) to `filename`; on a distributed
+     * system this rank's piece and, on rank 0, the .pvtu record. Returns
+     * the files this rank wrote (removed again if the run fails).
+     */
+    std::vector<std::string>
     write_vtu(const std::string &filename) const;
 
     const DoFHandler<2> &
@@ -219,7 +224,7 @@ namespace FourierSSI
 
   private:
     /** Parallel output: this rank's cells and, on rank 0, the .pvtu. */
-    void
+    std::vector<std::string>
     write_vtu_pieces(DataOut<2> &data_out, const std::string &filename) const;
 
     /** Local stiffness of one cell and, if requested, its body-force load. */
