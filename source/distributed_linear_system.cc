@@ -1,3 +1,4 @@
+#include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/affine_constraints.templates.h>
@@ -85,7 +86,7 @@ namespace FourierSSI
     matrix.reinit(owned_dofs, owned_dofs, dsp, communicator);
   }
 
-  void
+  double
   DistributedLinearSystem::assemble(const LocalMatrix &local_matrix,
                                     Vector<double>    &rhs)
   {
@@ -103,6 +104,7 @@ namespace FourierSSI
           constraints->distribute_local_to_global(
             cell_matrix, cell_rhs, dof_indices, matrix, local_rhs);
         }
+    Timer interface_timer;
     if (interfaces)
       {
         FullMatrix<double>                   merged;
@@ -117,6 +119,7 @@ namespace FourierSSI
                 merged, pair_rhs, unique_dofs, matrix, local_rhs);
             }
       }
+    const double interface_time = interface_timer.wall_time();
     // Rows written on other ranks are summed into their owners here.
     matrix.compress(VectorOperation::add);
     // The load is replicated (postprocessing needs it whole): sum the parts.
@@ -124,6 +127,7 @@ namespace FourierSSI
     Utilities::MPI::sum(make_array_view(std::as_const(local_rhs)),
                         communicator,
                         make_array_view(rhs));
+    return interface_time;
   }
 
   SolverReport
@@ -131,9 +135,9 @@ namespace FourierSSI
   {
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
     SolverReport       report;
-    report.method =
-      parameters.method + " (" + std::to_string(n_ranks) + " ranks, " +
-      (parameters.is_direct() ? "MUMPS" : "Trilinos") + ")";
+    report.method = parameters.method + " (" + std::to_string(n_ranks) +
+                    " ranks, " +
+                    (parameters.is_direct() ? "MUMPS" : "Trilinos") + ")";
     // Same shortcut as the serial solver: a zero load has the zero solution.
     if (b.l2_norm() == 0.)
       {

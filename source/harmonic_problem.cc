@@ -361,7 +361,7 @@ namespace FourierSSI
   {
     if (distributed)
       {
-        distributed->assemble(
+        time_interface_assembly = distributed->assemble(
           [this](const auto &cell, auto &matrix, auto *rhs) {
             local_matrix(cell, matrix, rhs);
           },

@@ -73,8 +73,9 @@ namespace FourierSSI
      * Assemble the owned cells and interface pairs into the matrix; rhs
      * (replicated, size n_dofs) receives the summed load of all ranks,
      * exactly what the serial assembly puts there before the foundation loads.
+     * Returns this rank's wall time on the interface pairs.
      */
-    void
+    double
     assemble(const LocalMatrix &local_matrix, Vector<double> &rhs);
 
     /**
