@@ -64,7 +64,7 @@ namespace FourierSSI
     const ElasticMaterial &material  = materials.get(cell->material_id());
     const double           depth     = materials.depth(point[1]);
     result.stress                    = hooke_stress(
-      problem.get_operator().strain(result.displacement, grad, point[0]),
+      problem.output_strain(cell, point, result.displacement, grad),
       material.lambda(depth),
       material.shear_modulus(depth));
     return result;

@@ -83,7 +83,8 @@ namespace FourierSSI
 
   unsigned int
   InterfaceIntegrator::add_tie_constraints(
-    AffineConstraints<double> &constraints) const
+    AffineConstraints<double>               &constraints,
+    const std::set<types::global_dof_index> &keep_free) const
   {
     unsigned int n_added = 0;
     std::set<std::pair<types::global_dof_index, types::global_dof_index>> done;
@@ -110,7 +111,7 @@ namespace FourierSSI
       [&](
         const types::global_dof_index                                  slave,
         const std::vector<std::pair<types::global_dof_index, double>> &terms) {
-        if (constraints.is_constrained(slave))
+        if (constraints.is_constrained(slave) || keep_free.count(slave) > 0)
           return false;
         constraints.add_line(slave);
         constraints.add_entries(slave, terms);

@@ -255,14 +255,6 @@ namespace FourierSSI
     rigid_foundation.parse_parameters(prm);
     adaptivity.parse_parameters(prm);
     loads.parse_parameters(prm);
-    // The exact ties meet the rigid-foundation constraints on the footing
-    // perimeter; that combination gave wrong stiffness in testing and is
-    // refused until it is understood (doc/robustness.md).
-    for (const auto &[id, law] : interfaces.laws)
-      AssertThrow(!(rigid_foundation.enabled && (law.tied || law.tied_normal)),
-                  ExcMessage("Interfaces/Interfaces: 'tied' and 'tied-normal' "
-                             "cannot yet be combined with a Rigid foundation "
-                             "(use rough, or kn = ks = 1e12)"));
     for (const auto &[id, e] : loads.displacement)
       AssertThrow(boundary_conditions.dirichlet.count(id) == 0,
                   ExcMessage("Loads/Prescribed displacement: boundary id " +

@@ -15,11 +15,23 @@ namespace FourierSSI
     return s;
   }
 
+  StrainVector
+  with_dilatation(const StrainVector &strain, const double dilatation)
+  {
+    StrainVector e     = strain;
+    const double shift = (dilatation - (e[0] + e[1] + e[2])) / 3.;
+    for (unsigned int k = 0; k < 3; ++k)
+      e[k] += shift;
+    return e;
+  }
+
   StressPostprocessor::StressPostprocessor(
-    const HarmonicOperator &harmonic_operator,
-    const MaterialLibrary  &materials)
+    const HarmonicOperator                  &harmonic_operator,
+    const MaterialLibrary                   &materials,
+    const std::vector<DilatationProjection> &dilatation)
     : harmonic_operator(harmonic_operator)
     , materials(materials)
+    , dilatation(dilatation)
   {}
 
   void
@@ -39,11 +51,15 @@ namespace FourierSSI
             values[c]    = inputs.solution_values[q](c);
             gradients[c] = inputs.solution_gradients[q][c];
           }
-        const double       depth = materials.depth(x[1]);
-        const StrainVector s =
-          hooke_stress(harmonic_operator.strain(values, gradients, x[0]),
-                       material.lambda(depth),
-                       material.shear_modulus(depth));
+        const double depth = materials.depth(x[1]);
+        StrainVector e     = harmonic_operator.strain(values, gradients, x[0]);
+        if (!dilatation.empty() &&
+            dilatation[cell->active_cell_index()].valid())
+          e =
+            with_dilatation(e, dilatation[cell->active_cell_index()].value(x));
+        const StrainVector s = hooke_stress(e,
+                                            material.lambda(depth),
+                                            material.shear_modulus(depth));
         for (unsigned int k = 0; k < 6; ++k)
           computed_quantities[q](k) = s[k];
       }

@@ -9,12 +9,12 @@
 //    (a refined space can only lower the compliance's inverse bound, see
 //    doc/accuracy-vs-time.md; a rise would mean broken hanging-node,
 //    interface-pair or rigid-body constraints);
-//  - accuracy: at L = 6, K_H, K_M, K_MH within 1e-4 of the reference
-//    10.799192 / 18.979463 / -8.7693487 (Richardson extrapolation of uniform
-//    FE_Q(4), uncertainty 2.7e-5 / 5.9e-5 / 4.7e-5,
-//    benchmarks/accuracy-vs-time/references.csv); measured 2.7e-5 / 4.2e-5 /
-//    3.5e-5, so the bound allows the reference's own uncertainty on top.
-//    Without grading (L = 0) the same mesh is at 3.7e-3 / 1.1e-2 / 9.1e-3:
+//  - accuracy: at L = 6, K_H, K_M, K_MH within 1e-4 of the converged
+//    10.7991035 / 18.9791563 / -8.76923033 (graded FE_Q(4) meshes G = 0, 1, 2
+//    extrapolated, uncertainty <= 1.6e-6, confirmed by a 431k-DoF run:
+//    doc/accuracy-vs-time.md, third version); measured 3.6e-5 / 5.8e-5 /
+//    4.9e-5; the bound is 1.7x the largest of them.
+//    Without grading (L = 0) the same mesh is at 1.9e-3 / 6.8e-3 / 4.9e-3:
 //    the check also fails if the grading is skipped.
 #include "check.h"
 #include "test_support.h"
@@ -45,7 +45,7 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const Harmonic                   h{1, Family::symmetric};
-  const double reference[3] = {10.799192, 18.979463, -8.7693487};
+  const double reference[3] = {10.7991035, 18.9791563, -8.76923033};
   const char  *names[3]     = {"K_H", "K_M", "K_MH"};
 
   std::vector<double> previous(3, 1e300);

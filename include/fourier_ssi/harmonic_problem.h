@@ -27,6 +27,7 @@
 #include <fourier_ssi/parameters.h>
 #include <fourier_ssi/rigid_foundation.h>
 #include <fourier_ssi/sparse_direct.h>
+#include <fourier_ssi/stress_postprocessor.h>
 #include <map>
 #include <memory>
 
@@ -153,6 +154,16 @@ namespace FourierSSI
     std::vector<std::string>
     write_vtu(const std::string &filename) const;
 
+    /**
+     * The strain of the solution at x in cell, as the stresses are output:
+     * with B-bar, its dilatation is the cell's projected one.
+     */
+    StrainVector
+    output_strain(const typename Triangulation<2>::active_cell_iterator &cell,
+                  const Point<2>                                        &x,
+                  const std::array<double, 3>                           &values,
+                  const std::array<Tensor<1, 2>, 3> &gradients) const;
+
     const DoFHandler<2> &
     get_dof_handler() const
     {
@@ -245,6 +256,14 @@ namespace FourierSSI
     void
     replace_dilatation(const FEValues<2>                      &fe_values,
                        std::vector<std::vector<StrainVector>> &strain_at) const;
+
+    /**
+     * B-bar (p = 2): the projected dilatation of the solution per cell, so
+     * that output stresses use the strain the equations were solved with.
+     */
+    void
+                                      project_solution_dilatation();
+    std::vector<DilatationProjection> dilatation_projection;
 
     /** Add the surface tractions of one cell to its local load. */
     void

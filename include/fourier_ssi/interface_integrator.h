@@ -20,6 +20,7 @@
 #include <fourier_ssi/interface_pairing.h>
 #include <fourier_ssi/material.h>
 #include <ostream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -48,10 +49,14 @@ namespace FourierSSI
      * the twins are equal (tied-normal). Call after setup() and before the
      * axis conditions; DoFs already constrained (hanging nodes, Dirichlet,
      * rigid foundation) are left alone and the partner is constrained
-     * instead. Returns the number of constraints added.
+     * instead, and so are the DoFs in `keep_free` (a rigid foundation's
+     * master DoFs: every footing DoF depends on them, so they must stay
+     * unknowns). Returns the number of constraints added.
      */
     unsigned int
-    add_tie_constraints(AffineConstraints<double> &constraints) const;
+    add_tie_constraints(
+      AffineConstraints<double>               &constraints,
+      const std::set<types::global_dof_index> &keep_free = {}) const;
 
     void
     add_sparsity(const AffineConstraints<double> &constraints,

@@ -26,6 +26,7 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/harmonic.h>
+#include <set>
 #include <string>
 
 namespace FourierSSI
@@ -131,6 +132,13 @@ namespace FourierSSI
     n_tied_dofs() const
     {
       return n_tied;
+    }
+
+    /** The master node's DoFs (the rigid motion's unknowns). */
+    std::set<types::global_dof_index>
+    master_dofs() const
+    {
+      return {master_U, master_V, master_W};
     }
 
   private:

@@ -7,13 +7,47 @@
 #ifndef fourier_ssi_stress_postprocessor_h
 #define fourier_ssi_stress_postprocessor_h
 
+#include <array>
+#include <cmath>
+#include <deal.II/base/point.h>
 #include <deal.II/numerics/data_postprocessor.h>
 #include <fourier_ssi/harmonic_operator.h>
 #include <fourier_ssi/material.h>
+#include <vector>
 
 namespace FourierSSI
 {
   using namespace dealii;
+
+  /**
+   * One cell's B-bar dilatation (harmonic_problem.cc, LinearProjection):
+   * c0 + c1 (r - r_c) + c2 (z - z_c) about the cell's centroid.
+   */
+  struct DilatationProjection
+  {
+    Point<2>              center;
+    std::array<double, 3> coefficients = {{std::nan(""), 0., 0.}};
+
+    bool
+    valid() const
+    {
+      return !std::isnan(coefficients[0]);
+    }
+
+    double
+    value(const Point<2> &x) const
+    {
+      return coefficients[0] + coefficients[1] * (x[0] - center[0]) +
+             coefficients[2] * (x[1] - center[1]);
+    }
+  };
+
+  /**
+   * The strain with its dilatation e_r + e_z + e_t replaced by `dilatation`
+   * (the deviatoric part kept): the B-bar strain (Hughes 1980).
+   */
+  StrainVector
+  with_dilatation(const StrainVector &strain, const double dilatation);
 
   /** sigma = D epsilon for an isotropic material (engineering shears). */
   StrainVector
@@ -24,8 +58,14 @@ namespace FourierSSI
   class StressPostprocessor : public DataPostprocessor<2>
   {
   public:
-    StressPostprocessor(const HarmonicOperator &harmonic_operator,
-                        const MaterialLibrary  &materials);
+    /**
+     * `dilatation`: per active cell, the B-bar dilatation of the solution
+     * (empty: the strains of the displacement field as they are).
+     */
+    StressPostprocessor(
+      const HarmonicOperator                  &harmonic_operator,
+      const MaterialLibrary                   &materials,
+      const std::vector<DilatationProjection> &dilatation = {});
 
     void
     evaluate_vector_field(
@@ -39,8 +79,9 @@ namespace FourierSSI
     get_needed_update_flags() const override;
 
   private:
-    const HarmonicOperator &harmonic_operator;
-    const MaterialLibrary  &materials;
+    const HarmonicOperator                  &harmonic_operator;
+    const MaterialLibrary                   &materials;
+    const std::vector<DilatationProjection> &dilatation;
   };
 } // namespace FourierSSI
 
