@@ -4,6 +4,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/numerics/error_estimator.h>
 #include <fourier_ssi/adaptivity.h>
+#include <fourier_ssi/mesh_builder.h>
 #include <map>
 
 namespace FourierSSI
@@ -51,6 +52,24 @@ namespace FourierSSI
                       "touching each point (a vertex of the mesh, e.g. a "
                       "foundation edge) that many times, halving their size "
                       "each time. Empty: none.");
+    prm.declare_entry("Box refinement",
+                      "",
+                      Patterns::Anything(),
+                      "A priori, before the point refinement: 'r0, r1, z0, "
+                      "z1: levels; ...' refines the cells whose centre lies "
+                      "in each box that many times (e.g. the near field of a "
+                      "footing), in the order given. Empty: none.");
+    prm.declare_entry("Layer refinement",
+                      "",
+                      Patterns::Anything(),
+                      "A priori, after the point refinement: 'z=0, r=1..20: "
+                      "levels; r=..., z=a..b: levels' cuts the cells with a "
+                      "face on each straight segment across the segment only "
+                      "(anisotropic), that many times, as long as they are "
+                      "wider along it than across: thin layers graded toward "
+                      "a ground surface where G(depth) vanishes (square "
+                      "cells, e.g. of a corner grading on square base cells, "
+                      "are left alone). Empty: none.");
     prm.leave_subsection();
   }
 
@@ -90,6 +109,74 @@ namespace FourierSSI
                                    "' is not 'r, z: levels' with numbers "
                                    "and levels >= 0"));
           }
+      }
+    box_refinements.clear();
+    for (const std::string &item :
+         Utilities::split_string_list(prm.get("Box refinement"), ';'))
+      {
+        const auto colon = item.rfind(':');
+        AssertThrow(colon != std::string::npos,
+                    ExcMessage("Adaptivity/Box refinement: '" + item +
+                               "' is not 'r0, r1, z0, z1: levels'"));
+        int levels = -1;
+        try
+          {
+            levels =
+              Utilities::string_to_int(Utilities::trim(item.substr(colon + 1)));
+          }
+        catch (...)
+          {}
+        AssertThrow(levels >= 0,
+                    ExcMessage("Adaptivity/Box refinement: '" + item +
+                               "' needs levels >= 0 after ':'"));
+        box_refinements.emplace_back(parse_box(item.substr(0, colon),
+                                               "Adaptivity/Box refinement"),
+                                     levels);
+      }
+    layer_refinements.clear();
+    for (const std::string &item :
+         Utilities::split_string_list(prm.get("Layer refinement"), ';'))
+      {
+        const std::string error = "Adaptivity/Layer refinement: '" + item +
+                                  "' is not 'z=value, r=from..to: levels' "
+                                  "or 'r=value, z=from..to: levels'";
+        LayerRefinement layer{};
+        bool            ok    = false;
+        const auto      colon = item.rfind(':');
+        const auto      parts =
+          Utilities::split_string_list(item.substr(0, colon), ',');
+        try
+          {
+            if (colon != std::string::npos && parts.size() == 2 &&
+                parts[0].size() > 2 && parts[1].size() > 2 &&
+                parts[0][1] == '=' && parts[1][1] == '=')
+              {
+                const char fixed = parts[0][0], along = parts[1][0];
+                const auto dots = parts[1].find("..");
+                if (((fixed == 'z' && along == 'r') ||
+                     (fixed == 'r' && along == 'z')) &&
+                    dots != std::string::npos)
+                  {
+                    layer.fixed_coordinate = fixed == 'r' ? 0 : 1;
+                    layer.value =
+                      Utilities::string_to_double(parts[0].substr(2));
+                    layer.from =
+                      Utilities::string_to_double(parts[1].substr(2, dots - 2));
+                    layer.to =
+                      Utilities::string_to_double(parts[1].substr(dots + 2));
+                    const int levels = Utilities::string_to_int(
+                      Utilities::trim(item.substr(colon + 1)));
+                    layer.levels = levels;
+                    ok           = levels >= 0 && layer.from < layer.to;
+                  }
+              }
+          }
+        catch (...)
+          {
+            ok = false;
+          }
+        AssertThrow(ok, ExcMessage(error));
+        layer_refinements.push_back(layer);
       }
     prm.leave_subsection();
   }
@@ -210,6 +297,62 @@ namespace FourierSSI
           }
         execute_refinement_keeping_interface_twins(triangulation,
                                                    interface_ids);
+      }
+  }
+
+  void
+  refine_a_priori(Triangulation<2>                   &triangulation,
+                  const AdaptivityParameters         &parameters,
+                  const std::set<types::boundary_id> &interface_ids)
+  {
+    for (const auto &[box, levels] : parameters.box_refinements)
+      for (unsigned int pass = 0; pass < levels; ++pass)
+        {
+          for (const auto &cell : triangulation.active_cell_iterators())
+            if (box.point_inside(cell->center()))
+              cell->set_refine_flag();
+          execute_refinement_keeping_interface_twins(triangulation,
+                                                     interface_ids);
+        }
+    refine_toward_points(triangulation,
+                         parameters.point_refinements,
+                         interface_ids);
+    for (const auto &layer : parameters.layer_refinements)
+      {
+        const unsigned int fixed = layer.fixed_coordinate, along = 1 - fixed;
+        // A cut across a line z = c halves the cell in z (cut_y).
+        const RefinementCase<2> across =
+          fixed == 1 ? RefinementCase<2>::cut_y : RefinementCase<2>::cut_x;
+        bool touched = false;
+        for (unsigned int pass = 0; pass < layer.levels; ++pass)
+          {
+            const double tolerance =
+              1e-6 * GridTools::minimal_cell_diameter(triangulation);
+            for (const auto &cell : triangulation.active_cell_iterators())
+              for (const auto &face : cell->face_iterators())
+                {
+                  const Point<2> c = face->center();
+                  if (std::abs(face->vertex(0)[fixed] - layer.value) >
+                        tolerance ||
+                      std::abs(face->vertex(1)[fixed] - layer.value) >
+                        tolerance ||
+                      c[along] < layer.from || c[along] > layer.to)
+                    continue;
+                  touched = true;
+                  // Only cells wider along the line than across it: the
+                  // layer thins geometrically, square (graded) cells stay.
+                  if (cell->extent_in_direction(along) >
+                      1.01 * cell->extent_in_direction(fixed))
+                    cell->set_refine_flag(across);
+                }
+            execute_refinement_keeping_interface_twins(triangulation,
+                                                       interface_ids);
+          }
+        AssertThrow(touched || layer.levels == 0,
+                    ExcMessage("Adaptivity/Layer refinement: no cell face on "
+                               "the segment " +
+                               std::string(fixed == 0 ? "r" : "z") + " = " +
+                               std::to_string(layer.value)));
       }
   }
 } // namespace FourierSSI

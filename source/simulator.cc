@@ -369,9 +369,7 @@ namespace FourierSSI
         for (const auto &[id, law] : parameters.interfaces.laws)
           interface_ids.insert(id);
         parameters.mesh.build(triangulation);
-        refine_toward_points(triangulation,
-                             parameters.adaptivity.point_refinements,
-                             interface_ids);
+        refine_a_priori(triangulation, parameters.adaptivity, interface_ids);
         for (const auto &cell : triangulation.active_cell_iterators())
           parameters.materials.get(cell->material_id()); // throws if missing
         const ScenePlan plan = plan_scene(parameters, triangulation);

@@ -24,6 +24,10 @@ postprocessing): the cost of each case in a persistent process such as
 `fourier-ssi --batch`. Runs are sequential, two cores (OpenBLAS threads in
 the factorization).
 
+Also the two bundled recipes prm/embedded-footing-graded.prm (1e-4) and
+prm/embedded-footing-precise.prm (1e-6: near-field boxes, corner grading and
+surface layers), run as they are.
+
 Usage: benchmarks/accuracy-vs-time/graded.py [--exe build/fourier-ssi]
         [--from-csv]
 Writes graded.csv, graded.md and graded-<case>.png next to this script.
@@ -44,6 +48,9 @@ CASES = ["rough", "smooth"]
 # (G, L) meshes: the G = 0 sequence in L, then finer base meshes.
 MESHES = [(0, L) for L in range(0, 13)] + [(1, 6), (1, 9), (1, 12), (2, 12)]
 TOLERANCES = [1e-2, 1e-3, 1e-4, 1e-5, 1e-6]
+# The bundled recipes, run as they are (rough case; G = -1 marks them).
+RECIPES = {"graded": "embedded-footing-graded.prm",
+           "precise": "embedded-footing-precise.prm"}
 
 
 def case_prm(interface, G, L, directory):
@@ -75,11 +82,24 @@ end
 """
 
 
-def run_one(exe, interface, G, L):
+def recipe_prm(name, directory):
+    text = open(os.path.join(ROOT, "prm", RECIPES[name])).read()
+    return text + f"""
+subsection Output
+  set Directory = {directory}
+  set Write vtu = false
+  set Write interface tractions = false
+  set Write stresses = false
+end
+"""
+
+
+def run_one(exe, interface, G, L, recipe=None):
     with tempfile.TemporaryDirectory() as tmp:
         prm = os.path.join(tmp, "case.prm")
         with open(prm, "w") as f:
-            f.write(case_prm(interface, G, L, os.path.join(tmp, "out")))
+            f.write(recipe_prm(recipe, os.path.join(tmp, "out")) if recipe
+                    else case_prm(interface, G, L, os.path.join(tmp, "out")))
         start = time.time()
         log = subprocess.run([exe, prm], capture_output=True, text=True,
                              check=True).stdout
@@ -90,7 +110,8 @@ def run_one(exe, interface, G, L):
                 values[row["quantity"]] = float(row["value"])
     in_process = float(log.split("cycle 0 summary:")[1].split("wall ")[1]
                        .split(" s")[0])
-    return dict(case=interface, G=G, L=L, n_dofs=int(values["n_dofs"]),
+    return dict(case=interface if not recipe else "recipe-" + recipe,
+                G=G, L=L, n_dofs=int(values["n_dofs"]),
                 process_s=process, in_process_s=in_process,
                 **{q: values[q] for q in QUANTITIES})
 
@@ -128,6 +149,12 @@ def main():
                       f"{row['in_process_s']:.3f} s in process, K_H "
                       f"{row['K_H']:.10g}", flush=True)
                 rows.append(row)
+        for name in RECIPES:
+            row = run_one(args.exe, "rough", -1, -1, recipe=name)
+            print(f"recipe {name}: {row['n_dofs']} dofs, "
+                  f"{row['process_s']:.2f} s process, "
+                  f"{row['in_process_s']:.3f} s in process", flush=True)
+            rows.append(row)
         with open(csv_path, "w", newline="") as f:
             w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
             w.writeheader()
@@ -172,11 +199,23 @@ def main():
                              f"{best['in_process_s']:.3f} |")
             else:
                 lines.append(f"| {interface} | {tol:g}{flag} | - | - | - | - |")
+    lines += ["", "Bundled recipes (rough case, run as they are):", "",
+              "| recipe | DoFs | process [s] | in-process [s] | err K_H | "
+              "err K_M | err K_MH |", "|---|---|---|---|---|---|---|"]
+    for r in rows:
+        if r["case"].startswith("recipe-"):
+            errs = [abs(r[q] / refs[("rough", q)][0] - 1.)
+                    for q in QUANTITIES]
+            lines.append(f"| prm/{RECIPES[r['case'][7:]]} | {r['n_dofs']} | "
+                         f"{r['process_s']:.2f} | {r['in_process_s']:.3f} | " +
+                         " | ".join(f"{e:.1e}" for e in errs) + " |")
     lines += ["", "All runs:", "",
               "| case | G | L | DoFs | process [s] | in-process [s] | "
               "err K_H | err K_M | err K_MH |", "|---|---|---|---|---|---|---|"
               "---|---|"]
     for r in rows:
+        if r["case"].startswith("recipe-"):
+            continue
         errs = [abs(r[q] / refs[(r["case"], q)][0] - 1.) for q in QUANTITIES]
         lines.append(f"| {r['case']} | {r['G']} | {r['L']} | {r['n_dofs']} | "
                      f"{r['process_s']:.2f} | {r['in_process_s']:.3f} | " +
@@ -210,6 +249,17 @@ def main():
             unc = refs[(interface, q)][1]
             for ax in axes:
                 ax.axhline(unc, color=color, lw=0.6, ls="--")
+        if interface == "rough":
+            for r in rows:
+                if not r["case"].startswith("recipe-"):
+                    continue
+                for q, color in zip(QUANTITIES, ["tab:blue", "tab:orange",
+                                                 "tab:green"]):
+                    err = max(abs(r[q] / refs[("rough", q)][0] - 1.), 1e-9)
+                    axes[0].loglog([r["n_dofs"]], [err], marker="*", ms=12,
+                                   color=color, ls="none")
+                    axes[1].loglog([r["process_s"]], [err], marker="*",
+                                   ms=12, color=color, ls="none")
         for tol in (1e-4, 1e-6):
             axes[1].axhline(tol, color="gray", lw=0.8)
         axes[1].axvline(0.5, color="gray", lw=0.8)
@@ -223,8 +273,8 @@ def main():
         axes[0].legend(fontsize=8)
         fig.suptitle(f"Embedded footing e/a = 1, alpha = 0.5, nu = 0.25, "
                      f"{interface}: graded FE_Q(4) (L = 0..12 corner levels; "
-                     f"squares G = 1, diamond G = 2); dashed: reference "
-                     f"uncertainty", fontsize=9)
+                     f"squares G = 1, diamond G = 2; stars: bundled "
+                     f"recipes); dashed: reference uncertainty", fontsize=9)
         fig.tight_layout()
         fig.savefig(os.path.join(HERE, f"graded-{interface}.png"), dpi=110)
         plt.close(fig)

@@ -9,6 +9,7 @@
 #ifndef fourier_ssi_adaptivity_h
 #define fourier_ssi_adaptivity_h
 
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/grid/tria.h>
@@ -38,7 +39,31 @@ namespace FourierSSI
      * touch the point `levels` times before the first cycle.
      */
     std::vector<std::pair<Point<2>, unsigned int>> point_refinements;
+    /** Each box refines the cells whose centre lies in it, `levels` times. */
+    std::vector<std::pair<BoundingBox<2>, unsigned int>> box_refinements;
+    /**
+     * A layer refinement cuts the cells with a face on a straight segment
+     * (r = value or z = value, from..to) across the segment only, `levels`
+     * times: a boundary layer graded geometrically toward the segment.
+     */
+    struct LayerRefinement
+    {
+      unsigned int fixed_coordinate; // 0: r = value, 1: z = value
+      double       value, from, to;
+      unsigned int levels;
+    };
+    std::vector<LayerRefinement> layer_refinements;
   };
+
+  /**
+   * The a priori refinements of AdaptivityParameters, in this order: boxes
+   * (each in turn), grading toward points (refine_toward_points()), then
+   * layers. Interface twins are refined alike throughout.
+   */
+  void
+  refine_a_priori(Triangulation<2>                   &triangulation,
+                  const AdaptivityParameters         &parameters,
+                  const std::set<types::boundary_id> &interface_ids);
 
   /**
    * Refine the cells flagged in `triangulation`, after mirroring the flags
