@@ -28,13 +28,7 @@ namespace
         const unsigned int degree,
         const std::string &kn)
   {
-    return test_support::bundled_prm("prm/embedded-footing.prm") +
-           "subsection Discretization\n set Polynomial degree = " +
-           std::to_string(degree) +
-           "\n set Refinement cycles = 1\nend\n"
-           "subsection Adaptivity\n set Point refinement = " +
-           (degree == 4 ? "1, -1: 3; 1, 0: 3" : "") +
-           "\nend\n"
+    return test_support::footing_one_cycle(degree) +
            "subsection Rigid foundation\n set Horizontal force = 100\n"
            " set Moment = 50\nend\n"
            "subsection Linear solver\n set Method = " +

@@ -65,6 +65,22 @@ namespace test_support
                "*r^2)"}};
   }
 
+  /**
+   * The bundled embedded footing (prm/embedded-footing.prm), one cycle, of
+   * the given degree; FE_Q(4) graded 3 levels toward both footing edges, so
+   * that hanging nodes, interface pairs and rigid-body constraints meet.
+   */
+  inline std::string
+  footing_one_cycle(const unsigned int degree)
+  {
+    return bundled_prm("prm/embedded-footing.prm") +
+           "subsection Discretization\n set Polynomial degree = " +
+           std::to_string(degree) +
+           "\n set Refinement cycles = 1\nend\n"
+           "subsection Adaptivity\n set Point refinement = " +
+           (degree == 4 ? "1, -1: 3; 1, 0: 3" : "") + "\nend\n";
+  }
+
   inline FourierSSI::ResultsTable
   run(const std::string &prm_text)
   {

@@ -28,15 +28,8 @@ namespace
   std::string
   scene(const std::string &law, const unsigned int degree)
   {
-    return test_support::bundled_prm("prm/embedded-footing.prm") +
-           "subsection Discretization\n set Polynomial degree = " +
-           std::to_string(degree) +
-           "\n set Refinement cycles = 1\nend\n"
-           "subsection Adaptivity\n set Point refinement = " +
-           (degree == 4 ? "1, -1: 3; 1, 0: 3" : "") +
-           "\nend\n"
-           "subsection Interfaces\n set Interfaces = 5: " +
-           law + "\nend\n";
+    return test_support::footing_one_cycle(degree) +
+           "subsection Interfaces\n set Interfaces = 5: " + law + "\nend\n";
   }
 } // namespace
 

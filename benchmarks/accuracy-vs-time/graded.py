@@ -73,6 +73,12 @@ end
 subsection Interfaces
   set Interfaces = 5: {interface}
 end
+""" + quiet_output(directory)
+
+
+def quiet_output(directory):
+    """Only results.csv: no VTU, stresses or interface CSV (timing)."""
+    return f"""
 subsection Output
   set Directory = {directory}
   set Write vtu = false
@@ -84,14 +90,7 @@ end
 
 def recipe_prm(name, directory):
     text = open(os.path.join(ROOT, "prm", RECIPES[name])).read()
-    return text + f"""
-subsection Output
-  set Directory = {directory}
-  set Write vtu = false
-  set Write interface tractions = false
-  set Write stresses = false
-end
-"""
+    return text + quiet_output(directory)
 
 
 def run_one(exe, interface, G, L, recipe=None):
