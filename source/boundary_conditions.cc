@@ -7,6 +7,23 @@
 
 namespace FourierSSI
 {
+  bool
+  is_literal_zero(const std::string &expression)
+  {
+    const std::string e = Utilities::trim(expression);
+    if (e.empty())
+      return true;
+    try
+      {
+        std::size_t used = 0;
+        return std::stod(e, &used) == 0. && used == e.size();
+      }
+    catch (...)
+      {
+        return false;
+      }
+  }
+
   std::vector<std::string>
   split_top_level(const std::string &text, const char separator)
   {

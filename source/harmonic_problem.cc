@@ -404,12 +404,10 @@ namespace FourierSSI
     const std::array<double, 3>                           &values,
     const std::array<Tensor<1, 2>, 3>                     &gradients) const
   {
-    const StrainVector e = harmonic_operator.strain(values, gradients, x[0]);
-    if (dilatation_projection.empty())
-      return e;
-    const DilatationProjection &p =
-      dilatation_projection[cell->active_cell_index()];
-    return p.valid() ? with_dilatation(e, p.value(x)) : e;
+    return bbar_strain(harmonic_operator.strain(values, gradients, x[0]),
+                       dilatation_projection,
+                       cell->active_cell_index(),
+                       x);
   }
 
   void
@@ -669,22 +667,8 @@ namespace FourierSSI
     Vector<double> local(fe->n_dofs_per_cell()), product(fe->n_dofs_per_cell());
     Vector<double> reactions(dof_handler.n_dofs());
     // Without a body force, a cell at rest exerts no nodal force.
-    bool body_force_given = false;
-    for (const std::string &e :
-         parameters.boundary_conditions.body_force.expression)
-      {
-        // Any expression other than a literal zero counts as a body force.
-        const std::string text  = Utilities::trim(e);
-        std::size_t       used  = 0;
-        double            value = 1.;
-        try
-          {
-            value = std::stod(text, &used);
-          }
-        catch (...)
-          {}
-        body_force_given |= !(used == text.size() && value == 0.);
-      }
+    const bool body_force_given =
+      !parameters.boundary_conditions.body_force.is_zero();
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         cell->get_dof_indices(dof_indices);

@@ -35,24 +35,6 @@ namespace FourierSSI
       return s.str();
     }
 
-    /** True if an expression is a literal zero ("0", "0.0", "-0"). */
-    bool
-    is_literal_zero(const std::string &expression)
-    {
-      const std::string e = Utilities::trim(expression);
-      if (e.empty())
-        return true;
-      try
-        {
-          std::size_t used = 0;
-          return std::stod(e, &used) == 0. && used == e.size();
-        }
-      catch (...)
-        {
-          return false;
-        }
-    }
-
     /** Points of the boundary faces with an id: vertices and Gauss points. */
     std::vector<Point<2>>
     boundary_points(const Triangulation<2>  &triangulation,

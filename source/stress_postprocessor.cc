@@ -25,6 +25,17 @@ namespace FourierSSI
     return e;
   }
 
+  StrainVector
+  bbar_strain(const StrainVector                      &strain,
+              const std::vector<DilatationProjection> &dilatation,
+              const unsigned int                       cell_index,
+              const Point<2>                          &x)
+  {
+    if (dilatation.empty() || !dilatation[cell_index].valid())
+      return strain;
+    return with_dilatation(strain, dilatation[cell_index].value(x));
+  }
+
   StressPostprocessor::StressPostprocessor(
     const HarmonicOperator                  &harmonic_operator,
     const MaterialLibrary                   &materials,
@@ -51,12 +62,12 @@ namespace FourierSSI
             values[c]    = inputs.solution_values[q](c);
             gradients[c] = inputs.solution_gradients[q][c];
           }
-        const double depth = materials.depth(x[1]);
-        StrainVector e     = harmonic_operator.strain(values, gradients, x[0]);
-        if (!dilatation.empty() &&
-            dilatation[cell->active_cell_index()].valid())
-          e =
-            with_dilatation(e, dilatation[cell->active_cell_index()].value(x));
+        const double       depth = materials.depth(x[1]);
+        const StrainVector e =
+          bbar_strain(harmonic_operator.strain(values, gradients, x[0]),
+                      dilatation,
+                      cell->active_cell_index(),
+                      x);
         const StrainVector s = hooke_stress(e,
                                             material.lambda(depth),
                                             material.shear_modulus(depth));

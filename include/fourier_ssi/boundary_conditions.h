@@ -29,11 +29,25 @@ namespace FourierSSI
   std::vector<std::string>
   split_top_level(const std::string &text, const char separator);
 
+  /** True if an expression is a literal zero ("0", "0.0", "-0", or empty). */
+  bool
+  is_literal_zero(const std::string &expression);
+
   /** Three optional component expressions, e.g. from "u=0, w=0.01*z". */
   struct ComponentExpressions
   {
     std::array<std::string, 3> expression;
     std::array<bool, 3>        given = {{false, false, false}};
+
+    /** True if every given component is a literal zero. */
+    bool
+    is_zero() const
+    {
+      for (unsigned int c = 0; c < 3; ++c)
+        if (given[c] && !is_literal_zero(expression[c]))
+          return false;
+      return true;
+    }
   };
 
   /**

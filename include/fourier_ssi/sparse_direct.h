@@ -55,12 +55,6 @@ namespace FourierSSI
     void
     vmult(Vector<double> &x, const Vector<double> &b) const;
 
-    const std::string &
-    backend_name() const
-    {
-      return backend;
-    }
-
   private:
     std::string backend;
     struct Cholmod;

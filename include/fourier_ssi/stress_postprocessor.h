@@ -49,6 +49,17 @@ namespace FourierSSI
   StrainVector
   with_dilatation(const StrainVector &strain, const double dilatation);
 
+  /**
+   * The output strain of a cell: `strain` with the cell's projected B-bar
+   * dilatation at x, or `strain` unchanged without a projection (empty
+   * `dilatation`, or a degenerate cell).
+   */
+  StrainVector
+  bbar_strain(const StrainVector                      &strain,
+              const std::vector<DilatationProjection> &dilatation,
+              const unsigned int                       cell_index,
+              const Point<2>                          &x);
+
   /** sigma = D epsilon for an isotropic material (engineering shears). */
   StrainVector
   hooke_stress(const StrainVector &strain,
