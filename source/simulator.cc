@@ -7,9 +7,9 @@
 #include <exception>
 #include <filesystem>
 #include <fourier_ssi/adaptivity.h>
-#include <fourier_ssi/command_line.h>
 #include <fourier_ssi/goal_estimator.h>
 #include <fourier_ssi/harmonic_problem.h>
+#include <fourier_ssi/messages.h>
 #include <fourier_ssi/scene_plan.h>
 #include <fourier_ssi/simulator.h>
 #include <iomanip>

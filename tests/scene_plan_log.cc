@@ -8,7 +8,7 @@
 #include "check.h"
 #include "test_support.h"
 
-#include <fourier_ssi/command_line.h>
+#include <fourier_ssi/messages.h>
 #include <fourier_ssi/simulator.h>
 #include <regex>
 
