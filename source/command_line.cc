@@ -33,6 +33,7 @@ namespace FourierSSI
           return true;
       return false;
     }
+
     /**
      * The --interface-matrix sub-command: arguments "p=2 n=1 family=sym
      * r=0.5,0.5,0.5 z=0,0.5,1 kn=1e10 ks=1e10" (n defaults to 0, family to
