@@ -4,7 +4,7 @@
 #include <deal.II/base/utilities.h>
 #include <filesystem>
 #include <fourier_ssi/batch_runner.h>
-#include <fourier_ssi/command_line.h>
+#include <fourier_ssi/messages.h>
 #include <fourier_ssi/parameters.h>
 #include <fourier_ssi/simulator.h>
 #include <fstream>

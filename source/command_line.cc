@@ -1,3 +1,4 @@
+#include <cmath>
 #include <cstdlib>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/mpi.h>
@@ -6,39 +7,20 @@
 #include <deal.II/base/utilities.h>
 #include <fourier_ssi/batch_runner.h>
 #include <fourier_ssi/command_line.h>
-#include <fourier_ssi/interface_integrator.h>
+#include <fourier_ssi/interface_element.h>
+#include <fourier_ssi/messages.h>
 #include <fourier_ssi/parameters.h>
+#include <fourier_ssi/prm_values.h>
 #include <fourier_ssi/simulator.h>
 #include <iostream>
+#include <map>
 #include <memory>
-#include <sstream>
+#include <set>
+#include <string>
+#include <vector>
 
 namespace FourierSSI
 {
-  std::string
-  one_line_message(const std::exception &e)
-  {
-    // deal.II exceptions carry file/line boilerplate; the user needs only the
-    // message, which ExcMessage prints after "Additional information:".
-    const std::string text = e.what();
-    const auto        info = text.find("Additional information:");
-    std::string       body =
-      info == std::string::npos ? text : text.substr(info + 23);
-    const auto stack = body.find("Stacktrace:");
-    if (stack != std::string::npos)
-      body = body.substr(0, stack);
-    std::istringstream in(body);
-    std::string        line, result;
-    while (std::getline(in, line))
-      {
-        line = Utilities::trim(line);
-        if (line.empty() || line.rfind("----", 0) == 0)
-          continue;
-        result += (result.empty() ? "" : " ") + line;
-      }
-    return result;
-  }
-
   namespace
   {
     /** True if an MPI launcher (mpirun, mpiexec, srun) started the process. */
@@ -50,6 +32,86 @@ namespace FourierSSI
         if (std::getenv(variable) != nullptr)
           return true;
       return false;
+    }
+
+    /**
+     * The --interface-matrix sub-command: arguments "p=2 n=1 family=sym
+     * r=0.5,0.5,0.5 z=0,0.5,1 kn=1e10 ks=1e10" (n defaults to 0, family to
+     * sym); prints interface_matrix() with print_interface_matrix(). Throws a
+     * one-line message on bad arguments.
+     */
+    void
+    interface_matrix_command(const std::vector<std::string> &arguments,
+                             std::ostream                   &out)
+    {
+      const std::string what = "--interface-matrix: ";
+      const auto number = [&](const std::string &key, const std::string &text) {
+        return number_in_entry(text, what + key);
+      };
+      std::map<std::string, std::string> given;
+      for (const std::string &argument : arguments)
+        {
+          const auto eq = argument.find('=');
+          AssertThrow(eq != std::string::npos,
+                      ExcMessage(what + "'" + argument + "' is not key=value"));
+          const std::string                  key  = argument.substr(0, eq);
+          static const std::set<std::string> keys = {
+            "p", "n", "family", "r", "z", "kn", "ks"};
+          AssertThrow(keys.count(key) == 1,
+                      ExcMessage(what + "unknown key '" + key +
+                                 "' (expected p, n, family, r, z, kn, ks)"));
+          AssertThrow(given.count(key) == 0,
+                      ExcMessage(what + key + " given twice"));
+          given[key] = argument.substr(eq + 1);
+        }
+      for (const char *key : {"p", "r", "z", "kn", "ks"})
+        AssertThrow(given.count(key),
+                    ExcMessage(what + "missing " + key +
+                               "= (usage: p=2 n=1 family=sym r=0.5,0.5,0.5 "
+                               "z=0,0.5,1 kn=1e10 ks=1e10)"));
+      const double p = number("p", given["p"]);
+      AssertThrow(p == 2. || p == 4., ExcMessage(what + "p must be 2 or 4"));
+      Harmonic harmonic;
+      if (given.count("n"))
+        {
+          const double n = number("n", given["n"]);
+          AssertThrow(n >= 0. && n == std::floor(n) && n < 1e6,
+                      ExcMessage(what + "n must be an integer >= 0"));
+          harmonic.n = static_cast<unsigned int>(n);
+        }
+      if (given.count("family"))
+        {
+          try
+            {
+              harmonic.family = family_from_string(given["family"]);
+            }
+          catch (...)
+            {
+              AssertThrow(false,
+                          ExcMessage(what +
+                                     "family must be sym or anti, not '" +
+                                     given["family"] + "'"));
+            }
+        }
+      const auto list = [&](const std::string &key) {
+        std::vector<double> values;
+        for (const std::string &s : Utilities::split_string_list(given[key]))
+          values.push_back(number(key, s));
+        AssertThrow(values.size() == static_cast<unsigned int>(p) + 1,
+                    ExcMessage(what + key + " needs p+1 = " +
+                               std::to_string(static_cast<int>(p) + 1) +
+                               " values"));
+        return values;
+      };
+      const std::vector<double> r = list("r"), z = list("z");
+      std::vector<Point<2>>     nodes;
+      for (unsigned int k = 0; k < r.size(); ++k)
+        nodes.emplace_back(r[k], z[k]);
+      const InterfaceStiffness k{number("kn", given["kn"]),
+                                 number("ks", given["ks"])};
+      print_interface_matrix(
+        out,
+        interface_matrix(static_cast<unsigned int>(p), nodes, k, harmonic));
     }
   } // namespace
 

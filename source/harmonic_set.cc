@@ -2,7 +2,7 @@
 #include <deal.II/base/multithread_info.h>
 #include <dlfcn.h>
 #include <exception>
-#include <fourier_ssi/command_line.h>
+#include <fourier_ssi/messages.h>
 #include <fourier_ssi/harmonic_set.h>
 #include <thread>
 

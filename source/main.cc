@@ -1,6 +1,6 @@
-// fourier-ssi: parse the command line and the .prm file, run, report.
+// fourier-ssi: the executable; the command-line front end does the work.
 // Usage: fourier-ssi [PARAMS.prm]      (default: prm/default.prm)
-//        fourier-ssi --print-parameters
+//        fourier-ssi --help            (every mode and sub-command)
 #include <fourier_ssi/command_line.h>
 
 int

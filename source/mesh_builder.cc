@@ -4,7 +4,7 @@
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
 #include <fourier_ssi/boundary_conditions.h>
-#include <fourier_ssi/interface_pairing.h>
+#include <fourier_ssi/interface_lines.h>
 #include <fourier_ssi/mesh_builder.h>
 #include <fstream>
 #include <set>

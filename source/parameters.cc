@@ -1,5 +1,5 @@
 #include <deal.II/base/utilities.h>
-#include <fourier_ssi/command_line.h>
+#include <fourier_ssi/messages.h>
 #include <fourier_ssi/parameters.h>
 #include <fstream>
 #include <sstream>

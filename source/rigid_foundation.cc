@@ -1,3 +1,4 @@
+#include <array>
 #include <cmath>
 #include <deal.II/fe/fe.h>
 #include <deal.II/fe/mapping_q1.h>
@@ -205,11 +206,32 @@ namespace FourierSSI
     AssertThrow(best_r > 0.,
                 ExcMessage("Rigid foundation: no free tied node off the axis"));
 
-    const double s      = family_sign(harmonic.family);
-    const double r_A    = master_position[0];
-    const double z_A    = master_position[1];
-    const bool   tie_uw = !parameters.normal_only;
-    const auto   tie =
+    // The components that follow the rigid motion: V always, U and W unless
+    // only the normal component is tied; for n = 0 not the component that
+    // carries no stiffness (W symmetric, U and V antisymmetric), which
+    // axis_constraints.h sets to zero.
+    const bool tie_uw = !parameters.normal_only;
+    const bool n0_symmetric =
+      harmonic.n == 0 && harmonic.family == Family::symmetric;
+    const bool n0_antisymmetric =
+      harmonic.n == 0 && harmonic.family == Family::antisymmetric;
+    const std::array<bool, 3> follows = {{tie_uw && !n0_antisymmetric,
+                                          !n0_antisymmetric,
+                                          tie_uw && !n0_symmetric}};
+    const std::array<types::global_dof_index, 3> masters = {
+      {master_U, master_V, master_W}};
+    // Column k: the rigid motion of a unit amplitude of master DoF k. The
+    // weights of a tied DoF are its displacement under these motions; a
+    // master DoF that moves the body is an unknown, not tied.
+    const std::array<MasterValues, 3> unit_master = {
+      {{{1., 0., 0.}}, {{0., 1., 0.}}, {{0., 0., 1.}}}};
+    std::array<bool, 3> moves_body;
+    for (unsigned int k = 0; k < 3; ++k)
+      {
+        const auto d  = displacement_at(master_position, unit_master[k]);
+        moves_body[k] = d[0] != 0. || d[1] != 0. || d[2] != 0.;
+      }
+    const auto tie =
       [&](const types::global_dof_index dof,
           const std::vector<std::pair<types::global_dof_index, double>>
             &entries) {
@@ -225,37 +247,23 @@ namespace FourierSSI
 
     for (const auto &[x, dofs] : nodes)
       {
-        const double r = x.first, z = x.second;
-        if (harmonic.n == 1)
+        const Point<2> position(x.first, x.second);
+        for (unsigned int c = 0; c < 3; ++c)
           {
-            // U_j = U_A + V_A (z_A - z_j) / r_A, W_j = -s U_j,
-            // V_j = V_A r_j / r_A.
-            if (dofs[1] != master_V)
-              tie(dofs[1], {{master_V, r / r_A}});
-            if (tie_uw)
-              {
-                if (dofs[0] != master_U)
-                  tie(dofs[0], {{master_U, 1.}, {master_V, (z_A - z) / r_A}});
-                tie(dofs[2],
-                    {{master_U, -s}, {master_V, -s * (z_A - z) / r_A}});
-              }
+            if (!follows[c])
+              continue;
+            bool is_unknown = false;
+            for (unsigned int k = 0; k < 3; ++k)
+              is_unknown |= moves_body[k] && dofs[c] == masters[k];
+            if (is_unknown)
+              continue;
+            std::vector<std::pair<types::global_dof_index, double>> entries;
+            for (unsigned int k = 0; k < 3; ++k)
+              entries.emplace_back(masters[k],
+                                   displacement_at(position,
+                                                   unit_master[k])[c]);
+            tie(dofs[c], entries);
           }
-        else if (harmonic.n == 0 && harmonic.family == Family::symmetric)
-          {
-            if (dofs[1] != master_V)
-              tie(dofs[1], {{master_V, 1.}});
-            if (tie_uw)
-              tie(dofs[0], {});
-          }
-        else if (harmonic.n == 0)
-          {
-            if (tie_uw && dofs[2] != master_W)
-              tie(dofs[2], {{master_W, r / r_A}});
-          }
-        else
-          for (unsigned int c = 0; c < 3; ++c)
-            if (c == 1 || tie_uw)
-              tie(dofs[c], {});
       }
     // Master DoFs that a harmonic does not move are fixed too.
     if (harmonic.n >= 2)
@@ -276,47 +284,100 @@ namespace FourierSSI
       tie(master_U, {});
   }
 
+  std::array<double, 3>
+  RigidFoundation::displacement_at(const Point<2>     &x,
+                                   const MasterValues &master) const
+  {
+    // The rigid motions of the header, written with the master node's
+    // amplitudes as unknowns: U_h = U_A + V_A (z_A - z_ref) / r_A and
+    // Theta = -V_A / r_A (n = 1), W_v = V_A (n = 0 symmetric),
+    // Phi = W_A / r_A (n = 0 antisymmetric).
+    const double r = x[0], z = x[1];
+    const double r_A = master_position[0], z_A = master_position[1];
+    const auto &[U_A, V_A, W_A] = master;
+    std::array<double, 3> d     = {{0., 0., 0.}};
+    if (harmonic.n == 1)
+      {
+        d[0] = U_A + V_A * (z_A - z) / r_A;
+        d[1] = V_A * r / r_A;
+        d[2] = -family_sign(harmonic.family) * d[0];
+      }
+    else if (harmonic.n == 0 && harmonic.family == Family::symmetric)
+      d[1] = V_A;
+    else if (harmonic.n == 0)
+      d[2] = W_A * r / r_A;
+    return d;
+  }
+
+  RigidMotion
+  RigidFoundation::motion_of(const MasterValues &master) const
+  {
+    // Read at r = 1 on the reference elevation, where U = U_h, V = -Theta
+    // (n = 1), V = W_v and W = Phi (n = 0).
+    const auto d =
+      displacement_at(Point<2>(1., parameters.reference_elevation), master);
+    RigidMotion m;
+    if (harmonic.n == 1)
+      {
+        m.horizontal_displacement = d[0];
+        m.rotation                = -d[1];
+      }
+    else if (harmonic.n == 0 && harmonic.family == Family::symmetric)
+      m.vertical_displacement = d[1];
+    else if (harmonic.n == 0)
+      m.twist = d[2];
+    return m;
+  }
+
+  RigidFoundation::MasterValues
+  RigidFoundation::master_forces(const double horizontal_force,
+                                 const double moment,
+                                 const double vertical_force,
+                                 const double torque) const
+  {
+    // Virtual work: the force on master DoF k is the work of the resultants
+    // on the rigid motion of a unit amplitude of that DoF.
+    MasterValues forces = {{0., 0., 0.}};
+    for (unsigned int k = 0; k < 3; ++k)
+      {
+        MasterValues unit   = {{0., 0., 0.}};
+        unit[k]             = 1.;
+        const RigidMotion m = motion_of(unit);
+        forces[k]           = horizontal_force * m.horizontal_displacement +
+                    moment * m.rotation +
+                    vertical_force * m.vertical_displacement + torque * m.twist;
+      }
+    return forces;
+  }
+
   void
   RigidFoundation::add_loads(Vector<double> &rhs) const
   {
-    const double r_A = master_position[0];
-    const double z_A = master_position[1] - parameters.reference_elevation;
-    if (harmonic.n == 1)
-      {
-        // The antisymmetric family's rigid motion is the symmetric one turned
-        // by 90 degrees: translation along y and rotation about -x, so its
-        // (H, M) are (H_y, -M_x).
-        const bool   symmetric = harmonic.family == Family::symmetric;
-        const double H         = symmetric ? parameters.horizontal_force :
-                                             parameters.horizontal_force_y;
-        const double M = symmetric ? parameters.moment : -parameters.moment_x;
-        rhs(master_U) += H;
-        rhs(master_V) += (H * z_A - M) / r_A;
-      }
-    else if (harmonic.n == 0 && harmonic.family == Family::symmetric)
-      rhs(master_V) += parameters.vertical_force;
-    else if (harmonic.n == 0)
-      rhs(master_W) += parameters.torque / r_A;
+    // The antisymmetric family's rigid motion is the symmetric one turned by
+    // 90 degrees: translation along y and rotation about -x, so its (H, M)
+    // are (H_y, -M_x). n = 0 has one family per load, n >= 2 none.
+    const bool   symmetric = harmonic.family == Family::symmetric;
+    const double H =
+      symmetric ? parameters.horizontal_force : parameters.horizontal_force_y;
+    const double       M = symmetric ? parameters.moment : -parameters.moment_x;
+    const MasterValues f =
+      master_forces(H, M, parameters.vertical_force, parameters.torque);
+    const std::array<types::global_dof_index, 3> masters = {
+      {master_U, master_V, master_W}};
+    for (unsigned int k = 0; k < 3; ++k)
+      if (f[k] != 0.)
+        rhs(masters[k]) += f[k];
   }
 
   RigidMotion
   RigidFoundation::motion(const Vector<double> &solution) const
   {
-    RigidMotion  m;
-    const double r_A = master_position[0];
-    const double z_A = master_position[1] - parameters.reference_elevation;
-    if (harmonic.n == 1)
-      {
-        m.rotation = -solution(master_V) / r_A;
-        // With only the normal component tied the translation is not a
-        // rigid-body unknown; it stays 0 rather than report a soil value.
-        if (!parameters.normal_only)
-          m.horizontal_displacement = solution(master_U) - m.rotation * z_A;
-      }
-    else if (harmonic.n == 0 && harmonic.family == Family::symmetric)
-      m.vertical_displacement = solution(master_V);
-    else if (harmonic.n == 0)
-      m.twist = solution(master_W) / r_A;
+    RigidMotion m =
+      motion_of({{solution(master_U), solution(master_V), solution(master_W)}});
+    // With only the normal component tied the translation is not a
+    // rigid-body unknown; it stays 0 rather than report a soil value.
+    if (parameters.normal_only)
+      m.horizontal_displacement = 0.;
     return m;
   }
 
@@ -326,12 +387,12 @@ namespace FourierSSI
   {
     AssertThrow(harmonic.n == 1,
                 ExcMessage("Rigid foundation: unit H/M loads need n = 1"));
-    Vector<double> rhs(n_dofs);
-    const double   r_A = master_position[0];
-    const double   z_A = master_position[1] - parameters.reference_elevation;
-    const double   H = load_case == 0 ? 1. : 0., M = load_case == 1 ? 1. : 0.;
-    rhs(master_U) += H;
-    rhs(master_V) += (H * z_A - M) / r_A;
+    Vector<double>     rhs(n_dofs);
+    const MasterValues f =
+      master_forces(load_case == 0 ? 1. : 0., load_case == 1 ? 1. : 0., 0., 0.);
+    rhs(master_U) += f[0];
+    rhs(master_V) += f[1];
+    rhs(master_W) += f[2];
     return rhs;
   }
 

@@ -1,6 +1,6 @@
 #include <deal.II/base/timer.h>
 #include <filesystem>
-#include <fourier_ssi/command_line.h>
+#include <fourier_ssi/messages.h>
 #include <fourier_ssi/simulator.h>
 #include <iomanip>
 #include <regex>

@@ -1,5 +1,5 @@
 // Rigid disc displaced horizontally in an elastic ring (thesis ch. 5 and
-// Table 7.1; issue 4 items 5 and 7). Disc radius a = 0.5 m, ring to R = 10 m
+// Table 7.1). Disc radius a = 0.5 m, ring to R = 10 m
 // (outer boundary fixed), E = 1e5 kPa, nu = 0.3, plane strain as a slice
 // z in [-0.5, 0.5] one element thick with v = 0 on top and bottom (the
 // solution is z-independent: checked below), harmonic n = 1 symmetric, the

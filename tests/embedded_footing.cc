@@ -1,6 +1,6 @@
 // Embedded rigid footing (e/a = 1, alpha = 0.5, nu = 0.25), thesis chapter
 // 4.3, from prm/embedded-footing.prm (the bundled scene; only refinement and
-// the interface law change here). Issue #4, verify 4:
+// the interface law change here). Verified:
 //  - K_H, K_M, K_MH converge under uniform refinement: the observed order
 //    from three meshes must be positive and the last increment below 1%
 //    (edge singularities at the footing corners limit the order to ~1);

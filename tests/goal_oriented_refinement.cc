@@ -1,12 +1,11 @@
 // Goal-oriented (DWR) refinement for the stiffness of the embedded footing
-// (prm/embedded-footing.prm, rough interface, e/a = 1, alpha = 0.5): issue #5
-// item 1. Mesh: the scene's with half the cells per direction (as the FE_Q(4)
-// runs of benchmarks/accuracy-vs-time), Goal = K_H, Refine fraction 0.8,
-// Goal tolerance 1e-3.
-// Reference: Richardson extrapolation of three uniform FE_Q(4) meshes of the
-// same base mesh (observed order ~1.3; good to ~1e-4, so effectivities are
-// checked only where the true error exceeds 1e-3).
-// Assertions:
+// (prm/embedded-footing.prm, rough interface, e/a = 1, alpha = 0.5;
+// doc/accuracy-vs-time.md). Mesh: the scene's with half the cells per
+// direction (as the FE_Q(4) runs of benchmarks/accuracy-vs-time), Goal = K_H,
+// Refine fraction 0.8, Goal tolerance 1e-3. Reference: Richardson extrapolation
+// of three uniform FE_Q(4) meshes of the same base mesh (observed order ~1.3;
+// good to ~1e-4, so effectivities are checked only where the true error exceeds
+// 1e-3). Assertions:
 //  - effectivity index (estimated / true relative error of K_H) in
 //    [0.6, 1.05]: the estimate I(u_4) - I(u_2) misses I - I(u_4) >= 0, so it
 //    lies below 1 up to the reference error (doc/accuracy-vs-time.md);

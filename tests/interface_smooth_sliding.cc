@@ -1,4 +1,4 @@
-// Sliding and spring interfaces against closed forms (issue 3, test b).
+// Sliding and spring interfaces against closed forms.
 // Hollow block r in [0.5, 1], z in [0, 1], split with double nodes along
 // z = 0.5 (interface 5; normal +z, side A below, tangent s = +r).
 //

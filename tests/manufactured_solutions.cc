@@ -1,12 +1,13 @@
 // Manufactured solutions for n = 0, 1, 2, 3 in both families, on the unit
-// square r in [0,1], z in [0,1] that touches the axis (issue #2, verify 2).
+// square r in [0,1], z in [0,1] that touches the axis.
 // The amplitudes and body forces come from tests/mms_solutions.h, generated
 // by doc/derivations/manufactured_solutions.py from the full 3D equilibrium
 // in cylindrical coordinates (independent of the B operator in the code).
 // The exact amplitudes are prescribed on r = 1, z = 0, z = 1; on the axis
 // only the axis conditions act. Wrong axis conditions would pin the solution
 // to wrong values or leave it singular, and the rates would collapse.
-// Assertion: observed rates p+1 (L2) and p (H1), +-0.2 (issue text), on the
+// Assertion: observed rates p+1 (L2) and p (H1), +-0.2 (the optimal
+// orders of FE_Q(p) for a smooth solution, with margin), on the
 // last three of four refinements (the first step, from a 2x2 mesh for
 // p = 4, is pre-asymptotic: rates 4.2-4.8 there).
 #include "check.h"

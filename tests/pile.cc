@@ -1,6 +1,6 @@
 // Laterally loaded flexible pile (thesis chapter 6) from prm/pile.prm:
 // L/d = 10, Ep/Es = 1000, Gibson soil (alpha = 1), rough interface on the
-// shaft and base, H and M through a rigid head cap. Issue #4, verify 4:
+// shaft and base, H and M through a rigid head cap. Verified:
 //  - K_H, K_M, K_MH converge under refinement (last relative increment
 //    below 0.5%, an engineering accuracy; measured 0.02%);
 //  - I_MH from unit H equals I_MH from unit M to 1e-6 (Maxwell-Betti,

@@ -16,21 +16,19 @@ foreach(prm ${FSSI_BAD_PRMS})
   set_tests_properties(input_${name} PROPERTIES RESOURCE_LOCK bad_output)
 endforeach()
 
-# The bundled default scene runs and writes its results.
-add_test(NAME program_default_scene
-  COMMAND fourier-ssi ${CMAKE_SOURCE_DIR}/prm/default.prm
-  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
-set_tests_properties(program_default_scene PROPERTIES
-  PASS_REGULAR_EXPRESSION "results written to")
-
-# The graded FE_Q(4) recipe: K_H within 1e-4 of the converged 10.79910
-# (doc/accuracy-vs-time.md) prints as 10.799x or 10.800.
-add_test(NAME program_embedded_footing_graded
-  COMMAND fourier-ssi ${CMAKE_SOURCE_DIR}/prm/embedded-footing-graded.prm
-  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
-set_tests_properties(program_embedded_footing_graded PROPERTIES
-  PASS_REGULAR_EXPRESSION "K_H = H/\\(G a u\\) = 10\\.(799|800)")
+# The bundled scenes run as tests in tests/scenes/, checked against their
+# references.
 
 add_test(NAME program_print_parameters COMMAND fourier-ssi --print-parameters)
 set_tests_properties(program_print_parameters PROPERTIES
   PASS_REGULAR_EXPRESSION "subsection Materials")
+
+# The --interface-matrix command of the front end: a straight vertical face at
+# r = 0.5 of length 1, p = 2, n = 1, kn = ks = 1e10. Its first diagonal entry
+# is pi r kn L 4/30 = 2.0943951024e9 (the theta weight pi of n = 1 times the
+# consistent quadratic "mass" matrix L/30 [4 2 -1; 2 16 2; -1 2 4]).
+add_test(NAME program_interface_matrix_closed_form
+  COMMAND fourier-ssi --interface-matrix p=2 n=1 family=sym r=0.5,0.5,0.5
+          z=0,0.5,1 kn=1e10 ks=1e10)
+set_tests_properties(program_interface_matrix_closed_form PROPERTIES
+  PASS_REGULAR_EXPRESSION "A0\\.r +2\\.0943951024e\\+09")

@@ -1,5 +1,5 @@
-// Rigid-body modes of the harmonic operator carry zero strain energy (issue
-// #2, verify 1), on a distorted mesh that contains the axis, for p = 2 and 4.
+// Rigid-body modes of the harmonic operator carry zero strain energy
+// (doc/theory.md), on a distorted mesh that contains the axis, for p = 2 and 4.
 // Reference: a rigid motion has zero strain exactly (doc/theory.md, checked
 // symbolically by doc/derivations/operator.py); the FE interpolant of these
 // polynomial (degree <= 1) fields is exact, so only round-off remains.

@@ -1,5 +1,5 @@
-// Hard-case stability (issue 5, case 6): elements of aspect ratio 100 on both
-// sides of a zero-thickness interface. Pure bending of a solid circular
+// Hard-case stability (doc/robustness.md): elements of aspect ratio 100 on
+// both sides of a zero-thickness interface. Pure bending of a solid circular
 // cylinder (r in [0, 1], z in [0, 2], n = 1, both families; the exact
 // solution of tests/exact_solutions.cc, quadratic amplitudes, exact for any
 // mesh) cut at z = 1 by a stiff interface (kn = ks = 1e14 kPa/m, id 5). The

@@ -1,4 +1,4 @@
-// Hard-case stability (issue 5, case 2): near-incompressible soil, nu = 0.49,
+// Hard-case stability (doc/robustness.md): near-incompressible soil, nu = 0.49,
 // 0.499, 0.4999, against nu = 0.3. Problem with a closed form for every nu,
 // non-polynomial and divergence-free in the limit: the Lame thick cylinder
 // (a = 1, b = 2, plane strain, internal pressure p = 100 kPa, E = 1e5 kPa,

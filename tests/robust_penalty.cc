@@ -1,4 +1,4 @@
-// Hard-case stability (issue 5, case 1): interface penalty k = kn = ks from
+// Hard-case stability (doc/robustness.md): interface penalty k = kn = ks from
 // 1e6 to 1e16 kPa/m on the embedded footing of prm/embedded-footing.prm (one
 // mesh level; soil G = 1e3 kPa at the footing depth). Asserts:
 //  - K_H and K_M increase monotonically with k up to 1e12 (a stiffer
@@ -23,7 +23,7 @@
 // k = 1e10, 2.6e-7 at k = 1e12 and REJECTS k >= 1e14 (the residual grows
 // like k * eps): the run stops with 'relative residual ... exceeds'.
 // Recommended range: k / G_soil <= 1e9 (here k <= 1e12).
-// Condition number (issue 5, hard cases): for every k the 2-norm condition
+// Condition number (doc/robustness.md): for every k the 2-norm condition
 // number of the assembled matrix, lambda_max / lambda_min, by power
 // iteration (lambda_max) and inverse iteration with the UMFPACK factorization
 // (lambda_min), both from below/above, so the printed value is a lower

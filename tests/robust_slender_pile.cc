@@ -1,4 +1,4 @@
-// Hard-case stability (issue 5, case 3): a slender pile, L/d = 50 (d = 1 m,
+// Hard-case stability (doc/robustness.md): a slender pile, L/d = 50 (d = 1 m,
 // L = 50 m), in Gibson soil (G = 1000 kPa at the tip depth, alpha = 1,
 // nu = 0.25), rough interface (kn = ks = 1e10) on shaft and base, H and M on
 // a rigid head cap (prm/pile.prm adapted: Z breakpoints, Material regions,

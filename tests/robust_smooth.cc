@@ -1,4 +1,4 @@
-// Hard-case stability (issue 5, case 4): frictionless interfaces.
+// Hard-case stability (doc/robustness.md): frictionless interfaces.
 //  - Embedded footing (prm/embedded-footing.prm, one mesh level) with a
 //    smooth interface (kn = 1e10, ks = 0) on base and side: the horizontal
 //    mode is held only by the normal springs of the side wall, so K_H must

@@ -1,4 +1,4 @@
-// The log says what a scene simulates (issue #6, verify 4): a rigid surface
+// The log says what a scene simulates (doc/loads.md): a rigid surface
 // footing pushed by V only lists n = 0 symmetric and nothing else, says that
 // every other harmonic was skipped and why, and does no interface assembly
 // (none declared); the same footing with an interface declared says it
@@ -8,7 +8,7 @@
 #include "check.h"
 #include "test_support.h"
 
-#include <fourier_ssi/command_line.h>
+#include <fourier_ssi/messages.h>
 #include <fourier_ssi/simulator.h>
 #include <regex>
 

@@ -1,4 +1,4 @@
-// Table 4.1 of Hernoune (2007), section 4.2 (issue #4 item 6, verify 1): a
+// Table 4.1 of Hernoune (2007), section 4.2 (doc/table-4-1.md): a
 // rigid circular surface footing (a = 1) under a moment M, rotation reported
 // as theta E_s a^3 / M for nu = 0 ... 0.49 and five contact models:
 //   bonded ("sans interface"): soil surface nodes r < a follow the rigid
@@ -182,7 +182,7 @@ main(int argc, char **argv)
       check::in_range(label("observed order, bonded", nu), p_b, 0.6, 1.6);
       check::in_range(label("observed order, smooth", nu), p_s, 0.6, 1.6);
 
-      // 2% (issue text): the thesis used one coarse 8-node mesh on a
+      // 2%: the thesis used one coarse 8-node mesh on a
       // 20 a x 25 e domain; our converged values (study: 4 levels, finer
       // base mesh) agree with the thesis within 0.3% (0.6% at nu = 0), the
       // test's mesh adds < 0.1%, the truncation < 0.01%.
@@ -200,7 +200,7 @@ main(int argc, char **argv)
       // extrapolation; 1e-4 allows for the different mesh (footing block).
       check::relative(label("k = 1e10 vs bonded (same model)", nu), ext_k,
                       ext_b, 1e-4);
-      // 1% (issue text); the study shows < 0.1% at this mesh, the rest is
+      // 1%: the study shows < 0.1% at this mesh, the rest is
       // margin (the study's 4-level value is within 0.02%).
       check::relative(label("smooth vs 3(1-nu^2)/4", nu), ext_s,
                       0.75 * (1 - nu * nu), 0.01);

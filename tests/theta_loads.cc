@@ -1,4 +1,4 @@
-// Loads given as functions of theta (issue #6, verify 1 and 3), on the
+// Loads given as functions of theta (doc/loads.md), on the
 // bundled scene prm/wind-pressure.prm (a flexible circular surface load):
 //  1. p = cos t + 0.5 cos 3t solves exactly harmonics 1 and 3 (symmetric);
 //     the superposed 3D field equals the sum of the two single-harmonic

@@ -1,8 +1,10 @@
-/** The command-line front end of the fourier-ssi executable. */
+/**
+ * The command-line front end of the fourier-ssi executable (not part of the
+ * library): runs a scene, a batch, or one of the sub-commands
+ * --print-parameters and --interface-matrix.
+ */
 #ifndef fourier_ssi_command_line_h
 #define fourier_ssi_command_line_h
-
-#include <string>
 
 namespace FourierSSI
 {
@@ -12,10 +14,6 @@ namespace FourierSSI
    */
   int
   run_command_line(int argc, char **argv);
-
-  /** The essential text of an exception, on one line. */
-  std::string
-  one_line_message(const std::exception &e);
 } // namespace FourierSSI
 
 #endif

@@ -113,16 +113,6 @@ namespace FourierSSI
     std::vector<InterfaceStiffness> stiffness;
     std::vector<FullMatrix<double>> matrices;
   };
-
-  /**
-   * The --interface-matrix sub-command: arguments "p=2 n=1 family=sym
-   * r=0.5,0.5,0.5 z=0,0.5,1 kn=1e10 ks=1e10" (n defaults to 0, family to
-   * sym); prints interface_matrix() with print_interface_matrix(). Throws a
-   * one-line message on bad arguments.
-   */
-  void
-  interface_matrix_command(const std::vector<std::string> &arguments,
-                           std::ostream                   &out);
 } // namespace FourierSSI
 
 #endif

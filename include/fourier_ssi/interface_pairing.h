@@ -1,8 +1,9 @@
 /**
  * Zero-thickness interfaces in the harmonic system, part 1: the .prm
- * description of the interface laws, the double-node splitting of the
- * built-in rectangle along straight interface lines, and the pairing of the
- * coincident boundary faces of the two sides (doc/interfaces-usage.md).
+ * description of the interface laws and the pairing of the coincident
+ * boundary faces of the two sides (doc/interfaces-usage.md). The double
+ * nodes themselves come from the mesh: Mesh/Interface lines
+ * (interface_lines.h) or a gmsh mesh with duplicated curves.
  *
  * An interface is a boundary id carried by the faces on BOTH sides of a
  * line whose vertices are duplicated (double nodes), so that the two sides
@@ -20,7 +21,6 @@
 #include <deal.II/base/types.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/grid/tria.h>
-#include <fourier_ssi/mesh_builder.h>
 #include <map>
 #include <string>
 #include <vector>
@@ -111,35 +111,13 @@ namespace FourierSSI
    * FESystem of dof_handler must be FE_Q(p)^3 with equidistant support
    * points). Throws a one-line error with the face centre if a face has no
    * twin, more than one, or a twin on the same cell, or if an id does not
-   * exist on the mesh. Pairs are sorted by id, then by face centre.
+   * exist on the mesh. Pairs come grouped by id in the order of `ids`, each
+   * group in the active-cell order of the pair's first face.
    */
   std::vector<InterfacePair>
   pair_interface_faces(const DoFHandler<2>                   &dof_handler,
                        const std::vector<types::boundary_id> &ids,
                        const double                           tolerance);
-
-  /**
-   * Parse Mesh/Interface lines, "id: r=1, z=-2..0; id: z=-2, r=0..1" (empty:
-   * none). Throws a one-line message naming the entry.
-   */
-  std::vector<InterfaceLine>
-  parse_interface_lines(const std::string &text);
-
-  /**
-   * Double nodes for the built-in rectangle: duplicate the vertices along the
-   * given straight lines so that the cells on the two sides no longer share
-   * them, and give the faces on both sides the line's boundary id. Around a
-   * vertex, cells that still share a non-interface face keep sharing it
-   * (interior line ends stay closed, crossings get up to four copies);
-   * vertices on the axis r = 0 are not duplicated (the axis constraints key
-   * axis nodes by z). Must be called on a coarse (unrefined) mesh; the other
-   * boundary ids are kept. Throws if a line is not on the breakpoints.
-   */
-  void
-  split_along_interface_lines(Triangulation<2>                 &triangulation,
-                              const std::vector<InterfaceLine> &lines,
-                              const std::vector<double>        &r_breakpoints,
-                              const std::vector<double>        &z_breakpoints);
 } // namespace FourierSSI
 
 #endif

@@ -1,6 +1,9 @@
 /**
- * The (r, z) half-plane meshes of a scene: built-in graded rectangles, the
- * thick cylinder, or a gmsh .msh/.geo file with physical tags.
+ * The (r, z) half-plane meshes of a scene (Mesh/Type): the built-in graded
+ * rectangle, with material regions, removed regions and interface lines
+ * (double nodes, interface_lines.h), or a gmsh .msh file whose physical
+ * curve tags are boundary ids and physical surface tags material ids
+ * (doc/interfaces-usage.md).
  *
  * Built-in rectangle, boundary ids (deal.II colorize convention):
  *
@@ -12,7 +15,9 @@
  *           r_min                   r_max
  *
  * plus id 4 for the top faces with r < "Surface patch radius" (a footing
- * contact patch), when that radius is positive.
+ * contact patch), when that radius is positive. Faces left free by removed
+ * regions get id 3 (free surface); the faces on both sides of an interface
+ * line get the line's id.
  */
 #ifndef fourier_ssi_mesh_builder_h
 #define fourier_ssi_mesh_builder_h
@@ -20,6 +25,7 @@
 #include <deal.II/base/bounding_box.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/grid/tria.h>
+#include <fourier_ssi/interface_lines.h>
 #include <string>
 #include <vector>
 
@@ -38,18 +44,6 @@ namespace FourierSSI
                const std::vector<unsigned int> &cells,
                const std::vector<double>       &growth,
                const std::string               &entry);
-
-  /**
-   * A straight interface line of the built-in rectangle, "id: r=1, z=-2..0"
-   * (vertical) or "id: z=-2, r=0..1" (horizontal): the mesh is split there
-   * with double nodes (see split_along_interface_lines()).
-   */
-  struct InterfaceLine
-  {
-    types::boundary_id boundary_id;
-    unsigned int       fixed_coordinate; // 0: r = value, 1: z = value
-    double             value, from, to;
-  };
 
   /** Parse "r0, r1, z0, z1" into a box; `entry` names the .prm entry. */
   BoundingBox<2>

@@ -20,6 +20,7 @@
 #ifndef fourier_ssi_rigid_foundation_h
 #define fourier_ssi_rigid_foundation_h
 
+#include <array>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -147,6 +148,32 @@ namespace FourierSSI
     }
 
   private:
+    /** Amplitudes (U_A, V_A, W_A) of the master node, or forces on them. */
+    using MasterValues = std::array<double, 3>;
+
+    /**
+     * The rigid-body kinematics of this harmonic (the table above), the one
+     * place it is written: the amplitudes (U, V, W) at x of the rigid body
+     * whose master node moves by `master`. The constraint weights, the
+     * motion read back and the loads' nodal forces all follow from it.
+     */
+    std::array<double, 3>
+    displacement_at(const Point<2> &x, const MasterValues &master) const;
+
+    /** The rigid motion (U_h, Theta, W_v, Phi) for the master amplitudes. */
+    RigidMotion
+    motion_of(const MasterValues &master) const;
+
+    /**
+     * Nodal forces on the master DoFs that do the virtual work of the
+     * resultants H, M, V, T on every rigid motion.
+     */
+    MasterValues
+    master_forces(const double horizontal_force,
+                  const double moment,
+                  const double vertical_force,
+                  const double torque) const;
+
     const RigidFoundationParameters &parameters;
     const Harmonic                   harmonic;
     Point<2>                         master_position;
