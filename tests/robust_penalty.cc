@@ -52,8 +52,7 @@ namespace
   std::string
   base()
   {
-    std::ifstream     in(std::string(FSSI_SOURCE_DIR) +
-                     "/prm/embedded-footing.prm");
+    std::ifstream in(test_support::source_dir() + "/prm/embedded-footing.prm");
     std::stringstream text;
     text << in.rdbuf();
     return text.str() +

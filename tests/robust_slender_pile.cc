@@ -30,7 +30,7 @@ namespace
   std::string
   scene(const std::string &pile_material, const std::string &tie)
   {
-    std::ifstream     in(std::string(FSSI_SOURCE_DIR) + "/prm/pile.prm");
+    std::ifstream     in(test_support::source_dir() + "/prm/pile.prm");
     std::stringstream text;
     text << in.rdbuf();
     return text.str() +
@@ -67,8 +67,7 @@ main(int argc, char **argv)
       KH.push_back(r.get("K_H", h, 0));
       KM.push_back(r.get("K_M", h, 0));
       std::cout << "  " << what.str() << ": K_H " << KH.back() << ", K_M "
-                << KM.back() << ", K_MH " << r.get("K_MH", h, 0)
-                << std::endl;
+                << KM.back() << ", K_MH " << r.get("K_MH", h, 0) << std::endl;
       check::that(what.str() + ": K_H, K_M, K_MH finite",
                   std::isfinite(KH.back()) && std::isfinite(KM.back()) &&
                     std::isfinite(r.get("K_MH", h, 0)));
@@ -90,10 +89,8 @@ main(int argc, char **argv)
                   rigid.get("I_MH_from_M", h, 0),
                   1e-6);
   check::that("K_H, K_M increase with Ep/Es",
-              KH[0] < KH[1] && KH[1] < KH[2] && KM[0] < KM[1] &&
-                KM[1] < KM[2]);
-  check::that("K_H, K_M below the rigid pile",
-              KH[2] < KH_r && KM[2] < KM_r);
+              KH[0] < KH[1] && KH[1] < KH[2] && KM[0] < KM[1] && KM[1] < KM[2]);
+  check::that("K_H, K_M below the rigid pile", KH[2] < KH_r && KM[2] < KM_r);
   std::cout << "  gap to rigid: K_H " << 1 - KH[0] / KH_r << ", "
             << 1 - KH[1] / KH_r << ", " << 1 - KH[2] / KH_r << "; K_M "
             << 1 - KM[0] / KM_r << ", " << 1 - KM[1] / KM_r << ", "

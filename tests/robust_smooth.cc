@@ -25,7 +25,7 @@ namespace
   std::string
   scene(const std::string &interface)
   {
-    std::ifstream in(std::string(FSSI_SOURCE_DIR) + "/prm/embedded-footing.prm");
+    std::ifstream in(test_support::source_dir() + "/prm/embedded-footing.prm");
     std::stringstream text;
     text << in.rdbuf();
     return text.str() +
@@ -59,7 +59,13 @@ main(int argc, char **argv)
                   smooth.get("I_MH_from_H", h, 0),
                   smooth.get("I_MH_from_M", h, 0),
                   1e-6);
-  check::relative("ks = 1e-6 vs ks = 0: K_H", almost.get("K_H", h, 0), KH, 1e-6);
-  check::relative("ks = 1e-6 vs ks = 0: K_M", almost.get("K_M", h, 0), KM, 1e-6);
+  check::relative("ks = 1e-6 vs ks = 0: K_H",
+                  almost.get("K_H", h, 0),
+                  KH,
+                  1e-6);
+  check::relative("ks = 1e-6 vs ks = 0: K_M",
+                  almost.get("K_M", h, 0),
+                  KM,
+                  1e-6);
   return check::summary();
 }

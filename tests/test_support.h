@@ -4,6 +4,7 @@
 #define fourier_ssi_tests_test_support_h
 
 #include <array>
+#include <cstdlib>
 #include <deal.II/base/mpi.h>
 #include <fourier_ssi/parameters.h>
 #include <fourier_ssi/simulator.h>
@@ -24,11 +25,25 @@ namespace test_support
     return parameters;
   }
 
+  /**
+   * The project root, from the environment ctest sets (tests/CMakeLists.txt):
+   * read at run time, so the test objects do not depend on the checkout path.
+   */
+  inline std::string
+  source_dir()
+  {
+    const char *dir = std::getenv("FSSI_SOURCE_DIR");
+    if (!dir)
+      throw std::runtime_error("FSSI_SOURCE_DIR is not set (run the test "
+                               "through ctest)");
+    return dir;
+  }
+
   /** Text of a bundled parameter file, path relative to the project root. */
   inline std::string
   bundled_prm(const std::string &relative_path)
   {
-    std::ifstream in(std::string(FSSI_SOURCE_DIR) + "/" + relative_path);
+    std::ifstream in(source_dir() + "/" + relative_path);
     if (!in)
       throw std::runtime_error("cannot open " + relative_path);
     std::stringstream text;
