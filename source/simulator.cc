@@ -10,6 +10,7 @@
 #include <fourier_ssi/command_line.h>
 #include <fourier_ssi/goal_estimator.h>
 #include <fourier_ssi/harmonic_problem.h>
+#include <fourier_ssi/input_checks.h>
 #include <fourier_ssi/scene_plan.h>
 #include <fourier_ssi/simulator.h>
 #include <iomanip>
@@ -374,6 +375,9 @@ namespace FourierSSI
           parameters.materials.get(cell->material_id()); // throws if missing
         const ScenePlan plan = plan_scene(parameters, triangulation);
         for (const std::string &line : plan.log_lines)
+          log << line << std::endl;
+        for (const std::string &line :
+             check_scene_before_solve(parameters, triangulation, plan))
           log << line << std::endl;
 
         for (unsigned int cycle = 0;
