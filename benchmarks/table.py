@@ -1,3 +1,4 @@
+#!/usr/bin/python3
 """Turn benchmarks/harmonic_cost.csv into a markdown table with the ratio of
 each harmonic's assembly and solve time to the vector-Laplace floor."""
 import csv

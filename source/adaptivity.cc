@@ -51,7 +51,9 @@ namespace FourierSSI
                       "first cycle: 'r, z: levels; ...' refines the cells "
                       "touching each point (a vertex of the mesh, e.g. a "
                       "foundation edge) that many times, halving their size "
-                      "each time. Empty: none.");
+                      "each time (at most 25 levels: a cell 3e-8 times its "
+                      "coarse size; much beyond, the vertex positions reach "
+                      "round-off). Empty: none.");
     prm.declare_entry("Box refinement",
                       "",
                       Patterns::Anything(),
@@ -96,22 +98,29 @@ namespace FourierSSI
         AssertThrow(coordinates.size() == 2,
                     ExcMessage("Adaptivity/Point refinement: '" + item +
                                "' is not 'r, z: levels'"));
+        int      levels = -1;
+        Point<2> point;
         try
           {
-            const int levels = Utilities::string_to_int(parts[1]);
-            AssertThrow(levels >= 0, ExcMessage("negative"));
-            point_refinements.emplace_back(
-              Point<2>(Utilities::string_to_double(coordinates[0]),
-                       Utilities::string_to_double(coordinates[1])),
-              static_cast<unsigned int>(levels));
+            levels = Utilities::string_to_int(parts[1]);
+            point  = Point<2>(Utilities::string_to_double(coordinates[0]),
+                             Utilities::string_to_double(coordinates[1]));
           }
         catch (...)
           {
-            AssertThrow(false,
-                        ExcMessage("Adaptivity/Point refinement: '" + item +
-                                   "' is not 'r, z: levels' with numbers "
-                                   "and levels >= 0"));
+            levels = -1;
           }
+        AssertThrow(levels >= 0,
+                    ExcMessage("Adaptivity/Point refinement: '" + item +
+                               "' is not 'r, z: levels' with numbers "
+                               "and levels >= 0"));
+        AssertThrow(levels <= int(max_point_refinement_levels),
+                    ExcMessage("Adaptivity/Point refinement: '" + item +
+                               "' asks for " + std::to_string(levels) +
+                               " levels, above the limit of " +
+                               std::to_string(max_point_refinement_levels)));
+        point_refinements.emplace_back(point,
+                                       static_cast<unsigned int>(levels));
       }
     box_refinements.clear();
     for (const std::string &item :

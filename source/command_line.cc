@@ -194,7 +194,17 @@ namespace FourierSSI
           start_mpi();
         out << "fourier-ssi: " << prm_file << std::endl;
         Simulator simulator(parameters, communicator);
-        simulator.run(out);
+        try
+          {
+            simulator.run(out);
+          }
+        catch (const std::exception &e)
+          {
+            // Name the scene's file, as the errors found while reading it
+            // do.
+            AssertThrow(false,
+                        ExcMessage(prm_file + ": " + one_line_message(e)));
+          }
       }
     catch (const std::exception &e)
       {

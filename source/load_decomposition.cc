@@ -138,10 +138,46 @@ namespace FourierSSI
       samples *= 2;
   }
 
+  namespace
+  {
+    /** A coordinate in a message, 4 significant digits. */
+    std::string
+    short_number(const double value)
+    {
+      std::ostringstream s;
+      s.precision(4);
+      s << value;
+      return s.str();
+    }
+  } // namespace
+
   double
   ThetaLoad::choose_samples(const std::vector<Point<2>> &points,
                             const double                 tolerance)
   {
+    // A NaN or infinity would vanish from the amplitudes (std::max ignores
+    // NaN) and the scene would report "no load": name it instead.
+    {
+      const std::array<std::string, 3> components =
+        entry.find("displacement") != std::string::npos ?
+          std::array<std::string, 3>{{"u", "v", "w"}} :
+          std::array<std::string, 3>{{"r", "z", "theta"}};
+      Vector<double> values(3);
+      for (const Point<2> &p : points)
+        for (unsigned int k = 0; k < 36; ++k)
+          {
+            const double theta = 2. * numbers::PI * k / 36.;
+            function->vector_value(Point<3>(p[0], p[1], theta), values);
+            for (unsigned int c = 0; c < 3; ++c)
+              AssertThrow(std::isfinite(values(c)),
+                          ExcMessage(
+                            entry + ": component " + components[c] + " is " +
+                            (std::isnan(values(c)) ? "NaN" : "infinite") +
+                            " at (r, z) = (" + short_number(p[0]) + ", " +
+                            short_number(p[1]) +
+                            "), theta = " + std::to_string(k * 10) + " deg"));
+          }
+    }
     constexpr unsigned int max_samples = 1u << 16;
     double                 largest = 0., change = 0.;
     for (; samples <= max_samples; samples *= 2)

@@ -3,14 +3,30 @@
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
+#include <filesystem>
 #include <fourier_ssi/boundary_conditions.h>
 #include <fourier_ssi/interface_lines.h>
 #include <fourier_ssi/mesh_builder.h>
 #include <fstream>
+#include <memory>
 #include <set>
+#include <sstream>
 
 namespace FourierSSI
 {
+  namespace
+  {
+    /** 1.2e+07 style, for DoF counts in messages. */
+    std::string
+    format_count(const double value)
+    {
+      std::ostringstream s;
+      s.precision(2);
+      s << value;
+      return s.str();
+    }
+  } // namespace
+
   std::vector<double>
   graded_steps(const std::vector<double>       &breakpoints,
                const std::vector<unsigned int> &cells,
@@ -50,10 +66,29 @@ namespace FourierSSI
     prm.declare_entry("Type",
                       "rectangle",
                       Patterns::Selection("rectangle|gmsh"),
-                      "rectangle: built-in graded (r, z) rectangle; gmsh: "
-                      "read 'Mesh file' (.msh), physical curve tags are "
-                      "boundary ids, physical surface tags material ids.");
-    prm.declare_entry("Mesh file", "", Patterns::FileName(), "gmsh .msh file.");
+                      "rectangle: built-in graded (r, z) rectangle with the "
+                      "boundary ids 0 = r_min side (the axis when r_min = "
+                      "0), 1 = r_max side (far side), 2 = bottom (z_min), "
+                      "3 = top (z_max, ground surface), 4 = top faces with "
+                      "r < Surface patch radius (footing contact); faces "
+                      "left by Removed regions get 3 (sketch in "
+                      "doc/scenes.md). gmsh: read 'Mesh file' (.msh), "
+                      "physical curve tags are boundary ids, physical "
+                      "surface tags material ids.");
+    prm.declare_entry("Mesh file",
+                      "",
+                      Patterns::FileName(),
+                      "gmsh .msh file; a relative path is relative to the "
+                      "folder of the .prm file.");
+    prm.declare_entry("Maximum DoFs",
+                      "2e6",
+                      Patterns::Double(1.),
+                      "Refuse a run whose mesh would exceed this many DoFs "
+                      "per harmonic, estimated as 3 p^2 per cell before the "
+                      "cells are made (Global refinements, a priori and "
+                      "cycle refinements). 2e6 is about 8 GB with the direct "
+                      "solver (doc/scaling.md: 4 kB per DoF); raise it on a "
+                      "larger machine.");
     prm.declare_entry("R breakpoints",
                       "0, 1",
                       Patterns::List(Patterns::Double()),
@@ -82,7 +117,8 @@ namespace FourierSSI
     prm.declare_entry("Surface patch radius",
                       "0",
                       Patterns::Double(0.),
-                      "If > 0, top faces with r below it get boundary id 4.");
+                      "If > 0, top faces (id 3) with centre r below it get "
+                      "boundary id 4; at most the outer radius.");
     prm.declare_entry("Distortion",
                       "0",
                       Patterns::Double(0., 0.4),
@@ -144,6 +180,7 @@ namespace FourierSSI
     surface_patch_radius = prm.get_double("Surface patch radius");
     distortion           = prm.get_double("Distortion");
     global_refinements   = prm.get_integer("Global refinements");
+    maximum_dofs         = prm.get_double("Maximum DoFs");
     interface_lines      = parse_interface_lines(prm.get("Interface lines"));
     material_regions.clear();
     for (const std::string &item :
@@ -207,12 +244,26 @@ namespace FourierSSI
     triangulation.clear();
     if (type == "gmsh")
       {
+        AssertThrow(!std::filesystem::is_directory(mesh_file),
+                    ExcMessage("Mesh/Mesh file: '" + mesh_file +
+                               "' is a directory"));
         std::ifstream in(mesh_file);
         AssertThrow(in,
                     ExcMessage("Mesh/Mesh file: cannot open '" + mesh_file +
                                "'"));
         GridIn<2> grid_in(triangulation);
-        grid_in.read_msh(in);
+        try
+          {
+            grid_in.read_msh(in);
+          }
+        catch (...)
+          {
+            // GridIn's message quotes the offending text, binary bytes
+            // included: name the file instead.
+            AssertThrow(false,
+                        ExcMessage("Mesh/Mesh file: '" + mesh_file +
+                                   "' is not a readable gmsh .msh mesh"));
+          }
         for (const auto &v : triangulation.get_vertices())
           AssertThrow(v[0] > -1e-12,
                       ExcMessage("Mesh/Mesh file: '" + mesh_file +
@@ -290,6 +341,50 @@ namespace FourierSSI
                                     /*keep_boundary=*/true,
                                     /*seed=*/20070101);
       }
+    // Refuse a refinement that would exceed Maximum DoFs before it
+    // allocates its cells: Global refinements here, the a priori and cycle
+    // refinements through the triangulation's pre-refinement signal.
+    const double dofs_per_cell = 3. * degree * degree;
+    const double estimate      = triangulation.n_active_cells() *
+                            std::pow(4., global_refinements) * dofs_per_cell;
+    AssertThrow(estimate <= maximum_dofs,
+                ExcMessage("Mesh/Global refinements: " +
+                           std::to_string(global_refinements) +
+                           " refinements of " +
+                           std::to_string(triangulation.n_active_cells()) +
+                           " cells would give about " + format_count(estimate) +
+                           " DoFs per harmonic, above Mesh/Maximum DoFs = " +
+                           format_count(maximum_dofs)));
+    const auto guard = std::make_shared<boost::signals2::connection>();
+    *guard           = triangulation.signals.pre_refinement.connect(
+      [&triangulation, dofs_per_cell, limit = maximum_dofs]() {
+        unsigned int n_new = 0;
+        for (const auto &cell : triangulation.active_cell_iterators())
+          if (cell->refine_flag_set() ==
+              RefinementCase<2>::isotropic_refinement)
+            n_new += 3;
+          else if (cell->refine_flag_set())
+            n_new += 1;
+        const double dofs =
+          (triangulation.n_active_cells() + n_new) * dofs_per_cell;
+        AssertThrow(dofs <= limit,
+                    ExcMessage(
+                      "Mesh/Maximum DoFs: refining the mesh to " +
+                      std::to_string(triangulation.n_active_cells() + n_new) +
+                      " cells would give about " + format_count(dofs) +
+                      " DoFs per harmonic, above the limit " +
+                      format_count(limit) +
+                      " (lower Adaptivity/Box, Layer or Point refinement, "
+                                "Discretization/Refinement cycles, or raise Mesh/"
+                                "Maximum DoFs)"));
+      });
+    // The guard belongs to this build: the next clear() (a new build)
+    // removes it.
+    const auto clear_slot = std::make_shared<boost::signals2::connection>();
+    *clear_slot = triangulation.signals.clear.connect([guard, clear_slot]() {
+      guard->disconnect();
+      clear_slot->disconnect();
+    });
     triangulation.refine_global(global_refinements);
   }
 } // namespace FourierSSI

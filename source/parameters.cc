@@ -1,4 +1,6 @@
 #include <deal.II/base/utilities.h>
+#include <filesystem>
+#include <fourier_ssi/input_checks.h>
 #include <fourier_ssi/messages.h>
 #include <fourier_ssi/parameters.h>
 #include <fstream>
@@ -31,14 +33,18 @@ namespace FourierSSI
                       "6-node interface element) or 4 (equidistant nodes, "
                       "pairs with the 10-node interface element).");
     prm.declare_entry("Volumetric strain",
-                      "standard",
-                      Patterns::Selection("standard|bbar"),
+                      "auto",
+                      Patterns::Selection("auto|standard|bbar"),
                       "standard: full integration of the dilatation; bbar: "
                       "the dilatation projected onto linear polynomials per "
                       "cell (B-bar, the Q2-P1disc volumetric space), free "
-                      "of volumetric locking as nu -> 0.5. Polynomial "
-                      "degree 2 only (FE_Q(4) does not lock, see "
-                      "doc/robustness.md).");
+                      "of volumetric locking as nu -> 0.5, Polynomial "
+                      "degree 2 only (FE_Q(4) does not lock); auto: bbar "
+                      "for Polynomial degree 2 when a material has nu >= "
+                      "0.45, standard otherwise (standard with degree 2 and "
+                      "nu >= 0.45 is solved as asked, with a warning: it "
+                      "overestimates K_M of the embedded footing by 5.6 % "
+                      "at nu = 0.499, doc/robustness.md).");
     prm.declare_entry("Concurrent harmonics",
                       "0",
                       Patterns::Integer(0, 256),
@@ -73,6 +79,11 @@ namespace FourierSSI
         AssertThrow(n >= 0 && n <= 1024,
                     ExcMessage("Discretization/Harmonics: '" + s +
                                "' is not 'auto' or a harmonic number 0..1024"));
+        // A repeated n would be solved twice and give duplicate rows.
+        for (const Harmonic &h : harmonics)
+          AssertThrow(h.n != static_cast<unsigned int>(n),
+                      ExcMessage("Discretization/Harmonics: n = " + s +
+                                 " is listed twice"));
         if (family != "antisymmetric")
           harmonics.push_back(
             {static_cast<unsigned int>(n), Family::symmetric});
@@ -80,9 +91,12 @@ namespace FourierSSI
           harmonics.push_back(
             {static_cast<unsigned int>(n), Family::antisymmetric});
       }
+    AssertThrow(automatic || !harmonics.empty(),
+                ExcMessage("Discretization/Harmonics: empty; write 'auto' or "
+                           "a list such as '0, 1'"));
     degree     = prm.get_integer("Polynomial degree");
     volumetric = prm.get("Volumetric strain");
-    AssertThrow(volumetric == "standard" || degree == 2,
+    AssertThrow(volumetric != "bbar" || degree == 2,
                 ExcMessage("Discretization/Volumetric strain = bbar needs "
                            "Polynomial degree = 2"));
     refinement_cycles    = prm.get_integer("Refinement cycles");
@@ -152,7 +166,9 @@ namespace FourierSSI
                       Patterns::Anything(),
                       "3D reconstruction (sum of the harmonics) along "
                       "straight lines: 'r0, z0 -> r1, z1 : points; ...'; "
-                      "written to lines-3d.csv at the angles below.");
+                      "written to lines-3d.csv at the angles below. At most "
+                      "100000 points per line, every point inside the mesh "
+                      "(both checked before the solve).");
     prm.declare_entry("Theta values",
                       "0",
                       Patterns::List(Patterns::Double()),
@@ -218,6 +234,12 @@ namespace FourierSSI
           }
         if (line.n_points < 1)
           fail();
+        AssertThrow(line.n_points <= max_points_per_line,
+                    ExcMessage("Output/Lines 3D: '" + item + "' asks for " +
+                               std::to_string(line.n_points) +
+                               " points, above the limit of " +
+                               std::to_string(max_points_per_line) +
+                               " points per line"));
         lines.push_back(line);
       }
     prm.leave_subsection();
@@ -255,6 +277,14 @@ namespace FourierSSI
     rigid_foundation.parse_parameters(prm);
     adaptivity.parse_parameters(prm);
     loads.parse_parameters(prm);
+    mesh.degree                         = discretization.degree;
+    discretization.volumetric_automatic = discretization.volumetric == "auto";
+    if (discretization.volumetric_automatic)
+      discretization.volumetric =
+        discretization.degree == 2 &&
+            largest_poisson_ratio(materials) >= locking_poisson_ratio ?
+          "bbar" :
+          "standard";
     for (const auto &[id, e] : loads.displacement)
       AssertThrow(boundary_conditions.dirichlet.count(id) == 0,
                   ExcMessage("Loads/Prescribed displacement: boundary id " +
@@ -266,14 +296,37 @@ namespace FourierSSI
   void
   AllParameters::read_file(const std::string &filename)
   {
+    // An ifstream opens a directory and reads nothing: it would run as an
+    // empty .prm.
+    AssertThrow(!std::filesystem::is_directory(filename),
+                ExcMessage(filename +
+                           ": is a directory, not a parameter file"));
     std::ifstream in(filename);
     AssertThrow(in, ExcMessage(filename + ": cannot open parameter file"));
-    ParameterHandler prm;
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string content = text.str();
+    // Editors on some systems start UTF-8 files with a byte-order mark; it
+    // carries no meaning here.
+    const std::string byte_order_mark = "\xEF\xBB\xBF";
+    if (content.compare(0, byte_order_mark.size(), byte_order_mark) == 0)
+      content.erase(0, byte_order_mark.size());
+    std::istringstream input(content);
+    ParameterHandler   prm;
     declare_parameters(prm);
     try
       {
-        prm.parse_input(in, filename);
+        prm.parse_input(input, filename);
         parse_parameters(prm);
+        // A relative Mesh file is relative to the folder of the .prm, so
+        // that a scene runs from any working directory.
+        const std::filesystem::path mesh_file(mesh.mesh_file);
+        if (mesh.type == "gmsh" && !mesh.mesh_file.empty() &&
+            mesh_file.is_relative())
+          mesh.mesh_file =
+            (std::filesystem::path(filename).parent_path() / mesh_file)
+              .lexically_normal()
+              .string();
       }
     catch (const std::exception &e)
       {

@@ -1,5 +1,6 @@
 #include <deal.II/base/timer.h>
 #include <filesystem>
+#include <fourier_ssi/input_checks.h>
 #include <fourier_ssi/messages.h>
 #include <fourier_ssi/simulator.h>
 #include <iomanip>
@@ -102,6 +103,11 @@ namespace FourierSSI
   {
     plan = plan_scene(parameters, triangulation);
     for (const std::string &line : plan.log_lines)
+      log << line << std::endl;
+    // Checks that can be made before anything is assembled (throw on bad
+    // input, return warnings).
+    for (const std::string &line :
+         check_scene_before_solve(parameters, triangulation, plan))
       log << line << std::endl;
     goal_estimator.reset();
     if (parameters.adaptivity.strategy == RefinementStrategy::goal)

@@ -19,6 +19,26 @@ endforeach()
 # The bundled scenes run as tests in tests/scenes/, checked against their
 # references.
 
+# A directory given as the .prm (an ifstream would read it as an empty file
+# and run the default of every entry).
+add_test(NAME input_prm_is_a_directory
+  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi>
+          -DPRM=${CMAKE_CURRENT_SOURCE_DIR}/prm
+          "-DEXPECTED=prm: is a directory, not a parameter file"
+          -DOUTPUT_DIR=${CMAKE_CURRENT_BINARY_DIR}/bad_output
+          -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_failure.cmake)
+set_tests_properties(input_prm_is_a_directory PROPERTIES
+  RESOURCE_LOCK bad_output)
+
+# A .prm that starts with a UTF-8 byte-order mark runs like any other.
+add_test(NAME program_prm_with_byte_order_mark
+  COMMAND fourier-ssi ${CMAKE_CURRENT_SOURCE_DIR}/prm/bom_header.prm
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties(program_prm_with_byte_order_mark PROPERTIES
+  PASS_REGULAR_EXPRESSION "results written to")
+
+
 add_test(NAME program_print_parameters COMMAND fourier-ssi --print-parameters)
 set_tests_properties(program_print_parameters PROPERTIES
   PASS_REGULAR_EXPRESSION "subsection Materials")

@@ -49,7 +49,7 @@ namespace
     double     lo = shrink ? 1e-3 : 1., hi = shrink ? 1. : 1e3;
     for (unsigned int it = 0; it < 200; ++it)
       {
-        const double g = 0.5 * (lo + hi);
+        const double g     = 0.5 * (lo + hi);
         double       total = 0;
         for (unsigned int i = 0; i < n; ++i)
           total += h_end / std::pow(g, double(n - 1 - i));
@@ -93,13 +93,14 @@ namespace
       << 1. / growth_for(n_out, L - 1., h_e) << "\n";
     const double g_depth = growth_for(n_depth, L, h_e);
     if (model == Model::interface)
-      s << " set Z breakpoints = -" << L << ", 0, 0.2\n set Z cells = "
-        << n_depth << ", 1\n set Z growth = " << g_depth << ", 1\n"
+      s << " set Z breakpoints = -" << L
+        << ", 0, 0.2\n set Z cells = " << n_depth
+        << ", 1\n set Z growth = " << g_depth << ", 1\n"
         << " set Material regions = 1: 0, 1, 0, 0.2\n"
         << " set Removed regions = 1, " << L << ", 0, 0.2\n"
         << " set Interface lines = 5: z=0, r=0..1\nend\n"
-        << "subsection Materials\n set Materials = 0: E=" << E
-        << ", nu=" << nu << "; 1: E=1e6, nu=0.2\nend\n"
+        << "subsection Materials\n set Materials = 0: E=" << E << ", nu=" << nu
+        << "; 1: E=1e6, nu=0.2\nend\n"
         << "subsection Interfaces\n set Interfaces = 5: kn=" << k
         << ", ks=" << k << "\nend\n"
         << "subsection Rigid foundation\n set Enabled = true\n"
@@ -108,14 +109,19 @@ namespace
       s << " set Z breakpoints = -" << L << ", 0\n set Z cells = " << n_depth
         << "\n set Z growth = " << g_depth
         << "\n set Surface patch radius = 1\nend\n"
-        << "subsection Materials\n set Materials = 0: E=" << E
-        << ", nu=" << nu << "\nend\n"
+        << "subsection Materials\n set Materials = 0: E=" << E << ", nu=" << nu
+        << "\nend\n"
         << "subsection Rigid foundation\n set Enabled = true\n"
         << " set Tie = boundary\n set Id = 4\n set Tied components = "
         << (model == Model::smooth ? "normal" : "all")
         << "\n set Moment = 1\nend\n";
     s << "subsection Boundary conditions\n"
          " set Dirichlet = 1: u=0, v=0, w=0; 2: u=0, v=0, w=0\nend\n";
+    // The study values and the O(h) order check were made with the
+    // standard element; Volumetric strain = auto would switch nu = 0.49 to
+    // bbar, whose pre-asymptotic order there is 1.7-1.8 (values unchanged
+    // within the tolerances).
+    s << "subsection Discretization\n set Volumetric strain = standard\nend\n";
     return s.str();
   }
 
@@ -126,12 +132,14 @@ namespace
             const double       k,
             const unsigned int cycles)
   {
-    const ResultsTable  results = test_support::run(footing_prm(model, nu, k, cycles));
-    const double        E       = 2 * 1000. * (1 + nu);
+    const ResultsTable results =
+      test_support::run(footing_prm(model, nu, k, cycles));
+    const double        E = 2 * 1000. * (1 + nu);
     std::vector<double> values;
     for (unsigned int c = 0; c < cycles; ++c)
-      values.push_back(
-        E * results.get("foundation_rotation", Harmonic{1, Family::symmetric}, c));
+      values.push_back(E * results.get("foundation_rotation",
+                                       Harmonic{1, Family::symmetric},
+                                       c));
     return values;
   }
 
@@ -140,7 +148,7 @@ namespace
   extrapolate(const std::vector<double> &v, double &order)
   {
     const double d1 = v[1] - v[0], d2 = v[2] - v[1];
-    order           = std::log2(d1 / d2);
+    order = std::log2(d1 / d2);
     return v[2] + d2 / (std::pow(2., order) - 1.);
   }
 
@@ -157,22 +165,22 @@ int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const auto start = std::chrono::steady_clock::now();
+  const auto                       start = std::chrono::steady_clock::now();
 
   for (unsigned int i = 0; i < 6; ++i)
     {
-      const double nu = nus[i];
-      double       p_b, p_k, p_s;
+      const double              nu = nus[i];
+      double                    p_b, p_k, p_s;
       const std::vector<double> bonded = rotations(Model::bonded, nu, 0, 3);
       const std::vector<double> k1e10 =
         rotations(Model::interface, nu, 1e10, 3);
       const std::vector<double> smooth = rotations(Model::smooth, nu, 0, 3);
-      const double ext_b = extrapolate(bonded, p_b);
-      const double ext_k = extrapolate(k1e10, p_k);
-      const double ext_s = extrapolate(smooth, p_s);
-      std::cout << std::setprecision(6) << "  nu = " << nu << ": bonded " << bonded[0] << " "
-                << bonded[1] << " " << bonded[2] << " -> " << ext_b
-                << " (p = " << p_b << "); k=1e10 -> " << ext_k
+      const double              ext_b  = extrapolate(bonded, p_b);
+      const double              ext_k  = extrapolate(k1e10, p_k);
+      const double              ext_s  = extrapolate(smooth, p_s);
+      std::cout << std::setprecision(6) << "  nu = " << nu << ": bonded "
+                << bonded[0] << " " << bonded[1] << " " << bonded[2] << " -> "
+                << ext_b << " (p = " << p_b << "); k=1e10 -> " << ext_k
                 << " (p = " << p_k << "); smooth " << smooth[2] << " -> "
                 << ext_s << " (p = " << p_s << ")" << std::endl;
 
@@ -186,24 +194,34 @@ main(int argc, char **argv)
       // 20 a x 25 e domain; our converged values (study: 4 levels, finer
       // base mesh) agree with the thesis within 0.3% (0.6% at nu = 0), the
       // test's mesh adds < 0.1%, the truncation < 0.01%.
-      check::relative(label("bonded vs thesis", nu), ext_b, thesis_bonded[i],
+      check::relative(label("bonded vs thesis", nu),
+                      ext_b,
+                      thesis_bonded[i],
                       0.02);
-      check::relative(label("k = 1e10 vs thesis", nu), ext_k, thesis_k1e10[i],
+      check::relative(label("k = 1e10 vs thesis", nu),
+                      ext_k,
+                      thesis_k1e10[i],
                       0.02);
       // 0.3%: the test's coarser base mesh vs the study's converged value
       // (the study shows 0.08% at nu = 0.3; margin for the other nu).
-      check::relative(label("bonded vs converged study value", nu), ext_b,
-                      study_bonded[i], 0.003);
+      check::relative(label("bonded vs converged study value", nu),
+                      ext_b,
+                      study_bonded[i],
+                      0.003);
       // k a / E_s >= 3e6: the interface compliance is ~ E_s / (k a) < 1e-6
       // of the rotation, so the k = 1e10 interface reproduces the bonded
       // contact (thesis: "parfaitement identiques") to round-off of the
       // extrapolation; 1e-4 allows for the different mesh (footing block).
-      check::relative(label("k = 1e10 vs bonded (same model)", nu), ext_k,
-                      ext_b, 1e-4);
+      check::relative(label("k = 1e10 vs bonded (same model)", nu),
+                      ext_k,
+                      ext_b,
+                      1e-4);
       // 1%: the study shows < 0.1% at this mesh, the rest is
       // margin (the study's 4-level value is within 0.02%).
-      check::relative(label("smooth vs 3(1-nu^2)/4", nu), ext_s,
-                      0.75 * (1 - nu * nu), 0.01);
+      check::relative(label("smooth vs 3(1-nu^2)/4", nu),
+                      ext_s,
+                      0.75 * (1 - nu * nu),
+                      0.01);
 
       // Ordering of the interface rows (thesis: the rotation decreases as
       // the interface stiffness grows): on the same coarse mesh the
@@ -211,9 +229,9 @@ main(int argc, char **argv)
       // ordering needs no extrapolation.
       const double k1e6 = rotations(Model::interface, nu, 1e6, 1)[0];
       const double k1e8 = rotations(Model::interface, nu, 1e8, 1)[0];
-      std::cout << std::setprecision(6) << "  nu = " << nu << ", coarse mesh: k=1e6 " << k1e6
-                << ", k=1e8 " << k1e8 << ", k=1e10 " << k1e10[0]
-                << std::endl;
+      std::cout << std::setprecision(6) << "  nu = " << nu
+                << ", coarse mesh: k=1e6 " << k1e6 << ", k=1e8 " << k1e8
+                << ", k=1e10 " << k1e10[0] << std::endl;
       check::that(label("theta(1e6) > theta(1e8) > theta(1e10)", nu),
                   k1e6 > k1e8 && k1e8 > k1e10[0]);
     }

@@ -25,8 +25,16 @@ import tempfile
 import zlib
 from collections import defaultdict
 
-import numpy as np
-import matplotlib
+# Debian's python3-matplotlib / python3-numpy import under /usr/bin/python3
+# only; another python3 first on PATH may lack them: re-run under Debian's.
+try:
+    import numpy as np
+    import matplotlib
+except ImportError:
+    if sys.executable != "/usr/bin/python3":
+        os.execv("/usr/bin/python3", ["/usr/bin/python3"] + sys.argv)
+    sys.exit(sys.argv[0] + ": needs numpy and matplotlib (Debian: apt-get "
+             "install python3-matplotlib python3-numpy)")
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402

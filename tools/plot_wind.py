@@ -14,9 +14,18 @@ import os
 import re
 import shutil
 import subprocess
+import sys
 import tempfile
 
-import matplotlib
+# Debian's python3-matplotlib imports under /usr/bin/python3 only; another
+# python3 first on PATH may lack it: re-run under Debian's interpreter.
+try:
+    import matplotlib
+except ImportError:
+    if sys.executable != "/usr/bin/python3":
+        os.execv("/usr/bin/python3", ["/usr/bin/python3"] + sys.argv)
+    sys.exit(sys.argv[0] + ": needs matplotlib (Debian: apt-get install "
+             "python3-matplotlib python3-numpy)")
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402

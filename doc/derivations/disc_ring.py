@@ -1,4 +1,4 @@
-#!/usr/bin/env python3
+#!/usr/bin/python3
 """Rigid disc (radius a = r0) displaced by ubar inside an elastic ring
 a <= r <= R, outer boundary fixed, plane strain: closed form (Michell n = 1
 solution, Baguelin, Frank & Said 1977) for a rough (u_r, u_theta continuous)
@@ -11,7 +11,7 @@ positive. The rigid disc moves u = ubar cos t, w = -ubar sin t (x-translation).
 P = force per unit length applied to the disc along +x = force the disc
 exerts on the soil = -pi r (Sr - T) (any r: equilibrium of the ring part).
 
-Run: python3 doc/derivations/disc_ring.py  (prints formulas, checks, numbers)
+Run: /usr/bin/python3 doc/derivations/disc_ring.py  (prints formulas, checks, numbers)
 """
 import sympy as sp
 

@@ -38,6 +38,13 @@ namespace FourierSSI
     void
     parse_parameters(ParameterHandler &prm);
 
+    /**
+     * Point refinement levels allowed: 25 halvings make a cell 3e-8 of its
+     * coarse size; near 30 the vertices of the smallest cells are no longer
+     * found within the lookup tolerance (round-off of their coordinates).
+     */
+    static constexpr unsigned int max_point_refinement_levels = 25;
+
     RefinementStrategy strategy        = RefinementStrategy::global;
     double             refine_fraction = 0.3;
     std::string        goal            = "all"; // K_H | K_M | K_MH | all

@@ -182,10 +182,22 @@ namespace FourierSSI
                          Vector<double>       &yy,
                          Vector<double>       &xy) const;
 
-    /** Reaction amplitudes K u - f without constraints (nodal forces). */
+    /**
+     * Reaction amplitudes K u - f without constraints (nodal forces), with
+     * the force at each hanging DoF moved to the DoFs it hangs from.
+     */
     Vector<double>
     nodal_reactions() const;
 
+    /**
+     * Resultant of the reactions on one boundary. Each constrained DoF is
+     * counted once: on the lowest Dirichlet boundary id whose entry fixes
+     * that DoF's component (a corner shared by ids 1 and 2 belongs to 1 for
+     * the components 1 fixes, to 2 for the others), so that the resultants
+     * of all Dirichlet ids sum to the total support reaction, which balances
+     * the applied loads. An id without a Dirichlet entry gets every DoF on
+     * it.
+     */
     BoundaryResultant
     boundary_resultant(const types::boundary_id boundary_id,
                        const Vector<double>    &reactions) const;

@@ -17,7 +17,8 @@
  * plus id 4 for the top faces with r < "Surface patch radius" (a footing
  * contact patch), when that radius is positive. Faces left free by removed
  * regions get id 3 (free surface); the faces on both sides of an interface
- * line get the line's id.
+ * line get the line's id. doc/scenes.md draws
+ * the same sketch.
  */
 #ifndef fourier_ssi_mesh_builder_h
 #define fourier_ssi_mesh_builder_h
@@ -58,7 +59,11 @@ namespace FourierSSI
     void
     parse_parameters(ParameterHandler &prm);
 
-    /** Build the coarse mesh and apply the initial global refinements. */
+    /**
+     * Build the coarse mesh and apply the initial global refinements; every
+     * later refinement of `triangulation` (a priori, cycles) is checked
+     * against Maximum DoFs before its cells are made.
+     */
     void
     build(Triangulation<2> &triangulation) const;
 
@@ -69,6 +74,16 @@ namespace FourierSSI
     double                    distortion           = 0.;
     unsigned int              global_refinements   = 0;
     std::string               mesh_file;
+    /**
+     * Refuse a mesh whose refinement would exceed this many DoFs per
+     * harmonic (estimated as 3 p^2 per cell, before the cells are made):
+     * a typo such as Global refinements = 12 would otherwise end in
+     * std::bad_alloc after minutes. The default, 2e6, is about 8 GB with
+     * the direct solver (4 kB per DoF, doc/scaling.md).
+     */
+    double maximum_dofs = 2e6;
+    /** Polynomial degree for that estimate (Discretization, set on parse). */
+    unsigned int degree = 2;
     /** (material id, box) pairs: cells with centre in the box get the id. */
     std::vector<std::pair<types::material_id, BoundingBox<2>>> material_regions;
     /** Cells with centre in one of these boxes are removed. */

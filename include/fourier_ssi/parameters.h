@@ -34,9 +34,16 @@ namespace FourierSSI
     bool                  automatic = false;
     std::vector<Harmonic> harmonics;
     unsigned int          degree = 2;
-    /** "standard" or "bbar" (projected dilatation, p = 2). */
-    std::string  volumetric        = "standard";
-    unsigned int refinement_cycles = 1;
+    /**
+     * "standard" or "bbar" (projected dilatation, p = 2): what is solved.
+     * The entry's default 'auto' is resolved when the parameters are read
+     * (AllParameters::parse_parameters): bbar for p = 2 when a material has
+     * nu >= locking_poisson_ratio, standard otherwise.
+     */
+    std::string volumetric = "standard";
+    /** True if `volumetric` was chosen by 'auto' (the log says so). */
+    bool         volumetric_automatic = false;
+    unsigned int refinement_cycles    = 1;
     /** Harmonics solved at the same time (threads); 0: one per core. */
     unsigned int concurrent_harmonics = 0;
   };
@@ -76,7 +83,13 @@ namespace FourierSSI
     bool write_interface_tractions = true;
     /** 3D reconstruction along lines at the angles theta_degrees. */
     std::vector<OutputLine> lines;
-    std::vector<double>     theta_degrees;
+    /**
+     * Limit of Lines 3D points per line: a typo such as 1e8 points would
+     * otherwise write gigabytes of CSV (each point is a search in the mesh
+     * and one row per angle).
+     */
+    static constexpr unsigned int max_points_per_line = 100000;
+    std::vector<double>           theta_degrees;
     /** The mesh revolved about the axis with the 3D displacement. */
     bool         write_3d_vtu    = false;
     unsigned int theta_divisions = 36;
