@@ -21,152 +21,7 @@ namespace FourierSSI
       return out.str();
     }
 
-    double
-    to_double(const std::string &text, const std::string &entry)
-    {
-      const std::string t   = Utilities::trim(text);
-      char             *end = nullptr;
-      const double      v   = std::strtod(t.c_str(), &end);
-      AssertThrow(!t.empty() && end == t.c_str() + t.size() && std::isfinite(v),
-                  ExcMessage(entry + ": '" + t + "' is not a number"));
-      return v;
-    }
-
-    types::boundary_id
-    to_boundary_id(const std::string &text, const std::string &entry)
-    {
-      const double v = to_double(text, entry);
-      AssertThrow(v >= 0. && v < 255. && v == std::floor(v),
-                  ExcMessage(entry + ": boundary id '" + Utilities::trim(text) +
-                             "' is not an integer in [0, 254]"));
-      return static_cast<types::boundary_id>(v);
-    }
   } // namespace
-
-  void
-  InterfaceParameters::declare_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Interfaces");
-    prm.declare_entry(
-      "Interfaces",
-      "",
-      Patterns::Anything(),
-      "Zero-thickness interfaces by boundary id (the id carried by the faces "
-      "on both sides of a double-node line), separated by ';': 'id: rough' "
-      "(kn = ks = 1e10 kPa/m), 'id: smooth' (kn = 1e10, ks = 0), "
-      "'id: kn=1e8, ks=0', or 'id: vermeer, mu=50[, material=m]' (Van Langen "
-      "& Vermeer 1991: ks = mu G/l, kn = mu G/((1-2nu) l), G and nu of "
-      "material m or of the side with the lower G, l the mean face length). "
-      "Exact limits without penalty (constraints, no conditioning cost): "
-      "'id: tied' (kn = ks = infinity) and 'id: tied-normal' (kn = infinity, "
-      "ks = 0). Empty: no interface.");
-    prm.declare_entry("Pairing tolerance",
-                      "1e-8",
-                      Patterns::Double(0.),
-                      "Twin faces and nodes must coincide within this "
-                      "fraction of the face length.");
-    prm.leave_subsection();
-  }
-
-  void
-  InterfaceParameters::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Interfaces");
-    laws              = parse_list(prm.get("Interfaces"));
-    pairing_tolerance = prm.get_double("Pairing tolerance");
-    prm.leave_subsection();
-  }
-
-  std::map<types::boundary_id, InterfaceLaw>
-  InterfaceParameters::parse_list(const std::string &text)
-  {
-    const std::string                          entry = "Interfaces/Interfaces";
-    std::map<types::boundary_id, InterfaceLaw> result;
-    for (const std::string &item : Utilities::split_string_list(text, ';'))
-      {
-        const auto colon = item.find(':');
-        AssertThrow(colon != std::string::npos,
-                    ExcMessage(entry + ": '" + item + "' lacks 'id:'"));
-        const types::boundary_id id =
-          to_boundary_id(item.substr(0, colon), entry);
-        AssertThrow(result.count(id) == 0,
-                    ExcMessage(entry + ": boundary id " + std::to_string(id) +
-                               " given twice"));
-        InterfaceLaw law;
-        bool preset = false, has_kn = false, has_ks = false, has_mu = false,
-             has_material = false;
-        for (const std::string &token :
-             Utilities::split_string_list(item.substr(colon + 1), ','))
-          {
-            const auto eq = token.find('=');
-            if (eq == std::string::npos)
-              {
-                AssertThrow(!preset,
-                            ExcMessage(entry + ": two laws for boundary id " +
-                                       std::to_string(id)));
-                preset = true;
-                if (token == "rough")
-                  law.normal = law.shear = 1e10;
-                else if (token == "smooth")
-                  law.normal = 1e10, law.shear = 0.;
-                else if (token == "vermeer")
-                  law.vermeer = true;
-                else if (token == "tied")
-                  law.tied = true;
-                else if (token == "tied-normal")
-                  law.tied_normal = true;
-                else
-                  AssertThrow(false,
-                              ExcMessage(entry + ": unknown law '" + token +
-                                         "' (expected rough, smooth, tied, "
-                                         "tied-normal, vermeer or kn=..., "
-                                         "ks=...)"));
-                continue;
-              }
-            const std::string key   = Utilities::trim(token.substr(0, eq));
-            const double      value = to_double(token.substr(eq + 1), entry);
-            AssertThrow(value >= 0.,
-                        ExcMessage(entry + ": " + key + " must be >= 0 in '" +
-                                   item + "'"));
-            if (key == "kn")
-              law.normal = value, has_kn = true;
-            else if (key == "ks")
-              law.shear = value, has_ks = true;
-            else if (key == "mu")
-              law.mu = value, has_mu = true;
-            else if (key == "material")
-              law.material = static_cast<int>(value), has_material = true;
-            else
-              AssertThrow(false,
-                          ExcMessage(entry + ": unknown key '" + key +
-                                     "' (expected kn, ks, mu or material)"));
-          }
-        const std::string where = " for boundary id " + std::to_string(id);
-        if (law.vermeer)
-          {
-            AssertThrow(has_mu && law.mu > 0. && !has_kn && !has_ks,
-                        ExcMessage(entry +
-                                   ": vermeer needs mu > 0 and no kn/ks" +
-                                   where));
-          }
-        else if (preset)
-          {
-            AssertThrow(!has_kn && !has_ks && !has_mu && !has_material,
-                        ExcMessage(entry + ": a preset takes no kn/ks/mu" +
-                                   where));
-          }
-        else
-          {
-            AssertThrow(has_kn && has_ks && !has_mu && !has_material,
-                        ExcMessage(entry +
-                                   ": give both kn and ks (or rough, "
-                                   "smooth, vermeer)" +
-                                   where));
-          }
-        result[id] = law;
-      }
-    return result;
-  }
 
   std::vector<InterfaceLine>
   parse_interface_lines(const std::string &text)
@@ -179,7 +34,7 @@ namespace FourierSSI
         AssertThrow(colon != std::string::npos,
                     ExcMessage(entry + ": '" + item + "' lacks 'id:'"));
         InterfaceLine line;
-        line.boundary_id = to_boundary_id(item.substr(0, colon), entry);
+        line.boundary_id = parse_boundary_id(item.substr(0, colon), entry);
         bool has_value = false, has_range = false;
         int  value_coordinate = -1, range_coordinate = -1;
         for (const std::string &token :
@@ -202,7 +57,7 @@ namespace FourierSSI
                 AssertThrow(!has_value,
                             ExcMessage(entry + ": two fixed coordinates in '" +
                                        item + "'"));
-                line.value       = to_double(rhs, entry);
+                line.value       = parse_number(rhs, entry);
                 value_coordinate = c;
                 has_value        = true;
               }
@@ -211,8 +66,8 @@ namespace FourierSSI
                 AssertThrow(!has_range,
                             ExcMessage(entry + ": two ranges in '" + item +
                                        "'"));
-                line.from        = to_double(rhs.substr(0, dots), entry);
-                line.to          = to_double(rhs.substr(dots + 2), entry);
+                line.from        = parse_number(rhs.substr(0, dots), entry);
+                line.to          = parse_number(rhs.substr(dots + 2), entry);
                 range_coordinate = c;
                 has_range        = true;
               }

@@ -239,6 +239,8 @@ namespace FourierSSI
     RigidFoundationParameters::declare_parameters(prm);
     AdaptivityParameters::declare_parameters(prm);
     LoadParameters::declare_parameters(prm);
+    InitialStressParameters::declare_parameters(prm);
+    NonlinearInterfaceParameters::declare_parameters(prm);
   }
 
   void
@@ -255,6 +257,8 @@ namespace FourierSSI
     rigid_foundation.parse_parameters(prm);
     adaptivity.parse_parameters(prm);
     loads.parse_parameters(prm);
+    initial_stress.parse_parameters(prm);
+    nonlinear_interfaces.parse_parameters(prm);
     for (const auto &[id, e] : loads.displacement)
       AssertThrow(boundary_conditions.dirichlet.count(id) == 0,
                   ExcMessage("Loads/Prescribed displacement: boundary id " +
