@@ -39,8 +39,8 @@ namespace FourierSSI
                       "1e-10",
                       Patterns::Double(0.),
                       "Converged when |out-of-balance force| <= Tolerance "
-                      "(|applied load| + |interface correction load|), 2-norms "
-                      "over all harmonics.");
+                      "|applied load| (2-norms over all harmonics; the "
+                      "interface tractions then balance the load to it).");
     prm.declare_entry("Maximum iterations",
                       "2000",
                       Patterns::Integer(1),

@@ -15,9 +15,9 @@
  *   3. the out-of-balance load G_h = int B_h^T D d_p, theta-integrated with
  *      the trapezoidal rule against each harmonic's factor and through the
  *      element's shape functions (the same B that gives the closed-form K);
- *   4. force residual R = G - c; converged if |R| <= tolerance (|lambda F|
- *      + |G|) (2-norms over all harmonics); else c <- c + omega R and
- *      u <- lambda u_F + K^-1 c, all harmonics re-solved with their kept
+ *   4. force residual R = G - c; converged if |R| <= tolerance |lambda F|
+ *      (|G| if lambda F = 0; 2-norms over all harmonics); else c <- c + omega R
+ * and u <- lambda u_F + K^-1 c, all harmonics re-solved with their kept
  *      factorizations (HarmonicSet::solve_increments), omega from Aitken's
  *      Delta^2 rule (or 1).
  * Load control scales the scene's loads by lambda; displacement control
@@ -111,6 +111,16 @@ namespace FourierSSI
      */
     std::array<double, 6>
     applied_loads(const double load_factor) const;
+
+    /**
+     * int int B_h^T D d r ds dtheta of the relative displacement d of the
+     * given fields (one per harmonic), condensed: the elastic force of the
+     * nonlinear interfaces computed through the theta sampling and the Gauss
+     * points, which must equal the closed-form K_interface u (a check of the
+     * projection that builds the out-of-balance loads).
+     */
+    std::vector<Vector<double>>
+    interface_force(const std::vector<Vector<double>> &fields) const;
 
     /** Number of Gauss points of the nonlinear interfaces. */
     unsigned int

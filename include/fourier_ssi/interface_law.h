@@ -8,9 +8,10 @@
  * Sign convention, used everywhere in fourier-ssi: local components
  * (s, n, theta) of the interface element (doc/interfaces-usage.md, section
  * 4); the relative displacement is face B minus face A, positive d_n is an
- * opening; the traction t = (t_s, t_n, t_theta) is the force per unit area
- * that side A exerts on side B, so t_n > 0 is a TENSION and compression is
- * negative (the thesis writes sigma_n = -t_n, compression positive).
+ * opening; the traction t = (t_s, t_n, t_theta) = sigma n is the stress
+ * vector on the face of side A (outward normal n), i.e. the force per unit
+ * area that side B exerts on side A, so t_n > 0 is a TENSION and compression
+ * is negative (the thesis writes sigma_n = -t_n, compression positive).
  */
 #ifndef fourier_ssi_interface_law_h
 #define fourier_ssi_interface_law_h
