@@ -77,7 +77,10 @@ namespace FourierSSI
   AdaptivityParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Adaptivity");
-    strategy        = prm.get("Strategy");
+    const std::string strategy_name = prm.get("Strategy");
+    strategy        = strategy_name == "kelly" ? RefinementStrategy::kelly :
+                      strategy_name == "goal"  ? RefinementStrategy::goal :
+                                                 RefinementStrategy::global;
     refine_fraction = prm.get_double("Refine fraction");
     goal            = prm.get("Goal");
     goal_tolerance  = prm.get_double("Goal tolerance");

@@ -121,8 +121,14 @@ namespace FourierSSI
               }
             csv << all_rows[owner][c];
           }
-        // Like a single run: no results file unless every case succeeded.
-        if (exit_code == 0)
+        // The succeeded cases' rows are written (a failed case has none);
+        // the failed ones are listed on stderr and the exit code is 1. With
+        // no case succeeded there is no file, not even an earlier one.
+        std::filesystem::remove(csv_file);
+        unsigned int n_ok = 0;
+        for (unsigned int c = 0; c < cases.size(); ++c)
+          n_ok += all_status[c % n_ranks][c] == "ok";
+        if (n_ok > 0)
           {
             std::ofstream file(csv_file);
             file << csv.str();
@@ -133,9 +139,15 @@ namespace FourierSSI
                 exit_code = 1;
               }
             else
-              out << cases.size() << " cases on " << n_ranks
-                  << " ranks, results written to " << csv_file << std::endl;
+              out << n_ok << " of " << cases.size() << " cases succeeded on "
+                  << n_ranks << " ranks, their results written to " << csv_file
+                  << std::endl;
           }
+        if (n_ok < cases.size())
+          err << "fourier-ssi: error: --batch: " << cases.size() - n_ok
+              << " of " << cases.size() << " cases failed (listed above)"
+              << (n_ok > 0 ? "; " + csv_file + " holds the others" : "")
+              << std::endl;
       }
     return Utilities::MPI::broadcast(communicator, exit_code, 0);
   }

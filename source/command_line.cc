@@ -128,7 +128,7 @@ namespace FourierSSI
         AllParameters parameters;
         parameters.read_file(prm_file);
         if (!parameters.solver.is_direct() ||
-            parameters.solver.distributed == "always")
+            parameters.solver.distributed_always)
           start_mpi();
         out << "fourier-ssi: " << prm_file << std::endl;
         Simulator simulator(parameters, communicator);

@@ -6,10 +6,21 @@
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
+#include <fourier_ssi/assembly_loop.h>
 #include <fourier_ssi/distributed_linear_system.h>
 
 namespace FourierSSI
 {
+  bool
+  uses_distributed_solve(const LinearSolver &solver,
+                         const MPI_Comm      communicator)
+  {
+    // (Library users and unit tests may not have initialized MPI.)
+    return Utilities::MPI::job_supports_mpi() &&
+           (Utilities::MPI::n_mpi_processes(communicator) > 1 ||
+            solver.distributed_always);
+  }
+
   DistributedLinearSystem::DistributedLinearSystem(
     const MPI_Comm      communicator,
     const LinearSolver &solver_parameters)
@@ -91,35 +102,15 @@ namespace FourierSSI
                                     Vector<double>    &rhs)
   {
     matrix = 0.;
-    Vector<double>                       local_rhs(dof_handler->n_dofs());
-    FullMatrix<double>                   cell_matrix;
-    Vector<double>                       cell_rhs;
-    std::vector<types::global_dof_index> dof_indices(
-      dof_handler->get_fe().n_dofs_per_cell());
-    for (const auto &cell : dof_handler->active_cell_iterators())
-      if (cell_partition[cell->active_cell_index()] == rank)
-        {
-          local_matrix(cell, cell_matrix, &cell_rhs);
-          cell->get_dof_indices(dof_indices);
-          constraints->distribute_local_to_global(
-            cell_matrix, cell_rhs, dof_indices, matrix, local_rhs);
-        }
-    Timer interface_timer;
-    if (interfaces)
-      {
-        FullMatrix<double>                   merged;
-        std::vector<types::global_dof_index> unique_dofs;
-        const auto                          &pairs = interfaces->get_pairs();
-        for (unsigned int i = 0; i < pairs.size(); ++i)
-          if (cell_partition[pairs[i].cells[0]] == rank)
-            {
-              interfaces->merged_matrix(i, merged, unique_dofs);
-              Vector<double> pair_rhs(unique_dofs.size());
-              constraints->distribute_local_to_global(
-                merged, pair_rhs, unique_dofs, matrix, local_rhs);
-            }
-      }
-    const double interface_time = interface_timer.wall_time();
+    Vector<double> local_rhs(dof_handler->n_dofs());
+    const double   interface_time = assemble_owned(
+      *dof_handler,
+      *constraints,
+      interfaces,
+      [this](const unsigned int cell) { return cell_partition[cell] == rank; },
+      local_matrix,
+      matrix,
+      local_rhs);
     // Rows written on other ranks are summed into their owners here.
     matrix.compress(VectorOperation::add);
     // The load is replicated (postprocessing needs it whole): sum the parts.
@@ -135,7 +126,7 @@ namespace FourierSSI
   {
     const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
     SolverReport       report;
-    report.method = parameters.method + " (" + std::to_string(n_ranks) +
+    report.method = parameters.method_name() + " (" + std::to_string(n_ranks) +
                     " ranks, " +
                     (parameters.is_direct() ? "MUMPS" : "Trilinos") + ")";
     // Same shortcut as the serial solver: a zero load has the zero solution.

@@ -4,7 +4,8 @@
 
 namespace FourierSSI
 {
-  GoalEstimator::GoalEstimator(const AllParameters &parameters)
+  GoalEstimator::GoalEstimator(const AllParameters         &parameters,
+                               const std::vector<Harmonic> &planned_harmonics)
     : enriched_parameters(parameters)
     , goal(parameters.adaptivity.goal)
   {
@@ -14,12 +15,13 @@ namespace FourierSSI
                            "foundation/Enabled and Stiffness coefficients = "
                            "true (the goals are K_H, K_M, K_MH)"));
     bool has_n1 = false;
-    for (const Harmonic &h : parameters.discretization.harmonics)
+    for (const Harmonic &h : planned_harmonics)
       has_n1 |= (h.n == 1 && h.family == Family::symmetric);
     AssertThrow(has_n1,
                 ExcMessage("Adaptivity/Strategy = goal needs the harmonic "
                            "n = 1, symmetric family (Discretization/"
-                           "Harmonics)"));
+                           "Harmonics, or Harmonics = auto with the "
+                           "stiffness coefficients)"));
     // The error is estimated with the next element of the nested pair
     // FE_Q(2) in FE_Q(4) (the only degrees with interface elements).
     AssertThrow(parameters.discretization.degree == 2,

@@ -1,3 +1,7 @@
+// HarmonicProblem, part 1: the element, DoFs and constraints, the assembly
+// (cells and closed-form interface pairs through one loop), the solves and
+// the kept factorization. Parts 2-4: bbar_projection.cc,
+// harmonic_postprocessing.cc, harmonic_output.cc.
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -9,6 +13,7 @@
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
+#include <fourier_ssi/assembly_loop.h>
 #include <fourier_ssi/axis_constraints.h>
 #include <fourier_ssi/harmonic_problem.h>
 #include <fourier_ssi/sparse_direct.h>
@@ -73,10 +78,7 @@ namespace FourierSSI
       interfaces = std::make_unique<InterfaceIntegrator>(parameters.interfaces,
                                                          parameters.materials,
                                                          harmonic);
-    // (Library users and unit tests may not have initialized MPI.)
-    if (Utilities::MPI::job_supports_mpi() &&
-        (Utilities::MPI::n_mpi_processes(communicator) > 1 ||
-         parameters.solver.distributed == "always"))
+    if (uses_distributed_solve(parameters.solver, communicator))
       distributed =
         std::make_unique<DistributedLinearSystem>(communicator,
                                                   parameters.solver);
@@ -147,6 +149,11 @@ namespace FourierSSI
                                         axis_tolerance,
                                         constraints);
     constraints.close();
+    homogeneous_constraints.clear();
+    homogeneous_constraints.copy_from(constraints);
+    for (const auto &line : constraints.get_lines())
+      homogeneous_constraints.set_inhomogeneity(line.index, 0.);
+    factorization.reset();
 
     system_rhs.reinit(dof_handler.n_dofs());
     solution.reinit(dof_handler.n_dofs());
@@ -254,162 +261,6 @@ namespace FourierSSI
       local_traction(cell, *rhs);
   }
 
-  namespace
-  {
-    /**
-     * The L2(r dr dz) projection of one cell onto the linear polynomials
-     * {1, r - r_c, z - z_c} (r_c, z_c: the cell's r-weighted centroid), from
-     * the cell's quadrature: the volumetric space of the stable Q2-P1disc
-     * mixed element, used by B-bar.
-     */
-    struct LinearProjection
-    {
-      explicit LinearProjection(const FEValues<2> &fe_values)
-        : n_q(fe_values.n_quadrature_points)
-        , dV(n_q)
-        , points(n_q)
-        , inverse(3, 3)
-      {
-        double volume = 0.;
-        for (unsigned int q = 0; q < n_q; ++q)
-          {
-            points[q] = fe_values.quadrature_point(q);
-            dV[q]     = points[q][0] * fe_values.JxW(q);
-            center += dV[q] * points[q];
-            volume += dV[q];
-          }
-        valid = volume > 0.; // a degenerate cell (zero r-weighted volume)
-        if (!valid)
-          return;
-        center /= volume;
-        FullMatrix<double> mass(3, 3);
-        for (unsigned int q = 0; q < n_q; ++q)
-          {
-            const auto p = basis(points[q]);
-            for (unsigned int a = 0; a < 3; ++a)
-              for (unsigned int b = 0; b < 3; ++b)
-                mass(a, b) += p[a] * p[b] * dV[q];
-          }
-        inverse.invert(mass);
-      }
-
-      std::array<double, 3>
-      basis(const Point<2> &x) const
-      {
-        const Tensor<1, 2> d = x - center;
-        return {{1., d[0], d[1]}};
-      }
-
-      /** Coefficients of the projection of f, given at the quadrature points.
-       */
-      std::array<double, 3>
-      project(const std::vector<double> &f) const
-      {
-        std::array<double, 3> moments = {{0., 0., 0.}}, c = {{0., 0., 0.}};
-        for (unsigned int q = 0; q < n_q; ++q)
-          {
-            const auto p = basis(points[q]);
-            for (unsigned int a = 0; a < 3; ++a)
-              moments[a] += p[a] * f[q] * dV[q];
-          }
-        for (unsigned int a = 0; a < 3; ++a)
-          for (unsigned int b = 0; b < 3; ++b)
-            c[a] += inverse(a, b) * moments[b];
-        return c;
-      }
-
-      unsigned int          n_q;
-      std::vector<double>   dV;
-      std::vector<Point<2>> points;
-      Point<2>              center;
-      FullMatrix<double>    inverse;
-      bool                  valid = false;
-    };
-  } // namespace
-
-  void
-  HarmonicProblem::replace_dilatation(
-    const FEValues<2>                      &fe_values,
-    std::vector<std::vector<StrainVector>> &strain_at) const
-  {
-    // B-bar (Hughes 1980): the dilatation e_r + e_z + e_t of each shape
-    // function is replaced by its projection onto the cell's linear
-    // polynomials (LinearProjection); the deviatoric part is kept. The
-    // dilatation carries the in-plane trig factor for every n, so the same
-    // projection serves every harmonic.
-    const LinearProjection projection(fe_values);
-    if (!projection.valid)
-      return; // a degenerate cell: leave the strains alone
-    const unsigned int  n_q           = strain_at.size();
-    const unsigned int  dofs_per_cell = strain_at[0].size();
-    std::vector<double> dilatation(n_q);
-    for (unsigned int i = 0; i < dofs_per_cell; ++i)
-      {
-        for (unsigned int q = 0; q < n_q; ++q)
-          dilatation[q] =
-            strain_at[q][i][0] + strain_at[q][i][1] + strain_at[q][i][2];
-        const DilatationProjection projected{projection.center,
-                                             projection.project(dilatation)};
-        for (unsigned int q = 0; q < n_q; ++q)
-          strain_at[q][i] =
-            with_dilatation(strain_at[q][i],
-                            projected.value(projection.points[q]));
-      }
-  }
-
-  void
-  HarmonicProblem::project_solution_dilatation()
-  {
-    dilatation_projection.clear();
-    if (parameters.discretization.volumetric != "bbar" || fe->degree != 2)
-      return;
-    FEValues<2>                           &fe_values = *cell_values;
-    const unsigned int                     n_q = fe_values.n_quadrature_points;
-    std::vector<Vector<double>>            values(n_q, Vector<double>(3));
-    std::vector<std::vector<Tensor<1, 2>>> gradients(
-      n_q, std::vector<Tensor<1, 2>>(3));
-    std::vector<double> dilatation(n_q);
-    dilatation_projection.resize(
-      dof_handler.get_triangulation().n_active_cells());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        fe_values.reinit(cell);
-        const LinearProjection projection(fe_values);
-        if (!projection.valid)
-          continue; // no correction: value() of a default projection is NaN
-        fe_values.get_function_values(solution, values);
-        fe_values.get_function_gradients(solution, gradients);
-        for (unsigned int q = 0; q < n_q; ++q)
-          {
-            std::array<double, 3>       v;
-            std::array<Tensor<1, 2>, 3> g;
-            for (unsigned int c = 0; c < 3; ++c)
-              {
-                v[c] = values[q](c);
-                g[c] = gradients[q][c];
-              }
-            const StrainVector e =
-              harmonic_operator.strain(v, g, projection.points[q][0]);
-            dilatation[q] = e[0] + e[1] + e[2];
-          }
-        dilatation_projection[cell->active_cell_index()] = {
-          projection.center, projection.project(dilatation)};
-      }
-  }
-
-  StrainVector
-  HarmonicProblem::output_strain(
-    const typename Triangulation<2>::active_cell_iterator &cell,
-    const Point<2>                                        &x,
-    const std::array<double, 3>                           &values,
-    const std::array<Tensor<1, 2>, 3>                     &gradients) const
-  {
-    return bbar_strain(harmonic_operator.strain(values, gradients, x[0]),
-                       dilatation_projection,
-                       cell->active_cell_index(),
-                       x);
-  }
-
   void
   HarmonicProblem::local_traction(
     const typename DoFHandler<2>::active_cell_iterator &cell,
@@ -465,24 +316,18 @@ namespace FourierSSI
           foundation->add_loads(system_rhs);
         return;
       }
-    system_matrix = 0.;
-    system_rhs    = 0.;
-    FullMatrix<double>                   cell_matrix;
-    Vector<double>                       cell_rhs;
-    std::vector<types::global_dof_index> dof_indices(fe->n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        local_matrix(cell, cell_matrix, &cell_rhs);
-        cell->get_dof_indices(dof_indices);
-        constraints.distribute_local_to_global(
-          cell_matrix, cell_rhs, dof_indices, system_matrix, system_rhs);
-      }
-    if (interfaces)
-      {
-        Timer timer;
-        interfaces->assemble(constraints, system_matrix, system_rhs);
-        time_interface_assembly = timer.wall_time();
-      }
+    system_matrix           = 0.;
+    system_rhs              = 0.;
+    time_interface_assembly = assemble_owned(
+      dof_handler,
+      constraints,
+      interfaces.get(),
+      [](const unsigned int) { return true; },
+      [this](const auto &cell, auto &matrix, auto *rhs) {
+        local_matrix(cell, matrix, rhs);
+      },
+      system_matrix,
+      system_rhs);
     // Foundation loads act on the (unconstrained) master DoFs.
     if (foundation)
       foundation->add_loads(system_rhs);
@@ -514,13 +359,64 @@ namespace FourierSSI
 
   FoundationCoefficients
   HarmonicProblem::foundation_coefficients(
-    std::vector<Vector<double>> *unit_solutions) const
+    std::vector<Vector<double>> *unit_solutions)
   {
     AssertThrow(foundation, ExcMessage("Rigid foundation is not enabled"));
-    SparseDirect direct(parameters.solver.direct_backend());
-    if (!distributed)
-      direct.initialize(system_matrix);
-    return unit_load_coefficients(direct, unit_solutions);
+    if (distributed)
+      {
+        const SparseDirect unused(parameters.solver.direct_backend());
+        return unit_load_coefficients(unused, unit_solutions);
+      }
+    // The kept factorization, built here if the scene solve did not need
+    // one (a zero scene load, or cg-amg for the scene load).
+    factorize();
+    if (!factorization)
+      {
+        SparseDirect direct(parameters.solver.direct_backend());
+        direct.initialize(system_matrix);
+        return unit_load_coefficients(direct, unit_solutions);
+      }
+    return unit_load_coefficients(*factorization, unit_solutions);
+  }
+
+  void
+  HarmonicProblem::factorize()
+  {
+    if (distributed || factorization || !parameters.solver.is_direct())
+      return;
+    factorization =
+      std::make_unique<SparseDirect>(parameters.solver.direct_backend());
+    factorization->initialize(system_matrix);
+    ++factorization_count;
+  }
+
+  void
+  HarmonicProblem::solve_increments(std::vector<Vector<double>> &b_to_x) const
+  {
+    if (distributed)
+      for (Vector<double> &x : b_to_x)
+        {
+          const Vector<double> b(x);
+          x = 0.;
+          distributed->solve(x, b);
+        }
+    else if (factorization)
+      factorization->solve(b_to_x);
+    else
+      for (Vector<double> &x : b_to_x)
+        {
+          const Vector<double> b(x);
+          parameters.solver.solve(system_matrix, x, b, dof_handler);
+        }
+    for (Vector<double> &x : b_to_x)
+      homogeneous_constraints.distribute(x);
+  }
+
+  void
+  HarmonicProblem::set_solution(const Vector<double> &new_solution)
+  {
+    solution = new_solution;
+    project_solution_dilatation();
   }
 
   SolverReport
@@ -539,10 +435,10 @@ namespace FourierSSI
         coefficients              = foundation_coefficients(unit_solutions);
         return report;
       }
-    SparseDirect direct(parameters.solver.direct_backend());
-    direct.initialize(system_matrix);
-    SolverReport report;
-    report.method = parameters.solver.method +
+    factorize();
+    const SparseDirect &direct = *factorization;
+    SolverReport        report;
+    report.method = parameters.solver.method_name() +
                     " (factorization shared with the unit H, M cases)";
     direct.vmult(solution, system_rhs);
     Vector<double> residual(system_rhs.size());
@@ -594,272 +490,10 @@ namespace FourierSSI
   void
   HarmonicProblem::free_system()
   {
+    factorization.reset();
     system_matrix.clear();
     sparsity_pattern.reinit(0, 0, 0);
     system_rhs.reinit(0);
   }
 
-  double
-  HarmonicProblem::strain_energy(const Vector<double> &field) const
-  {
-    FullMatrix<double>                   cell_matrix;
-    std::vector<types::global_dof_index> dof_indices(fe->n_dofs_per_cell());
-    Vector<double> local(fe->n_dofs_per_cell()), product(fe->n_dofs_per_cell());
-    double         energy = 0.;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        cell->get_dof_indices(dof_indices);
-        for (unsigned int i = 0; i < dof_indices.size(); ++i)
-          local(i) = field(dof_indices[i]);
-        // A cell at rest stores no energy (e.g. the zero scene field of a
-        // stiffness run): skip its matrix.
-        if (local.linfty_norm() == 0.)
-          continue;
-        local_matrix(cell, cell_matrix, nullptr);
-        cell_matrix.vmult(product, local);
-        energy += 0.5 * (local * product);
-      }
-    if (interfaces)
-      energy += interfaces->energy(field);
-    return energy;
-  }
-
-  void
-  HarmonicProblem::cell_energy_products(const Vector<double> &x,
-                                        const Vector<double> &y,
-                                        Vector<double>       &xx,
-                                        Vector<double>       &yy,
-                                        Vector<double>       &xy) const
-  {
-    const unsigned int n_cells =
-      dof_handler.get_triangulation().n_active_cells();
-    xx.reinit(n_cells);
-    yy.reinit(n_cells);
-    xy.reinit(n_cells);
-    FullMatrix<double>                   cell_matrix;
-    std::vector<types::global_dof_index> dof_indices(fe->n_dofs_per_cell());
-    Vector<double> local_x(fe->n_dofs_per_cell()), local_y(local_x),
-      product_x(local_x), product_y(local_x);
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        local_matrix(cell, cell_matrix, nullptr);
-        cell->get_dof_indices(dof_indices);
-        for (unsigned int i = 0; i < dof_indices.size(); ++i)
-          {
-            local_x(i) = x(dof_indices[i]);
-            local_y(i) = y(dof_indices[i]);
-          }
-        cell_matrix.vmult(product_x, local_x);
-        cell_matrix.vmult(product_y, local_y);
-        const unsigned int c = cell->active_cell_index();
-        xx(c)                = local_x * product_x;
-        yy(c)                = local_y * product_y;
-        xy(c)                = local_x * product_y;
-      }
-  }
-
-  Vector<double>
-  HarmonicProblem::nodal_reactions() const
-  {
-    FullMatrix<double>                   cell_matrix;
-    Vector<double>                       cell_rhs;
-    std::vector<types::global_dof_index> dof_indices(fe->n_dofs_per_cell());
-    Vector<double> local(fe->n_dofs_per_cell()), product(fe->n_dofs_per_cell());
-    Vector<double> reactions(dof_handler.n_dofs());
-    // Without a body force, a cell at rest exerts no nodal force.
-    const bool body_force_given =
-      !parameters.boundary_conditions.body_force.is_zero();
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        cell->get_dof_indices(dof_indices);
-        for (unsigned int i = 0; i < dof_indices.size(); ++i)
-          local(i) = solution(dof_indices[i]);
-        if (!body_force_given && local.linfty_norm() == 0.)
-          continue;
-        local_matrix(cell, cell_matrix, &cell_rhs);
-        cell_matrix.vmult(product, local);
-        product -= cell_rhs;
-        for (unsigned int i = 0; i < dof_indices.size(); ++i)
-          reactions(dof_indices[i]) += product(i);
-      }
-    if (interfaces)
-      interfaces->add_reactions(solution, reactions);
-    return reactions;
-  }
-
-  BoundaryResultant
-  HarmonicProblem::boundary_resultant(const types::boundary_id boundary_id,
-                                      const Vector<double>    &reactions) const
-  {
-    BoundaryResultant result;
-    const IndexSet    boundary_dofs =
-      DoFTools::extract_boundary_dofs(dof_handler,
-                                      ComponentMask(),
-                                      {boundary_id});
-    std::map<types::global_dof_index, Point<2>> positions;
-    DoFTools::map_dofs_to_support_points(MappingQ1<2>(),
-                                         dof_handler,
-                                         positions);
-
-    const Harmonic &h    = harmonic_operator.get_harmonic();
-    const double    sign = family_sign(h.family);
-    // Component of each DoF: the FESystem numbering is not component-wise,
-    // so look it up per cell once.
-    std::vector<unsigned int>            component_of(dof_handler.n_dofs());
-    std::vector<types::global_dof_index> dof_indices(fe->n_dofs_per_cell());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        cell->get_dof_indices(dof_indices);
-        for (unsigned int i = 0; i < dof_indices.size(); ++i)
-          component_of[dof_indices[i]] = fe->system_to_component_index(i).first;
-      }
-    for (const auto i : boundary_dofs)
-      {
-        const unsigned int c = component_of[i];
-        const double       R = reactions(i);
-        const Point<2>    &x = positions[i];
-        result.component_sums[c] += R;
-        result.work += R * solution(i);
-        if (h.n == 1)
-          {
-            // H = sum R_r - s R_theta; M = sum z (R_r - s R_theta) - r R_z,
-            // from the resultant of t_r, t_theta, t_z over the full circle.
-            const double horizontal =
-              (c == 0 ? R : 0.) - (c == 2 ? sign * R : 0.);
-            result.force += horizontal;
-            result.moment += x[1] * horizontal - (c == 1 ? x[0] * R : 0.);
-          }
-        else if (h.n == 0 && h.family == Family::symmetric && c == 1)
-          result.force += R;
-        else if (h.n == 0 && h.family == Family::antisymmetric && c == 2)
-          result.moment += x[0] * R;
-      }
-    return result;
-  }
-
-  ErrorNorms
-  HarmonicProblem::compute_errors() const
-  {
-    ErrorNorms errors;
-    AssertThrow(parameters.exact_solution.enabled,
-                ExcMessage("Exact solution/Enabled is false"));
-    FunctionParser<2> exact(3, 0., 1e-4);
-    {
-      const auto &e = parameters.exact_solution.amplitudes.expression;
-      exact.initialize("r,z",
-                       std::vector<std::string>(e.begin(), e.end()),
-                       {{"pi", numbers::PI},
-                        {"n", double(harmonic_operator.get_harmonic().n)}});
-      exact.set_formula(AutoDerivativeFunction<2>::FourthOrder);
-    }
-    const QGauss<2>             quadrature(fe->degree + 3);
-    FEValues<2>                 fe_values(*fe,
-                          quadrature,
-                          update_values | update_gradients |
-                            update_quadrature_points | update_JxW_values);
-    std::vector<Vector<double>> values(quadrature.size(), Vector<double>(3));
-    std::vector<std::vector<Tensor<1, 2>>> gradients(
-      quadrature.size(), std::vector<Tensor<1, 2>>(3));
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      {
-        fe_values.reinit(cell);
-        fe_values.get_function_values(solution, values);
-        fe_values.get_function_gradients(solution, gradients);
-        for (const unsigned int q : fe_values.quadrature_point_indices())
-          {
-            const Point<2> &x  = fe_values.quadrature_point(q);
-            const double    dV = x[0] * fe_values.JxW(q);
-            for (unsigned int c = 0; c < 3; ++c)
-              {
-                const double       u  = exact.value(x, c);
-                const Tensor<1, 2> du = exact.gradient(x, c);
-                errors.l2 += (values[q](c) - u) * (values[q](c) - u) * dV;
-                errors.h1_seminorm += (gradients[q][c] - du).norm_square() * dV;
-                errors.l2_exact += u * u * dV;
-                errors.h1_exact += du.norm_square() * dV;
-              }
-          }
-      }
-    errors.l2          = std::sqrt(errors.l2);
-    errors.h1_seminorm = std::sqrt(errors.h1_seminorm);
-    errors.l2_exact    = std::sqrt(errors.l2_exact);
-    errors.h1_exact    = std::sqrt(errors.h1_exact);
-    return errors;
-  }
-
-  std::vector<std::string>
-  HarmonicProblem::write_vtu(const std::string &filename) const
-  {
-    StressPostprocessor postprocessor(harmonic_operator,
-                                      parameters.materials,
-                                      dilatation_projection);
-    DataOut<2>          data_out;
-    data_out.attach_dof_handler(dof_handler);
-    data_out.add_data_vector(solution,
-                             std::vector<std::string>{"U_radial",
-                                                      "V_axial",
-                                                      "W_circumferential"});
-    if (parameters.output.write_stresses)
-      data_out.add_data_vector(solution, postprocessor);
-    Vector<float> material_ids(
-      dof_handler.get_triangulation().n_active_cells());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      material_ids(cell->active_cell_index()) = cell->material_id();
-    data_out.add_data_vector(material_ids, "material_id");
-    if (distributed)
-      return write_vtu_pieces(data_out, filename);
-    data_out.build_patches(fe->degree);
-    std::ofstream out(filename);
-    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
-    data_out.write_vtu(out);
-    return {filename};
-  }
-
-  std::vector<std::string>
-  HarmonicProblem::write_vtu_pieces(DataOut<2>        &data_out,
-                                    const std::string &filename) const
-  {
-    // Each rank writes its own cells as NAME.rankR.vtu; rank 0 writes the
-    // NAME.pvtu record that ParaView opens.
-    const unsigned int rank = distributed->this_rank();
-    const unsigned int n_ranks =
-      Utilities::MPI::n_mpi_processes(distributed->get_communicator());
-    Vector<float> ranks(dof_handler.get_triangulation().n_active_cells());
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      ranks(cell->active_cell_index()) =
-        distributed->cell_owner(cell->active_cell_index());
-    data_out.add_data_vector(ranks, "rank");
-    data_out.set_cell_selection(
-      [this, rank](const typename Triangulation<2>::cell_iterator &cell) {
-        return cell->is_active() &&
-               distributed->cell_owner(cell->active_cell_index()) == rank;
-      });
-    data_out.build_patches(fe->degree);
-    const std::string base =
-      filename.size() > 4 && filename.substr(filename.size() - 4) == ".vtu" ?
-        filename.substr(0, filename.size() - 4) :
-        filename;
-    const auto piece = [&](const unsigned int r) {
-      return base + ".rank" + std::to_string(r) + ".vtu";
-    };
-    std::vector<std::string> written = {piece(rank)};
-    std::ofstream            out(piece(rank));
-    AssertThrow(out, ExcMessage("Output: cannot write '" + piece(rank) + "'"));
-    data_out.write_vtu(out);
-    if (rank == 0)
-      {
-        std::vector<std::string> pieces;
-        for (unsigned int r = 0; r < n_ranks; ++r)
-          {
-            const std::string p = piece(r);
-            pieces.push_back(p.substr(p.find_last_of('/') + 1));
-          }
-        std::ofstream record(base + ".pvtu");
-        AssertThrow(record,
-                    ExcMessage("Output: cannot write '" + base + ".pvtu'"));
-        data_out.write_pvtu_record(record, pieces);
-        written.push_back(base + ".pvtu");
-      }
-    return written;
-  }
 } // namespace FourierSSI

@@ -219,22 +219,6 @@ namespace FourierSSI
   }
 
   void
-  InterfaceIntegrator::assemble(const AffineConstraints<double> &constraints,
-                                SparseMatrix<double>            &matrix,
-                                Vector<double>                  &rhs) const
-  {
-    FullMatrix<double>                   merged;
-    std::vector<types::global_dof_index> unique_dofs;
-    for (unsigned int i = 0; i < pairs.size(); ++i)
-      {
-        merged_matrix(i, merged, unique_dofs);
-        Vector<double> local_rhs(unique_dofs.size());
-        constraints.distribute_local_to_global(
-          merged, local_rhs, unique_dofs, matrix, rhs);
-      }
-  }
-
-  void
   InterfaceIntegrator::add_reactions(const Vector<double> &u,
                                      Vector<double>       &reactions) const
   {

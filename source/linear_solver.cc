@@ -51,12 +51,23 @@ namespace FourierSSI
   LinearSolver::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
-    method         = prm.get("Method");
-    tolerance      = prm.get_double("Tolerance");
-    max_iterations = prm.get_integer("Max iterations");
-    residual_check = prm.get_double("Residual check");
-    distributed    = prm.get("Distributed");
+    const std::string method_entry = prm.get("Method");
+    method             = method_entry == "direct-lu" ? SolverMethod::lu :
+                         method_entry == "cg-amg"    ? SolverMethod::cg_amg :
+                                                       SolverMethod::cholesky;
+    tolerance          = prm.get_double("Tolerance");
+    max_iterations     = prm.get_integer("Max iterations");
+    residual_check     = prm.get_double("Residual check");
+    distributed_always = prm.get("Distributed") == "always";
     prm.leave_subsection();
+  }
+
+  std::string
+  LinearSolver::method_name() const
+  {
+    return method == SolverMethod::lu     ? "direct-lu" :
+           method == SolverMethod::cg_amg ? "cg-amg" :
+                                            "direct";
   }
 
   SolverReport
@@ -66,7 +77,7 @@ namespace FourierSSI
                       const DoFHandler<2>        &dof_handler) const
   {
     SolverReport report;
-    report.method = method;
+    report.method = method_name();
     // A zero load (e.g. a stiffness scene, whose unit-H/M cases are solved
     // separately) has the zero solution: skip the factorization.
     if (b.l2_norm() == 0.)

@@ -75,6 +75,18 @@ namespace FourierSSI
                       Patterns::Double(0.),
                       "Length [m] of the normalisation: footing radius a, pile "
                       "radius r.");
+    prm.declare_entry("Reference Poisson ratio",
+                      "-1",
+                      Patterns::Double(-1., 0.5),
+                      "nu of the soil (< 0: not given). When given, the log "
+                      "also prints the compliances with E = 2 G (1 + nu) "
+                      "(e.g. theta E a^3 / M, thesis Table 4.1) and, next to "
+                      "each computed stiffness, the closed form of a rigid "
+                      "disc on the surface of an elastic half-space with G "
+                      "and a above (vertical 4 G a / (1 - nu), rocking "
+                      "8 G a^3 / (3 (1 - nu)): Poulos & Davis 1974, thesis "
+                      "eq. 4.1; horizontal 32 (1 - nu) G a / (7 - 8 nu), "
+                      "torsion 16 G a^3 / 3: Gazetas 1991).");
     prm.leave_subsection();
   }
 
@@ -101,6 +113,7 @@ namespace FourierSSI
     stiffness_coefficients  = prm.get_bool("Stiffness coefficients");
     reference_shear_modulus = prm.get_double("Reference shear modulus");
     reference_length        = prm.get_double("Reference length");
+    reference_poisson_ratio = prm.get_double("Reference Poisson ratio");
     AssertThrow(reference_shear_modulus > 0. && reference_length > 0.,
                 ExcMessage("Rigid foundation: 'Reference shear modulus' and "
                            "'Reference length' must be positive"));

@@ -15,27 +15,6 @@ namespace FourierSSI
     return s;
   }
 
-  StrainVector
-  with_dilatation(const StrainVector &strain, const double dilatation)
-  {
-    StrainVector e     = strain;
-    const double shift = (dilatation - (e[0] + e[1] + e[2])) / 3.;
-    for (unsigned int k = 0; k < 3; ++k)
-      e[k] += shift;
-    return e;
-  }
-
-  StrainVector
-  bbar_strain(const StrainVector                      &strain,
-              const std::vector<DilatationProjection> &dilatation,
-              const unsigned int                       cell_index,
-              const Point<2>                          &x)
-  {
-    if (dilatation.empty() || !dilatation[cell_index].valid())
-      return strain;
-    return with_dilatation(strain, dilatation[cell_index].value(x));
-  }
-
   StressPostprocessor::StressPostprocessor(
     const HarmonicOperator                  &harmonic_operator,
     const MaterialLibrary                   &materials,

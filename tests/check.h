@@ -69,6 +69,16 @@ namespace check
     (ok ? n_passed() : n_failed())++;
   }
 
+  /** Exact equality of counts (factorizations, harmonics, cells). */
+  inline void
+  equal(const std::string &what, const long value, const long reference)
+  {
+    const bool ok = value == reference;
+    std::cout << (ok ? "  ok   " : "  FAIL ") << what << ": " << value
+              << " (expected " << reference << ")" << std::endl;
+    (ok ? n_passed() : n_failed())++;
+  }
+
   inline void
   that(const std::string &what, const bool condition)
   {

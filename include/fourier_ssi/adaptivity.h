@@ -23,6 +23,14 @@ namespace FourierSSI
 {
   using namespace dealii;
 
+  /** Adaptivity/Strategy, parsed once. */
+  enum class RefinementStrategy
+  {
+    global, // refine every cell once per cycle
+    kelly,  // Kelly indicators summed over the harmonics
+    goal    // DWR indicators of K_H, K_M, K_MH (goal_estimator.h)
+  };
+
   struct AdaptivityParameters
   {
     static void
@@ -30,10 +38,10 @@ namespace FourierSSI
     void
     parse_parameters(ParameterHandler &prm);
 
-    std::string strategy        = "global"; // global | kelly | goal
-    double      refine_fraction = 0.3;
-    std::string goal            = "all"; // K_H | K_M | K_MH | all
-    double      goal_tolerance  = 0.;    // relative; 0: no stop
+    RefinementStrategy strategy        = RefinementStrategy::global;
+    double             refine_fraction = 0.3;
+    std::string        goal            = "all"; // K_H | K_M | K_MH | all
+    double             goal_tolerance  = 0.;    // relative; 0: no stop
     /**
      * A priori grading: each (point, levels) pair refines the cells that
      * touch the point `levels` times before the first cycle.

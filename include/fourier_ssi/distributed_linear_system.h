@@ -36,6 +36,7 @@
 #include <deal.II/lac/trilinos_sparse_matrix.h>
 #include <deal.II/lac/trilinos_vector.h>
 #include <deal.II/lac/vector.h>
+#include <fourier_ssi/assembly_loop.h>
 #include <fourier_ssi/interface_integrator.h>
 #include <fourier_ssi/linear_solver.h>
 #include <functional>
@@ -47,15 +48,18 @@ namespace FourierSSI
 {
   using namespace dealii;
 
+  /**
+   * The one predicate for "is a harmonic's linear system distributed
+   * (Trilinos)": more than one rank, or `Distributed = always` under MPI.
+   * The solves, the thread count and the output all ask it.
+   */
+  bool
+  uses_distributed_solve(const LinearSolver &solver,
+                         const MPI_Comm      communicator);
+
   class DistributedLinearSystem
   {
   public:
-    /** The cell matrix (and, if rhs != nullptr, cell load) of one cell. */
-    using LocalMatrix =
-      std::function<void(const DoFHandler<2>::active_cell_iterator &,
-                         FullMatrix<double> &,
-                         Vector<double> *)>;
-
     DistributedLinearSystem(const MPI_Comm      communicator,
                             const LinearSolver &solver_parameters);
 

@@ -62,7 +62,8 @@ namespace FourierSSI
   {
   public:
     /** Throws a one-line message if the scene cannot use Strategy = goal. */
-    explicit GoalEstimator(const AllParameters &parameters);
+    GoalEstimator(const AllParameters         &parameters,
+                  const std::vector<Harmonic> &planned_harmonics);
 
     /**
      * Estimate the goal error of the primary problem (harmonic n = 1,

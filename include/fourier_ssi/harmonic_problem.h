@@ -94,6 +94,53 @@ namespace FourierSSI
     SolverReport
     solve();
 
+    /**
+     * Factorize the assembled matrix once and keep the factorization for
+     * every later solve of this harmonic (direct methods; a distributed
+     * system keeps its own MUMPS factorization or AMG hierarchy, and the
+     * serial cg-amg method re-solves iteratively). Idempotent.
+     */
+    void
+    factorize();
+
+    /** Factorizations this problem has computed (the harmonic-set test). */
+    unsigned int
+    n_factorizations() const
+    {
+      return factorization_count;
+    }
+
+    /**
+     * x_i = K^-1 b_i for loads b_i in the condensed numbering (rows of
+     * constrained DoFs zero, e.g. assembled through the homogeneous
+     * constraints), using the kept factorization; the constraints are then
+     * distributed with zero inhomogeneity, so x_i is a displacement
+     * increment. b is overwritten by x.
+     */
+    void
+    solve_increments(std::vector<Vector<double>> &b_to_x) const;
+
+    /** The constraints with every inhomogeneity set to zero. */
+    const AffineConstraints<double> &
+    get_homogeneous_constraints() const
+    {
+      return homogeneous_constraints;
+    }
+
+    /** The condensed scene load (after assemble_system()). */
+    const Vector<double> &
+    get_system_rhs() const
+    {
+      return system_rhs;
+    }
+
+    /**
+     * Replace the solution (e.g. the converged state of a coupled
+     * iteration); stresses are re-projected for output.
+     */
+    void
+    set_solution(const Vector<double> &new_solution);
+
     /** setup + assemble + solve. */
     SolverReport
     run();
@@ -105,7 +152,7 @@ namespace FourierSSI
      */
     FoundationCoefficients
     foundation_coefficients(
-      std::vector<Vector<double>> *unit_solutions = nullptr) const;
+      std::vector<Vector<double>> *unit_solutions = nullptr);
 
     /**
      * solve() and foundation_coefficients() with ONE factorization of the
@@ -147,12 +194,16 @@ namespace FourierSSI
     compute_errors() const;
 
     /**
-     * Write the amplitudes (and stresses) to `filename`; on a distributed
-     * system this rank's piece and, on rank 0, the .pvtu record. Returns
-     * the files this rank wrote (removed again if the run fails).
+     * Write the amplitudes (and stresses) to `filename`, with the
+     * displacement amplitudes of the `extra` fields (e.g. a stiffness
+     * scene's unit-H and unit-M solutions) named by prefix; on a
+     * distributed system this rank's piece and, on rank 0, the .pvtu record.
+     * Returns the files this rank wrote (removed again if the run fails).
      */
     std::vector<std::string>
-    write_vtu(const std::string &filename) const;
+    write_vtu(const std::string &filename,
+              const std::vector<std::pair<std::string, const Vector<double> *>>
+                &extra = {}) const;
 
     /**
      * The strain of the solution at x in cell, as the stresses are output:
@@ -223,8 +274,8 @@ namespace FourierSSI
     }
 
     /**
-     * Free the matrix and load vector once everything that needs them is
-     * done; the solution and DoFs stay for post-processing.
+     * Free the matrix, load vector and factorization once everything that
+     * needs them is done; the solution and DoFs stay for post-processing.
      */
     void
     free_system();
@@ -275,6 +326,7 @@ namespace FourierSSI
     std::unique_ptr<FESystem<2>>     fe;
     DoFHandler<2>                    dof_handler;
     AffineConstraints<double>        constraints;
+    AffineConstraints<double>        homogeneous_constraints;
     SparsityPattern                  sparsity_pattern;
     SparseMatrix<double>             system_matrix;
     Vector<double>                   system_rhs;
@@ -290,6 +342,9 @@ namespace FourierSSI
                                          tractions;
     const LoadDecomposition             *loads;
     std::unique_ptr<InterfaceIntegrator> interfaces;
+    /** The kept factorization (serial direct methods), see factorize(). */
+    std::unique_ptr<SparseDirect> factorization;
+    unsigned int                  factorization_count = 0;
     /** Mutable: the stiffness solves reuse its factorization/AMG. */
     mutable std::unique_ptr<DistributedLinearSystem> distributed;
   };

@@ -42,7 +42,6 @@ namespace FourierSSI
     void
     setup(const DoFHandler<2> &dof_handler);
 
-    /** Add the couplings across the faces (constrained DoFs eliminated). */
     /**
      * The exact limits of the tied laws as constraints: each twin DoF of a
      * node pair equals its partner (tied), or the normal displacements of
@@ -61,15 +60,6 @@ namespace FourierSSI
     void
     add_sparsity(const AffineConstraints<double> &constraints,
                  DynamicSparsityPattern          &dsp) const;
-
-    /**
-     * Add every element matrix to the global matrix through the constraints
-     * (inhomogeneous Dirichlet values on interface DoFs go to rhs).
-     */
-    void
-    assemble(const AffineConstraints<double> &constraints,
-             SparseMatrix<double>            &matrix,
-             Vector<double>                  &rhs) const;
 
     /**
      * The element matrix of pair i on its distinct DoFs (repeated indices of

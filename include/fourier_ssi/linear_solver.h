@@ -25,6 +25,14 @@ namespace FourierSSI
     double       relative_residual = 0.; // ||b - A x|| / ||b||
   };
 
+  /** Linear solver/Method, parsed once. */
+  enum class SolverMethod
+  {
+    cholesky, // "direct": CHOLMOD supernodal Cholesky
+    lu,       // "direct-lu": UMFPACK LU
+    cg_amg    // "cg-amg": CG + Trilinos ML
+  };
+
   class LinearSolver
   {
   public:
@@ -59,22 +67,29 @@ namespace FourierSSI
     bool
     is_direct() const
     {
-      return method != "cg-amg";
+      return method != SolverMethod::cg_amg;
     }
 
     /** The SparseDirect back end of a direct Method. */
     std::string
     direct_backend() const
     {
-      return method == "direct-lu" ? "lu" : "cholesky";
+      return method == SolverMethod::lu ? "lu" : "cholesky";
     }
 
-    std::string  method         = "direct";
+    /** The Method as written in the .prm (for the log). */
+    std::string
+    method_name() const;
+
+    SolverMethod method         = SolverMethod::cholesky;
     double       tolerance      = 1e-10;
     unsigned int max_iterations = 2000;
     double       residual_check = 1e-6;
-    /** "auto" or "always" (HarmonicProblem picks DistributedLinearSystem). */
-    std::string distributed = "auto";
+    /**
+     * Distributed = always: the Trilinos path also on one rank (otherwise
+     * only on more than one; uses_distributed_solve() decides).
+     */
+    bool distributed_always = false;
   };
 } // namespace FourierSSI
 

@@ -55,6 +55,11 @@ namespace FourierSSI
     bool   stiffness_coefficients  = false;
     double reference_shear_modulus = 1.; // G_se (footing) or G_L (pile)
     double reference_length        = 1.; // a (footing radius) or r (pile)
+    /**
+     * nu of the soil for E = 2 G (1 + nu) in the printed compliances and
+     * for the half-space closed forms of a rigid disc; < 0: not given.
+     */
+    double reference_poisson_ratio = -1.;
   };
 
   /**

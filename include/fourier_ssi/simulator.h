@@ -1,20 +1,30 @@
 /**
- * The driver: .prm parameters -> mesh -> scene plan (the harmonics the loads
- * need, the effects to simulate) -> for each refinement cycle, the harmonics
- * as independent HarmonicProblems solved concurrently -> results (CSV, VTU,
- * 3D reconstruction of the last cycle). Files are
- * written only for a run that succeeded; a failure removes what this run
- * wrote, so nothing partial is left looking like a result.
+ * The driver, in the shape of deal.II's step-6: make the mesh and the scene
+ * plan (the harmonics the loads need, the effects to simulate); for each
+ * refinement cycle, set up, assemble and solve every harmonic (a
+ * HarmonicSet, harmonics concurrently), post-process each one, estimate and
+ * refine; write the output. Files are written only for a run that succeeds;
+ * a failure removes what this run wrote, and a run starts by removing the
+ * result files an earlier run left in its output directory, so nothing
+ * stale or partial is left looking like a result.
  */
 #ifndef fourier_ssi_simulator_h
 #define fourier_ssi_simulator_h
 
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
 #include <deal.II/grid/tria.h>
+#include <fourier_ssi/adaptivity.h>
 #include <fourier_ssi/field_reconstruction.h>
+#include <fourier_ssi/goal_estimator.h>
+#include <fourier_ssi/harmonic_postprocessors.h>
+#include <fourier_ssi/harmonic_set.h>
 #include <fourier_ssi/parameters.h>
 #include <fourier_ssi/results_table.h>
+#include <fourier_ssi/scene_plan.h>
+#include <memory>
 #include <ostream>
+#include <set>
 
 namespace FourierSSI
 {
@@ -47,12 +57,93 @@ namespace FourierSSI
       return triangulation;
     }
 
+    /** The scene plan (after run()): the one list of harmonics. */
+    const ScenePlan &
+    get_plan() const
+    {
+      return plan;
+    }
+
   private:
+    /** What one harmonic produced in a cycle, merged in harmonic order. */
+    struct HarmonicOutcome
+    {
+      HarmonicSolution         solution;
+      HarmonicReport           report;
+      GoalEstimate             goal;
+      bool                     has_goal = false;
+      std::vector<std::string> files;
+      /** Phase wall times of this harmonic (sections of a TimerOutput). */
+      std::map<std::string, double> times;
+    };
+
+    void
+    remove_stale_results() const;
+
+    void
+    make_mesh();
+
+    void
+    make_plan(std::ostream &log);
+
+    void
+    refine_mesh();
+
+    /** Set up, assemble, solve and post-process every harmonic. */
+    void
+    solve_harmonics(const unsigned int cycle);
+
+    /** One harmonic's pipeline; runs on a worker thread. */
+    void
+    solve_harmonic(const unsigned int i,
+                   const unsigned int cycle,
+                   HarmonicOutcome   &outcome) const;
+
+    /**
+     * The scene load, and on the stiffness harmonic the unit-H and unit-M
+     * loads with the same factorization.
+     */
+    HarmonicSolution
+    solve_loads(HarmonicProblem &problem) const;
+
+    /** VTU and interface CSV files of one harmonic; returns the names. */
+    std::vector<std::string>
+    write_harmonic_files(const HarmonicSolution &solution,
+                         const unsigned int      cycle) const;
+
+    /**
+     * Rows, log lines, refinement indicators and the 3D reconstruction of
+     * the cycle, in harmonic order (independent of the thread count).
+     */
+    void
+    collect_cycle(const unsigned int cycle, std::ostream &log);
+
+    /** True if the goal strategy's estimate meets its tolerance. */
+    bool
+    goal_tolerance_reached(const unsigned int cycle, std::ostream &log) const;
+
+    void
+    write_output(std::ostream &log);
+
+    bool
+    writes_csv() const;
+
     const AllParameters &parameters;
     const MPI_Comm       communicator;
+    bool                 write_files = true;
     /** Owned here: the reconstruction's DoF handlers live on it. */
-    Triangulation<2>    triangulation;
-    FieldReconstruction reconstruction;
+    Triangulation<2>                     triangulation;
+    std::set<types::boundary_id>         interface_ids;
+    ScenePlan                            plan;
+    std::unique_ptr<GoalEstimator>       goal_estimator;
+    std::unique_ptr<HarmonicSet>         harmonic_set;
+    std::vector<HarmonicOutcome>         outcomes;
+    std::unique_ptr<RefinementIndicator> indicator;
+    double                               cycle_wall_time = 0.;
+    ResultsTable                         results;
+    FieldReconstruction                  reconstruction;
+    /** Files this run wrote (removed again if it fails). */
+    std::vector<std::string> written;
   };
 } // namespace FourierSSI
 

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <deal.II/base/point.h>
 #include <deal.II/numerics/data_postprocessor.h>
+#include <fourier_ssi/bbar_projection.h>
 #include <fourier_ssi/harmonic_operator.h>
 #include <fourier_ssi/material.h>
 #include <vector>
@@ -18,47 +19,6 @@
 namespace FourierSSI
 {
   using namespace dealii;
-
-  /**
-   * One cell's B-bar dilatation (harmonic_problem.cc, LinearProjection):
-   * c0 + c1 (r - r_c) + c2 (z - z_c) about the cell's centroid.
-   */
-  struct DilatationProjection
-  {
-    Point<2>              center;
-    std::array<double, 3> coefficients = {{std::nan(""), 0., 0.}};
-
-    bool
-    valid() const
-    {
-      return !std::isnan(coefficients[0]);
-    }
-
-    double
-    value(const Point<2> &x) const
-    {
-      return coefficients[0] + coefficients[1] * (x[0] - center[0]) +
-             coefficients[2] * (x[1] - center[1]);
-    }
-  };
-
-  /**
-   * The strain with its dilatation e_r + e_z + e_t replaced by `dilatation`
-   * (the deviatoric part kept): the B-bar strain (Hughes 1980).
-   */
-  StrainVector
-  with_dilatation(const StrainVector &strain, const double dilatation);
-
-  /**
-   * The output strain of a cell: `strain` with the cell's projected B-bar
-   * dilatation at x, or `strain` unchanged without a projection (empty
-   * `dilatation`, or a degenerate cell).
-   */
-  StrainVector
-  bbar_strain(const StrainVector                      &strain,
-              const std::vector<DilatationProjection> &dilatation,
-              const unsigned int                       cell_index,
-              const Point<2>                          &x);
 
   /** sigma = D epsilon for an isotropic material (engineering shears). */
   StrainVector

@@ -1,0 +1,118 @@
+/**
+ * Every harmonic of a run, each with its assembled system and its kept
+ * factorization: the building block of a solve that couples harmonics (a
+ * nonlinear interface or soil law sampled in theta, doc/theory.md). After
+ * one factorization per harmonic, every harmonic can be re-solved for new
+ * right-hand sides without refactorizing.
+ *
+ * Harmonics are independent systems on one read-only mesh, so the work on
+ * them runs concurrently on threads; a distributed solve (MPI ranks, or
+ * `Linear solver/Distributed = always`) runs one harmonic at a time, since
+ * collective calls must not interleave on one communicator.
+ */
+#ifndef fourier_ssi_harmonic_set_h
+#define fourier_ssi_harmonic_set_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/grid/tria.h>
+#include <deal.II/lac/vector.h>
+#include <fourier_ssi/harmonic.h>
+#include <fourier_ssi/harmonic_problem.h>
+#include <fourier_ssi/load_decomposition.h>
+#include <fourier_ssi/parameters.h>
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace FourierSSI
+{
+  using namespace dealii;
+
+  class HarmonicSet
+  {
+  public:
+    /**
+     * `max_threads`: how many harmonics may run at once (0 = the cores);
+     * forced to 1 for a distributed solve.
+     */
+    HarmonicSet(const AllParameters         &parameters,
+                const std::vector<Harmonic> &harmonics,
+                const Triangulation<2>      &triangulation,
+                const LoadDecomposition     &loads,
+                const MPI_Comm               communicator,
+                const unsigned int           max_threads);
+
+    unsigned int
+    size() const
+    {
+      return problems.size();
+    }
+
+    const Harmonic &
+    harmonic(const unsigned int i) const
+    {
+      return harmonics[i];
+    }
+
+    HarmonicProblem &
+    problem(const unsigned int i)
+    {
+      return *problems[i];
+    }
+
+    const HarmonicProblem &
+    problem(const unsigned int i) const
+    {
+      return *problems[i];
+    }
+
+    /** Shared, so a 3D reconstruction can keep a harmonic's field. */
+    std::shared_ptr<HarmonicProblem>
+    shared_problem(const unsigned int i) const
+    {
+      return problems[i];
+    }
+
+    /** Threads the harmonics run on (1 for a distributed solve). */
+    unsigned int
+    n_threads() const
+    {
+      return threads;
+    }
+
+    /**
+     * Run task(i) for every harmonic, up to n_threads() at once. A task
+     * that throws does not stop the others; afterwards the first failure
+     * (in harmonic order) is rethrown as one line naming its harmonic.
+     */
+    void
+    for_each(const std::function<void(const unsigned int)> &task) const;
+
+    /** DoFs, constraints and sparsity, then matrix and load, every harmonic. */
+    void
+    setup_and_assemble();
+
+    /** One factorization per harmonic, kept (HarmonicProblem::factorize). */
+    void
+    factorize();
+
+    /**
+     * For every harmonic i: b_to_x[i][k] := K_i^-1 b_to_x[i][k] with the
+     * kept factorizations (condensed loads in, displacement increments out,
+     * HarmonicProblem::solve_increments), harmonics concurrently.
+     */
+    void
+    solve_increments(std::vector<std::vector<Vector<double>>> &b_to_x) const;
+
+    /** Factorizations computed so far, summed over the harmonics. */
+    unsigned int
+    n_factorizations() const;
+
+  private:
+    std::vector<Harmonic>                         harmonics;
+    std::vector<std::shared_ptr<HarmonicProblem>> problems;
+    unsigned int                                  threads;
+  };
+} // namespace FourierSSI
+
+#endif
