@@ -34,3 +34,11 @@ set_tests_properties(program_embedded_footing_graded PROPERTIES
 add_test(NAME program_print_parameters COMMAND fourier-ssi --print-parameters)
 set_tests_properties(program_print_parameters PROPERTIES
   PASS_REGULAR_EXPRESSION "subsection Materials")
+
+# The nonlinear-interface scene (tensionless disc in a ring) runs and writes
+# its load-displacement curve.
+add_test(NAME program_disc_gap
+  COMMAND fourier-ssi ${CMAKE_SOURCE_DIR}/prm/disc-gap.prm
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties(program_disc_gap PROPERTIES
+  PASS_REGULAR_EXPRESSION "load-displacement curve written to")
