@@ -261,6 +261,8 @@ namespace FourierSSI
     RigidFoundationParameters::declare_parameters(prm);
     AdaptivityParameters::declare_parameters(prm);
     LoadParameters::declare_parameters(prm);
+    InitialStressParameters::declare_parameters(prm);
+    NonlinearInterfaceParameters::declare_parameters(prm);
   }
 
   void
@@ -285,6 +287,8 @@ namespace FourierSSI
             largest_poisson_ratio(materials) >= locking_poisson_ratio ?
           "bbar" :
           "standard";
+    initial_stress.parse_parameters(prm);
+    nonlinear_interfaces.parse_parameters(prm);
     for (const auto &[id, e] : loads.displacement)
       AssertThrow(boundary_conditions.dirichlet.count(id) == 0,
                   ExcMessage("Loads/Prescribed displacement: boundary id " +

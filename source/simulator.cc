@@ -25,6 +25,11 @@ namespace FourierSSI
         remove_stale_results();
         make_mesh();
         make_plan(log);
+        if (parameters.interfaces.any_nonlinear())
+          {
+            solve_nonlinear_interfaces(log);
+            return results;
+          }
         for (unsigned int cycle = 0;
              cycle < parameters.discretization.refinement_cycles;
              ++cycle)
@@ -69,7 +74,7 @@ namespace FourierSSI
           "solution-n[0-9]+-(symmetric|antisymmetric)-cycle[0-9]+"
           "(\\.rank[0-9]+)?\\.p?vtu|interface-[0-9]+-n[0-9]+-"
           "(symmetric|antisymmetric)-cycle[0-9]+\\.csv|lines-3d\\.csv|"
-          "solution-3d\\.vtu");
+          "solution-3d\\.vtu|load-displacement(-incomplete)?\\.csv");
         for (const auto &entry : std::filesystem::directory_iterator(directory))
           {
             const std::string name = entry.path().filename().string();

@@ -52,3 +52,24 @@ add_test(NAME program_interface_matrix_closed_form
           z=0,0.5,1 kn=1e10 ks=1e10)
 set_tests_properties(program_interface_matrix_closed_form PROPERTIES
   PASS_REGULAR_EXPRESSION "A0\\.r +2\\.0943951024e\\+09")
+
+# The nonlinear-interface scene (tensionless disc in a ring) runs and writes
+# its load-displacement curve.
+add_test(NAME program_disc_gap
+  COMMAND fourier-ssi ${CMAKE_SOURCE_DIR}/prm/disc-gap.prm
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties(program_disc_gap PROPERTIES
+  PASS_REGULAR_EXPRESSION "load-displacement curve written to")
+
+# A load step that does not converge: one line naming Nonlinear interfaces,
+# non-zero exit, no result file. Serial only (not a bad_*.prm: under mpirun
+# the coupled solve stops earlier with its "not yet: distributed" line).
+add_test(NAME input_nonconverging_coulomb_step
+  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi>
+          -DPRM=${CMAKE_CURRENT_SOURCE_DIR}/prm/nonconverging_coulomb_step.prm
+          "-DEXPECTED=Nonlinear interfaces: load step 1 did not converge"
+          -DOUTPUT_DIR=${CMAKE_CURRENT_BINARY_DIR}/bad_output
+          -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_failure.cmake)
+set_tests_properties(input_nonconverging_coulomb_step PROPERTIES
+  RESOURCE_LOCK bad_output)

@@ -1,9 +1,9 @@
 /**
- * Zero-thickness interfaces in the harmonic system, part 1: the .prm
- * description of the interface laws and the pairing of the coincident
- * boundary faces of the two sides (doc/interfaces-usage.md). The double
- * nodes themselves come from the mesh: Mesh/Interface lines
- * (interface_lines.h) or a gmsh mesh with duplicated curves.
+ * Zero-thickness interfaces in the harmonic system, part 1: the pairing of
+ * the coincident boundary faces of the two sides (doc/interfaces-usage.md);
+ * the laws and their .prm syntax are in interface_law.h. The double nodes
+ * themselves come from the mesh: Mesh/Interface lines (interface_lines.h)
+ * or a gmsh mesh with duplicated curves.
  *
  * An interface is a boundary id carried by the faces on BOTH sides of a
  * line whose vertices are duplicated (double nodes), so that the two sides
@@ -21,6 +21,7 @@
 #include <deal.II/base/types.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/grid/tria.h>
+#include <fourier_ssi/interface_law.h>
 #include <map>
 #include <string>
 #include <vector>
@@ -28,58 +29,6 @@
 namespace FourierSSI
 {
   using namespace dealii;
-
-  /**
-   * The constitutive law of one interface (eq. 3.8d, D = diag(ks, kn, ks)):
-   * either given stiffnesses (the presets rough: kn = ks = 1e10, smooth:
-   * kn = 1e10, ks = 0, or explicit kn, ks >= 0), or the virtual-thickness
-   * rule of Van Langen & Vermeer (1991): ks = mu G / l,
-   * kn = mu G / ((1 - 2 nu) l), with G, nu of the soil side and l the mean
-   * face length of the interface.
-   */
-  struct InterfaceLaw
-  {
-    bool   vermeer = false;
-    double normal  = 0.; // kn [kPa/m] (not vermeer)
-    double shear   = 0.; // ks [kPa/m] (not vermeer)
-    double mu      = 0.; // Van Langen & Vermeer factor (vermeer)
-    /** Material id of the soil side (vermeer); -1: the side of lower G. */
-    int material = -1;
-    /**
-     * Exact limits instead of penalty springs (no stiffness assembled):
-     * tied = kn = ks = infinity (the twins move together), tied_normal =
-     * kn = infinity, ks = 0 (only the normal displacement is continuous).
-     */
-    bool tied = false, tied_normal = false;
-  };
-
-  /** Subsection "Interfaces" of the .prm file. */
-  struct InterfaceParameters
-  {
-    static void
-    declare_parameters(ParameterHandler &prm);
-    void
-    parse_parameters(ParameterHandler &prm);
-
-    /**
-     * Parse "id: rough; id: smooth; id: kn=1e8, ks=0; id: vermeer, mu=50"
-     * (optionally ", material=m" after vermeer). Throws a one-line message
-     * naming "Interfaces/Interfaces".
-     */
-    static std::map<types::boundary_id, InterfaceLaw>
-    parse_list(const std::string &text);
-
-    /** True if at least one interface is declared. */
-    bool
-    enabled() const
-    {
-      return !laws.empty();
-    }
-
-    std::map<types::boundary_id, InterfaceLaw> laws;
-    /** Twin faces and nodes must coincide within this times face length. */
-    double pairing_tolerance = 1e-8;
-  };
 
   /**
    * One interface element: a boundary face of one cell (side A) and its

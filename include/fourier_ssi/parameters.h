@@ -9,11 +9,13 @@
 #include <fourier_ssi/adaptivity.h>
 #include <fourier_ssi/boundary_conditions.h>
 #include <fourier_ssi/harmonic.h>
+#include <fourier_ssi/initial_stress.h>
 #include <fourier_ssi/interface_pairing.h>
 #include <fourier_ssi/linear_solver.h>
 #include <fourier_ssi/load_decomposition.h>
 #include <fourier_ssi/material.h>
 #include <fourier_ssi/mesh_builder.h>
+#include <fourier_ssi/nonlinear_interface_parameters.h>
 #include <fourier_ssi/rigid_foundation.h>
 #include <string>
 #include <vector>
@@ -113,17 +115,19 @@ namespace FourierSSI
     void
     read_string(const std::string &text);
 
-    DiscretizationParameters  discretization;
-    MeshBuilder               mesh;
-    MaterialLibrary           materials;
-    BoundaryConditions        boundary_conditions;
-    LinearSolver              solver;
-    ExactSolutionParameters   exact_solution;
-    OutputParameters          output;
-    InterfaceParameters       interfaces;
-    RigidFoundationParameters rigid_foundation;
-    AdaptivityParameters      adaptivity;
-    LoadParameters            loads;
+    DiscretizationParameters     discretization;
+    MeshBuilder                  mesh;
+    MaterialLibrary              materials;
+    BoundaryConditions           boundary_conditions;
+    LinearSolver                 solver;
+    ExactSolutionParameters      exact_solution;
+    OutputParameters             output;
+    InterfaceParameters          interfaces;
+    RigidFoundationParameters    rigid_foundation;
+    AdaptivityParameters         adaptivity;
+    LoadParameters               loads;
+    InitialStressParameters      initial_stress;
+    NonlinearInterfaceParameters nonlinear_interfaces;
   };
 } // namespace FourierSSI
 

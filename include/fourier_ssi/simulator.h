@@ -89,6 +89,14 @@ namespace FourierSSI
     void
     refine_mesh();
 
+    /**
+     * A scene with a nonlinear (coulomb) interface: every harmonic assembled
+     * and factorized once, the load steps of CoupledInterfaceSolver, the
+     * load-displacement CSV and results.csv (simulator_nonlinear.cc).
+     */
+    void
+    solve_nonlinear_interfaces(std::ostream &log);
+
     /** Set up, assemble, solve and post-process every harmonic. */
     void
     solve_harmonics(const unsigned int cycle);

@@ -1,0 +1,218 @@
+/**
+ * Nonlinear (Mohr-Coulomb, tension cut-off) interfaces on a set of Fourier
+ * harmonics coupled through theta (doc/nonlinear-interfaces.md, section 5).
+ *
+ * Initial-stiffness (modified Newton) iteration on the kept elastic
+ * factorizations of a HarmonicSet: every harmonic's matrix K_h holds the
+ * closed-form interface matrices with the elastic kn, ks. With d_p the
+ * plastic relative displacement (slip and gap) at the interface points, the
+ * discrete equilibrium is, per harmonic h,
+ *   K_h u_h = lambda F_h + c_h(d_p),   c_h = int int B_h^T D d_p r ds dtheta,
+ * (the interface force int B^T (t - t0) = K_interface u - c). One iteration:
+ *   1. the relative displacement at every interface Gauss point, summed over
+ *      all harmonics at N theta samples (ThetaSampling::evaluate);
+ *   2. the return mapping at every (point, theta) -> d_p, t;
+ *   3. the out-of-balance load G_h = int B_h^T D d_p, theta-integrated with
+ *      the trapezoidal rule against each harmonic's factor and through the
+ *      element's shape functions (the same B that gives the closed-form K);
+ *   4. force residual R = G - c; converged if |R| <= tolerance |lambda F|
+ *      (|G| if lambda F = 0; 2-norms over all harmonics); else c <- c + omega R
+ * and u <- lambda u_F + K^-1 c, all harmonics re-solved with their kept
+ *      factorizations (HarmonicSet::solve_increments), omega from Aitken's
+ *      Delta^2 rule (or 1).
+ * Load control scales the scene's loads by lambda; displacement control
+ * chooses lambda in every iteration so that one rigid-foundation motion
+ * equals its target (needed past the peak). A step that does not converge is
+ * cut in half (up to a limit); then the solve stops with a one-line error,
+ * the converged steps kept.
+ */
+#ifndef fourier_ssi_coupled_interface_solver_h
+#define fourier_ssi_coupled_interface_solver_h
+
+#include <array>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/vector.h>
+#include <fourier_ssi/harmonic_set.h>
+#include <fourier_ssi/initial_stress.h>
+#include <fourier_ssi/interface_law.h>
+#include <fourier_ssi/nonlinear_interface_parameters.h>
+#include <fourier_ssi/parameters.h>
+#include <fourier_ssi/theta_sampling.h>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace FourierSSI
+{
+  using namespace dealii;
+
+  /** One converged load step. */
+  struct LoadStepResult
+  {
+    /** Factor on the scene's loads (load control: step / n_steps). */
+    double load_factor = 0.;
+    /** Rigid motion of the foundation (RigidMotion fields). */
+    RigidMotion motion;
+    /** Out-of-balance solves of this step (0: elastic). */
+    unsigned int iterations = 0;
+    double       residual   = 0.;
+    /** Interface (point, theta) samples sticking, slipping, open. */
+    std::array<unsigned int, 3> states = {{0, 0, 0}};
+    /**
+     * Resultant of the interface tractions (change from the initial state) on
+     * the rigid foundation's material: force (x, y, z) [kN] and moment about
+     * the origin (x, y, z) [kN m].
+     */
+    std::array<double, 6> resultant = {{0., 0., 0., 0., 0., 0.}};
+    /** Wall time of the step [s]. */
+    double time = 0.;
+  };
+
+  class CoupledInterfaceSolver
+  {
+  public:
+    /**
+     * `set` must be assembled and factorized; its harmonics' matrices hold
+     * the elastic interface stiffness kn, ks of every interface.
+     */
+    CoupledInterfaceSolver(const HarmonicSet   &set,
+                           const AllParameters &parameters);
+
+    /**
+     * All load steps. Returns normally if every step converged; otherwise
+     * throws a one-line error after the step cuts, the converged steps kept
+     * in get_steps().
+     */
+    void
+    run(std::ostream &log);
+
+    const std::vector<LoadStepResult> &
+    get_steps() const
+    {
+      return steps;
+    }
+
+    /** Total displacement amplitudes of harmonic i (last converged state). */
+    Vector<double>
+    solution(const unsigned int i) const;
+
+    /** N, the theta samples of the iteration. */
+    unsigned int
+    n_theta_samples() const
+    {
+      return sampling.n_samples();
+    }
+
+    /**
+     * The applied rigid-foundation loads at factor lambda in the order of
+     * LoadStepResult::resultant (F_x, F_y, F_z, M_x, M_y, M_z), with M about
+     * the origin (H at the reference elevation).
+     */
+    std::array<double, 6>
+    applied_loads(const double load_factor) const;
+
+    /**
+     * int int B_h^T D d r ds dtheta of the relative displacement d of the
+     * given fields (one per harmonic), condensed: the elastic force of the
+     * nonlinear interfaces computed through the theta sampling and the Gauss
+     * points, which must equal the closed-form K_interface u (a check of the
+     * projection that builds the out-of-balance loads).
+     */
+    std::vector<Vector<double>>
+    interface_force(const std::vector<Vector<double>> &fields) const;
+
+    /** Number of Gauss points of the nonlinear interfaces. */
+    unsigned int
+    n_interface_points() const
+    {
+      return points.size();
+    }
+
+    /**
+     * CSV: step, load factor, applied V, H_x, M_y, T, the motion, iterations,
+     * residual, states, converged (1; a failed step is not a row).
+     */
+    void
+    write_csv(const std::string &filename) const;
+
+  private:
+    /** One Gauss point of a nonlinear interface pair. */
+    struct InterfacePoint
+    {
+      unsigned int pair;
+      /** w_q l r(xi_q): area per radian of theta [m^2]. */
+      double              area_per_radian;
+      std::vector<double> shape;
+      Point<2>            position;
+      LocalVector         initial_traction;
+      /** Index into laws. */
+      unsigned int law;
+    };
+
+    /** Iteration state of a load step. */
+    struct StepState
+    {
+      double load_factor = 0.;
+      /** K^-1 c per harmonic, and c (condensed). */
+      std::vector<Vector<double>> correction_solution, correction_load;
+      /** Plastic relative displacement per point and sample. */
+      std::vector<LocalVector> plastic;
+    };
+
+    void
+    make_points(const AllParameters &parameters);
+    void
+    solve_load_pattern();
+
+    /** Relative displacement samples (points x N) of fields per harmonic. */
+    std::vector<LocalVector>
+    relative_displacements(const std::vector<Vector<double>> &fields) const;
+
+    /**
+     * Return mapping everywhere from the committed state; fills plastic,
+     * traction and states of `trial` samples, returns their counts.
+     */
+    std::array<unsigned int, 3>
+    return_map(const std::vector<LocalVector> &relative,
+               std::vector<LocalVector>       &plastic,
+               std::vector<LocalVector>       &traction) const;
+
+    /** G_h = int B_h^T D d_p, condensed, every harmonic. */
+    std::vector<Vector<double>>
+    out_of_balance_load(const std::vector<LocalVector> &plastic) const;
+
+    /** lambda from displacement control for a given correction solution. */
+    double
+    controlled_load_factor(const std::vector<Vector<double>> &v,
+                           const double                       target) const;
+
+    /** Iterate one step to lambda (load control) or to a motion target. */
+    bool
+    solve_step(const double target, StepState &state, LoadStepResult &result);
+
+    std::array<double, 6>
+    foundation_resultant(const std::vector<LocalVector> &traction) const;
+
+    RigidMotion
+    motion_of(const StepState &state) const;
+
+    const HarmonicSet                &set;
+    const AllParameters              &parameters;
+    NonlinearInterfaceParameters      settings;
+    std::vector<Harmonic>             harmonics;
+    ThetaSampling                     sampling;
+    std::vector<MohrCoulombInterface> laws;
+    /** Some nonlinear law has neither cohesion nor initial stress. */
+    bool                        without_strength = false;
+    std::vector<InterfacePoint> points;
+    std::vector<Vector<double>> pattern_solution;
+    /** sqrt(sum_h |F_h|^2) of the scene's (condensed) loads. */
+    double                      pattern_load_norm = 0.;
+    std::vector<LocalVector>    pattern_relative;
+    StepState                   committed;
+    std::vector<LoadStepResult> steps;
+  };
+} // namespace FourierSSI
+
+#endif

@@ -1,0 +1,161 @@
+/**
+ * The constitutive law of a zero-thickness interface, its .prm syntax
+ * (subsection "Interfaces"), and the closed-form return mapping of the
+ * nonlinear Mohr-Coulomb law with a tension cut-off
+ * (doc/nonlinear-interfaces.md, section 2; thesis ch. 2.4: adhesion,
+ * glissement, decollement).
+ *
+ * Sign convention, used everywhere in fourier-ssi: local components
+ * (s, n, theta) of the interface element (doc/interfaces-usage.md, section
+ * 4); the relative displacement is face B minus face A, positive d_n is an
+ * opening; the traction t = (t_s, t_n, t_theta) = sigma n is the stress
+ * vector on the face of side A (outward normal n), i.e. the force per unit
+ * area that side B exerts on side A, so t_n > 0 is a TENSION and compression
+ * is negative (the thesis writes sigma_n = -t_n, compression positive).
+ */
+#ifndef fourier_ssi_interface_law_h
+#define fourier_ssi_interface_law_h
+
+#include <array>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/types.h>
+#include <limits>
+#include <map>
+#include <string>
+
+namespace FourierSSI
+{
+  using namespace dealii;
+
+  /**
+   * The law of one interface. Linear laws (eq. 3.8d, D = diag(ks, kn, ks)):
+   * the presets rough (kn = ks = 1e10 kPa/m), smooth (kn = 1e10, ks = 0),
+   * explicit kn, ks >= 0, Van Langen & Vermeer's virtual thickness
+   * (ks = mu G / l, kn = mu G / ((1 - 2 nu) l)), or the exact tied limits.
+   * The nonlinear law `coulomb` keeps kn, ks > 0 as the elastic part and
+   * adds the Mohr-Coulomb slip surface and the tension cut-off.
+   */
+  struct InterfaceLaw
+  {
+    bool   vermeer = false;
+    double normal  = 0.; // kn [kPa/m] (not vermeer)
+    double shear   = 0.; // ks [kPa/m] (not vermeer)
+    double mu      = 0.; // Van Langen & Vermeer factor (vermeer)
+    /** Material id of the soil side (vermeer); -1: the side of lower G. */
+    int material = -1;
+    /**
+     * Exact limits instead of penalty springs (no stiffness assembled):
+     * tied = kn = ks = infinity (the twins move together), tied_normal =
+     * kn = infinity, ks = 0 (only the normal displacement is continuous).
+     */
+    bool tied = false, tied_normal = false;
+
+    /** Mohr-Coulomb slip and tension cut-off (the entries below apply). */
+    bool   coulomb        = false;
+    double cohesion       = 0.; // c [kPa]
+    double friction_angle = 0.; // phi [degrees], 0 <= phi < 90
+    double dilation_angle = 0.; // psi [degrees], 0 <= psi <= phi
+    /** sigma_t [kPa]: largest tensile t_n; infinity = no cut-off. */
+    double tension_cutoff = 0.;
+
+    bool
+    is_nonlinear() const
+    {
+      return coulomb;
+    }
+  };
+
+  /** Subsection "Interfaces" of the .prm file. */
+  struct InterfaceParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /**
+     * Parse "id: rough; id: smooth; id: kn=1e8, ks=0; id: vermeer, mu=50;
+     * id: coulomb, kn=1e6, ks=1e6, c=0, phi=25[, psi=0][, sigma_t=0|none]".
+     * Throws a one-line message naming "Interfaces/Interfaces".
+     */
+    static std::map<types::boundary_id, InterfaceLaw>
+    parse_list(const std::string &text);
+
+    /** True if at least one interface is declared. */
+    bool
+    enabled() const
+    {
+      return !laws.empty();
+    }
+
+    /** True if some interface has a nonlinear law. */
+    bool
+    any_nonlinear() const;
+
+    std::map<types::boundary_id, InterfaceLaw> laws;
+    /** Twin faces and nodes must coincide within this times face length. */
+    double pairing_tolerance = 1e-8;
+  };
+
+  /** Local interface vector (s, n, theta). */
+  using LocalVector = std::array<double, 3>;
+
+  /** What the return mapping found at one point. */
+  enum class ContactState
+  {
+    stick,
+    slip,
+    open
+  };
+
+  /** Result of one return mapping: traction, plastic part and state. */
+  struct ReturnMappingResult
+  {
+    /** Total traction t = t0 + D (d - d_p) [kPa], tension positive. */
+    LocalVector traction = {{0., 0., 0.}};
+    /** Plastic relative displacement d_p [m] (slip, and the gap if open). */
+    LocalVector  plastic = {{0., 0., 0.}};
+    ContactState state   = ContactState::stick;
+  };
+
+  /**
+   * Closed-form return mapping of the Mohr-Coulomb interface with a tension
+   * cut-off (doc/nonlinear-interfaces.md, section 2). With the trial traction
+   *   t_tr = t0 + D (d - d_p,old),   D = diag(ks, kn, ks),
+   *   tau_tr = sqrt(t_s,tr^2 + t_theta,tr^2),
+   *   f(t) = tau + t_n tan(phi) - c,   g(t) = tau + t_n tan(psi),
+   * the three cases are
+   *   open  (t_n,tr > sigma_t): t = 0, d_p = d + D^-1 t0 (decollement, thesis
+   *          2.4: the gap carries neither normal nor shear force);
+   *   stick (f(t_tr) <= 0):     t = t_tr;
+   *   slip  (f(t_tr) > 0):      dl = f(t_tr) / (ks + kn tan(phi) tan(psi)),
+   *          tau = tau_tr - ks dl (radial return in the (s, theta) plane),
+   *          t_n = t_n,tr - kn tan(psi) dl (dilation: more compression),
+   *          which lands exactly on f = 0.
+   */
+  class MohrCoulombInterface
+  {
+  public:
+    explicit MohrCoulombInterface(const InterfaceLaw &law);
+
+    ReturnMappingResult
+    return_map(const LocalVector &relative_displacement,
+               const LocalVector &initial_traction,
+               const LocalVector &old_plastic) const;
+
+    /** f(t) = tau + t_n tan(phi) - c [kPa]. */
+    double
+    yield_function(const LocalVector &traction) const;
+
+  private:
+    double kn, ks, cohesion, tan_phi, tan_psi, tension_cutoff;
+  };
+
+
+
+  /** "stick", "slip" or "open". */
+  std::string
+  to_string(const ContactState state);
+} // namespace FourierSSI
+
+#endif

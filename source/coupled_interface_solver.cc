@@ -1,0 +1,628 @@
+#include <chrono>
+#include <cmath>
+#include <deal.II/base/quadrature_lib.h>
+#include <fourier_ssi/coupled_interface_solver.h>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+namespace FourierSSI
+{
+  namespace
+  {
+    const std::string entry = "Nonlinear interfaces";
+
+    std::vector<Harmonic>
+    harmonics_of(const HarmonicSet &set)
+    {
+      std::vector<Harmonic> list;
+      for (unsigned int h = 0; h < set.size(); ++h)
+        list.push_back(set.harmonic(h));
+      return list;
+    }
+
+    /** Automatic N = 4 (n_max + 1); a given N must exceed 2 n_max. */
+    unsigned int
+    theta_samples_for(const std::vector<Harmonic> &list,
+                      const unsigned int           requested)
+    {
+      unsigned int n_max = 0;
+      for (const Harmonic &h : list)
+        n_max = std::max(n_max, h.n);
+      if (requested == 0)
+        return 4 * (n_max + 1);
+      AssertThrow(requested >= minimum_theta_samples(n_max),
+                  ExcMessage(
+                    entry + "/Theta samples: " + std::to_string(requested) +
+                    " must exceed 2 n_max = " + std::to_string(2 * n_max) +
+                    " (else the harmonics alias)"));
+      return requested;
+    }
+
+    /** Lagrange basis of the equidistant nodes k / p at xi. */
+    std::vector<double>
+    lagrange_values(const unsigned int p, const double xi)
+    {
+      std::vector<double> values(p + 1, 1.);
+      for (unsigned int k = 0; k <= p; ++k)
+        for (unsigned int m = 0; m <= p; ++m)
+          if (m != k)
+            values[k] *= (xi - double(m) / p) / (double(k) - double(m)) * p;
+      return values;
+    }
+
+    double
+    norm_over_harmonics(const std::vector<Vector<double>> &vectors)
+    {
+      double sum = 0.;
+      for (const Vector<double> &v : vectors)
+        sum += v.norm_sqr();
+      return std::sqrt(sum);
+    }
+
+    double
+    dot_over_harmonics(const std::vector<Vector<double>> &a,
+                       const std::vector<Vector<double>> &b)
+    {
+      double sum = 0.;
+      for (unsigned int h = 0; h < a.size(); ++h)
+        sum += a[h] * b[h];
+      return sum;
+    }
+
+    /** The harmonic that carries a rigid-foundation motion. */
+    Harmonic
+    harmonic_of(const NonlinearInterfaceParameters::Motion motion)
+    {
+      using M = NonlinearInterfaceParameters::Motion;
+      if (motion == M::vertical)
+        return {0, Family::symmetric};
+      if (motion == M::twist)
+        return {0, Family::antisymmetric};
+      return {1, Family::symmetric};
+    }
+
+    double
+    component(const RigidMotion                         &m,
+              const NonlinearInterfaceParameters::Motion motion)
+    {
+      using M = NonlinearInterfaceParameters::Motion;
+      switch (motion)
+        {
+          case M::vertical:
+            return m.vertical_displacement;
+          case M::twist:
+            return m.twist;
+          case M::horizontal:
+            return m.horizontal_displacement;
+          case M::rotation:
+            return m.rotation;
+        }
+      return 0.;
+    }
+
+    const InterfaceIntegrator &
+    interfaces_of(const HarmonicProblem &problem)
+    {
+      AssertThrow(problem.get_interfaces() != nullptr,
+                  ExcMessage(entry + ": the scene has no interfaces"));
+      return *problem.get_interfaces();
+    }
+  } // namespace
+
+  CoupledInterfaceSolver::CoupledInterfaceSolver(
+    const HarmonicSet   &set,
+    const AllParameters &parameters)
+    : set(set)
+    , parameters(parameters)
+    , settings(parameters.nonlinear_interfaces)
+    , harmonics(harmonics_of(set))
+    , sampling(harmonics,
+               theta_samples_for(harmonics,
+                                 parameters.nonlinear_interfaces.theta_samples))
+  {
+    for (unsigned int h = 0; h < set.size(); ++h)
+      AssertThrow(!set.problem(h).get_constraints().has_inhomogeneities(),
+                  ExcMessage(entry +
+                             ": not yet: prescribed (non-zero) Dirichlet "
+                             "values with nonlinear interfaces; load the "
+                             "scene through the Rigid foundation"));
+    make_points(parameters);
+    solve_load_pattern();
+    committed.correction_solution = pattern_solution;
+    committed.correction_load     = pattern_solution;
+    for (unsigned int h = 0; h < set.size(); ++h)
+      {
+        committed.correction_solution[h] = 0.;
+        committed.correction_load[h]     = 0.;
+      }
+    committed.plastic.assign(points.size() * sampling.n_samples(),
+                             {{0., 0., 0.}});
+  }
+
+  void
+  CoupledInterfaceSolver::make_points(const AllParameters &parameters)
+  {
+    const std::vector<InterfacePair> &pairs =
+      interfaces_of(set.problem(0)).get_pairs();
+    std::map<types::boundary_id, unsigned int> law_index;
+    for (const auto &[id, law] : parameters.interfaces.laws)
+      if (law.is_nonlinear())
+        {
+          law_index[id] = laws.size();
+          laws.emplace_back(law);
+          if (law.cohesion == 0. && !parameters.initial_stress.enabled())
+            without_strength = true;
+        }
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      {
+        const auto law = law_index.find(pairs[i].boundary_id);
+        if (law == law_index.end())
+          continue;
+        const unsigned int p = pairs[i].nodes.size() - 1;
+        // Gauss p + 1 points: exact for the elastic part N_i N_j r (degree
+        // 2p + 1), so a sticking interface gives exactly no correction.
+        const QGauss<1> gauss(p + 1);
+        for (unsigned int q = 0; q < gauss.size(); ++q)
+          {
+            InterfacePoint point;
+            point.pair  = i;
+            point.law   = law->second;
+            point.shape = lagrange_values(p, gauss.point(q)[0]);
+            for (unsigned int k = 0; k <= p; ++k)
+              for (unsigned int d = 0; d < 2; ++d)
+                point.position[d] += point.shape[k] * pairs[i].nodes[k][d];
+            point.area_per_radian =
+              gauss.weight(q) * pairs[i].length * point.position[0];
+            point.initial_traction =
+              parameters.initial_stress.interface_traction(
+                pairs[i].tangent,
+                pairs[i].normal,
+                parameters.materials.depth(point.position[1]));
+            points.push_back(point);
+          }
+      }
+    AssertThrow(!points.empty(),
+                ExcMessage(entry + ": no face of a coulomb interface"));
+  }
+
+  void
+  CoupledInterfaceSolver::solve_load_pattern()
+  {
+    std::vector<std::vector<Vector<double>>> b(set.size());
+    double                                   norm_sqr = 0.;
+    for (unsigned int h = 0; h < set.size(); ++h)
+      {
+        b[h] = {set.problem(h).get_system_rhs()};
+        norm_sqr += b[h][0].norm_sqr();
+      }
+    pattern_load_norm = std::sqrt(norm_sqr);
+    set.solve_increments(b);
+    pattern_solution.clear();
+    for (unsigned int h = 0; h < set.size(); ++h)
+      pattern_solution.push_back(b[h][0]);
+    pattern_relative = relative_displacements(pattern_solution);
+  }
+
+  std::vector<LocalVector>
+  CoupledInterfaceSolver::relative_displacements(
+    const std::vector<Vector<double>> &fields) const
+  {
+    const unsigned int       N = sampling.n_samples(), H = set.size();
+    std::vector<LocalVector> result(points.size() * N, {{0., 0., 0.}});
+    std::vector<double>      amplitude[3], samples;
+    for (unsigned int i = 0; i < points.size(); ++i)
+      {
+        const InterfacePoint &point = points[i];
+        for (auto &a : amplitude)
+          a.assign(H, 0.);
+        for (unsigned int h = 0; h < H; ++h)
+          {
+            const InterfacePair &pair =
+              interfaces_of(set.problem(h)).get_pairs()[point.pair];
+            const unsigned int n_nodes = pair.nodes.size();
+            for (unsigned int k = 0; k < n_nodes; ++k)
+              {
+                double jump[3];
+                for (unsigned int c = 0; c < 3; ++c)
+                  jump[c] = fields[h](pair.dof_indices[3 * (n_nodes + k) + c]) -
+                            fields[h](pair.dof_indices[3 * k + c]);
+                const double N_k = point.shape[k];
+                amplitude[0][h] +=
+                  N_k * (jump[0] * pair.tangent[0] + jump[1] * pair.tangent[1]);
+                amplitude[1][h] +=
+                  N_k * (jump[0] * pair.normal[0] + jump[1] * pair.normal[1]);
+                amplitude[2][h] += N_k * jump[2];
+              }
+          }
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            sampling.evaluate(amplitude[c],
+                              c == 2 ? ThetaFactor::circumferential :
+                                       ThetaFactor::in_plane,
+                              samples);
+            for (unsigned int j = 0; j < N; ++j)
+              result[i * N + j][c] = samples[j];
+          }
+      }
+    return result;
+  }
+
+  std::array<unsigned int, 3>
+  CoupledInterfaceSolver::return_map(const std::vector<LocalVector> &relative,
+                                     std::vector<LocalVector>       &plastic,
+                                     std::vector<LocalVector> &traction) const
+  {
+    const unsigned int          N      = sampling.n_samples();
+    std::array<unsigned int, 3> counts = {{0, 0, 0}};
+    plastic.resize(relative.size());
+    traction.resize(relative.size());
+    for (unsigned int i = 0; i < points.size(); ++i)
+      for (unsigned int j = 0; j < N; ++j)
+        {
+          const unsigned int        k = i * N + j;
+          const ReturnMappingResult r =
+            laws[points[i].law].return_map(relative[k],
+                                           points[i].initial_traction,
+                                           committed.plastic[k]);
+          plastic[k]  = r.plastic;
+          traction[k] = r.traction;
+          ++counts[static_cast<int>(r.state)];
+        }
+    return counts;
+  }
+
+  std::vector<Vector<double>>
+  CoupledInterfaceSolver::out_of_balance_load(
+    const std::vector<LocalVector> &plastic) const
+  {
+    const unsigned int          N = sampling.n_samples(), H = set.size();
+    std::vector<Vector<double>> load(H);
+    for (unsigned int h = 0; h < H; ++h)
+      load[h].reinit(set.problem(h).get_dof_handler().n_dofs());
+    std::vector<double> samples(N), coefficient[3];
+    for (unsigned int i = 0; i < points.size(); ++i)
+      {
+        const InterfacePoint &point = points[i];
+        const InterfaceLaw   &law   = parameters.interfaces.laws.at(
+          interfaces_of(set.problem(0)).get_pairs()[point.pair].boundary_id);
+        const double stiffness[3] = {law.shear, law.normal, law.shear};
+        bool         any          = false;
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            for (unsigned int j = 0; j < N; ++j)
+              {
+                samples[j] = stiffness[c] * plastic[i * N + j][c];
+                any        = any || samples[j] != 0.;
+              }
+            // The theta part of the virtual work against each harmonic.
+            sampling.integrate(samples,
+                               c == 2 ? ThetaFactor::circumferential :
+                                        ThetaFactor::in_plane,
+                               coefficient[c]);
+          }
+        if (!any)
+          continue;
+        for (unsigned int h = 0; h < H; ++h)
+          {
+            const InterfacePair &pair =
+              interfaces_of(set.problem(h)).get_pairs()[point.pair];
+            const unsigned int n_nodes = pair.nodes.size();
+            Vector<double>     local(pair.dof_indices.size());
+            for (unsigned int k = 0; k < n_nodes; ++k)
+              {
+                // B^T: local (s, n, theta) forces rotated back to (r, z,
+                // theta) (eq. 3.13, T^T), + on face B and - on face A.
+                const double w    = point.area_per_radian * point.shape[k];
+                const double f_s  = w * coefficient[0][h],
+                             f_n  = w * coefficient[1][h],
+                             f_t  = w * coefficient[2][h];
+                const double f[3] = {f_s * pair.tangent[0] +
+                                       f_n * pair.normal[0],
+                                     f_s * pair.tangent[1] +
+                                       f_n * pair.normal[1],
+                                     f_t};
+                for (unsigned int c = 0; c < 3; ++c)
+                  {
+                    local(3 * (n_nodes + k) + c) += f[c];
+                    local(3 * k + c) -= f[c];
+                  }
+              }
+            set.problem(h)
+              .get_homogeneous_constraints()
+              .distribute_local_to_global(local, pair.dof_indices, load[h]);
+          }
+      }
+    return load;
+  }
+
+  std::vector<Vector<double>>
+  CoupledInterfaceSolver::interface_force(
+    const std::vector<Vector<double>> &fields) const
+  {
+    return out_of_balance_load(relative_displacements(fields));
+  }
+
+  double
+  CoupledInterfaceSolver::controlled_load_factor(
+    const std::vector<Vector<double>> &v,
+    const double                       target) const
+  {
+    const Harmonic wanted = harmonic_of(settings.motion);
+    for (unsigned int h = 0; h < set.size(); ++h)
+      if (harmonics[h].n == wanted.n && harmonics[h].family == wanted.family)
+        {
+          const RigidFoundation *foundation = set.problem(h).get_foundation();
+          AssertThrow(foundation != nullptr,
+                      ExcMessage(entry +
+                                 "/Control: displacement control needs a "
+                                 "Rigid foundation"));
+          const double by_pattern =
+            component(foundation->motion(pattern_solution[h]), settings.motion);
+          AssertThrow(by_pattern != 0.,
+                      ExcMessage(entry +
+                                 "/Controlled motion: the Rigid foundation "
+                                 "loads do not drive this motion (give the "
+                                 "load that does, e.g. V for vertical)"));
+          const double by_correction =
+            component(foundation->motion(v[h]), settings.motion);
+          return (target - by_correction) / by_pattern;
+        }
+    AssertThrow(false,
+                ExcMessage(entry +
+                           "/Controlled motion: its harmonic is not solved "
+                           "(n = 0 for vertical and twist, n = 1 symmetric "
+                           "for horizontal and rotation)"));
+    return 0.;
+  }
+
+  bool
+  CoupledInterfaceSolver::solve_step(const double    target,
+                                     StepState      &state,
+                                     LoadStepResult &result)
+  {
+    const bool displacement_control =
+      settings.control == NonlinearInterfaceParameters::Control::displacement;
+    std::vector<LocalVector>    plastic, traction;
+    std::vector<Vector<double>> previous_residual;
+    double                      omega = 1.;
+    for (unsigned int iteration = 0; iteration <= settings.maximum_iterations;
+         ++iteration)
+      {
+        state.load_factor =
+          displacement_control ?
+            controlled_load_factor(state.correction_solution, target) :
+            target;
+        // 1-2: relative displacements at every (point, theta), the law.
+        std::vector<LocalVector> relative =
+          relative_displacements(state.correction_solution);
+        for (unsigned int k = 0; k < relative.size(); ++k)
+          for (unsigned int c = 0; c < 3; ++c)
+            relative[k][c] += state.load_factor * pattern_relative[k][c];
+        const auto counts = return_map(relative, plastic, traction);
+        // 3-4: out-of-balance load and force residual R = G - c.
+        std::vector<Vector<double>> residual  = out_of_balance_load(plastic);
+        const double                load_norm = norm_over_harmonics(residual);
+        for (unsigned int h = 0; h < set.size(); ++h)
+          residual[h] -= state.correction_load[h];
+        const double residual_norm = norm_over_harmonics(residual);
+        // Relative to the applied load, so that the interface tractions
+        // balance it to the tolerance (the correction load G can be much
+        // larger than the load, e.g. a released initial base compression).
+        const double applied = std::abs(state.load_factor) * pattern_load_norm;
+        const double scale   = applied > 0. ? applied : load_norm;
+        if (!std::isfinite(residual_norm))
+          return false;
+        if (residual_norm <= settings.tolerance * scale)
+          {
+            state.plastic     = plastic;
+            result.iterations = iteration;
+            result.residual   = scale > 0. ? residual_norm / scale : 0.;
+            result.states     = counts;
+            result.resultant  = foundation_resultant(traction);
+            return true;
+          }
+        // Aitken's Delta^2 relaxation on the fixed point c = G(c).
+        if (settings.aitken && !previous_residual.empty())
+          {
+            std::vector<Vector<double>> change = residual;
+            for (unsigned int h = 0; h < set.size(); ++h)
+              change[h] -= previous_residual[h];
+            const double change_sqr = dot_over_harmonics(change, change);
+            if (change_sqr > 0.)
+              omega = -omega * dot_over_harmonics(previous_residual, change) /
+                      change_sqr;
+          }
+        previous_residual = residual;
+        std::vector<std::vector<Vector<double>>> increment(set.size());
+        for (unsigned int h = 0; h < set.size(); ++h)
+          {
+            residual[h] *= omega;
+            state.correction_load[h] += residual[h];
+            increment[h] = {residual[h]};
+          }
+        set.solve_increments(increment);
+        for (unsigned int h = 0; h < set.size(); ++h)
+          state.correction_solution[h] += increment[h][0];
+      }
+    return false;
+  }
+
+  std::array<double, 6>
+  CoupledInterfaceSolver::foundation_resultant(
+    const std::vector<LocalVector> &traction) const
+  {
+    std::array<double, 6> resultant = {{0., 0., 0., 0., 0., 0.}};
+    if (!parameters.rigid_foundation.enabled ||
+        parameters.rigid_foundation.tie != "material")
+      return resultant;
+    const std::vector<InterfacePair> &pairs =
+      interfaces_of(set.problem(0)).get_pairs();
+    const unsigned int N      = sampling.n_samples();
+    const double       weight = 2. * numbers::PI / N;
+    for (unsigned int i = 0; i < points.size(); ++i)
+      {
+        const InterfacePair &pair = pairs[points[i].pair];
+        // t = sigma n is the force per unit area that B exerts on A (n out
+        // of A): the foundation transmits +t to A if it is B, -t if it is A.
+        const double sign =
+          pair.material_b == parameters.rigid_foundation.id ? 1. :
+          pair.material_a == parameters.rigid_foundation.id ? -1. :
+                                                              0.;
+        if (sign == 0.)
+          continue;
+        const double r = points[i].position[0], z = points[i].position[1];
+        for (unsigned int j = 0; j < N; ++j)
+          {
+            LocalVector t = traction[i * N + j];
+            for (unsigned int c = 0; c < 3; ++c)
+              t[c] -= points[i].initial_traction[c];
+            const double da    = sign * weight * points[i].area_per_radian;
+            const double t_r   = t[0] * pair.tangent[0] + t[1] * pair.normal[0];
+            const double t_z   = t[0] * pair.tangent[1] + t[1] * pair.normal[1];
+            const double theta = sampling.angle(j);
+            const double c = std::cos(theta), s = std::sin(theta);
+            const double F[3] = {da * (t_r * c - t[2] * s),
+                                 da * (t_r * s + t[2] * c),
+                                 da * t_z};
+            const double x = r * c, y = r * s;
+            resultant[0] += F[0];
+            resultant[1] += F[1];
+            resultant[2] += F[2];
+            resultant[3] += y * F[2] - z * F[1];
+            resultant[4] += z * F[0] - x * F[2];
+            resultant[5] += x * F[1] - y * F[0];
+          }
+      }
+    return resultant;
+  }
+
+  std::array<double, 6>
+  CoupledInterfaceSolver::applied_loads(const double load_factor) const
+  {
+    const RigidFoundationParameters &f     = parameters.rigid_foundation;
+    const double                     z_ref = f.reference_elevation;
+    // (H, M) act at the reference point (0, 0, z_ref): moved to the origin,
+    // M_y gains z_ref H_x and M_x loses z_ref H_y.
+    return {{load_factor * f.horizontal_force,
+             load_factor * f.horizontal_force_y,
+             load_factor * f.vertical_force,
+             load_factor * (f.moment_x - z_ref * f.horizontal_force_y),
+             load_factor * (f.moment + z_ref * f.horizontal_force),
+             load_factor * f.torque}};
+  }
+
+  RigidMotion
+  CoupledInterfaceSolver::motion_of(const StepState &state) const
+  {
+    RigidMotion total;
+    for (unsigned int h = 0; h < set.size(); ++h)
+      {
+        const RigidFoundation *foundation = set.problem(h).get_foundation();
+        if (foundation == nullptr || harmonics[h].n > 1 ||
+            (harmonics[h].n == 1 && harmonics[h].family != Family::symmetric))
+          continue;
+        Vector<double> u = pattern_solution[h];
+        u.sadd(state.load_factor, 1., state.correction_solution[h]);
+        const RigidMotion m = foundation->motion(u);
+        total.vertical_displacement += m.vertical_displacement;
+        total.twist += m.twist;
+        total.horizontal_displacement += m.horizontal_displacement;
+        total.rotation += m.rotation;
+      }
+    return total;
+  }
+
+  Vector<double>
+  CoupledInterfaceSolver::solution(const unsigned int i) const
+  {
+    Vector<double> u = pattern_solution[i];
+    u.sadd(committed.load_factor, 1., committed.correction_solution[i]);
+    return u;
+  }
+
+  void
+  CoupledInterfaceSolver::run(std::ostream &log)
+  {
+    const bool load_control =
+      settings.control == NonlinearInterfaceParameters::Control::load;
+    log << "nonlinear interfaces: " << points.size() << " points x "
+        << sampling.n_samples() << " theta samples, " << set.size()
+        << " harmonics, " << (load_control ? "load" : "displacement")
+        << " control, " << settings.load_steps << " steps, tolerance "
+        << settings.tolerance << (settings.aitken ? ", Aitken" : "") << '\n';
+    if (without_strength)
+      log << "warning: " << entry
+          << ": a coulomb interface has c = 0 and no Initial stress: it has "
+             "no strength\n";
+    double       done = 0., increment = 1. / settings.load_steps;
+    unsigned int cuts = 0;
+    while (done < 1. - 1e-12)
+      {
+        const double fraction = std::min(1., done + increment);
+        const double target =
+          load_control ? fraction : fraction * settings.target;
+        StepState      state = committed;
+        LoadStepResult result;
+        const auto     start = std::chrono::steady_clock::now();
+        if (!solve_step(target, state, result))
+          {
+            AssertThrow(++cuts <= settings.maximum_step_cuts,
+                        ExcMessage(entry + ": load step " +
+                                   std::to_string(steps.size() + 1) +
+                                   " did not converge in " +
+                                   std::to_string(settings.maximum_iterations) +
+                                   " iterations after " +
+                                   std::to_string(settings.maximum_step_cuts) +
+                                   " step cuts; the " +
+                                   std::to_string(steps.size()) +
+                                   " converged steps are kept"));
+            increment /= 2.;
+            log << "  step cut to " << increment << " of the loading\n";
+            continue;
+          }
+        committed          = state;
+        done               = fraction;
+        result.load_factor = state.load_factor;
+        result.motion      = motion_of(state);
+        result.time        = std::chrono::duration<double>(
+                        std::chrono::steady_clock::now() - start)
+                        .count();
+        steps.push_back(result);
+        const auto loads = applied_loads(result.load_factor);
+        log << "  step " << steps.size() << ": factor " << result.load_factor
+            << ", V " << loads[2] << " kN, H " << loads[0] << " kN, T "
+            << loads[5] << " kN m; w " << result.motion.vertical_displacement
+            << " m, u " << result.motion.horizontal_displacement << " m, twist "
+            << result.motion.twist << " rad; " << result.iterations
+            << " iterations; stick/slip/open " << result.states[0] << '/'
+            << result.states[1] << '/' << result.states[2] << '\n';
+      }
+  }
+
+  void
+  CoupledInterfaceSolver::write_csv(const std::string &filename) const
+  {
+    std::ofstream out(filename);
+    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+    out << "step,load_factor,V_kN,H_kN,M_kNm,T_kNm,vertical_m,horizontal_m,"
+           "rotation_rad,twist_rad,iterations,residual,stick,slip,open,"
+           "time_s,converged\n"
+        << std::setprecision(12);
+    for (unsigned int s = 0; s < steps.size(); ++s)
+      {
+        const LoadStepResult &r = steps[s];
+        const auto            f = parameters.rigid_foundation;
+        out << s + 1 << ',' << r.load_factor << ','
+            << r.load_factor * f.vertical_force << ','
+            << r.load_factor * f.horizontal_force << ','
+            << r.load_factor * f.moment << ',' << r.load_factor * f.torque
+            << ',' << r.motion.vertical_displacement << ','
+            << r.motion.horizontal_displacement << ',' << r.motion.rotation
+            << ',' << r.motion.twist << ',' << r.iterations << ',' << r.residual
+            << ',' << r.states[0] << ',' << r.states[1] << ',' << r.states[2]
+            << ',' << r.time << ",1\n";
+      }
+    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+  }
+} // namespace FourierSSI

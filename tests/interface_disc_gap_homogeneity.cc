@@ -1,0 +1,141 @@
+// The bundled scene prm/disc-gap.prm (a rigid disc pushed along x in an
+// elastic ring, plane strain, tensionless interface, harmonics n = 0..8)
+// and its Coulomb variant (mu = tan(phi) = 0.3), solved by the coupled
+// iteration (doc/nonlinear-interfaces.md section 7):
+//  * positive homogeneity: with c = 0, sigma_t = 0 and no initial stress the
+//    law is positively homogeneous of degree 1, so P/ubar and the contact
+//    arc are the same at every displacement step; checked to 1e-7 (the
+//    force residual is converged to 1e-10 of the load; P/ubar is read from
+//    the controlled motion, exact, and the load factor, accurate to the
+//    residual times the condition of the slipping/opening mode);
+//  * bounds: the tensionless frictionless disc is softer than the bilateral
+//    smooth one (the linear law with the same kn and ks = 0) and the
+//    Coulomb one lies between it and the bilateral bonded one (kn = ks);
+//  * equilibrium: the interface tractions balance the applied H to 1e-8.
+#include "check.h"
+#include "test_support.h"
+
+#include <deal.II/grid/tria.h>
+#include <fourier_ssi/coupled_interface_solver.h>
+#include <fourier_ssi/harmonic_set.h>
+#include <fourier_ssi/scene_plan.h>
+#include <regex>
+
+using namespace FourierSSI;
+
+namespace
+{
+  struct Curve
+  {
+    std::vector<double>       stiffness; // P / ubar [kN/m per m of thickness]
+    std::vector<unsigned int> open, iterations;
+    double                    worst_equilibrium = 0.;
+  };
+
+  std::string
+  with_law(const std::string &law)
+  {
+    return std::regex_replace(test_support::bundled_prm("prm/disc-gap.prm"),
+                              std::regex("set Interfaces = [^\n]*"),
+                              "set Interfaces = " + law);
+  }
+
+  Curve
+  run(const std::string &text)
+  {
+    const AllParameters parameters = test_support::parameters_from(text);
+    Triangulation<2>    triangulation;
+    parameters.mesh.build(triangulation);
+    const ScenePlan plan = plan_scene(parameters, triangulation);
+    HarmonicSet     set(
+      parameters, plan.harmonics, triangulation, plan.loads, MPI_COMM_SELF, 0);
+    set.setup_and_assemble();
+    set.factorize();
+    CoupledInterfaceSolver solver(set, parameters);
+    solver.run(std::cout);
+    Curve curve;
+    for (const LoadStepResult &step : solver.get_steps())
+      {
+        const double H = solver.applied_loads(step.load_factor)[0];
+        curve.stiffness.push_back(H / step.motion.horizontal_displacement);
+        curve.open.push_back(step.states[2]);
+        curve.iterations.push_back(step.iterations);
+        curve.worst_equilibrium =
+          std::max(curve.worst_equilibrium,
+                   std::abs(step.resultant[0] - H) / std::abs(H));
+      }
+    return curve;
+  }
+
+  /** The same scene with a linear law, n = 1 only: P / ubar. */
+  double
+  linear_stiffness(const std::string &law)
+  {
+    std::string text            = with_law(law);
+    text                        = std::regex_replace(text,
+                              std::regex("set Harmonics *= [^\n]*"),
+                              "set Harmonics = 1");
+    AllParameters    parameters = test_support::parameters_from(text);
+    Triangulation<2> triangulation;
+    parameters.mesh.build(triangulation);
+    const ScenePlan plan = plan_scene(parameters, triangulation);
+    HarmonicSet     set(
+      parameters, plan.harmonics, triangulation, plan.loads, MPI_COMM_SELF, 0);
+    set.setup_and_assemble();
+    set.factorize();
+    std::vector<std::vector<Vector<double>>> b = {
+      {set.problem(0).get_system_rhs()}};
+    set.solve_increments(b);
+    const RigidMotion m = set.problem(0).get_foundation()->motion(b[0][0]);
+    return parameters.rigid_foundation.horizontal_force /
+           m.horizontal_displacement;
+  }
+
+  void
+  check_homogeneous(const std::string &name, const Curve &c)
+  {
+    double spread = 0.;
+    for (const double k : c.stiffness)
+      spread = std::max(spread, std::abs(k - c.stiffness[0]) / c.stiffness[0]);
+    std::cout << "  " << name << ": P/ubar = " << c.stiffness.back()
+              << " kN/m, open samples " << c.open.back() << ", iterations";
+    for (const unsigned int i : c.iterations)
+      std::cout << ' ' << i;
+    std::cout << std::endl;
+    check::small(name + ": max relative spread of P/ubar over the steps",
+                 spread,
+                 1e-7);
+    check::that(name + ": the open arc is the same at every step",
+                std::all_of(c.open.begin(),
+                            c.open.end(),
+                            [&](unsigned n) { return n == c.open[0]; }) &&
+                  c.open[0] > 0);
+    check::small(name + ": max |interface resultant - H| / H",
+                 c.worst_equilibrium,
+                 1e-8);
+  }
+} // namespace
+
+int
+main()
+{
+  const Curve frictionless = run(test_support::bundled_prm("prm/disc-gap.prm"));
+  check_homogeneous("tensionless frictionless", frictionless);
+  const Curve coulomb =
+    run(with_law("5: coulomb, kn=1e6, ks=1e6, c=0, phi=16.69924423"));
+  check_homogeneous("tensionless Coulomb mu = 0.3", coulomb);
+
+  const double smooth = linear_stiffness("5: kn=1e6, ks=0");
+  const double bonded = linear_stiffness("5: kn=1e6, ks=1e6");
+  std::cout << "  linear bilateral: smooth " << smooth << ", bonded " << bonded
+            << " kN/m" << std::endl;
+  check::in_range("frictionless tensionless below bilateral smooth",
+                  frictionless.stiffness.back(),
+                  0.,
+                  smooth);
+  check::in_range("Coulomb mu = 0.3 between frictionless and bonded",
+                  coulomb.stiffness.back(),
+                  frictionless.stiffness.back(),
+                  bonded);
+  return check::summary();
+}
