@@ -20,6 +20,11 @@ namespace FourierSSI
     write_files = write_files_;
     results     = ResultsTable();
     written.clear();
+    // A failed run leaves no output folder it created itself (the README's
+    // promise: no output at all for bad input).
+    const std::filesystem::path directory = parameters.output.directory;
+    const bool                  had_directory =
+      !write_files || std::filesystem::exists(directory);
     try
       {
         remove_stale_results();
@@ -47,6 +52,9 @@ namespace FourierSSI
       {
         for (const std::string &file : written)
           std::filesystem::remove(file);
+        std::error_code ignored;
+        if (!had_directory && std::filesystem::is_empty(directory, ignored))
+          std::filesystem::remove(directory, ignored);
         throw;
       }
     return results;
