@@ -22,8 +22,8 @@
 #include "check.h"
 
 #include <cmath>
-#include <fourier_ssi/command_line.h>
 #include <fourier_ssi/interface_law.h>
+#include <fourier_ssi/messages.h>
 #include <random>
 
 using namespace FourierSSI;
