@@ -326,22 +326,9 @@ namespace FourierSSI
     // (The loads given as functions of theta are checked by
     // ThetaLoad::choose_samples when the scene is planned.)
 
-    // Output paths, checked now rather than after the solve.
-    const OutputParameters &output = parameters.output;
-    AssertThrow(!Utilities::trim(output.results_file).empty(),
-                ExcMessage("Output/Results file: empty; give a file name "
-                           "such as results.csv"));
-    AssertThrow(!std::filesystem::exists(output.directory) ||
-                  std::filesystem::is_directory(output.directory),
-                ExcMessage("Output/Directory: '" + output.directory +
-                           "' exists and is not a directory"));
-    const std::string results = output.directory + "/" + output.results_file;
-    AssertThrow(!std::filesystem::is_directory(results),
-                ExcMessage("Output/Results file: '" + results +
-                           "' is a directory"));
-
     // Lines 3D: every point must lie in the mesh (the 3D sum is evaluated
     // after the solve).
+    const OutputParameters &output = parameters.output;
     if (!output.lines.empty())
       {
         const MappingQ1<2>     mapping;
@@ -388,5 +375,25 @@ namespace FourierSSI
             "as asked, 'auto' or 'bbar' avoids it");
       }
     return notes;
+  }
+  std::string
+  output_path_error(const OutputParameters &output)
+  {
+    if (Utilities::trim(output.results_file).empty())
+      return "Output/Results file: empty; give a file name such as "
+             "results.csv";
+    if (std::filesystem::exists(output.directory) &&
+        !std::filesystem::is_directory(output.directory))
+      return "Output/Directory: '" + output.directory +
+             "' exists and is not a directory";
+    // Checked before the output folder is created: a name that can only
+    // be a folder ("." , "..", "sub/") counts as one even if it does not
+    // exist yet.
+    const std::string results = output.directory + "/" + output.results_file;
+    const std::filesystem::path name = output.results_file;
+    if (std::filesystem::is_directory(results) || !name.has_filename() ||
+        name.filename() == "." || name.filename() == "..")
+      return "Output/Results file: '" + results + "' is a directory";
+    return "";
   }
 } // namespace FourierSSI

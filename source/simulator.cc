@@ -22,11 +22,12 @@ namespace FourierSSI
     written.clear();
     // A failed run leaves no output folder it created itself (the README's
     // promise: no output at all for bad input).
-    const std::filesystem::path directory = parameters.output.directory;
-    const bool                  had_directory =
-      !write_files || std::filesystem::exists(directory);
+    const std::filesystem::path directory     = parameters.output.directory;
+    const bool                  had_directory = decided_on_rank_0<bool>(
+      [&]() { return !write_files || std::filesystem::exists(directory); });
     try
       {
+        check_output_paths();
         remove_stale_results();
         make_mesh();
         make_plan(log);
@@ -66,6 +67,26 @@ namespace FourierSSI
     // Rank 0 writes the CSV files (each rank writes its VTU piece).
     return write_files && (!Utilities::MPI::job_supports_mpi() ||
                            Utilities::MPI::this_mpi_process(communicator) == 0);
+  }
+
+  template <typename T>
+  T
+  Simulator::decided_on_rank_0(const std::function<T()> &decide) const
+  {
+    if (!Utilities::MPI::job_supports_mpi() ||
+        Utilities::MPI::n_mpi_processes(communicator) == 1)
+      return decide();
+    const T value =
+      Utilities::MPI::this_mpi_process(communicator) == 0 ? decide() : T();
+    return Utilities::MPI::broadcast(communicator, value, 0);
+  }
+
+  void
+  Simulator::check_output_paths() const
+  {
+    const std::string error = decided_on_rank_0<std::string>(
+      [&]() { return output_path_error(parameters.output); });
+    AssertThrow(error.empty(), ExcMessage(error));
   }
 
   void

@@ -22,47 +22,24 @@
 
 #include <cmath>
 #include <fourier_ssi/harmonic.h>
-#include <iomanip>
-#include <sstream>
 
 using namespace FourierSSI;
 
 namespace
 {
-  /** Full-precision text of a number (std::to_string keeps 6 decimals). */
-  std::string
-  str(const double x)
-  {
-    std::ostringstream out;
-    out << std::setprecision(17) << x;
-    return out.str();
-  }
-
   std::string
   bending_prm(const unsigned int degree,
               const std::string &family,
               const double       r_inner)
   {
-    const double       kappa = 1e-3, E = 1e5, nu = 0.3;
-    const auto         amplitudes = test_support::bending_amplitudes(family);
-    const std::string &U = amplitudes[0], &V = amplitudes[1],
-                      &W  = amplitudes[2];
-    const std::string all = "u=" + U + ", v=" + V + ", w=" + W;
     return "subsection Discretization\n set Harmonics = 1\n set Family = " +
            family + "\n set Polynomial degree = " + std::to_string(degree) +
            "\nend\n"
            "subsection Mesh\n set R breakpoints = " +
            std::to_string(r_inner) +
            ", 1\n set R cells = 3\n set Z breakpoints = 0, 2\n"
-           " set Z cells = 5\n set Distortion = 0.2\nend\n"
-           "subsection Materials\n set Materials = 0: E=" +
-           std::to_string(E) + ", nu=" + std::to_string(nu) +
-           "\nend\n"
-           "subsection Boundary conditions\n set Dirichlet = 2: " +
-           all + "\n set Traction = 3: z=" + std::to_string(E * kappa) +
-           "*r\nend\n"
-           "subsection Exact solution\n set Enabled = true\n set U = " +
-           U + "\n set V = " + V + "\n set W = " + W + "\nend\n";
+           " set Z cells = 5\n set Distortion = 0.2\nend\n" +
+           test_support::bending_conditions(family);
   }
 } // namespace
 
@@ -94,7 +71,8 @@ main(int argc, char **argv)
   const double      G = E / (2 * (1 + nu)), lambda = 2 * G * nu / (1 - 2 * nu);
   const double      B = p * a * a * b * b / (2 * G * (b * b - a * a));
   const double      A = p * a * a / (2 * (lambda + G) * (b * b - a * a));
-  const std::string U = str(A) + "*r + " + str(B) + "/r";
+  const std::string U = test_support::full_precision(A) + "*r + " +
+                        test_support::full_precision(B) + "/r";
   for (const unsigned int degree : {2u, 4u})
     {
       const std::string prm =
@@ -112,18 +90,7 @@ main(int argc, char **argv)
       const ResultsTable results = test_support::run(prm);
       const Harmonic     h{0, Family::symmetric};
       for (unsigned int cycle = 2; cycle < 4; ++cycle)
-        {
-          const std::string what = "Lame, p=" + std::to_string(degree) +
-                                   ", cycle " + std::to_string(cycle);
-          check::in_range(what + ": L2 rate",
-                          results.get("rate_l2", h, cycle),
-                          degree + 1 - 0.2,
-                          degree + 1 + 0.2);
-          check::in_range(what + ": H1 rate",
-                          results.get("rate_h1", h, cycle),
-                          degree - 0.2,
-                          degree + 0.2);
-        }
+        test_support::check_optimal_rates(results, h, degree, cycle, 0.2);
     }
   return check::summary();
 }

@@ -15,7 +15,6 @@
 #include "test_support.h"
 
 #include <fourier_ssi/harmonic.h>
-#include <regex>
 
 using namespace FourierSSI;
 
@@ -31,47 +30,12 @@ main(int argc, char **argv)
         const Harmonic                   harmonic{s.n,
                                 s.symmetric ? Family::symmetric :
                                                                 Family::antisymmetric};
-        const std::string                U = test_support::with_constants(s.U),
-                          V                = test_support::with_constants(s.V),
-                          W                = test_support::with_constants(s.W);
-        const std::string all              = "u=" + U + ", v=" + V + ", w=" + W;
-        const std::string prm =
-          "subsection Discretization\n set Harmonics = " + std::to_string(s.n) +
-          "\n set Family = " + to_string(harmonic.family) +
-          "\n set Polynomial degree = " + std::to_string(degree) +
-          "\n set Refinement cycles = " + std::to_string(n_cycles) +
-          "\nend\n"
-          "subsection Mesh\n set R cells = " +
-          std::to_string(degree == 2 ? 4 : 2) +
-          "\n set Z cells = " + std::to_string(degree == 2 ? 4 : 2) +
-          "\n set Distortion = 0.15\nend\n"
-          "subsection Materials\n set Materials = 0: E=1e5, nu=0.3\nend\n"
-          "subsection Boundary conditions\n set Dirichlet = 1: " +
-          all + "; 2: " + all + "; 3: " + all +
-          "\nend\n"
-          "subsection Body force\n set Radial = " +
-          test_support::with_constants(s.f_r) +
-          "\n set Axial = " + test_support::with_constants(s.f_z) +
-          "\n set Circumferential = " +
-          test_support::with_constants(s.f_theta) +
-          "\nend\n"
-          "subsection Exact solution\n set Enabled = true\n set U = " +
-          U + "\n set V = " + V + "\n set W = " + W + "\nend\n";
+        const std::string prm = test_support::manufactured_solution_prm(
+          s, to_string(harmonic.family), degree, n_cycles);
         const ResultsTable results = test_support::run(prm);
         for (unsigned int cycle = 2; cycle < n_cycles; ++cycle)
-          {
-            const std::string what = harmonic.name() +
-                                     ", p=" + std::to_string(degree) +
-                                     ", cycle " + std::to_string(cycle);
-            check::in_range(what + ": L2 rate",
-                            results.get("rate_l2", harmonic, cycle),
-                            degree + 1 - 0.2,
-                            degree + 1 + 0.2);
-            check::in_range(what + ": H1 rate",
-                            results.get("rate_h1", harmonic, cycle),
-                            degree - 0.2,
-                            degree + 0.2);
-          }
+          test_support::check_optimal_rates(
+            results, harmonic, degree, cycle, 0.2);
       }
   return check::summary();
 }

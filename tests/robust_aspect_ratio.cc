@@ -18,8 +18,6 @@
 
 #include <cmath>
 #include <fourier_ssi/harmonic.h>
-#include <iomanip>
-#include <sstream>
 
 using namespace FourierSSI;
 
@@ -30,11 +28,6 @@ namespace
               const std::string &family,
               const bool         interface)
   {
-    const double       kappa = 1e-3, E = 1e5, nu = 0.3;
-    const auto         amplitudes = test_support::bending_amplitudes(family);
-    const std::string &U = amplitudes[0], &V = amplitudes[1],
-                      &W  = amplitudes[2];
-    const std::string all = "u=" + U + ", v=" + V + ", w=" + W;
     return "subsection Discretization\n set Harmonics = 1\n set Family = " +
            family + "\n set Polynomial degree = " + std::to_string(degree) +
            "\nend\n"
@@ -42,17 +35,11 @@ namespace
            " set Z breakpoints = 0, 0.99, 1, 1.01, 2\n"
            " set Z cells = 6, 4, 4, 6\n set Z growth = 0.5, 1, 1, 2\n" +
            (interface ? " set Interface lines = 5: z=1, r=0..1\n" : "") +
-           "end\n"
-           "subsection Materials\n set Materials = 0: E=" +
-           std::to_string(E) + ", nu=" + std::to_string(nu) + "\nend\n" +
+           "end\n" +
            (interface ? "subsection Interfaces\n set Interfaces = 5: "
                         "kn=1e14, ks=1e14\nend\n" :
                         "") +
-           "subsection Boundary conditions\n set Dirichlet = 2: " + all +
-           "\n set Traction = 3: z=" + std::to_string(E * kappa) +
-           "*r\nend\n"
-           "subsection Exact solution\n set Enabled = true\n set U = " +
-           U + "\n set V = " + V + "\n set W = " + W + "\nend\n";
+           test_support::bending_conditions(family);
   }
 } // namespace
 

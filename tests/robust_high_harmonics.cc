@@ -14,7 +14,6 @@
 #include "test_support.h"
 
 #include <fourier_ssi/harmonic.h>
-#include <regex>
 
 using namespace FourierSSI;
 
@@ -28,32 +27,8 @@ main(int argc, char **argv)
         const unsigned int                    n_cycles = degree == 2 ? 5 : 4;
         const mms_high::ManufacturedSolution &s        = mms_high::solutions[k];
         const Harmonic                        harmonic{s.n, Family::symmetric};
-        const std::string U   = test_support::with_constants(s.U),
-                          V   = test_support::with_constants(s.V),
-                          W   = test_support::with_constants(s.W);
-        const std::string all = "u=" + U + ", v=" + V + ", w=" + W;
-        const std::string prm =
-          "subsection Discretization\n set Harmonics = " + std::to_string(s.n) +
-          "\n set Family = symmetric\n set Polynomial degree = " +
-          std::to_string(degree) +
-          "\n set Refinement cycles = " + std::to_string(n_cycles) +
-          "\nend\n"
-          "subsection Mesh\n set R cells = " +
-          std::to_string(degree == 2 ? 4 : 2) +
-          "\n set Z cells = " + std::to_string(degree == 2 ? 4 : 2) +
-          "\n set Distortion = 0.15\nend\n"
-          "subsection Materials\n set Materials = 0: E=1e5, nu=0.3\nend\n"
-          "subsection Boundary conditions\n set Dirichlet = 1: " +
-          all + "; 2: " + all + "; 3: " + all +
-          "\nend\n"
-          "subsection Body force\n set Radial = " +
-          test_support::with_constants(s.f_r) +
-          "\n set Axial = " + test_support::with_constants(s.f_z) +
-          "\n set Circumferential = " +
-          test_support::with_constants(s.f_theta) +
-          "\nend\n"
-          "subsection Exact solution\n set Enabled = true\n set U = " +
-          U + "\n set V = " + V + "\n set W = " + W + "\nend\n";
+        const std::string prm = test_support::manufactured_solution_prm(
+          s, "symmetric", degree, n_cycles);
         const ResultsTable results = test_support::run(prm);
         for (unsigned int cycle = 1; cycle < n_cycles; ++cycle)
           std::cout << "  n = " << s.n << ", p = " << degree << ", cycle "
@@ -65,19 +40,8 @@ main(int argc, char **argv)
         for (unsigned int cycle = n_cycles - (degree == 2 ? 2 : 1);
              cycle < n_cycles;
              ++cycle)
-          {
-            const std::string what = harmonic.name() +
-                                     ", p=" + std::to_string(degree) +
-                                     ", cycle " + std::to_string(cycle);
-            check::in_range(what + ": L2 rate",
-                            results.get("rate_l2", harmonic, cycle),
-                            degree + 1 - 0.3,
-                            degree + 1 + 0.3);
-            check::in_range(what + ": H1 rate",
-                            results.get("rate_h1", harmonic, cycle),
-                            degree - 0.3,
-                            degree + 0.3);
-          }
+          test_support::check_optimal_rates(
+            results, harmonic, degree, cycle, 0.3);
       }
   return check::summary();
 }

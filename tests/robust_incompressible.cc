@@ -32,8 +32,6 @@
 #include <cmath>
 #include <fourier_ssi/harmonic.h>
 #include <fourier_ssi/simulator.h>
-#include <iomanip>
-#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -41,14 +39,6 @@ using namespace FourierSSI;
 
 namespace
 {
-  std::string
-  str(const double x)
-  {
-    std::ostringstream out;
-    out << std::setprecision(17) << x;
-    return out.str();
-  }
-
   std::string
   lame_prm(const unsigned int degree,
            const double       nu,
@@ -66,15 +56,16 @@ namespace
            "subsection Mesh\n set R breakpoints = 1, 2\n set R cells = 4\n"
            " set Z breakpoints = 0, 1\n set Z cells = 4\n"
            " set Distortion = " +
-           str(distortion) +
+           test_support::full_precision(distortion) +
            "\nend\n"
            "subsection Materials\n set Materials = 0: E=1e5, nu=" +
-           str(nu) +
+           test_support::full_precision(nu) +
            "\nend\n"
            "subsection Boundary conditions\n set Dirichlet = 2: v=0; 3: v=0\n"
            " set Traction = 0: r=100\nend\n"
            "subsection Exact solution\n set Enabled = true\n set U = " +
-           str(A) + "*r + " + str(B) + "/r\nend\n";
+           test_support::full_precision(A) + "*r + " +
+           test_support::full_precision(B) + "/r\nend\n";
   }
 } // namespace
 
@@ -103,9 +94,10 @@ main(int argc, char **argv)
                       << ": relative L2 error " << l2 << " (x" << l2 / l2_ref
                       << " vs nu = 0.3), H1 " << h1 << " (x" << h1 / h1_ref
                       << ")" << std::endl;
-            const std::string what = "p=" + std::to_string(degree) + " " +
-                                     volumetric + ", nu=" + str(nu) +
-                                     ", distortion " + str(distortion);
+            const std::string what =
+              "p=" + std::to_string(degree) + " " + volumetric +
+              ", nu=" + test_support::full_precision(nu) + ", distortion " +
+              test_support::full_precision(distortion);
             if ((degree == 4 && distortion == 0.) || volumetric == "bbar")
               {
                 check::small(what + ": L2 error / L2 error(nu=0.3)",
@@ -156,8 +148,8 @@ main(int argc, char **argv)
           std::cout << "  stresses, p = 2 " << volumetric << ", nu = " << nu
                     << ": max error / p " << error << " (x" << error / error_ref
                     << " vs nu = 0.3)" << std::endl;
-          const std::string what =
-            "stresses p=2 " + volumetric + ", nu=" + str(nu);
+          const std::string what = "stresses p=2 " + volumetric +
+                                   ", nu=" + test_support::full_precision(nu);
           if (volumetric == "bbar")
             {
               check::small(what + ": max error / p", error, 2e-2);

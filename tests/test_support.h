@@ -3,12 +3,15 @@
 #ifndef fourier_ssi_tests_test_support_h
 #define fourier_ssi_tests_test_support_h
 
+#include "check.h"
+
 #include <array>
 #include <cstdlib>
 #include <deal.II/base/mpi.h>
 #include <fourier_ssi/parameters.h>
 #include <fourier_ssi/simulator.h>
 #include <fstream>
+#include <iomanip>
 #include <iostream>
 #include <regex>
 #include <sstream>
@@ -68,6 +71,67 @@ namespace test_support
    * section 10), kappa = 1e-3, nu = 0.3, as FunctionParser expressions; the
    * antisymmetric family has W -> -W.
    */
+  /**
+   * The .prm text of a manufactured-solution run on the distorted unit square
+   * r, z in [0, 1] (E = 1e5, nu = 0.3): exact amplitudes on r = 1, z = 0 and
+   * z = 1, the body force that makes them a solution, and the error norms.
+   * Solution: a struct of tests/mms_solutions.h or tests/mms_high_harmonics.h
+   * (generated; their fields n, U, V, W, f_r, f_z, f_theta).
+   */
+  template <typename Solution>
+  std::string
+  manufactured_solution_prm(const Solution    &s,
+                            const std::string &family,
+                            const unsigned int degree,
+                            const unsigned int n_cycles)
+  {
+    const std::string U = with_constants(s.U), V = with_constants(s.V),
+                      W            = with_constants(s.W);
+    const std::string all          = "u=" + U + ", v=" + V + ", w=" + W;
+    const std::string coarse_cells = std::to_string(degree == 2 ? 4 : 2);
+    return "subsection Discretization\n set Harmonics = " +
+           std::to_string(s.n) + "\n set Family = " + family +
+           "\n set Polynomial degree = " + std::to_string(degree) +
+           "\n set Refinement cycles = " + std::to_string(n_cycles) +
+           "\nend\n"
+           "subsection Mesh\n set R cells = " +
+           coarse_cells + "\n set Z cells = " + coarse_cells +
+           "\n set Distortion = 0.15\nend\n"
+           "subsection Materials\n set Materials = 0: E=1e5, nu=0.3\nend\n"
+           "subsection Boundary conditions\n set Dirichlet = 1: " +
+           all + "; 2: " + all + "; 3: " + all +
+           "\nend\n"
+           "subsection Body force\n set Radial = " +
+           with_constants(s.f_r) + "\n set Axial = " + with_constants(s.f_z) +
+           "\n set Circumferential = " + with_constants(s.f_theta) +
+           "\nend\n"
+           "subsection Exact solution\n set Enabled = true\n set U = " +
+           U + "\n set V = " + V + "\n set W = " + W + "\nend\n";
+  }
+
+  /**
+   * The optimal convergence orders of FE_Q(p) for a smooth solution at one
+   * refinement cycle: p + 1 in L2 and p in H1, each within +-margin.
+   */
+  inline void
+  check_optimal_rates(const FourierSSI::ResultsTable &results,
+                      const FourierSSI::Harmonic     &harmonic,
+                      const unsigned int              degree,
+                      const unsigned int              cycle,
+                      const double                    margin)
+  {
+    const std::string what = harmonic.name() + ", p=" + std::to_string(degree) +
+                             ", cycle " + std::to_string(cycle);
+    check::in_range(what + ": L2 rate",
+                    results.get("rate_l2", harmonic, cycle),
+                    degree + 1 - margin,
+                    degree + 1 + margin);
+    check::in_range(what + ": H1 rate",
+                    results.get("rate_h1", harmonic, cycle),
+                    degree - margin,
+                    degree + margin);
+  }
+
   inline std::array<std::string, 3>
   bending_amplitudes(const std::string &family)
   {
@@ -78,6 +142,38 @@ namespace test_support
              std::to_string(kappa) + "*r*z",
              s + std::to_string(kappa / 2) + "*(z^2-" + std::to_string(nu) +
                "*r^2)"}};
+  }
+
+  /**
+   * Materials, boundary conditions and exact solution of the pure bending of
+   * a cylinder (bending_amplitudes): E = 1e5, nu = 0.3; the exact amplitudes
+   * on boundary 2 (z = 0) and the bending traction E kappa r on boundary 3.
+   */
+  inline std::string
+  bending_conditions(const std::string &family)
+  {
+    const double       kappa = 1e-3, E = 1e5, nu = 0.3;
+    const auto         amplitudes = bending_amplitudes(family);
+    const std::string &U = amplitudes[0], &V = amplitudes[1],
+                      &W = amplitudes[2];
+    return "subsection Materials\n set Materials = 0: E=" + std::to_string(E) +
+           ", nu=" + std::to_string(nu) +
+           "\nend\n"
+           "subsection Boundary conditions\n set Dirichlet = 2: u=" +
+           U + ", v=" + V + ", w=" + W +
+           "\n set Traction = 3: z=" + std::to_string(E * kappa) +
+           "*r\nend\n"
+           "subsection Exact solution\n set Enabled = true\n set U = " +
+           U + "\n set V = " + V + "\n set W = " + W + "\nend\n";
+  }
+
+  /** Full-precision text of a number (std::to_string keeps 6 decimals). */
+  inline std::string
+  full_precision(const double x)
+  {
+    std::ostringstream out;
+    out << std::setprecision(17) << x;
+    return out.str();
   }
 
   /**

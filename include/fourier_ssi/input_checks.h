@@ -31,6 +31,15 @@ namespace FourierSSI
                            const ScenePlan        &plan);
 
   /**
+   * Why the output paths cannot be written (Output/Directory exists and is
+   * not a directory, Output/Results file is empty or names a directory), as
+   * a one-line message; empty if they can. It reads the file system, so on
+   * several ranks one rank must decide for all (Simulator::run).
+   */
+  std::string
+  output_path_error(const OutputParameters &output);
+
+  /**
    * Poisson's ratio from which FE_Q(2) with the standard (fully integrated)
    * dilatation locks noticeably. On the bundled embedded footing (finer
    * cycle) locking adds 0.2 % to K_M at nu = 0.3, 0.9 % at 0.45 (more than

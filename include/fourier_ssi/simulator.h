@@ -22,6 +22,7 @@
 #include <fourier_ssi/parameters.h>
 #include <fourier_ssi/results_table.h>
 #include <fourier_ssi/scene_plan.h>
+#include <functional>
 #include <memory>
 #include <ostream>
 #include <set>
@@ -76,6 +77,19 @@ namespace FourierSSI
       /** Phase wall times of this harmonic (sections of a TimerOutput). */
       std::map<std::string, double> times;
     };
+
+    /**
+     * A decision that reads the file system, made on rank 0 and sent to
+     * every rank: ranks that see the disk at different moments (one rank
+     * creating the output folder while another checks it) must not take
+     * different branches, or the one that goes on waits forever.
+     */
+    template <typename T>
+    T
+    decided_on_rank_0(const std::function<T()> &decide) const;
+
+    void
+    check_output_paths() const;
 
     void
     remove_stale_results() const;
