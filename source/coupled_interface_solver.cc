@@ -1,6 +1,8 @@
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <deal.II/base/quadrature_lib.h>
+#include <fourier_ssi/anderson_acceleration.h>
 #include <fourier_ssi/coupled_interface_solver.h>
 #include <fstream>
 #include <iomanip>
@@ -21,14 +23,27 @@ namespace FourierSSI
       return list;
     }
 
-    /** Automatic N = 4 (n_max + 1); a given N must exceed 2 n_max. */
     unsigned int
-    theta_samples_for(const std::vector<Harmonic> &list,
-                      const unsigned int           requested)
+    highest_harmonic(const std::vector<Harmonic> &list)
     {
       unsigned int n_max = 0;
       for (const Harmonic &h : list)
         n_max = std::max(n_max, h.n);
+      return n_max;
+    }
+
+    /**
+     * Automatic N = 4 (n_max + 1); a given N must exceed 2 n_max. With
+     * growth n_max is Maximum harmonic, so that the samples (and the state
+     * kept at them) stay valid when harmonics are added.
+     */
+    unsigned int
+    theta_samples_for(const std::vector<Harmonic>        &list,
+                      const NonlinearInterfaceParameters &settings)
+    {
+      const unsigned int requested = settings.theta_samples;
+      const unsigned int n_max =
+        std::max(highest_harmonic(list), settings.maximum_harmonic);
       if (requested == 0)
         return 4 * (n_max + 1);
       AssertThrow(requested >= minimum_theta_samples(n_max),
@@ -101,6 +116,96 @@ namespace FourierSSI
       return 0.;
     }
 
+    /**
+     * The update of the correction load c <- c + dc of one iteration from
+     * the force residual R = G(c) - c: dc = R (none), omega R with Aitken's
+     * Delta^2 rule omega_k = -omega_{k-1} R_{k-1}^T (R_k - R_{k-1}) /
+     * |R_k - R_{k-1}|^2, or the Anderson update on the last m residuals
+     * (doc/nonlinear-interfaces.md section 5). One per load step.
+     */
+    class FixedPointAcceleration
+    {
+    public:
+      using Kind = NonlinearInterfaceParameters::Acceleration;
+
+      FixedPointAcceleration(const NonlinearInterfaceParameters &settings)
+        : kind(settings.acceleration)
+        , anderson(settings.anderson_depth)
+      {}
+
+      std::vector<Vector<double>>
+      increment(const std::vector<Vector<double>> &load,
+                const std::vector<Vector<double>> &residual)
+      {
+        if (kind == Kind::anderson)
+          return anderson.increment(load, residual);
+        if (kind == Kind::aitken && !previous_residual.empty())
+          omega = aitken_factor(residual);
+        previous_residual                  = residual;
+        std::vector<Vector<double>> result = residual;
+        for (Vector<double> &block : result)
+          block *= omega;
+        return result;
+      }
+
+    private:
+      double
+      aitken_factor(const std::vector<Vector<double>> &residual) const
+      {
+        std::vector<Vector<double>> change = residual;
+        for (unsigned int h = 0; h < change.size(); ++h)
+          change[h] -= previous_residual[h];
+        const double change_sqr = dot_over_harmonics(change, change);
+        return change_sqr > 0. ?
+                 -omega * dot_over_harmonics(previous_residual, change) /
+                   change_sqr :
+                 omega;
+      }
+
+      Kind                        kind;
+      AndersonAcceleration        anderson;
+      double                      omega = 1.;
+      std::vector<Vector<double>> previous_residual;
+    };
+
+    std::string
+    name_of(const NonlinearInterfaceParameters &settings)
+    {
+      using Kind = NonlinearInterfaceParameters::Acceleration;
+      return settings.acceleration == Kind::anderson ?
+               ", Anderson m = " + std::to_string(settings.anderson_depth) :
+             settings.acceleration == Kind::aitken ? ", Aitken" :
+                                                     ", no acceleration";
+    }
+
+    /**
+     * Growth: every n <= Maximum harmonic in the families of the set, if
+     * that is above the highest harmonic of the set; else none.
+     */
+    std::vector<Harmonic>
+    candidate_harmonics(const std::vector<Harmonic> &list,
+                        const unsigned int           maximum_harmonic)
+    {
+      std::vector<Harmonic> result;
+      if (maximum_harmonic <= highest_harmonic(list))
+        return result;
+      for (const Family family : {Family::symmetric, Family::antisymmetric})
+        if (std::any_of(list.begin(), list.end(), [&](const Harmonic &h) {
+              return h.family == family;
+            }))
+          for (unsigned int n = 0; n <= maximum_harmonic; ++n)
+            result.push_back({n, family});
+      return result;
+    }
+
+    bool
+    contains(const std::vector<Harmonic> &list, const Harmonic &h)
+    {
+      return std::any_of(list.begin(), list.end(), [&](const Harmonic &g) {
+        return g.n == h.n && g.family == h.family;
+      });
+    }
+
     const InterfaceIntegrator &
     interfaces_of(const HarmonicProblem &problem)
     {
@@ -111,15 +216,15 @@ namespace FourierSSI
   } // namespace
 
   CoupledInterfaceSolver::CoupledInterfaceSolver(
-    const HarmonicSet   &set,
+    HarmonicSet         &set,
     const AllParameters &parameters)
     : set(set)
     , parameters(parameters)
     , settings(parameters.nonlinear_interfaces)
     , harmonics(harmonics_of(set))
-    , sampling(harmonics,
-               theta_samples_for(harmonics,
-                                 parameters.nonlinear_interfaces.theta_samples))
+    , sampling(harmonics, theta_samples_for(harmonics, settings))
+    , candidates(candidate_harmonics(harmonics, settings.maximum_harmonic))
+    , spectrum(candidates, sampling.n_samples())
   {
     for (unsigned int h = 0; h < set.size(); ++h)
       AssertThrow(!set.problem(h).get_constraints().has_inhomogeneities(),
@@ -251,12 +356,14 @@ namespace FourierSSI
   std::array<unsigned int, 3>
   CoupledInterfaceSolver::return_map(const std::vector<LocalVector> &relative,
                                      std::vector<LocalVector>       &plastic,
-                                     std::vector<LocalVector> &traction) const
+                                     std::vector<LocalVector>       &traction,
+                                     std::vector<ContactState> &state) const
   {
     const unsigned int          N      = sampling.n_samples();
     std::array<unsigned int, 3> counts = {{0, 0, 0}};
     plastic.resize(relative.size());
     traction.resize(relative.size());
+    state.resize(relative.size());
     for (unsigned int i = 0; i < points.size(); ++i)
       for (unsigned int j = 0; j < N; ++j)
         {
@@ -267,6 +374,7 @@ namespace FourierSSI
                                            committed.plastic[k]);
           plastic[k]  = r.plastic;
           traction[k] = r.traction;
+          state[k]    = r.state;
           ++counts[static_cast<int>(r.state)];
         }
     return counts;
@@ -377,15 +485,16 @@ namespace FourierSSI
   }
 
   bool
-  CoupledInterfaceSolver::solve_step(const double    target,
-                                     StepState      &state,
-                                     LoadStepResult &result)
+  CoupledInterfaceSolver::solve_step(const double       target,
+                                     StepState         &state,
+                                     LoadStepResult    &result,
+                                     InterfaceSnapshot &snapshot)
   {
     const bool displacement_control =
       settings.control == NonlinearInterfaceParameters::Control::displacement;
-    std::vector<LocalVector>    plastic, traction;
-    std::vector<Vector<double>> previous_residual;
-    double                      omega = 1.;
+    std::vector<LocalVector>  plastic, traction;
+    std::vector<ContactState> contact;
+    FixedPointAcceleration    acceleration(settings);
     for (unsigned int iteration = 0; iteration <= settings.maximum_iterations;
          ++iteration)
       {
@@ -399,7 +508,7 @@ namespace FourierSSI
         for (unsigned int k = 0; k < relative.size(); ++k)
           for (unsigned int c = 0; c < 3; ++c)
             relative[k][c] += state.load_factor * pattern_relative[k][c];
-        const auto counts = return_map(relative, plastic, traction);
+        const auto counts = return_map(relative, plastic, traction, contact);
         // 3-4: out-of-balance load and force residual R = G - c.
         std::vector<Vector<double>> residual  = out_of_balance_load(plastic);
         const double                load_norm = norm_over_harmonics(residual);
@@ -420,26 +529,17 @@ namespace FourierSSI
             result.residual   = scale > 0. ? residual_norm / scale : 0.;
             result.states     = counts;
             result.resultant  = foundation_resultant(traction);
+            snapshot          = {relative, traction, contact};
             return true;
           }
-        // Aitken's Delta^2 relaxation on the fixed point c = G(c).
-        if (settings.aitken && !previous_residual.empty())
-          {
-            std::vector<Vector<double>> change = residual;
-            for (unsigned int h = 0; h < set.size(); ++h)
-              change[h] -= previous_residual[h];
-            const double change_sqr = dot_over_harmonics(change, change);
-            if (change_sqr > 0.)
-              omega = -omega * dot_over_harmonics(previous_residual, change) /
-                      change_sqr;
-          }
-        previous_residual = residual;
+        // 5: c <- c + dc and v <- v + K^-1 dc, every harmonic re-solved.
+        std::vector<Vector<double>> change =
+          acceleration.increment(state.correction_load, residual);
         std::vector<std::vector<Vector<double>>> increment(set.size());
         for (unsigned int h = 0; h < set.size(); ++h)
           {
-            residual[h] *= omega;
-            state.correction_load[h] += residual[h];
-            increment[h] = {residual[h]};
+            state.correction_load[h] += change[h];
+            increment[h] = {std::move(change[h])};
           }
         set.solve_increments(increment);
         for (unsigned int h = 0; h < set.size(); ++h)
@@ -533,6 +633,72 @@ namespace FourierSSI
     return total;
   }
 
+  std::vector<Harmonic>
+  CoupledInterfaceSolver::harmonics_called_for(
+    const InterfaceSnapshot &snapshot,
+    std::ostream            &log) const
+  {
+    std::vector<Harmonic> added;
+    if (candidates.empty())
+      return added;
+    // 1. The spectrum of t - t0: per candidate harmonic, the amplitudes of
+    //    the three components at every point, squared and weighted by the
+    //    point's area (an L2 norm over the interface of that harmonic).
+    const unsigned int  N = sampling.n_samples();
+    std::vector<double> norm_sqr(candidates.size(), 0.), samples(N), amplitude;
+    for (unsigned int i = 0; i < points.size(); ++i)
+      for (unsigned int c = 0; c < 3; ++c)
+        {
+          for (unsigned int j = 0; j < N; ++j)
+            samples[j] =
+              snapshot.traction[i * N + j][c] - points[i].initial_traction[c];
+          spectrum.project(samples,
+                           c == 2 ? ThetaFactor::circumferential :
+                                    ThetaFactor::in_plane,
+                           amplitude);
+          for (unsigned int h = 0; h < candidates.size(); ++h)
+            norm_sqr[h] +=
+              points[i].area_per_radian * amplitude[h] * amplitude[h];
+        }
+    // 2. Harmonics not solved whose amplitude has not decayed below the
+    //    tolerance relative to the largest one.
+    const double largest =
+      std::sqrt(*std::max_element(norm_sqr.begin(), norm_sqr.end()));
+    std::ostringstream why;
+    for (unsigned int h = 0; h < candidates.size(); ++h)
+      {
+        const double relative =
+          largest > 0. ? std::sqrt(norm_sqr[h]) / largest : 0.;
+        if (contains(harmonics, candidates[h]) ||
+            relative <= settings.harmonic_tolerance)
+          continue;
+        added.push_back(candidates[h]);
+        why << ' ' << candidates[h].name() << " (" << std::setprecision(3)
+            << relative << ')';
+      }
+    if (!added.empty())
+      log << "  harmonics added, interface-traction amplitude relative to "
+             "the largest above "
+          << settings.harmonic_tolerance << ":" << why.str()
+          << "; the step is solved again\n";
+    return added;
+  }
+
+  void
+  CoupledInterfaceSolver::grow(const std::vector<Harmonic> &added)
+  {
+    set.add(added);
+    harmonics = harmonics_of(set);
+    sampling  = ThetaSampling(harmonics, sampling.n_samples());
+    solve_load_pattern();
+    for (unsigned int h = committed.correction_solution.size(); h < set.size();
+         ++h)
+      {
+        committed.correction_solution.emplace_back(pattern_solution[h].size());
+        committed.correction_load.emplace_back(pattern_solution[h].size());
+      }
+  }
+
   Vector<double>
   CoupledInterfaceSolver::solution(const unsigned int i) const
   {
@@ -550,7 +716,12 @@ namespace FourierSSI
         << sampling.n_samples() << " theta samples, " << set.size()
         << " harmonics, " << (load_control ? "load" : "displacement")
         << " control, " << settings.load_steps << " steps, tolerance "
-        << settings.tolerance << (settings.aitken ? ", Aitken" : "") << '\n';
+        << settings.tolerance << name_of(settings);
+    if (!candidates.empty())
+      log << ", harmonics grow up to n = " << settings.maximum_harmonic
+          << " where the interface traction calls for them (tolerance "
+          << settings.harmonic_tolerance << ")";
+    log << '\n';
     if (without_strength)
       log << "warning: " << entry
           << ": a coulomb interface has c = 0 and no Initial stress: it has "
@@ -562,10 +733,11 @@ namespace FourierSSI
         const double fraction = std::min(1., done + increment);
         const double target =
           load_control ? fraction : fraction * settings.target;
-        StepState      state = committed;
-        LoadStepResult result;
-        const auto     start = std::chrono::steady_clock::now();
-        if (!solve_step(target, state, result))
+        StepState         state = committed;
+        LoadStepResult    result;
+        InterfaceSnapshot snapshot;
+        const auto        start = std::chrono::steady_clock::now();
+        if (!solve_step(target, state, result, snapshot))
           {
             AssertThrow(++cuts <= settings.maximum_step_cuts,
                         ExcMessage(entry + ": load step " +
@@ -581,14 +753,22 @@ namespace FourierSSI
             log << "  step cut to " << increment << " of the loading\n";
             continue;
           }
+        const std::vector<Harmonic> added = harmonics_called_for(snapshot, log);
+        if (!added.empty())
+          {
+            grow(added);
+            continue;
+          }
         committed          = state;
         done               = fraction;
+        result.n_harmonics = set.size();
         result.load_factor = state.load_factor;
         result.motion      = motion_of(state);
         result.time        = std::chrono::duration<double>(
                         std::chrono::steady_clock::now() - start)
                         .count();
         steps.push_back(result);
+        snapshots.push_back(std::move(snapshot));
         const auto loads = applied_loads(result.load_factor);
         log << "  step " << steps.size() << ": factor " << result.load_factor
             << ", V " << loads[2] << " kN, H " << loads[0] << " kN, T "
@@ -596,33 +776,9 @@ namespace FourierSSI
             << " m, u " << result.motion.horizontal_displacement << " m, twist "
             << result.motion.twist << " rad; " << result.iterations
             << " iterations; stick/slip/open " << result.states[0] << '/'
-            << result.states[1] << '/' << result.states[2] << '\n';
+            << result.states[1] << '/' << result.states[2] << "; "
+            << result.n_harmonics << " harmonics\n";
       }
   }
 
-  void
-  CoupledInterfaceSolver::write_csv(const std::string &filename) const
-  {
-    std::ofstream out(filename);
-    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
-    out << "step,load_factor,V_kN,H_kN,M_kNm,T_kNm,vertical_m,horizontal_m,"
-           "rotation_rad,twist_rad,iterations,residual,stick,slip,open,"
-           "time_s,converged\n"
-        << std::setprecision(12);
-    for (unsigned int s = 0; s < steps.size(); ++s)
-      {
-        const LoadStepResult &r = steps[s];
-        const auto            f = parameters.rigid_foundation;
-        out << s + 1 << ',' << r.load_factor << ','
-            << r.load_factor * f.vertical_force << ','
-            << r.load_factor * f.horizontal_force << ','
-            << r.load_factor * f.moment << ',' << r.load_factor * f.torque
-            << ',' << r.motion.vertical_displacement << ','
-            << r.motion.horizontal_displacement << ',' << r.motion.rotation
-            << ',' << r.motion.twist << ',' << r.iterations << ',' << r.residual
-            << ',' << r.states[0] << ',' << r.states[1] << ',' << r.states[2]
-            << ',' << r.time << ",1\n";
-      }
-    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
-  }
 } // namespace FourierSSI

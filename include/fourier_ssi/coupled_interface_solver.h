@@ -67,6 +67,21 @@ namespace FourierSSI
     std::array<double, 6> resultant = {{0., 0., 0., 0., 0., 0.}};
     /** Wall time of the step [s]. */
     double time = 0.;
+    /** Harmonics solved in this step (grows with Maximum harmonic). */
+    unsigned int n_harmonics = 0;
+  };
+
+  /**
+   * The interface at every (point, theta sample) of one converged step,
+   * index i * N + j for point i and angle theta_j.
+   */
+  struct InterfaceSnapshot
+  {
+    /** Relative displacement d = u_B - u_A, local (s, n, theta) [m]. */
+    std::vector<LocalVector> relative;
+    /** Traction t (total, initial stress included), (s, n, theta) [kPa]. */
+    std::vector<LocalVector>  traction;
+    std::vector<ContactState> state;
   };
 
   class CoupledInterfaceSolver
@@ -74,10 +89,11 @@ namespace FourierSSI
   public:
     /**
      * `set` must be assembled and factorized; its harmonics' matrices hold
-     * the elastic interface stiffness kn, ks of every interface.
+     * the elastic interface stiffness kn, ks of every interface. With
+     * `Nonlinear interfaces/Maximum harmonic` above the highest harmonic of
+     * the set, harmonics the interface tractions call for are added to it.
      */
-    CoupledInterfaceSolver(const HarmonicSet   &set,
-                           const AllParameters &parameters);
+    CoupledInterfaceSolver(HarmonicSet &set, const AllParameters &parameters);
 
     /**
      * All load steps. Returns normally if every step converged; otherwise
@@ -92,6 +108,22 @@ namespace FourierSSI
     {
       return steps;
     }
+
+    /** Interface state of every converged step (same order as steps). */
+    const std::vector<InterfaceSnapshot> &
+    get_snapshots() const
+    {
+      return snapshots;
+    }
+
+    /**
+     * CSV of the interface state at every (point, theta sample) of every
+     * converged step: position, angle, stick/slip/open, traction and
+     * relative displacement with their units in the header
+     * (coupled_interface_solver_output.cc).
+     */
+    void
+    write_interface_state_csv(const std::string &filename) const;
 
     /** Total displacement amplitudes of harmonic i (last converged state). */
     Vector<double>
@@ -176,7 +208,8 @@ namespace FourierSSI
     std::array<unsigned int, 3>
     return_map(const std::vector<LocalVector> &relative,
                std::vector<LocalVector>       &plastic,
-               std::vector<LocalVector>       &traction) const;
+               std::vector<LocalVector>       &traction,
+               std::vector<ContactState>      &state) const;
 
     /** G_h = int B_h^T D d_p, condensed, every harmonic. */
     std::vector<Vector<double>>
@@ -189,7 +222,10 @@ namespace FourierSSI
 
     /** Iterate one step to lambda (load control) or to a motion target. */
     bool
-    solve_step(const double target, StepState &state, LoadStepResult &result);
+    solve_step(const double       target,
+               StepState         &state,
+               LoadStepResult    &result,
+               InterfaceSnapshot &snapshot);
 
     std::array<double, 6>
     foundation_resultant(const std::vector<LocalVector> &traction) const;
@@ -197,21 +233,38 @@ namespace FourierSSI
     RigidMotion
     motion_of(const StepState &state) const;
 
-    const HarmonicSet                &set;
-    const AllParameters              &parameters;
-    NonlinearInterfaceParameters      settings;
-    std::vector<Harmonic>             harmonics;
-    ThetaSampling                     sampling;
+    /**
+     * Harmonics n <= Maximum harmonic, not solved, whose amplitude in the
+     * traction change t - t0 of a converged state exceeds Harmonic
+     * tolerance times the largest amplitude; each logged with its amplitude.
+     */
+    std::vector<Harmonic>
+    harmonics_called_for(const InterfaceSnapshot &snapshot,
+                         std::ostream            &log) const;
+
+    /** Add harmonics to the set and extend the iteration state by zeros. */
+    void
+    grow(const std::vector<Harmonic> &added);
+
+    HarmonicSet                 &set;
+    const AllParameters         &parameters;
+    NonlinearInterfaceParameters settings;
+    std::vector<Harmonic>        harmonics;
+    ThetaSampling                sampling;
+    /** Every candidate harmonic n <= Maximum harmonic (growth only). */
+    std::vector<Harmonic>             candidates;
+    ThetaSampling                     spectrum;
     std::vector<MohrCoulombInterface> laws;
     /** Some nonlinear law has neither cohesion nor initial stress. */
     bool                        without_strength = false;
     std::vector<InterfacePoint> points;
     std::vector<Vector<double>> pattern_solution;
     /** sqrt(sum_h |F_h|^2) of the scene's (condensed) loads. */
-    double                      pattern_load_norm = 0.;
-    std::vector<LocalVector>    pattern_relative;
-    StepState                   committed;
-    std::vector<LoadStepResult> steps;
+    double                         pattern_load_norm = 0.;
+    std::vector<LocalVector>       pattern_relative;
+    StepState                      committed;
+    std::vector<LoadStepResult>    steps;
+    std::vector<InterfaceSnapshot> snapshots;
   };
 } // namespace FourierSSI
 
