@@ -59,6 +59,7 @@ namespace FourierSSI
     dx.clear();
     df.clear();
     columns_used = 0;
+    restarts     = 0;
   }
 
   std::vector<double>
@@ -111,6 +112,19 @@ namespace FourierSSI
   AndersonAcceleration::Blocks
   AndersonAcceleration::increment(const Blocks &x, const Blocks &f)
   {
+    // 0. Safeguard: a residual that grew well above the smallest of the
+    //    history means the secant model failed (the law switched state at
+    //    many points); restart from this iterate with a plain step.
+    const double norm = std::sqrt(dot(f, f));
+    if (!previous_x.empty() && norm > restart_factor * smallest_norm)
+      {
+        dx.clear();
+        df.clear();
+        previous_x.clear();
+        ++restarts;
+      }
+    smallest_norm =
+      dx.empty() && previous_x.empty() ? norm : std::min(smallest_norm, norm);
     // 1. the newest differences enter the history (at most `depth`).
     if (!previous_x.empty())
       {

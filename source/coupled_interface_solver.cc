@@ -6,6 +6,7 @@
 #include <fourier_ssi/coupled_interface_solver.h>
 #include <fstream>
 #include <iomanip>
+#include <set>
 #include <sstream>
 
 namespace FourierSSI
@@ -241,6 +242,8 @@ namespace FourierSSI
         committed.correction_solution[h] = 0.;
         committed.correction_load[h]     = 0.;
       }
+    committed.interface_solution = committed.correction_solution;
+    condense(0);
     committed.plastic.assign(points.size() * sampling.n_samples(),
                              {{0., 0., 0.}});
   }
@@ -307,6 +310,16 @@ namespace FourierSSI
     for (unsigned int h = 0; h < set.size(); ++h)
       pattern_solution.push_back(b[h][0]);
     pattern_relative = relative_displacements(pattern_solution);
+    if (settings.control == NonlinearInterfaceParameters::Control::displacement)
+      {
+        const unsigned int h = controlled_harmonic();
+        pattern_motion       = controlled_motion_of(h, pattern_solution[h]);
+        AssertThrow(pattern_motion != 0.,
+                    ExcMessage(entry +
+                               "/Controlled motion: the Rigid foundation "
+                               "loads do not drive this motion (give the "
+                               "load that does, e.g. V for vertical)"));
+      }
   }
 
   std::vector<LocalVector>
@@ -451,37 +464,156 @@ namespace FourierSSI
     return out_of_balance_load(relative_displacements(fields));
   }
 
-  double
-  CoupledInterfaceSolver::controlled_load_factor(
-    const std::vector<Vector<double>> &v,
-    const double                       target) const
+  unsigned int
+  CoupledInterfaceSolver::controlled_harmonic() const
   {
     const Harmonic wanted = harmonic_of(settings.motion);
     for (unsigned int h = 0; h < set.size(); ++h)
       if (harmonics[h].n == wanted.n && harmonics[h].family == wanted.family)
         {
-          const RigidFoundation *foundation = set.problem(h).get_foundation();
-          AssertThrow(foundation != nullptr,
+          AssertThrow(set.problem(h).get_foundation() != nullptr,
                       ExcMessage(entry +
                                  "/Control: displacement control needs a "
                                  "Rigid foundation"));
-          const double by_pattern =
-            component(foundation->motion(pattern_solution[h]), settings.motion);
-          AssertThrow(by_pattern != 0.,
-                      ExcMessage(entry +
-                                 "/Controlled motion: the Rigid foundation "
-                                 "loads do not drive this motion (give the "
-                                 "load that does, e.g. V for vertical)"));
-          const double by_correction =
-            component(foundation->motion(v[h]), settings.motion);
-          return (target - by_correction) / by_pattern;
+          return h;
         }
     AssertThrow(false,
                 ExcMessage(entry +
                            "/Controlled motion: its harmonic is not solved "
                            "(n = 0 for vertical and twist, n = 1 symmetric "
                            "for horizontal and rotation)"));
-    return 0.;
+    return 0;
+  }
+
+  double
+  CoupledInterfaceSolver::controlled_motion_of(const unsigned int    h,
+                                               const Vector<double> &v) const
+  {
+    return component(set.problem(h).get_foundation()->motion(v),
+                     settings.motion);
+  }
+
+  void
+  CoupledInterfaceSolver::condense(const unsigned int first)
+  {
+    const bool displacement_control =
+      settings.control == NonlinearInterfaceParameters::Control::displacement;
+    const unsigned int controlled =
+      displacement_control ? controlled_harmonic() : set.size();
+    condensed.resize(set.size());
+    // 1. Per harmonic, the DoFs c reaches (write) and the DoFs the relative
+    //    displacements read, from the nonlinear pairs.
+    std::set<unsigned int> nonlinear_pairs;
+    for (const InterfacePoint &point : points)
+      nonlinear_pairs.insert(point.pair);
+    for (unsigned int h = first; h < set.size(); ++h)
+      {
+        const AffineConstraints<double> &constraints =
+          set.problem(h).get_homogeneous_constraints();
+        const auto &pairs = interfaces_of(set.problem(h)).get_pairs();
+        std::set<types::global_dof_index> write, read;
+        for (const unsigned int i : nonlinear_pairs)
+          for (const types::global_dof_index d : pairs[i].dof_indices)
+            {
+              read.insert(d);
+              if (!constraints.is_constrained(d))
+                write.insert(d);
+              else if (const auto *entries =
+                         constraints.get_constraint_entries(d))
+                for (const auto &entry : *entries)
+                  write.insert(entry.first);
+            }
+        condensed[h].write.assign(write.begin(), write.end());
+        condensed[h].read.assign(read.begin(), read.end());
+        condensed[h].flexibility.reinit(read.size(), write.size());
+        condensed[h].controlled_motion.assign(write.size(), 0.);
+      }
+    // 2. K^-1 e_j for every write DoF j, in batches (memory), every
+    //    harmonic concurrently with the kept factorizations.
+    const unsigned int batch = 64;
+    for (unsigned int start = 0;; start += batch)
+      {
+        std::vector<std::vector<Vector<double>>> x(set.size());
+        bool                                     any = false;
+        for (unsigned int h = first; h < set.size(); ++h)
+          for (unsigned int j = start;
+               j <
+               std::min<std::size_t>(start + batch, condensed[h].write.size());
+               ++j)
+            {
+              x[h].emplace_back(pattern_solution[h].size());
+              x[h].back()(condensed[h].write[j]) = 1.;
+              any                                = true;
+            }
+        if (!any)
+          break;
+        set.solve_increments(x);
+        for (unsigned int h = first; h < set.size(); ++h)
+          for (unsigned int k = 0; k < x[h].size(); ++k)
+            {
+              Condensation &c = condensed[h];
+              for (unsigned int i = 0; i < c.read.size(); ++i)
+                c.flexibility(i, start + k) = x[h][k](c.read[i]);
+              if (h == controlled)
+                c.controlled_motion[start + k] =
+                  controlled_motion_of(h, x[h][k]);
+            }
+      }
+  }
+
+  std::vector<Vector<double>>
+  CoupledInterfaceSolver::on_write_dofs(
+    const std::vector<Vector<double>> &full) const
+  {
+    std::vector<Vector<double>> result(set.size());
+    for (unsigned int h = 0; h < set.size(); ++h)
+      {
+        const Condensation &c = condensed[h];
+        result[h].reinit(c.write.size());
+        for (unsigned int j = 0; j < c.write.size(); ++j)
+          result[h](j) = full[h](c.write[j]);
+      }
+    return result;
+  }
+
+  void
+  CoupledInterfaceSolver::add_correction(
+    const std::vector<Vector<double>> &dc_write,
+    StepState                         &state) const
+  {
+    for (unsigned int h = 0; h < set.size(); ++h)
+      {
+        const Condensation &c = condensed[h];
+        Vector<double>      dv_read(c.read.size());
+        c.flexibility.vmult(dv_read, dc_write[h]);
+        for (unsigned int i = 0; i < c.read.size(); ++i)
+          state.interface_solution[h](c.read[i]) += dv_read(i);
+        for (unsigned int j = 0; j < c.write.size(); ++j)
+          {
+            state.correction_load[h](c.write[j]) += dc_write[h](j);
+            state.controlled_motion += c.controlled_motion[j] * dc_write[h](j);
+          }
+      }
+  }
+
+  void
+  CoupledInterfaceSolver::complete(StepState &state) const
+  {
+    std::vector<std::vector<Vector<double>>> x(set.size());
+    for (unsigned int h = 0; h < set.size(); ++h)
+      x[h] = {state.correction_load[h]};
+    set.solve_increments(x);
+    for (unsigned int h = 0; h < set.size(); ++h)
+      state.correction_solution[h] = x[h][0];
+    // Restart the next step's condensed view from the exact field (no
+    // accumulation of round-off over the steps).
+    state.interface_solution = state.correction_solution;
+    if (settings.control == NonlinearInterfaceParameters::Control::displacement)
+      {
+        const unsigned int h = controlled_harmonic();
+        state.controlled_motion =
+          controlled_motion_of(h, state.correction_solution[h]);
+      }
   }
 
   bool
@@ -500,11 +632,11 @@ namespace FourierSSI
       {
         state.load_factor =
           displacement_control ?
-            controlled_load_factor(state.correction_solution, target) :
+            (target - state.controlled_motion) / pattern_motion :
             target;
         // 1-2: relative displacements at every (point, theta), the law.
         std::vector<LocalVector> relative =
-          relative_displacements(state.correction_solution);
+          relative_displacements(state.interface_solution);
         for (unsigned int k = 0; k < relative.size(); ++k)
           for (unsigned int c = 0; c < 3; ++c)
             relative[k][c] += state.load_factor * pattern_relative[k][c];
@@ -524,6 +656,15 @@ namespace FourierSSI
           return false;
         if (residual_norm <= settings.tolerance * scale)
           {
+            complete(state);
+            // A diverged iterate can pass the relative test with a huge
+            // load factor; the controlled motion then misses its target
+            // (cancellation of lambda m(u_F) against m(v)): not converged.
+            if (displacement_control &&
+                std::abs(state.load_factor * pattern_motion +
+                         state.controlled_motion - target) >
+                  1e-8 * std::abs(target))
+              return false;
             state.plastic     = plastic;
             result.iterations = iteration;
             result.residual   = scale > 0. ? residual_norm / scale : 0.;
@@ -532,18 +673,13 @@ namespace FourierSSI
             snapshot          = {relative, traction, contact};
             return true;
           }
-        // 5: c <- c + dc and v <- v + K^-1 dc, every harmonic re-solved.
-        std::vector<Vector<double>> change =
-          acceleration.increment(state.correction_load, residual);
-        std::vector<std::vector<Vector<double>>> increment(set.size());
-        for (unsigned int h = 0; h < set.size(); ++h)
-          {
-            state.correction_load[h] += change[h];
-            increment[h] = {std::move(change[h])};
-          }
-        set.solve_increments(increment);
-        for (unsigned int h = 0; h < set.size(); ++h)
-          state.correction_solution[h] += increment[h][0];
+        // 5: c <- c + dc and v <- v + K^-1 dc at the interface (section 5,
+        //    condensed: exact, without a re-solve).
+        //    c and R live on the write DoFs: the acceleration works there.
+        add_correction(acceleration.increment(on_write_dofs(
+                                                state.correction_load),
+                                              on_write_dofs(residual)),
+                       state);
       }
     return false;
   }
@@ -691,12 +827,14 @@ namespace FourierSSI
     harmonics = harmonics_of(set);
     sampling  = ThetaSampling(harmonics, sampling.n_samples());
     solve_load_pattern();
-    for (unsigned int h = committed.correction_solution.size(); h < set.size();
-         ++h)
+    const unsigned int first = committed.correction_solution.size();
+    for (unsigned int h = first; h < set.size(); ++h)
       {
         committed.correction_solution.emplace_back(pattern_solution[h].size());
         committed.correction_load.emplace_back(pattern_solution[h].size());
+        committed.interface_solution.emplace_back(pattern_solution[h].size());
       }
+    condense(first);
   }
 
   Vector<double>

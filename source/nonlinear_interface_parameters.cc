@@ -53,7 +53,7 @@ namespace FourierSSI
                       "residuals; aitken: Aitken's Delta^2 relaxation (one "
                       "previous residual); none: plain initial stiffness.");
     prm.declare_entry("Anderson depth",
-                      "5",
+                      "10",
                       Patterns::Integer(1, 50),
                       "Acceleration = anderson: how many previous residuals "
                       "(m) the update combines.");

@@ -15,7 +15,6 @@
 
 #include <deal.II/lac/full_matrix.h>
 #include <fourier_ssi/anderson_acceleration.h>
-
 #include <random>
 
 using namespace FourierSSI;
@@ -90,7 +89,7 @@ namespace
     for (unsigned int i = 0; i < n; ++i)
       b(i) = 1. + i;
     // x* = (I - A)^-1 b.
-    FullMatrix<double> i_minus_a(IdentityMatrix(n));
+    FullMatrix<double> i_minus_a{IdentityMatrix(n)};
     i_minus_a.add(-1., a);
     i_minus_a.gauss_jordan();
     i_minus_a.vmult(exact, b);
@@ -129,12 +128,10 @@ main()
   AndersonAcceleration anderson(3, 0.5);
   const Blocks         x = {Vector<double>(2), Vector<double>(1)};
   Blocks               f = x;
-  f[0](0)              = 2.;
-  f[1](0)              = -4.;
-  const Blocks step    = anderson.increment(x, f);
+  f[0](0)                = 2.;
+  f[1](0)                = -4.;
+  const Blocks step      = anderson.increment(x, f);
   check::small("first update is beta f", step[0](0) - 1., 1e-15);
-  check::small("first update is beta f (second block)",
-               step[1](0) + 2.,
-               1e-15);
+  check::small("first update is beta f (second block)", step[1](0) + 2., 1e-15);
   return check::summary();
 }

@@ -10,7 +10,6 @@
 #include <fourier_ssi/coupled_interface_solver.h>
 #include <fourier_ssi/harmonic_set.h>
 #include <fourier_ssi/scene_plan.h>
-
 #include <iostream>
 #include <regex>
 #include <string>
@@ -88,8 +87,8 @@ namespace coupled_test
   inline double
   linear_lateral_slope(std::string text, const std::string &law)
   {
-    text = with_entry(text, "Interfaces", law);
-    text = with_entry(text, "Harmonics", "1");
+    text                           = with_entry(text, "Interfaces", law);
+    text                           = with_entry(text, "Harmonics", "1");
     const AllParameters parameters = test_support::parameters_from(text);
     Triangulation<2>    triangulation;
     parameters.mesh.build(triangulation);

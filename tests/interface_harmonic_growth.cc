@@ -36,8 +36,8 @@ namespace
   void
   linear_scene_keeps_its_harmonics()
   {
-    const std::string text = test_support::bundled_prm("prm/disc-smooth.prm") +
-                             growth + "12\nend\n";
+    const std::string text =
+      test_support::bundled_prm("prm/disc-smooth.prm") + growth + "12\nend\n";
     const AllParameters parameters = test_support::parameters_from(text);
     Triangulation<2>    triangulation;
     parameters.mesh.build(triangulation);
@@ -81,16 +81,15 @@ namespace
   {
     std::string text = test_support::bundled_prm("prm/disc-gap.prm");
     text             = with_entry(text, "Load steps", "2");
-    const coupled_test::Curve grown =
-      coupled_test::run(with_entry(text, "Harmonics", "1") + growth +
-                        "16\nend\n");
+    const coupled_test::Curve grown = coupled_test::run(
+      with_entry(text, "Harmonics", "1") + growth + "16\nend\n");
     std::string all = "0";
     for (unsigned int n = 1; n <= 16; ++n)
       all += ", " + std::to_string(n);
     const coupled_test::Curve listed =
       coupled_test::run(with_entry(text, "Harmonics", all));
-    std::cout << "  grown set: " << grown.n_harmonics
-              << " harmonics, P/ubar " << last_stiffness(grown)
+    std::cout << "  grown set: " << grown.n_harmonics << " harmonics, P/ubar "
+              << last_stiffness(grown)
               << " kN/m; listed n = 0..16: " << last_stiffness(listed)
               << " kN/m" << std::endl;
     check::in_range("tensionless disc from n = 1: harmonics after growth",

@@ -12,7 +12,10 @@
  * residuals, where Aitken's Delta^2 rule reuses one. The least-squares
  * problem is solved by a QR factorization of dF (modified Gram-Schmidt);
  * columns that are nearly dependent on the newer ones are dropped, oldest
- * first, which keeps the update bounded when the residuals stagnate.
+ * first, which keeps the update bounded when the residuals stagnate. A
+ * residual that grows above 10 times the smallest since the last restart
+ * clears the history (a plain step from there): the secant model no longer
+ * describes the map (a nonsmooth law that changed state at many points).
  */
 #ifndef fourier_ssi_anderson_acceleration_h
 #define fourier_ssi_anderson_acceleration_h
@@ -46,6 +49,13 @@ namespace FourierSSI
     Blocks
     increment(const Blocks &x, const Blocks &f);
 
+    /** Restarts of the history since reset() (safeguard). */
+    unsigned int
+    n_restarts() const
+    {
+      return restarts;
+    }
+
     /** Columns used in the last update (<= depth). */
     unsigned int
     n_columns_used() const
@@ -63,6 +73,14 @@ namespace FourierSSI
     Blocks             previous_x, previous_f;
     std::deque<Blocks> dx, df;
     unsigned int       columns_used = 0;
+    /** Smallest |f| since the last restart. */
+    double       smallest_norm = 0.;
+    unsigned int restarts      = 0;
+    /**
+     * |f| above this factor times the smallest since the last restart
+     * clears the history (the iterate is kept).
+     */
+    static constexpr double restart_factor = 10.;
   };
 } // namespace FourierSSI
 

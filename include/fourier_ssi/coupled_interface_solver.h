@@ -31,6 +31,7 @@
 
 #include <array>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/harmonic_set.h>
 #include <fourier_ssi/initial_stress.h>
@@ -182,12 +183,35 @@ namespace FourierSSI
       unsigned int law;
     };
 
+    /**
+     * The iteration condensed onto the interface (section 5 of the doc): c
+     * is non-zero only at the DoFs its assembly reaches ("write": the
+     * interface DoFs, or their masters where constrained), and an iteration
+     * reads K^-1 c only at the interface DoFs ("read") and in the controlled
+     * motion. So the flexibility block F = K^-1 restricted to read x write
+     * (one solve per write DoF, once per harmonic) gives the iterate exactly,
+     * a dense product instead of a sparse re-solve per iteration; the full
+     * K^-1 c is solved once per converged step.
+     */
+    struct Condensation
+    {
+      std::vector<types::global_dof_index> write, read;
+      /** F(i, j) = (K^-1 e_write[j])(read[i]). */
+      FullMatrix<double> flexibility;
+      /** Controlled motion of K^-1 e_write[j] (0 if not its harmonic). */
+      std::vector<double> controlled_motion;
+    };
+
     /** Iteration state of a load step. */
     struct StepState
     {
       double load_factor = 0.;
       /** K^-1 c per harmonic, and c (condensed). */
       std::vector<Vector<double>> correction_solution, correction_load;
+      /** K^-1 c valid at the read DoFs only (the iteration's view). */
+      std::vector<Vector<double>> interface_solution;
+      /** The controlled motion of K^-1 c [m or rad]. */
+      double controlled_motion = 0.;
       /** Plastic relative displacement per point and sample. */
       std::vector<LocalVector> plastic;
     };
@@ -215,10 +239,33 @@ namespace FourierSSI
     std::vector<Vector<double>>
     out_of_balance_load(const std::vector<LocalVector> &plastic) const;
 
-    /** lambda from displacement control for a given correction solution. */
+    /** Condensation of the harmonics first, first + 1, ... */
+    void
+    condense(const unsigned int first);
+
+    /** The controlled motion of a (full) field of harmonic h. */
     double
-    controlled_load_factor(const std::vector<Vector<double>> &v,
-                           const double                       target) const;
+    controlled_motion_of(const unsigned int h, const Vector<double> &v) const;
+
+    /** Index of the harmonic that carries the controlled motion. */
+    unsigned int
+    controlled_harmonic() const;
+
+    /** The entries of (condensed) loads at the write DoFs, per harmonic. */
+    std::vector<Vector<double>>
+    on_write_dofs(const std::vector<Vector<double>> &full) const;
+
+    /**
+     * c += dc (given at the write DoFs), and K^-1 c at the read DoFs and in
+     * the controlled motion through the condensation.
+     */
+    void
+    add_correction(const std::vector<Vector<double>> &dc_write,
+                   StepState                         &state) const;
+
+    /** The full K^-1 c of a converged state (one solve per harmonic). */
+    void
+    complete(StepState &state) const;
 
     /** Iterate one step to lambda (load control) or to a motion target. */
     bool
@@ -258,7 +305,10 @@ namespace FourierSSI
     /** Some nonlinear law has neither cohesion nor initial stress. */
     bool                        without_strength = false;
     std::vector<InterfacePoint> points;
+    std::vector<Condensation>   condensed;
     std::vector<Vector<double>> pattern_solution;
+    /** Controlled motion of the pattern solution u_F (load factor 1). */
+    double pattern_motion = 0.;
     /** sqrt(sum_h |F_h|^2) of the scene's (condensed) loads. */
     double                         pattern_load_norm = 0.;
     std::vector<LocalVector>       pattern_relative;
