@@ -46,12 +46,15 @@ namespace FourierSSI
                       Patterns::Integer(1),
                       "Out-of-balance solves per step before it is cut.");
     prm.declare_entry("Acceleration",
-                      "anderson",
-                      Patterns::Selection("anderson|aitken|none"),
-                      "anderson: Anderson (multisecant) update of the "
-                      "out-of-balance load from the last Anderson depth "
-                      "residuals; aitken: Aitken's Delta^2 relaxation (one "
-                      "previous residual); none: plain initial stiffness.");
+                      "aitken",
+                      Patterns::Selection("aitken|anderson|none"),
+                      "aitken: Aitken's Delta^2 relaxation of the "
+                      "out-of-balance load (one previous residual); "
+                      "anderson: Anderson (multisecant) update from the last "
+                      "Anderson depth residuals (fewer iterations, about the "
+                      "same time, a worse worst case: "
+                      "benchmarks/nonlinear-interfaces); none: plain initial "
+                      "stiffness.");
     prm.declare_entry("Anderson depth",
                       "10",
                       Patterns::Integer(1, 50),

@@ -51,7 +51,7 @@ namespace FourierSSI
     double       target             = 0.;
     double       tolerance          = 1e-10;
     unsigned int maximum_iterations = 2000;
-    Acceleration acceleration       = Acceleration::anderson;
+    Acceleration acceleration       = Acceleration::aitken;
     /** Previous residuals an Anderson update uses (m). */
     unsigned int anderson_depth    = 5;
     unsigned int maximum_step_cuts = 4;
