@@ -107,6 +107,14 @@ namespace FourierSSI
     solver.write_interface_state_csv(state);
     log << "interface state (point x theta x step) written to " << state
         << std::endl;
+    if (parameters.output.write_3d_vtu)
+      {
+        const std::string vtu = directory + "/interface-state-3d.vtu";
+        written.push_back(vtu);
+        solver.write_interface_state_vtu(vtu);
+        log << "interface state of the last step (3D points) written to " << vtu
+            << std::endl;
+      }
     // Lines 3D, the revolved 3D VTU and the results, as a linear run.
     write_output(log);
   }

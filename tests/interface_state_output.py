@@ -16,8 +16,10 @@ N = 36 samples) run with Write 3D vtu = true:
     degrees with 180 among them (at exactly 90 and 270 the trial normal
     traction is zero up to round-off, either state is right), the same set
     at every step: homogeneity);
-(4) the revolved 3D VTU of the last step is written, and
-    tools/plot_interface_state.py draws the PNG.
+(4) the revolved 3D VTU of the last step is written, the interface samples
+    of the last step as 3D points (interface-state-3d.vtu: 108 points, as
+    many open as the CSV counts), and tools/plot_interface_state.py draws
+    the PNG.
 Usage: interface_state_output.py FOURIER_SSI_EXE SOURCE_DIR WORK_DIR
 """
 import csv
@@ -89,6 +91,13 @@ check("open arc symmetric about 180 deg",
 
 check("solution-3d.vtu written",
       os.path.getsize(os.path.join(out, "solution-3d.vtu")) > 0)
+vtu = open(os.path.join(out, "interface-state-3d.vtu")).read()
+check("interface-state-3d.vtu: 108 sample points",
+      'NumberOfPoints="108"' in vtu)
+states = vtu.split('Name="state" format="ascii">')[1].split("</DataArray>")[0]
+n_open_vtu = states.split().count("2")
+check("interface-state-3d.vtu: open points %d = last step's %s"
+      % (n_open_vtu, curve[-1]["open"]), n_open_vtu == int(curve[-1]["open"]))
 png = os.path.join(work, "state.png")
 subprocess.run(["/usr/bin/python3",
                 os.path.join(source_dir, "tools/plot_interface_state.py"),

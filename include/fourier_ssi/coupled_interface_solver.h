@@ -16,10 +16,18 @@
  *      the trapezoidal rule against each harmonic's factor and through the
  *      element's shape functions (the same B that gives the closed-form K);
  *   4. force residual R = G - c; converged if |R| <= tolerance |lambda F|
- *      (|G| if lambda F = 0; 2-norms over all harmonics); else c <- c + omega R
- * and u <- lambda u_F + K^-1 c, all harmonics re-solved with their kept
- *      factorizations (HarmonicSet::solve_increments), omega from Aitken's
- *      Delta^2 rule (or 1).
+ *      (|G| if lambda F = 0; 2-norms over all harmonics); else
+ *   5. c <- c + dc, dc = omega R (Aitken's Delta^2 rule, or omega = 1) or
+ *      the Anderson update (AndersonAcceleration), and v = K^-1 c follows
+ *      through each harmonic's flexibility block on the interface DoFs
+ *      (K^-1 restricted to the DoFs the relative displacements read x the
+ *      DoFs c reaches, built once from the kept factorizations of the
+ *      HarmonicSet): a dense product per iteration instead of a re-solve;
+ *      the full K^-1 c is solved once per converged step.
+ * With Maximum harmonic above the set's highest harmonic, harmonics whose
+ * amplitude in the interface traction has not decayed below Harmonic
+ * tolerance are added to the set after a converged step (HarmonicSet::add)
+ * and the step is solved again.
  * Load control scales the scene's loads by lambda; displacement control
  * chooses lambda in every iteration so that one rigid-foundation motion
  * equals its target (needed past the peak). A step that does not converge is
@@ -125,6 +133,15 @@ namespace FourierSSI
      */
     void
     write_interface_state_csv(const std::string &filename) const;
+
+    /**
+     * VTU (ParaView) of the last converged step's interface samples as
+     * points in 3D, (r cos theta, r sin theta, z): state (0 stick, 1 slip,
+     * 2 open), traction [kPa] and relative displacement [m] in the local
+     * (s, n, theta) components, next to the revolved soil field.
+     */
+    void
+    write_interface_state_vtu(const std::string &filename) const;
 
     /** Total displacement amplitudes of harmonic i (last converged state). */
     Vector<double>
