@@ -1,9 +1,12 @@
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <deal.II/base/quadrature_lib.h>
+#include <fourier_ssi/anderson_acceleration.h>
 #include <fourier_ssi/coupled_interface_solver.h>
 #include <fstream>
 #include <iomanip>
+#include <set>
 #include <sstream>
 
 namespace FourierSSI
@@ -21,14 +24,27 @@ namespace FourierSSI
       return list;
     }
 
-    /** Automatic N = 4 (n_max + 1); a given N must exceed 2 n_max. */
     unsigned int
-    theta_samples_for(const std::vector<Harmonic> &list,
-                      const unsigned int           requested)
+    highest_harmonic(const std::vector<Harmonic> &list)
     {
       unsigned int n_max = 0;
       for (const Harmonic &h : list)
         n_max = std::max(n_max, h.n);
+      return n_max;
+    }
+
+    /**
+     * Automatic N = 4 (n_max + 1); a given N must exceed 2 n_max. With
+     * growth n_max is Maximum harmonic, so that the samples (and the state
+     * kept at them) stay valid when harmonics are added.
+     */
+    unsigned int
+    theta_samples_for(const std::vector<Harmonic>        &list,
+                      const NonlinearInterfaceParameters &settings)
+    {
+      const unsigned int requested = settings.theta_samples;
+      const unsigned int n_max =
+        std::max(highest_harmonic(list), settings.maximum_harmonic);
       if (requested == 0)
         return 4 * (n_max + 1);
       AssertThrow(requested >= minimum_theta_samples(n_max),
@@ -101,6 +117,96 @@ namespace FourierSSI
       return 0.;
     }
 
+    /**
+     * The update of the correction load c <- c + dc of one iteration from
+     * the force residual R = G(c) - c: dc = R (none), omega R with Aitken's
+     * Delta^2 rule omega_k = -omega_{k-1} R_{k-1}^T (R_k - R_{k-1}) /
+     * |R_k - R_{k-1}|^2, or the Anderson update on the last m residuals
+     * (doc/nonlinear-interfaces.md section 5). One per load step.
+     */
+    class FixedPointAcceleration
+    {
+    public:
+      using Kind = NonlinearInterfaceParameters::Acceleration;
+
+      FixedPointAcceleration(const NonlinearInterfaceParameters &settings)
+        : kind(settings.acceleration)
+        , anderson(settings.anderson_depth)
+      {}
+
+      std::vector<Vector<double>>
+      increment(const std::vector<Vector<double>> &load,
+                const std::vector<Vector<double>> &residual)
+      {
+        if (kind == Kind::anderson)
+          return anderson.increment(load, residual);
+        if (kind == Kind::aitken && !previous_residual.empty())
+          omega = aitken_factor(residual);
+        previous_residual                  = residual;
+        std::vector<Vector<double>> result = residual;
+        for (Vector<double> &block : result)
+          block *= omega;
+        return result;
+      }
+
+    private:
+      double
+      aitken_factor(const std::vector<Vector<double>> &residual) const
+      {
+        std::vector<Vector<double>> change = residual;
+        for (unsigned int h = 0; h < change.size(); ++h)
+          change[h] -= previous_residual[h];
+        const double change_sqr = dot_over_harmonics(change, change);
+        return change_sqr > 0. ?
+                 -omega * dot_over_harmonics(previous_residual, change) /
+                   change_sqr :
+                 omega;
+      }
+
+      Kind                        kind;
+      AndersonAcceleration        anderson;
+      double                      omega = 1.;
+      std::vector<Vector<double>> previous_residual;
+    };
+
+    std::string
+    name_of(const NonlinearInterfaceParameters &settings)
+    {
+      using Kind = NonlinearInterfaceParameters::Acceleration;
+      return settings.acceleration == Kind::anderson ?
+               ", Anderson m = " + std::to_string(settings.anderson_depth) :
+             settings.acceleration == Kind::aitken ? ", Aitken" :
+                                                     ", no acceleration";
+    }
+
+    /**
+     * Growth: every n <= Maximum harmonic in the families of the set, if
+     * that is above the highest harmonic of the set; else none.
+     */
+    std::vector<Harmonic>
+    candidate_harmonics(const std::vector<Harmonic> &list,
+                        const unsigned int           maximum_harmonic)
+    {
+      std::vector<Harmonic> result;
+      if (maximum_harmonic <= highest_harmonic(list))
+        return result;
+      for (const Family family : {Family::symmetric, Family::antisymmetric})
+        if (std::any_of(list.begin(), list.end(), [&](const Harmonic &h) {
+              return h.family == family;
+            }))
+          for (unsigned int n = 0; n <= maximum_harmonic; ++n)
+            result.push_back({n, family});
+      return result;
+    }
+
+    bool
+    contains(const std::vector<Harmonic> &list, const Harmonic &h)
+    {
+      return std::any_of(list.begin(), list.end(), [&](const Harmonic &g) {
+        return g.n == h.n && g.family == h.family;
+      });
+    }
+
     const InterfaceIntegrator &
     interfaces_of(const HarmonicProblem &problem)
     {
@@ -111,15 +217,15 @@ namespace FourierSSI
   } // namespace
 
   CoupledInterfaceSolver::CoupledInterfaceSolver(
-    const HarmonicSet   &set,
+    HarmonicSet         &set,
     const AllParameters &parameters)
     : set(set)
     , parameters(parameters)
     , settings(parameters.nonlinear_interfaces)
     , harmonics(harmonics_of(set))
-    , sampling(harmonics,
-               theta_samples_for(harmonics,
-                                 parameters.nonlinear_interfaces.theta_samples))
+    , sampling(harmonics, theta_samples_for(harmonics, settings))
+    , candidates(candidate_harmonics(harmonics, settings.maximum_harmonic))
+    , spectrum(candidates, sampling.n_samples())
   {
     for (unsigned int h = 0; h < set.size(); ++h)
       AssertThrow(!set.problem(h).get_constraints().has_inhomogeneities(),
@@ -136,6 +242,8 @@ namespace FourierSSI
         committed.correction_solution[h] = 0.;
         committed.correction_load[h]     = 0.;
       }
+    committed.interface_solution = committed.correction_solution;
+    condense(0);
     committed.plastic.assign(points.size() * sampling.n_samples(),
                              {{0., 0., 0.}});
   }
@@ -202,6 +310,16 @@ namespace FourierSSI
     for (unsigned int h = 0; h < set.size(); ++h)
       pattern_solution.push_back(b[h][0]);
     pattern_relative = relative_displacements(pattern_solution);
+    if (settings.control == NonlinearInterfaceParameters::Control::displacement)
+      {
+        const unsigned int h = controlled_harmonic();
+        pattern_motion       = controlled_motion_of(h, pattern_solution[h]);
+        AssertThrow(pattern_motion != 0.,
+                    ExcMessage(entry +
+                               "/Controlled motion: the Rigid foundation "
+                               "loads do not drive this motion (give the "
+                               "load that does, e.g. V for vertical)"));
+      }
   }
 
   std::vector<LocalVector>
@@ -251,12 +369,14 @@ namespace FourierSSI
   std::array<unsigned int, 3>
   CoupledInterfaceSolver::return_map(const std::vector<LocalVector> &relative,
                                      std::vector<LocalVector>       &plastic,
-                                     std::vector<LocalVector> &traction) const
+                                     std::vector<LocalVector>       &traction,
+                                     std::vector<ContactState> &state) const
   {
     const unsigned int          N      = sampling.n_samples();
     std::array<unsigned int, 3> counts = {{0, 0, 0}};
     plastic.resize(relative.size());
     traction.resize(relative.size());
+    state.resize(relative.size());
     for (unsigned int i = 0; i < points.size(); ++i)
       for (unsigned int j = 0; j < N; ++j)
         {
@@ -267,6 +387,7 @@ namespace FourierSSI
                                            committed.plastic[k]);
           plastic[k]  = r.plastic;
           traction[k] = r.traction;
+          state[k]    = r.state;
           ++counts[static_cast<int>(r.state)];
         }
     return counts;
@@ -343,63 +464,183 @@ namespace FourierSSI
     return out_of_balance_load(relative_displacements(fields));
   }
 
-  double
-  CoupledInterfaceSolver::controlled_load_factor(
-    const std::vector<Vector<double>> &v,
-    const double                       target) const
+  unsigned int
+  CoupledInterfaceSolver::controlled_harmonic() const
   {
     const Harmonic wanted = harmonic_of(settings.motion);
     for (unsigned int h = 0; h < set.size(); ++h)
       if (harmonics[h].n == wanted.n && harmonics[h].family == wanted.family)
         {
-          const RigidFoundation *foundation = set.problem(h).get_foundation();
-          AssertThrow(foundation != nullptr,
+          AssertThrow(set.problem(h).get_foundation() != nullptr,
                       ExcMessage(entry +
                                  "/Control: displacement control needs a "
                                  "Rigid foundation"));
-          const double by_pattern =
-            component(foundation->motion(pattern_solution[h]), settings.motion);
-          AssertThrow(by_pattern != 0.,
-                      ExcMessage(entry +
-                                 "/Controlled motion: the Rigid foundation "
-                                 "loads do not drive this motion (give the "
-                                 "load that does, e.g. V for vertical)"));
-          const double by_correction =
-            component(foundation->motion(v[h]), settings.motion);
-          return (target - by_correction) / by_pattern;
+          return h;
         }
     AssertThrow(false,
                 ExcMessage(entry +
                            "/Controlled motion: its harmonic is not solved "
                            "(n = 0 for vertical and twist, n = 1 symmetric "
                            "for horizontal and rotation)"));
-    return 0.;
+    return 0;
   }
 
-  bool
-  CoupledInterfaceSolver::solve_step(const double    target,
-                                     StepState      &state,
-                                     LoadStepResult &result)
+  double
+  CoupledInterfaceSolver::controlled_motion_of(const unsigned int    h,
+                                               const Vector<double> &v) const
+  {
+    return component(set.problem(h).get_foundation()->motion(v),
+                     settings.motion);
+  }
+
+  void
+  CoupledInterfaceSolver::condense(const unsigned int first)
   {
     const bool displacement_control =
       settings.control == NonlinearInterfaceParameters::Control::displacement;
-    std::vector<LocalVector>    plastic, traction;
-    std::vector<Vector<double>> previous_residual;
-    double                      omega = 1.;
+    const unsigned int controlled =
+      displacement_control ? controlled_harmonic() : set.size();
+    condensed.resize(set.size());
+    // 1. Per harmonic, the DoFs c reaches (write) and the DoFs the relative
+    //    displacements read, from the nonlinear pairs.
+    std::set<unsigned int> nonlinear_pairs;
+    for (const InterfacePoint &point : points)
+      nonlinear_pairs.insert(point.pair);
+    for (unsigned int h = first; h < set.size(); ++h)
+      {
+        const AffineConstraints<double> &constraints =
+          set.problem(h).get_homogeneous_constraints();
+        const auto &pairs = interfaces_of(set.problem(h)).get_pairs();
+        std::set<types::global_dof_index> write, read;
+        for (const unsigned int i : nonlinear_pairs)
+          for (const types::global_dof_index d : pairs[i].dof_indices)
+            {
+              read.insert(d);
+              if (!constraints.is_constrained(d))
+                write.insert(d);
+              else if (const auto *entries =
+                         constraints.get_constraint_entries(d))
+                for (const auto &entry : *entries)
+                  write.insert(entry.first);
+            }
+        condensed[h].write.assign(write.begin(), write.end());
+        condensed[h].read.assign(read.begin(), read.end());
+        condensed[h].flexibility.reinit(read.size(), write.size());
+        condensed[h].controlled_motion.assign(write.size(), 0.);
+      }
+    // 2. K^-1 e_j for every write DoF j, in batches (memory), every
+    //    harmonic concurrently with the kept factorizations.
+    const unsigned int batch = 64;
+    for (unsigned int start = 0;; start += batch)
+      {
+        std::vector<std::vector<Vector<double>>> x(set.size());
+        bool                                     any = false;
+        for (unsigned int h = first; h < set.size(); ++h)
+          for (unsigned int j = start;
+               j <
+               std::min<std::size_t>(start + batch, condensed[h].write.size());
+               ++j)
+            {
+              x[h].emplace_back(pattern_solution[h].size());
+              x[h].back()(condensed[h].write[j]) = 1.;
+              any                                = true;
+            }
+        if (!any)
+          break;
+        set.solve_increments(x);
+        for (unsigned int h = first; h < set.size(); ++h)
+          for (unsigned int k = 0; k < x[h].size(); ++k)
+            {
+              Condensation &c = condensed[h];
+              for (unsigned int i = 0; i < c.read.size(); ++i)
+                c.flexibility(i, start + k) = x[h][k](c.read[i]);
+              if (h == controlled)
+                c.controlled_motion[start + k] =
+                  controlled_motion_of(h, x[h][k]);
+            }
+      }
+  }
+
+  std::vector<Vector<double>>
+  CoupledInterfaceSolver::on_write_dofs(
+    const std::vector<Vector<double>> &full) const
+  {
+    std::vector<Vector<double>> result(set.size());
+    for (unsigned int h = 0; h < set.size(); ++h)
+      {
+        const Condensation &c = condensed[h];
+        result[h].reinit(c.write.size());
+        for (unsigned int j = 0; j < c.write.size(); ++j)
+          result[h](j) = full[h](c.write[j]);
+      }
+    return result;
+  }
+
+  void
+  CoupledInterfaceSolver::add_correction(
+    const std::vector<Vector<double>> &dc_write,
+    StepState                         &state) const
+  {
+    for (unsigned int h = 0; h < set.size(); ++h)
+      {
+        const Condensation &c = condensed[h];
+        Vector<double>      dv_read(c.read.size());
+        c.flexibility.vmult(dv_read, dc_write[h]);
+        for (unsigned int i = 0; i < c.read.size(); ++i)
+          state.interface_solution[h](c.read[i]) += dv_read(i);
+        for (unsigned int j = 0; j < c.write.size(); ++j)
+          {
+            state.correction_load[h](c.write[j]) += dc_write[h](j);
+            state.controlled_motion += c.controlled_motion[j] * dc_write[h](j);
+          }
+      }
+  }
+
+  void
+  CoupledInterfaceSolver::complete(StepState &state) const
+  {
+    std::vector<std::vector<Vector<double>>> x(set.size());
+    for (unsigned int h = 0; h < set.size(); ++h)
+      x[h] = {state.correction_load[h]};
+    set.solve_increments(x);
+    for (unsigned int h = 0; h < set.size(); ++h)
+      state.correction_solution[h] = x[h][0];
+    // Restart the next step's condensed view from the exact field (no
+    // accumulation of round-off over the steps).
+    state.interface_solution = state.correction_solution;
+    if (settings.control == NonlinearInterfaceParameters::Control::displacement)
+      {
+        const unsigned int h = controlled_harmonic();
+        state.controlled_motion =
+          controlled_motion_of(h, state.correction_solution[h]);
+      }
+  }
+
+  bool
+  CoupledInterfaceSolver::solve_step(const double       target,
+                                     StepState         &state,
+                                     LoadStepResult    &result,
+                                     InterfaceSnapshot &snapshot)
+  {
+    const bool displacement_control =
+      settings.control == NonlinearInterfaceParameters::Control::displacement;
+    std::vector<LocalVector>  plastic, traction;
+    std::vector<ContactState> contact;
+    FixedPointAcceleration    acceleration(settings);
     for (unsigned int iteration = 0; iteration <= settings.maximum_iterations;
          ++iteration)
       {
         state.load_factor =
           displacement_control ?
-            controlled_load_factor(state.correction_solution, target) :
+            (target - state.controlled_motion) / pattern_motion :
             target;
         // 1-2: relative displacements at every (point, theta), the law.
         std::vector<LocalVector> relative =
-          relative_displacements(state.correction_solution);
+          relative_displacements(state.interface_solution);
         for (unsigned int k = 0; k < relative.size(); ++k)
           for (unsigned int c = 0; c < 3; ++c)
             relative[k][c] += state.load_factor * pattern_relative[k][c];
-        const auto counts = return_map(relative, plastic, traction);
+        const auto counts = return_map(relative, plastic, traction, contact);
         // 3-4: out-of-balance load and force residual R = G - c.
         std::vector<Vector<double>> residual  = out_of_balance_load(plastic);
         const double                load_norm = norm_over_harmonics(residual);
@@ -415,35 +656,30 @@ namespace FourierSSI
           return false;
         if (residual_norm <= settings.tolerance * scale)
           {
+            complete(state);
+            // A diverged iterate can pass the relative test with a huge
+            // load factor; the controlled motion then misses its target
+            // (cancellation of lambda m(u_F) against m(v)): not converged.
+            if (displacement_control &&
+                std::abs(state.load_factor * pattern_motion +
+                         state.controlled_motion - target) >
+                  1e-8 * std::abs(target))
+              return false;
             state.plastic     = plastic;
             result.iterations = iteration;
             result.residual   = scale > 0. ? residual_norm / scale : 0.;
             result.states     = counts;
             result.resultant  = foundation_resultant(traction);
+            snapshot          = {relative, traction, contact};
             return true;
           }
-        // Aitken's Delta^2 relaxation on the fixed point c = G(c).
-        if (settings.aitken && !previous_residual.empty())
-          {
-            std::vector<Vector<double>> change = residual;
-            for (unsigned int h = 0; h < set.size(); ++h)
-              change[h] -= previous_residual[h];
-            const double change_sqr = dot_over_harmonics(change, change);
-            if (change_sqr > 0.)
-              omega = -omega * dot_over_harmonics(previous_residual, change) /
-                      change_sqr;
-          }
-        previous_residual = residual;
-        std::vector<std::vector<Vector<double>>> increment(set.size());
-        for (unsigned int h = 0; h < set.size(); ++h)
-          {
-            residual[h] *= omega;
-            state.correction_load[h] += residual[h];
-            increment[h] = {residual[h]};
-          }
-        set.solve_increments(increment);
-        for (unsigned int h = 0; h < set.size(); ++h)
-          state.correction_solution[h] += increment[h][0];
+        // 5: c <- c + dc and v <- v + K^-1 dc at the interface (section 5,
+        //    condensed: exact, without a re-solve).
+        //    c and R live on the write DoFs: the acceleration works there.
+        add_correction(acceleration.increment(on_write_dofs(
+                                                state.correction_load),
+                                              on_write_dofs(residual)),
+                       state);
       }
     return false;
   }
@@ -533,6 +769,74 @@ namespace FourierSSI
     return total;
   }
 
+  std::vector<Harmonic>
+  CoupledInterfaceSolver::harmonics_called_for(
+    const InterfaceSnapshot &snapshot,
+    std::ostream            &log) const
+  {
+    std::vector<Harmonic> added;
+    if (candidates.empty())
+      return added;
+    // 1. The spectrum of t - t0: per candidate harmonic, the amplitudes of
+    //    the three components at every point, squared and weighted by the
+    //    point's area (an L2 norm over the interface of that harmonic).
+    const unsigned int  N = sampling.n_samples();
+    std::vector<double> norm_sqr(candidates.size(), 0.), samples(N), amplitude;
+    for (unsigned int i = 0; i < points.size(); ++i)
+      for (unsigned int c = 0; c < 3; ++c)
+        {
+          for (unsigned int j = 0; j < N; ++j)
+            samples[j] =
+              snapshot.traction[i * N + j][c] - points[i].initial_traction[c];
+          spectrum.project(samples,
+                           c == 2 ? ThetaFactor::circumferential :
+                                    ThetaFactor::in_plane,
+                           amplitude);
+          for (unsigned int h = 0; h < candidates.size(); ++h)
+            norm_sqr[h] +=
+              points[i].area_per_radian * amplitude[h] * amplitude[h];
+        }
+    // 2. Harmonics not solved whose amplitude has not decayed below the
+    //    tolerance relative to the largest one.
+    const double largest =
+      std::sqrt(*std::max_element(norm_sqr.begin(), norm_sqr.end()));
+    std::ostringstream why;
+    for (unsigned int h = 0; h < candidates.size(); ++h)
+      {
+        const double relative =
+          largest > 0. ? std::sqrt(norm_sqr[h]) / largest : 0.;
+        if (contains(harmonics, candidates[h]) ||
+            relative <= settings.harmonic_tolerance)
+          continue;
+        added.push_back(candidates[h]);
+        why << ' ' << candidates[h].name() << " (" << std::setprecision(3)
+            << relative << ')';
+      }
+    if (!added.empty())
+      log << "  harmonics added, interface-traction amplitude relative to "
+             "the largest above "
+          << settings.harmonic_tolerance << ":" << why.str()
+          << "; the step is solved again\n";
+    return added;
+  }
+
+  void
+  CoupledInterfaceSolver::grow(const std::vector<Harmonic> &added)
+  {
+    set.add(added);
+    harmonics = harmonics_of(set);
+    sampling  = ThetaSampling(harmonics, sampling.n_samples());
+    solve_load_pattern();
+    const unsigned int first = committed.correction_solution.size();
+    for (unsigned int h = first; h < set.size(); ++h)
+      {
+        committed.correction_solution.emplace_back(pattern_solution[h].size());
+        committed.correction_load.emplace_back(pattern_solution[h].size());
+        committed.interface_solution.emplace_back(pattern_solution[h].size());
+      }
+    condense(first);
+  }
+
   Vector<double>
   CoupledInterfaceSolver::solution(const unsigned int i) const
   {
@@ -550,7 +854,12 @@ namespace FourierSSI
         << sampling.n_samples() << " theta samples, " << set.size()
         << " harmonics, " << (load_control ? "load" : "displacement")
         << " control, " << settings.load_steps << " steps, tolerance "
-        << settings.tolerance << (settings.aitken ? ", Aitken" : "") << '\n';
+        << settings.tolerance << name_of(settings);
+    if (!candidates.empty())
+      log << ", harmonics grow up to n = " << settings.maximum_harmonic
+          << " where the interface traction calls for them (tolerance "
+          << settings.harmonic_tolerance << ")";
+    log << '\n';
     if (without_strength)
       log << "warning: " << entry
           << ": a coulomb interface has c = 0 and no Initial stress: it has "
@@ -562,10 +871,11 @@ namespace FourierSSI
         const double fraction = std::min(1., done + increment);
         const double target =
           load_control ? fraction : fraction * settings.target;
-        StepState      state = committed;
-        LoadStepResult result;
-        const auto     start = std::chrono::steady_clock::now();
-        if (!solve_step(target, state, result))
+        StepState         state = committed;
+        LoadStepResult    result;
+        InterfaceSnapshot snapshot;
+        const auto        start = std::chrono::steady_clock::now();
+        if (!solve_step(target, state, result, snapshot))
           {
             AssertThrow(++cuts <= settings.maximum_step_cuts,
                         ExcMessage(entry + ": load step " +
@@ -581,14 +891,22 @@ namespace FourierSSI
             log << "  step cut to " << increment << " of the loading\n";
             continue;
           }
+        const std::vector<Harmonic> added = harmonics_called_for(snapshot, log);
+        if (!added.empty())
+          {
+            grow(added);
+            continue;
+          }
         committed          = state;
         done               = fraction;
+        result.n_harmonics = set.size();
         result.load_factor = state.load_factor;
         result.motion      = motion_of(state);
         result.time        = std::chrono::duration<double>(
                         std::chrono::steady_clock::now() - start)
                         .count();
         steps.push_back(result);
+        snapshots.push_back(std::move(snapshot));
         const auto loads = applied_loads(result.load_factor);
         log << "  step " << steps.size() << ": factor " << result.load_factor
             << ", V " << loads[2] << " kN, H " << loads[0] << " kN, T "
@@ -596,33 +914,9 @@ namespace FourierSSI
             << " m, u " << result.motion.horizontal_displacement << " m, twist "
             << result.motion.twist << " rad; " << result.iterations
             << " iterations; stick/slip/open " << result.states[0] << '/'
-            << result.states[1] << '/' << result.states[2] << '\n';
+            << result.states[1] << '/' << result.states[2] << "; "
+            << result.n_harmonics << " harmonics\n";
       }
   }
 
-  void
-  CoupledInterfaceSolver::write_csv(const std::string &filename) const
-  {
-    std::ofstream out(filename);
-    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
-    out << "step,load_factor,V_kN,H_kN,M_kNm,T_kNm,vertical_m,horizontal_m,"
-           "rotation_rad,twist_rad,iterations,residual,stick,slip,open,"
-           "time_s,converged\n"
-        << std::setprecision(12);
-    for (unsigned int s = 0; s < steps.size(); ++s)
-      {
-        const LoadStepResult &r = steps[s];
-        const auto            f = parameters.rigid_foundation;
-        out << s + 1 << ',' << r.load_factor << ','
-            << r.load_factor * f.vertical_force << ','
-            << r.load_factor * f.horizontal_force << ','
-            << r.load_factor * f.moment << ',' << r.load_factor * f.torque
-            << ',' << r.motion.vertical_displacement << ','
-            << r.motion.horizontal_displacement << ',' << r.motion.rotation
-            << ',' << r.motion.twist << ',' << r.iterations << ',' << r.residual
-            << ',' << r.states[0] << ',' << r.states[1] << ',' << r.states[2]
-            << ',' << r.time << ",1\n";
-      }
-    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
-  }
 } // namespace FourierSSI

@@ -2,8 +2,8 @@
 #include <deal.II/base/multithread_info.h>
 #include <dlfcn.h>
 #include <exception>
-#include <fourier_ssi/messages.h>
 #include <fourier_ssi/harmonic_set.h>
+#include <fourier_ssi/messages.h>
 #include <thread>
 
 namespace FourierSSI
@@ -54,7 +54,11 @@ namespace FourierSSI
                            const LoadDecomposition     &loads,
                            const MPI_Comm               communicator,
                            const unsigned int           max_threads)
-    : harmonics(harmonics)
+    : parameters(parameters)
+    , triangulation(triangulation)
+    , loads(loads)
+    , communicator(communicator)
+    , harmonics(harmonics)
   {
     for (const Harmonic &harmonic : harmonics)
       problems.push_back(std::make_shared<HarmonicProblem>(
@@ -70,8 +74,16 @@ namespace FourierSSI
   HarmonicSet::for_each(
     const std::function<void(const unsigned int)> &task) const
   {
+    for_each_from(0, task);
+  }
+
+  void
+  HarmonicSet::for_each_from(
+    const unsigned int                             first,
+    const std::function<void(const unsigned int)> &task) const
+  {
     std::vector<std::exception_ptr> errors(size());
-    std::atomic<unsigned int>       next(0);
+    std::atomic<unsigned int>       next(first);
     const auto                      work = [&]() {
       for (unsigned int i = next++; i < size(); i = next++)
         try
@@ -94,7 +106,7 @@ namespace FourierSSI
         for (auto &worker : workers)
           worker.join();
       }
-    for (unsigned int i = 0; i < size(); ++i)
+    for (unsigned int i = first; i < size(); ++i)
       if (errors[i])
         try
           {
@@ -132,6 +144,23 @@ namespace FourierSSI
                            "loads per harmonic expected"));
     for_each(
       [&](const unsigned int i) { problems[i]->solve_increments(b_to_x[i]); });
+  }
+
+  void
+  HarmonicSet::add(const std::vector<Harmonic> &new_harmonics)
+  {
+    const unsigned int first = size();
+    for (const Harmonic &harmonic : new_harmonics)
+      {
+        harmonics.push_back(harmonic);
+        problems.push_back(std::make_shared<HarmonicProblem>(
+          parameters, harmonic, triangulation, &loads, communicator));
+      }
+    for_each_from(first, [this](const unsigned int i) {
+      problems[i]->setup_system();
+      problems[i]->assemble_system();
+      problems[i]->factorize();
+    });
   }
 
   unsigned int

@@ -47,14 +47,40 @@ namespace FourierSSI
                       "Out-of-balance solves per step before it is cut.");
     prm.declare_entry("Acceleration",
                       "aitken",
-                      Patterns::Selection("aitken|none"),
+                      Patterns::Selection("aitken|anderson|none"),
                       "aitken: Aitken's Delta^2 relaxation of the "
-                      "out-of-balance load; none: plain initial stiffness.");
+                      "out-of-balance load (one previous residual); "
+                      "anderson: Anderson (multisecant) update from the last "
+                      "Anderson depth residuals (fewer iterations, about the "
+                      "same time, a worse worst case: "
+                      "benchmarks/nonlinear-interfaces); none: plain initial "
+                      "stiffness.");
+    prm.declare_entry("Anderson depth",
+                      "10",
+                      Patterns::Integer(1, 50),
+                      "Acceleration = anderson: how many previous residuals "
+                      "(m) the update combines.");
     prm.declare_entry("Maximum step cuts",
                       "4",
                       Patterns::Integer(0),
                       "Halvings of a step that does not converge before "
                       "the run stops with an error.");
+    prm.declare_entry("Maximum harmonic",
+                      "0",
+                      Patterns::Integer(0),
+                      "Harmonics chosen by the solution: after each "
+                      "converged step, every harmonic n <= Maximum harmonic "
+                      "not solved yet whose amplitude in the interface "
+                      "traction exceeds Harmonic tolerance times the largest "
+                      "is added (its own factorization) and the step solved "
+                      "again. 0, or not above the highest listed harmonic: "
+                      "only the listed harmonics.");
+    prm.declare_entry("Harmonic tolerance",
+                      "1e-3",
+                      Patterns::Double(0.),
+                      "Maximum harmonic > highest listed: the relative "
+                      "amplitude of the interface-traction spectrum above "
+                      "which a harmonic is added.");
     prm.leave_subsection();
   }
 
@@ -74,8 +100,14 @@ namespace FourierSSI
     target              = prm.get_double("Target");
     tolerance           = prm.get_double("Tolerance");
     maximum_iterations  = prm.get_integer("Maximum iterations");
-    aitken              = prm.get("Acceleration") == "aitken";
+    const std::string a = prm.get("Acceleration");
+    acceleration        = a == "anderson" ? Acceleration::anderson :
+                          a == "aitken"   ? Acceleration::aitken :
+                                            Acceleration::none;
+    anderson_depth      = prm.get_integer("Anderson depth");
     maximum_step_cuts   = prm.get_integer("Maximum step cuts");
+    maximum_harmonic    = prm.get_integer("Maximum harmonic");
+    harmonic_tolerance  = prm.get_double("Harmonic tolerance");
     prm.leave_subsection();
   }
 } // namespace FourierSSI

@@ -24,10 +24,6 @@ namespace FourierSSI
                   ExcMessage(entry + ": not yet: a distributed solve (MPI "
                                      "ranks or Distributed = always) with a "
                                      "coulomb interface"));
-      AssertThrow(parameters.output.lines.empty() &&
-                    !parameters.output.write_3d_vtu,
-                  ExcMessage(entry + ": not yet: Output/Lines 3D and Write "
-                                     "3d vtu with a coulomb interface"));
       AssertThrow(!parameters.rigid_foundation.stiffness_coefficients,
                   ExcMessage(entry + ": Rigid foundation/Stiffness "
                                      "coefficients are linear quantities; "
@@ -99,15 +95,40 @@ namespace FourierSSI
     log << "coupled solve: " << solver.get_steps().size() << " steps in "
         << timer.wall_time() << " s" << std::endl;
     add_step_rows(solver, results);
+    keep_last_step(solver);
     if (!writes_csv())
       return;
     const std::string curve = directory + "/load-displacement.csv";
     written.push_back(curve);
     solver.write_csv(curve);
     log << "load-displacement curve written to " << curve << std::endl;
-    const std::string name = directory + "/" + parameters.output.results_file;
-    written.push_back(name);
-    results.write_csv(name);
-    log << "results written to " << name << std::endl;
+    const std::string state = directory + "/interface-state.csv";
+    written.push_back(state);
+    solver.write_interface_state_csv(state);
+    log << "interface state (point x theta x step) written to " << state
+        << std::endl;
+    if (parameters.output.write_3d_vtu)
+      {
+        const std::string vtu = directory + "/interface-state-3d.vtu";
+        written.push_back(vtu);
+        solver.write_interface_state_vtu(vtu);
+        log << "interface state of the last step (3D points) written to " << vtu
+            << std::endl;
+      }
+    // Lines 3D, the revolved 3D VTU and the results, as a linear run.
+    write_output(log);
+  }
+
+  void
+  Simulator::keep_last_step(const CoupledInterfaceSolver &solver)
+  {
+    // The 3D reconstruction sums the harmonics' solutions: the converged
+    // total field of the last step, u_h = lambda u_F,h + K_h^-1 c_h.
+    reconstruction = FieldReconstruction();
+    for (unsigned int h = 0; h < harmonic_set->size(); ++h)
+      {
+        harmonic_set->problem(h).set_solution(solver.solution(h));
+        reconstruction.add(harmonic_set->shared_problem(h));
+      }
   }
 } // namespace FourierSSI

@@ -16,10 +16,18 @@
  *      the trapezoidal rule against each harmonic's factor and through the
  *      element's shape functions (the same B that gives the closed-form K);
  *   4. force residual R = G - c; converged if |R| <= tolerance |lambda F|
- *      (|G| if lambda F = 0; 2-norms over all harmonics); else c <- c + omega R
- * and u <- lambda u_F + K^-1 c, all harmonics re-solved with their kept
- *      factorizations (HarmonicSet::solve_increments), omega from Aitken's
- *      Delta^2 rule (or 1).
+ *      (|G| if lambda F = 0; 2-norms over all harmonics); else
+ *   5. c <- c + dc, dc = omega R (Aitken's Delta^2 rule, or omega = 1) or
+ *      the Anderson update (AndersonAcceleration), and v = K^-1 c follows
+ *      through each harmonic's flexibility block on the interface DoFs
+ *      (K^-1 restricted to the DoFs the relative displacements read x the
+ *      DoFs c reaches, built once from the kept factorizations of the
+ *      HarmonicSet): a dense product per iteration instead of a re-solve;
+ *      the full K^-1 c is solved once per converged step.
+ * With Maximum harmonic above the set's highest harmonic, harmonics whose
+ * amplitude in the interface traction has not decayed below Harmonic
+ * tolerance are added to the set after a converged step (HarmonicSet::add)
+ * and the step is solved again.
  * Load control scales the scene's loads by lambda; displacement control
  * chooses lambda in every iteration so that one rigid-foundation motion
  * equals its target (needed past the peak). A step that does not converge is
@@ -31,6 +39,7 @@
 
 #include <array>
 #include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/harmonic_set.h>
 #include <fourier_ssi/initial_stress.h>
@@ -67,6 +76,21 @@ namespace FourierSSI
     std::array<double, 6> resultant = {{0., 0., 0., 0., 0., 0.}};
     /** Wall time of the step [s]. */
     double time = 0.;
+    /** Harmonics solved in this step (grows with Maximum harmonic). */
+    unsigned int n_harmonics = 0;
+  };
+
+  /**
+   * The interface at every (point, theta sample) of one converged step,
+   * index i * N + j for point i and angle theta_j.
+   */
+  struct InterfaceSnapshot
+  {
+    /** Relative displacement d = u_B - u_A, local (s, n, theta) [m]. */
+    std::vector<LocalVector> relative;
+    /** Traction t (total, initial stress included), (s, n, theta) [kPa]. */
+    std::vector<LocalVector>  traction;
+    std::vector<ContactState> state;
   };
 
   class CoupledInterfaceSolver
@@ -74,10 +98,11 @@ namespace FourierSSI
   public:
     /**
      * `set` must be assembled and factorized; its harmonics' matrices hold
-     * the elastic interface stiffness kn, ks of every interface.
+     * the elastic interface stiffness kn, ks of every interface. With
+     * `Nonlinear interfaces/Maximum harmonic` above the highest harmonic of
+     * the set, harmonics the interface tractions call for are added to it.
      */
-    CoupledInterfaceSolver(const HarmonicSet   &set,
-                           const AllParameters &parameters);
+    CoupledInterfaceSolver(HarmonicSet &set, const AllParameters &parameters);
 
     /**
      * All load steps. Returns normally if every step converged; otherwise
@@ -92,6 +117,31 @@ namespace FourierSSI
     {
       return steps;
     }
+
+    /** Interface state of every converged step (same order as steps). */
+    const std::vector<InterfaceSnapshot> &
+    get_snapshots() const
+    {
+      return snapshots;
+    }
+
+    /**
+     * CSV of the interface state at every (point, theta sample) of every
+     * converged step: position, angle, stick/slip/open, traction and
+     * relative displacement with their units in the header
+     * (coupled_interface_solver_output.cc).
+     */
+    void
+    write_interface_state_csv(const std::string &filename) const;
+
+    /**
+     * VTU (ParaView) of the last converged step's interface samples as
+     * points in 3D, (r cos theta, r sin theta, z): state (0 stick, 1 slip,
+     * 2 open), traction [kPa] and relative displacement [m] in the local
+     * (s, n, theta) components, next to the revolved soil field.
+     */
+    void
+    write_interface_state_vtu(const std::string &filename) const;
 
     /** Total displacement amplitudes of harmonic i (last converged state). */
     Vector<double>
@@ -150,12 +200,35 @@ namespace FourierSSI
       unsigned int law;
     };
 
+    /**
+     * The iteration condensed onto the interface (section 5 of the doc): c
+     * is non-zero only at the DoFs its assembly reaches ("write": the
+     * interface DoFs, or their masters where constrained), and an iteration
+     * reads K^-1 c only at the interface DoFs ("read") and in the controlled
+     * motion. So the flexibility block F = K^-1 restricted to read x write
+     * (one solve per write DoF, once per harmonic) gives the iterate exactly,
+     * a dense product instead of a sparse re-solve per iteration; the full
+     * K^-1 c is solved once per converged step.
+     */
+    struct Condensation
+    {
+      std::vector<types::global_dof_index> write, read;
+      /** F(i, j) = (K^-1 e_write[j])(read[i]). */
+      FullMatrix<double> flexibility;
+      /** Controlled motion of K^-1 e_write[j] (0 if not its harmonic). */
+      std::vector<double> controlled_motion;
+    };
+
     /** Iteration state of a load step. */
     struct StepState
     {
       double load_factor = 0.;
       /** K^-1 c per harmonic, and c (condensed). */
       std::vector<Vector<double>> correction_solution, correction_load;
+      /** K^-1 c valid at the read DoFs only (the iteration's view). */
+      std::vector<Vector<double>> interface_solution;
+      /** The controlled motion of K^-1 c [m or rad]. */
+      double controlled_motion = 0.;
       /** Plastic relative displacement per point and sample. */
       std::vector<LocalVector> plastic;
     };
@@ -176,20 +249,47 @@ namespace FourierSSI
     std::array<unsigned int, 3>
     return_map(const std::vector<LocalVector> &relative,
                std::vector<LocalVector>       &plastic,
-               std::vector<LocalVector>       &traction) const;
+               std::vector<LocalVector>       &traction,
+               std::vector<ContactState>      &state) const;
 
     /** G_h = int B_h^T D d_p, condensed, every harmonic. */
     std::vector<Vector<double>>
     out_of_balance_load(const std::vector<LocalVector> &plastic) const;
 
-    /** lambda from displacement control for a given correction solution. */
+    /** Condensation of the harmonics first, first + 1, ... */
+    void
+    condense(const unsigned int first);
+
+    /** The controlled motion of a (full) field of harmonic h. */
     double
-    controlled_load_factor(const std::vector<Vector<double>> &v,
-                           const double                       target) const;
+    controlled_motion_of(const unsigned int h, const Vector<double> &v) const;
+
+    /** Index of the harmonic that carries the controlled motion. */
+    unsigned int
+    controlled_harmonic() const;
+
+    /** The entries of (condensed) loads at the write DoFs, per harmonic. */
+    std::vector<Vector<double>>
+    on_write_dofs(const std::vector<Vector<double>> &full) const;
+
+    /**
+     * c += dc (given at the write DoFs), and K^-1 c at the read DoFs and in
+     * the controlled motion through the condensation.
+     */
+    void
+    add_correction(const std::vector<Vector<double>> &dc_write,
+                   StepState                         &state) const;
+
+    /** The full K^-1 c of a converged state (one solve per harmonic). */
+    void
+    complete(StepState &state) const;
 
     /** Iterate one step to lambda (load control) or to a motion target. */
     bool
-    solve_step(const double target, StepState &state, LoadStepResult &result);
+    solve_step(const double       target,
+               StepState         &state,
+               LoadStepResult    &result,
+               InterfaceSnapshot &snapshot);
 
     std::array<double, 6>
     foundation_resultant(const std::vector<LocalVector> &traction) const;
@@ -197,21 +297,41 @@ namespace FourierSSI
     RigidMotion
     motion_of(const StepState &state) const;
 
-    const HarmonicSet                &set;
-    const AllParameters              &parameters;
-    NonlinearInterfaceParameters      settings;
-    std::vector<Harmonic>             harmonics;
-    ThetaSampling                     sampling;
+    /**
+     * Harmonics n <= Maximum harmonic, not solved, whose amplitude in the
+     * traction change t - t0 of a converged state exceeds Harmonic
+     * tolerance times the largest amplitude; each logged with its amplitude.
+     */
+    std::vector<Harmonic>
+    harmonics_called_for(const InterfaceSnapshot &snapshot,
+                         std::ostream            &log) const;
+
+    /** Add harmonics to the set and extend the iteration state by zeros. */
+    void
+    grow(const std::vector<Harmonic> &added);
+
+    HarmonicSet                 &set;
+    const AllParameters         &parameters;
+    NonlinearInterfaceParameters settings;
+    std::vector<Harmonic>        harmonics;
+    ThetaSampling                sampling;
+    /** Every candidate harmonic n <= Maximum harmonic (growth only). */
+    std::vector<Harmonic>             candidates;
+    ThetaSampling                     spectrum;
     std::vector<MohrCoulombInterface> laws;
     /** Some nonlinear law has neither cohesion nor initial stress. */
     bool                        without_strength = false;
     std::vector<InterfacePoint> points;
+    std::vector<Condensation>   condensed;
     std::vector<Vector<double>> pattern_solution;
+    /** Controlled motion of the pattern solution u_F (load factor 1). */
+    double pattern_motion = 0.;
     /** sqrt(sum_h |F_h|^2) of the scene's (condensed) loads. */
-    double                      pattern_load_norm = 0.;
-    std::vector<LocalVector>    pattern_relative;
-    StepState                   committed;
-    std::vector<LoadStepResult> steps;
+    double                         pattern_load_norm = 0.;
+    std::vector<LocalVector>       pattern_relative;
+    StepState                      committed;
+    std::vector<LoadStepResult>    steps;
+    std::vector<InterfaceSnapshot> snapshots;
   };
 } // namespace FourierSSI
 

@@ -88,6 +88,11 @@ namespace FourierSSI
     void
     for_each(const std::function<void(const unsigned int)> &task) const;
 
+    /** for_each over the harmonics first, first + 1, ... only. */
+    void
+    for_each_from(const unsigned int                             first,
+                  const std::function<void(const unsigned int)> &task) const;
+
     /** DoFs, constraints and sparsity, then matrix and load, every harmonic. */
     void
     setup_and_assemble();
@@ -104,11 +109,28 @@ namespace FourierSSI
     void
     solve_increments(std::vector<std::vector<Vector<double>>> &b_to_x) const;
 
+    /**
+     * Add harmonics to the set: each is set up, assembled and factorized
+     * (concurrently), as the constructor, setup_and_assemble() and
+     * factorize() do for the first ones; the earlier harmonics and their
+     * factorizations are kept. For a solve that finds during its iteration
+     * that its solution contains harmonics the load does not (a slipping or
+     * opening interface, CoupledInterfaceSolver).
+     */
+    void
+    add(const std::vector<Harmonic> &new_harmonics);
+
     /** Factorizations computed so far, summed over the harmonics. */
     unsigned int
     n_factorizations() const;
 
   private:
+    /** What a harmonic added later is built from (the constructor's). */
+    const AllParameters     &parameters;
+    const Triangulation<2>  &triangulation;
+    const LoadDecomposition &loads;
+    const MPI_Comm           communicator;
+
     std::vector<Harmonic>                         harmonics;
     std::vector<std::shared_ptr<HarmonicProblem>> problems;
     unsigned int                                  threads;

@@ -39,12 +39,30 @@ namespace FourierSSI
     unsigned int load_steps    = 10;
     Control      control       = Control::load;
     Motion       motion        = Motion::vertical;
+    /** How the fixed point of the out-of-balance load is accelerated. */
+    enum class Acceleration
+    {
+      none,
+      aitken,
+      anderson
+    };
+
     /** Final value of the controlled motion [m or rad]. */
     double       target             = 0.;
     double       tolerance          = 1e-10;
     unsigned int maximum_iterations = 2000;
-    bool         aitken             = true;
-    unsigned int maximum_step_cuts  = 4;
+    Acceleration acceleration       = Acceleration::aitken;
+    /** Previous residuals an Anderson update uses (m). */
+    unsigned int anderson_depth    = 5;
+    unsigned int maximum_step_cuts = 4;
+    /**
+     * Harmonics chosen by the solution: up to this n the set grows where the
+     * interface-traction spectrum has not decayed (0, or not above the
+     * highest listed harmonic: the listed harmonics only).
+     */
+    unsigned int maximum_harmonic = 0;
+    /** Relative amplitude of the traction spectrum that adds a harmonic. */
+    double harmonic_tolerance = 1e-3;
   };
 
 } // namespace FourierSSI

@@ -29,6 +29,8 @@
 
 namespace FourierSSI
 {
+  class CoupledInterfaceSolver;
+
   class Simulator
   {
   public:
@@ -110,6 +112,9 @@ namespace FourierSSI
      */
     void
     solve_nonlinear_interfaces(std::ostream &log);
+    /** The last converged step as every harmonic's solution (3D output). */
+    void
+    keep_last_step(const CoupledInterfaceSolver &solver);
 
     /** Set up, assemble, solve and post-process every harmonic. */
     void

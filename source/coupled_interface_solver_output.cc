@@ -1,0 +1,138 @@
+// Output of CoupledInterfaceSolver: the load-displacement curve and the
+// interface state around the circumference (doc/nonlinear-interfaces.md
+// section 9). The solve itself is in coupled_interface_solver.cc.
+#include <cmath>
+#include <fourier_ssi/coupled_interface_solver.h>
+#include <fstream>
+#include <iomanip>
+
+namespace FourierSSI
+{
+  namespace
+  {
+    const std::string entry_name = "Nonlinear interfaces";
+
+    const char *
+    state_name(const ContactState state)
+    {
+      return state == ContactState::stick ? "stick" :
+             state == ContactState::slip  ? "slip" :
+                                            "open";
+    }
+  } // namespace
+
+  void
+  CoupledInterfaceSolver::write_csv(const std::string &filename) const
+  {
+    std::ofstream out(filename);
+    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+    out << "step,load_factor,V_kN,H_kN,M_kNm,T_kNm,vertical_m,horizontal_m,"
+           "rotation_rad,twist_rad,iterations,residual,stick,slip,open,"
+           "time_s,harmonics,converged\n"
+        << std::setprecision(12);
+    for (unsigned int s = 0; s < steps.size(); ++s)
+      {
+        const LoadStepResult &r = steps[s];
+        const auto            f = parameters.rigid_foundation;
+        out << s + 1 << ',' << r.load_factor << ','
+            << r.load_factor * f.vertical_force << ','
+            << r.load_factor * f.horizontal_force << ','
+            << r.load_factor * f.moment << ',' << r.load_factor * f.torque
+            << ',' << r.motion.vertical_displacement << ','
+            << r.motion.horizontal_displacement << ',' << r.motion.rotation
+            << ',' << r.motion.twist << ',' << r.iterations << ',' << r.residual
+            << ',' << r.states[0] << ',' << r.states[1] << ',' << r.states[2]
+            << ',' << r.time << ',' << r.n_harmonics << ",1\n";
+      }
+    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+  }
+
+  void
+  CoupledInterfaceSolver::write_interface_state_csv(
+    const std::string &filename) const
+  {
+    std::ofstream out(filename);
+    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+    // t_n > 0 is tension, d_n > 0 opening (section 1 of the doc); the
+    // traction is the total one, initial (geostatic) stress included.
+    out << "step,interface_id,point,r_m,z_m,normal_r,normal_z,theta_deg,"
+           "state,t_s_kPa,t_n_kPa,t_theta_kPa,d_s_m,d_n_m,d_theta_m\n"
+        << std::setprecision(10);
+    const std::vector<InterfacePair> &pairs =
+      set.problem(0).get_interfaces()->get_pairs();
+    const unsigned int N = sampling.n_samples();
+    for (unsigned int s = 0; s < snapshots.size(); ++s)
+      for (unsigned int i = 0; i < points.size(); ++i)
+        {
+          const InterfacePair &pair = pairs[points[i].pair];
+          for (unsigned int j = 0; j < N; ++j)
+            {
+              const unsigned int k = i * N + j;
+              const LocalVector &t = snapshots[s].traction[k];
+              const LocalVector &d = snapshots[s].relative[k];
+              out << s + 1 << ',' << pair.boundary_id << ',' << i << ','
+                  << points[i].position[0] << ',' << points[i].position[1]
+                  << ',' << pair.normal[0] << ',' << pair.normal[1] << ','
+                  << sampling.angle(j) * 180. / numbers::PI << ','
+                  << state_name(snapshots[s].state[k]) << ',' << t[0] << ','
+                  << t[1] << ',' << t[2] << ',' << d[0] << ',' << d[1] << ','
+                  << d[2] << '\n';
+            }
+        }
+    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+  }
+
+  void
+  CoupledInterfaceSolver::write_interface_state_vtu(
+    const std::string &filename) const
+  {
+    AssertThrow(!snapshots.empty(),
+                ExcMessage(entry_name + ": no converged step to write"));
+    std::ofstream out(filename);
+    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+    const InterfaceSnapshot &last = snapshots.back();
+    const unsigned int       N = sampling.n_samples(), P = points.size() * N;
+    // One VTK_VERTEX (type 1) per (point, theta) sample.
+    out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" "
+           "version=\"0.1\" byte_order=\"LittleEndian\">\n<UnstructuredGrid>"
+           "\n<Piece NumberOfPoints=\""
+        << P << "\" NumberOfCells=\"" << P << "\">\n"
+        << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" "
+           "format=\"ascii\">\n"
+        << std::setprecision(10);
+    for (unsigned int i = 0; i < points.size(); ++i)
+      for (unsigned int j = 0; j < N; ++j)
+        out << points[i].position[0] * std::cos(sampling.angle(j)) << ' '
+            << points[i].position[0] * std::sin(sampling.angle(j)) << ' '
+            << points[i].position[1] << '\n';
+    out << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int32\" "
+           "Name=\"connectivity\" format=\"ascii\">\n";
+    for (unsigned int k = 0; k < P; ++k)
+      out << k << '\n';
+    out << "</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" "
+           "format=\"ascii\">\n";
+    for (unsigned int k = 0; k < P; ++k)
+      out << k + 1 << '\n';
+    out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" "
+           "format=\"ascii\">\n";
+    for (unsigned int k = 0; k < P; ++k)
+      out << "1\n";
+    out << "</DataArray>\n</Cells>\n<PointData Scalars=\"state\">\n"
+           "<DataArray type=\"Int32\" Name=\"state\" format=\"ascii\">\n";
+    for (unsigned int k = 0; k < P; ++k)
+      out << static_cast<int>(last.state[k]) << '\n';
+    out << "</DataArray>\n";
+    const auto vectors = [&](const std::string              &name,
+                             const std::vector<LocalVector> &values) {
+      out << "<DataArray type=\"Float64\" Name=\"" << name
+          << "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
+      for (const LocalVector &v : values)
+        out << v[0] << ' ' << v[1] << ' ' << v[2] << '\n';
+      out << "</DataArray>\n";
+    };
+    vectors("traction_s_n_theta_kPa", last.traction);
+    vectors("relative_displacement_s_n_theta_m", last.relative);
+    out << "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+  }
+} // namespace FourierSSI

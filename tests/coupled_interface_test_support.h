@@ -1,0 +1,109 @@
+// Helpers shared by the tests of the coupled (nonlinear-interface) solve:
+// run a scene's load steps through CoupledInterfaceSolver on a HarmonicSet,
+// and the linear stiffness of the same scene with a linear law.
+#ifndef fourier_ssi_tests_coupled_interface_test_support_h
+#define fourier_ssi_tests_coupled_interface_test_support_h
+
+#include "test_support.h"
+
+#include <deal.II/grid/tria.h>
+#include <fourier_ssi/coupled_interface_solver.h>
+#include <fourier_ssi/harmonic_set.h>
+#include <fourier_ssi/scene_plan.h>
+#include <iostream>
+#include <regex>
+#include <string>
+#include <vector>
+
+namespace coupled_test
+{
+  using namespace FourierSSI;
+
+  /** One converged step of a lateral (H, u) curve. */
+  struct Step
+  {
+    double       H = 0., u = 0.; // [kN], [m]
+    unsigned int iterations = 0, n_harmonics = 0;
+    unsigned int stick = 0, slip = 0, open = 0;
+    double       equilibrium = 0.; // |resultant_x - H| / |H|
+  };
+
+  struct Curve
+  {
+    std::vector<Step> steps;
+    /** Harmonics of the set after the run (growth included). */
+    unsigned int n_harmonics = 0;
+    double       seconds     = 0.;
+  };
+
+  /** `text` with the line "set <entry> = ..." replaced (first match). */
+  inline std::string
+  with_entry(const std::string &text,
+             const std::string &entry,
+             const std::string &value)
+  {
+    return std::regex_replace(text,
+                              std::regex("set " + entry + " *= [^\n]*"),
+                              "set " + entry + " = " + value,
+                              std::regex_constants::format_first_only);
+  }
+
+  inline Curve
+  run(const std::string &text, std::ostream &log = std::cout)
+  {
+    const AllParameters parameters = test_support::parameters_from(text);
+    Triangulation<2>    triangulation;
+    parameters.mesh.build(triangulation);
+    const ScenePlan plan = plan_scene(parameters, triangulation);
+    HarmonicSet     set(
+      parameters, plan.harmonics, triangulation, plan.loads, MPI_COMM_SELF, 0);
+    set.setup_and_assemble();
+    set.factorize();
+    CoupledInterfaceSolver solver(set, parameters);
+    solver.run(log);
+    Curve curve;
+    for (const LoadStepResult &r : solver.get_steps())
+      {
+        Step s;
+        s.H           = solver.applied_loads(r.load_factor)[0];
+        s.u           = r.motion.horizontal_displacement;
+        s.iterations  = r.iterations;
+        s.n_harmonics = r.n_harmonics;
+        s.stick       = r.states[0];
+        s.slip        = r.states[1];
+        s.open        = r.states[2];
+        s.equilibrium = std::abs(r.resultant[0] - s.H) / std::abs(s.H);
+        curve.seconds += r.time;
+        curve.steps.push_back(s);
+      }
+    curve.n_harmonics = set.size();
+    return curve;
+  }
+
+  /**
+   * H / u of the scene with a linear interface law and n = 1 only (the
+   * lateral load's harmonic): the linear elastic slope [kN/m].
+   */
+  inline double
+  linear_lateral_slope(std::string text, const std::string &law)
+  {
+    text                           = with_entry(text, "Interfaces", law);
+    text                           = with_entry(text, "Harmonics", "1");
+    const AllParameters parameters = test_support::parameters_from(text);
+    Triangulation<2>    triangulation;
+    parameters.mesh.build(triangulation);
+    const ScenePlan plan = plan_scene(parameters, triangulation);
+    HarmonicSet     set(
+      parameters, plan.harmonics, triangulation, plan.loads, MPI_COMM_SELF, 0);
+    set.setup_and_assemble();
+    set.factorize();
+    std::vector<std::vector<Vector<double>>> b = {
+      {set.problem(0).get_system_rhs()}};
+    set.solve_increments(b);
+    const RigidMotion m = set.problem(0).get_foundation()->motion(b[0][0]);
+    return parameters.rigid_foundation.horizontal_force /
+           m.horizontal_displacement;
+  }
+} // namespace coupled_test
+
+#endif
