@@ -147,16 +147,22 @@ namespace FourierSSI
     const double target = parameters.discretization.target_accuracy;
     const double limit  = parameters.adaptivity.maximum_dofs;
     Timer        run_timer;
-    double       last_member_time = 0., dofs = 0., previous_dofs = 0.;
+    double       last_member_time = 0., dofs = 0.;
     unsigned int member = 0, last_solved = 0;
     for (;; ++member)
       {
         if (member > 0)
           {
-            // The next member's size from the growth of the last step
-            // (one global refinement: about 4x, plus the added grading).
-            const double growth =
-              previous_dofs > 0. ? dofs / previous_dofs : 4.5;
+            // The next member's size: its mesh is built aside (cheap next
+            // to a solve) and its DoFs scaled from this member's by the
+            // cell count.
+            Triangulation<2> next;
+            DiscretizationDesign::build_member(parameters,
+                                               member,
+                                               interface_ids,
+                                               next);
+            const double growth = static_cast<double>(next.n_active_cells()) /
+                                  triangulation.n_active_cells();
             if (dofs * growth > limit)
               {
                 std::ostringstream line;
@@ -189,7 +195,6 @@ namespace FourierSSI
         collect_cycle(member, log);
         record_goal_values();
         last_member_time = member_timer.wall_time();
-        previous_dofs    = dofs;
         dofs             = 0.;
         for (unsigned int i = 0; i < harmonic_set->size(); ++i)
           dofs = std::max<double>(
