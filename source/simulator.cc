@@ -355,7 +355,9 @@ namespace FourierSSI
         cycle_dofs += problem.get_dof_handler().n_dofs();
         reconstruction.add(harmonic_set->shared_problem(i));
       }
-    log << "cycle " << cycle << " summary: " << cycle_dofs << " dofs, "
+    // DoFs as an integer: the stream may carry an earlier precision.
+    log << "cycle " << cycle
+        << " summary: " << static_cast<long long>(cycle_dofs) << " dofs, "
         << outcomes.size() << " harmonic(s) on " << harmonic_set->n_threads()
         << " thread(s), wall " << std::setprecision(3) << cycle_wall_time
         << " s; summed over harmonics [s]:";

@@ -21,22 +21,22 @@ namespace FourierSSI
      * of their group (a motion or reaction zero by symmetry) have no
      * relative error and are left out.
      */
-    std::vector<std::pair<std::string, double>>
+    std::vector<HarmonicReport::Row>
     goal_rows(const HarmonicReport &report, const bool has_coefficients)
     {
       auto picked = [&](auto &&predicate) {
-        std::vector<std::pair<std::string, double>> rows;
-        double                                      largest = 0.;
+        std::vector<HarmonicReport::Row> rows;
+        double                           largest = 0.;
         for (const HarmonicReport::Row &row : report.rows)
           if (predicate(row.quantity))
             {
-              rows.emplace_back(row.quantity, row.value);
+              rows.push_back(row);
               largest = std::max(largest, std::abs(row.value));
             }
         rows.erase(std::remove_if(rows.begin(),
                                   rows.end(),
                                   [&](const auto &row) {
-                                    return !(std::abs(row.second) >
+                                    return !(std::abs(row.value) >
                                              1e-8 * largest);
                                   }),
                    rows.end());
@@ -75,7 +75,7 @@ namespace FourierSSI
     for (unsigned int i = 0; i < outcomes.size(); ++i)
       {
         const Harmonic &harmonic = harmonic_set->harmonic(i);
-        for (const auto &[quantity, value] :
+        for (const HarmonicReport::Row &row :
              goal_rows(outcomes[i].report,
                        outcomes[i].solution.has_coefficients))
           {
@@ -83,14 +83,15 @@ namespace FourierSSI
               std::find_if(goal_histories.begin(),
                            goal_histories.end(),
                            [&](const GoalHistory &h) {
-                             return h.quantity == quantity &&
+                             return h.quantity == row.quantity &&
                                     h.harmonic.n == harmonic.n &&
                                     h.harmonic.family == harmonic.family;
                            });
             if (history == goal_histories.end())
-              goal_histories.push_back({harmonic, quantity, {value}});
+              goal_histories.push_back(
+                {harmonic, row.quantity, row.unit, {row.value}});
             else
-              history->values.push_back(value);
+              history->values.push_back(row.value);
           }
       }
   }
@@ -241,13 +242,13 @@ namespace FourierSSI
               h.quantity + "_error", h.harmonic, row_cycle, e.relative, "-");
             converged = target_not_reached.empty() && e.relative <= target;
             log << "\n    " << h.harmonic.name() << ": " << h.quantity << " = "
-                << std::setprecision(7) << h.values.back() << " \u00b1 "
-                << std::setprecision(2) << e.relative << " (rel)"
+                << std::setprecision(7) << h.values.back() << " " << h.unit
+                << " \u00b1 " << std::setprecision(2) << e.relative << " (rel)"
                 << (e.asymptotic ? "" : ", rate assumed");
           }
         else
           log << "\n    " << h.harmonic.name() << ": " << h.quantity << " = "
-              << std::setprecision(7) << h.values.back()
+              << std::setprecision(7) << h.values.back() << " " << h.unit
               << " (no estimate: one mesh)";
         if (target > 0.)
           results.add(h.quantity + "_converged",

@@ -97,6 +97,7 @@ namespace FourierSSI
     {
       Harmonic            harmonic;
       std::string         quantity;
+      std::string         unit;
       std::vector<double> values;
     };
 
