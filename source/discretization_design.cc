@@ -100,8 +100,11 @@ namespace FourierSSI
                  const std::set<types::boundary_id> &interface_ids,
                  Triangulation<2>                   &triangulation)
     {
-      MeshBuilder mesh = parameters.mesh;
-      mesh.global_refinements += member;
+      // The design replaces Mesh/Global refinements: member k is the
+      // coarse mesh refined k times (a scene refined for a one-mesh run
+      // would make every member 4x dearer).
+      MeshBuilder mesh        = parameters.mesh;
+      mesh.global_refinements = member;
       mesh.build(triangulation);
       refine_a_priori(triangulation,
                       refinements(parameters, member),

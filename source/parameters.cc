@@ -71,8 +71,9 @@ namespace FourierSSI
                       "estimated error is below the target or the next mesh "
                       "would exceed Adaptivity/Maximum DoFs (then the run "
                       "says so and exits non-zero, unless Adaptivity/Allow "
-                      "unconverged). Replaces Polynomial degree and "
-                      "Refinement cycles; Point, Box and Layer refinement "
+                      "unconverged). Replaces Polynomial degree, "
+                      "Refinement cycles and Mesh/Global refinements; Point, "
+                      "Box and Layer refinement "
                       "are applied in addition. Empty: the mesh as given "
                       "(doc/accuracy-vs-time.md).");
     prm.leave_subsection();

@@ -4,8 +4,9 @@
  * estimated from the members (sequence_error_estimate.h) is below the
  * target (doc/accuracy-vs-time.md, "Accuracy on demand").
  *
- * Member k is the scene's mesh (Mesh subsection) with
- *  - k more global refinements: every error source, the far field and the
+ * Member k is the scene's coarse mesh (Mesh subsection; its Global
+ * refinements entry is replaced by k) with
+ *  - k global refinements: every error source, the far field and the
  *    smooth parts included, falls with each member (a family graded only at
  *    the corners stalls at the error of its base mesh: 1e-5 on the
  *    embedded footing, so its differences under-report);
@@ -56,8 +57,8 @@ namespace FourierSSI
     refinements(const AllParameters &parameters, const unsigned int member);
 
     /**
-     * Build member `member` into `triangulation`: the scene mesh with
-     * `member` more global refinements, then refinements().
+     * Build member `member` into `triangulation`: the scene's coarse mesh
+     * refined `member` times globally, then refinements().
      */
     void
     build_member(const AllParameters                &parameters,
