@@ -44,6 +44,26 @@ namespace FourierSSI
                       "goal: stop refining once the estimated relative error "
                       "of the goal is below this value (0: run every "
                       "Refinement cycle).");
+    prm.declare_entry("Maximum DoFs",
+                      "5e5",
+                      Patterns::Double(1.),
+                      "Discretization/Target accuracy: the work bound, in "
+                      "DoFs per harmonic. When the next designed mesh would "
+                      "exceed it, the refinement stops: the run prints the "
+                      "accuracy reached and this limit, results.csv has "
+                      "target_accuracy_reached = 0, and the exit code is "
+                      "non-zero (unless Allow unconverged). 5e5 is about 2 "
+                      "GB with the direct solver. Mesh/Maximum DoFs stays "
+                      "the hard memory guard of every run.");
+    prm.declare_entry("Allow unconverged",
+                      "false",
+                      Patterns::Bool(),
+                      "Discretization/Target accuracy: true makes a run "
+                      "that stops at Maximum DoFs before the target exit "
+                      "with 0 (the line and the results.csv rows "
+                      "target_accuracy_reached = 0, <goal>_converged = 0 "
+                      "stay), for sweeps that want every case's best "
+                      "value.");
     prm.declare_entry("Point refinement",
                       "",
                       Patterns::Anything(),
@@ -80,12 +100,14 @@ namespace FourierSSI
   {
     prm.enter_subsection("Adaptivity");
     const std::string strategy_name = prm.get("Strategy");
-    strategy        = strategy_name == "kelly" ? RefinementStrategy::kelly :
-                      strategy_name == "goal"  ? RefinementStrategy::goal :
-                                                 RefinementStrategy::global;
-    refine_fraction = prm.get_double("Refine fraction");
-    goal            = prm.get("Goal");
-    goal_tolerance  = prm.get_double("Goal tolerance");
+    strategy          = strategy_name == "kelly" ? RefinementStrategy::kelly :
+                        strategy_name == "goal"  ? RefinementStrategy::goal :
+                                                   RefinementStrategy::global;
+    refine_fraction   = prm.get_double("Refine fraction");
+    goal              = prm.get("Goal");
+    goal_tolerance    = prm.get_double("Goal tolerance");
+    maximum_dofs      = prm.get_double("Maximum DoFs");
+    allow_unconverged = prm.get_bool("Allow unconverged");
     point_refinements.clear();
     for (const std::string &item :
          Utilities::split_string_list(prm.get("Point refinement"), ';'))

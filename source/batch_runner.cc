@@ -90,6 +90,11 @@ namespace FourierSSI
                     << ',' << row.value << ',' << row.unit << '\n';
             rows[c]   = csv.str();
             status[c] = "ok";
+            // A target not reached fails the case (its rows stay, marked),
+            // as it fails a single run.
+            if (!simulator.unmet_target().empty() &&
+                !parameters.adaptivity.allow_unconverged)
+              status[c] = simulator.unmet_target();
           }
         catch (const std::exception &e)
           {

@@ -205,6 +205,15 @@ namespace FourierSSI
             AssertThrow(false,
                         ExcMessage(prm_file + ": " + one_line_message(e)));
           }
+        // Not reaching the target is never silent: the results are
+        // written (and marked), the exit code says it.
+        if (!simulator.unmet_target().empty() &&
+            !parameters.adaptivity.allow_unconverged)
+          {
+            err << "fourier-ssi: " << prm_file << ": "
+                << simulator.unmet_target() << std::endl;
+            return 3;
+          }
       }
     catch (const std::exception &e)
       {

@@ -55,6 +55,27 @@ namespace FourierSSI
                       Patterns::Integer(1, 40),
                       "Solve, refine globally, solve again ... (convergence "
                       "studies).");
+    prm.declare_entry("Target accuracy",
+                      "",
+                      Patterns::Anything(),
+                      "Relative accuracy asked of the goal values: K_H, K_M, "
+                      "K_MH when Rigid foundation/Stiffness coefficients is "
+                      "set, else the rigid foundation's motion, else the "
+                      "reactions of the supports. When set (0 < target < "
+                      "1, e.g. 1e-4) the program designs the "
+                      "discretization: FE_Q(4), the scene's mesh graded "
+                      "toward its singular points (interface line ends, "
+                      "corners of material and removed regions, the edge of "
+                      "a surface patch), surface layers where G ~ "
+                      "depth^alpha, and nested global refinements until the "
+                      "estimated error is below the target or the next mesh "
+                      "would exceed Adaptivity/Maximum DoFs (then the run "
+                      "says so and exits non-zero, unless Adaptivity/Allow "
+                      "unconverged). Replaces Polynomial degree, "
+                      "Refinement cycles and Mesh/Global refinements; Point, "
+                      "Box and Layer refinement "
+                      "are applied in addition. Empty: the mesh as given "
+                      "(doc/accuracy-vs-time.md).");
     prm.leave_subsection();
   }
 
@@ -99,8 +120,36 @@ namespace FourierSSI
     AssertThrow(volumetric != "bbar" || degree == 2,
                 ExcMessage("Discretization/Volumetric strain = bbar needs "
                            "Polynomial degree = 2"));
-    refinement_cycles    = prm.get_integer("Refinement cycles");
-    concurrent_harmonics = prm.get_integer("Concurrent harmonics");
+    refinement_cycles        = prm.get_integer("Refinement cycles");
+    concurrent_harmonics     = prm.get_integer("Concurrent harmonics");
+    const std::string target = Utilities::trim(prm.get("Target accuracy"));
+    target_accuracy          = 0.;
+    if (!target.empty())
+      {
+        const std::string error =
+          "Discretization/Target accuracy: '" + target +
+          "' is not a relative accuracy between 0 and 1 (e.g. 1e-4)";
+        try
+          {
+            target_accuracy = Utilities::string_to_double(target);
+          }
+        catch (...)
+          {
+            AssertThrow(false, ExcMessage(error));
+          }
+        AssertThrow(target_accuracy > 0. && target_accuracy < 1.,
+                    ExcMessage(error));
+        AssertThrow(refinement_cycles == 1,
+                    ExcMessage("Discretization/Target accuracy: replaces "
+                               "Refinement cycles (leave it at 1)"));
+        // The designed discretization is FE_Q(4) (its grading pairs with
+        // the 10-node interface element; FE_Q(4) does not lock).
+        AssertThrow(volumetric != "bbar",
+                    ExcMessage("Discretization/Target accuracy: designs "
+                               "FE_Q(4) meshes, and Volumetric strain = bbar "
+                               "needs degree 2 (write auto or standard)"));
+        degree = 4;
+      }
     prm.leave_subsection();
   }
 
@@ -289,6 +338,21 @@ namespace FourierSSI
           "standard";
     initial_stress.parse_parameters(prm);
     nonlinear_interfaces.parse_parameters(prm);
+    if (discretization.target_accuracy > 0.)
+      {
+        AssertThrow(rigid_foundation.enabled ||
+                      !boundary_conditions.dirichlet.empty(),
+                    ExcMessage("Discretization/Target accuracy: the scene "
+                               "has no goal quantity (no rigid foundation, "
+                               "no supports whose reactions to measure)"));
+        AssertThrow(adaptivity.strategy == RefinementStrategy::global,
+                    ExcMessage("Discretization/Target accuracy: refines by "
+                               "its own design; leave Adaptivity/Strategy = "
+                               "global"));
+        AssertThrow(!interfaces.any_nonlinear(),
+                    ExcMessage("Discretization/Target accuracy: not yet "
+                               "available with coulomb interfaces"));
+      }
     for (const auto &[id, e] : loads.displacement)
       AssertThrow(boundary_conditions.dirichlet.count(id) == 0,
                   ExcMessage("Loads/Prescribed displacement: boundary id " +

@@ -1,5 +1,6 @@
 #include <deal.II/base/timer.h>
 #include <filesystem>
+#include <fourier_ssi/discretization_design.h>
 #include <fourier_ssi/input_checks.h>
 #include <fourier_ssi/messages.h>
 #include <fourier_ssi/simulator.h>
@@ -29,6 +30,9 @@ namespace FourierSSI
       {
         check_output_paths();
         remove_stale_results();
+        goal_histories.clear();
+        estimate_wall_time = 0.;
+        target_not_reached.clear();
         make_mesh();
         make_plan(log);
         if (parameters.interfaces.any_nonlinear())
@@ -36,16 +40,26 @@ namespace FourierSSI
             solve_nonlinear_interfaces(log);
             return results;
           }
-        for (unsigned int cycle = 0;
-             cycle < parameters.discretization.refinement_cycles;
-             ++cycle)
+        if (parameters.discretization.target_accuracy > 0.)
+          solve_to_target(log);
+        else
           {
-            if (cycle > 0)
-              refine_mesh();
-            solve_harmonics(cycle);
-            collect_cycle(cycle, log);
-            if (goal_tolerance_reached(cycle, log))
-              break;
+            if (parameters.discretization.refinement_cycles == 1)
+              solve_coarser_member(log);
+            unsigned int cycle = 0;
+            for (; cycle < parameters.discretization.refinement_cycles; ++cycle)
+              {
+                if (cycle > 0)
+                  refine_mesh();
+                solve_harmonics(cycle);
+                collect_cycle(cycle, log);
+                record_goal_values();
+                if (goal_tolerance_reached(cycle, log))
+                  break;
+              }
+            report_error_estimates(
+              std::min(cycle, parameters.discretization.refinement_cycles - 1),
+              log);
           }
         write_output(log);
       }
@@ -126,8 +140,16 @@ namespace FourierSSI
     interface_ids.clear();
     for (const auto &[id, law] : parameters.interfaces.laws)
       interface_ids.insert(id);
-    parameters.mesh.build(triangulation);
-    refine_a_priori(triangulation, parameters.adaptivity, interface_ids);
+    if (parameters.discretization.target_accuracy > 0.)
+      DiscretizationDesign::build_member(parameters,
+                                         0,
+                                         interface_ids,
+                                         triangulation);
+    else
+      {
+        parameters.mesh.build(triangulation);
+        refine_a_priori(triangulation, parameters.adaptivity, interface_ids);
+      }
     for (const auto &cell : triangulation.active_cell_iterators())
       parameters.materials.get(cell->material_id()); // throws if missing
   }
@@ -238,10 +260,11 @@ namespace FourierSSI
                                       parameters.adaptivity.goal,
                                       outcome.report);
       }
-    {
-      TimerOutput::Scope scope(timer, "output");
-      outcome.files = write_harmonic_files(outcome.solution, cycle);
-    }
+    if (!estimate_only)
+      {
+        TimerOutput::Scope scope(timer, "output");
+        outcome.files = write_harmonic_files(outcome.solution, cycle);
+      }
     outcome.times = timer.get_summary_data(TimerOutput::total_wall_time);
     // The interface part of the assembly is timed inside it.
     outcome.times["interface assembly"] = problem.time_interface_assembly;
@@ -353,7 +376,9 @@ namespace FourierSSI
         cycle_dofs += problem.get_dof_handler().n_dofs();
         reconstruction.add(harmonic_set->shared_problem(i));
       }
-    log << "cycle " << cycle << " summary: " << cycle_dofs << " dofs, "
+    // DoFs as an integer: the stream may carry an earlier precision.
+    log << "cycle " << cycle
+        << " summary: " << static_cast<long long>(cycle_dofs) << " dofs, "
         << outcomes.size() << " harmonic(s) on " << harmonic_set->n_threads()
         << " thread(s), wall " << std::setprecision(3) << cycle_wall_time
         << " s; summed over harmonics [s]:";

@@ -73,3 +73,13 @@ add_test(NAME input_nonconverging_coulomb_step
           -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_failure.cmake)
 set_tests_properties(input_nonconverging_coulomb_step PROPERTIES
   RESOURCE_LOCK bad_output)
+
+# Discretization/Target accuracy out of the reach of Adaptivity/Maximum DoFs:
+# one line with the accuracy reached and the limit, non-zero exit, and the
+# results written but marked not converged.
+add_test(NAME program_target_accuracy_unreachable
+  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi>
+          -DPRM=${CMAKE_CURRENT_SOURCE_DIR}/accuracy/unreachable_target.prm
+          "-DEXPECTED=Discretization/Target accuracy 1e-08 not reached: estimated relative error [0-9.e+-]+ with [0-9]+ DoFs; the next mesh \\(about [0-9]+ DoFs\\) exceeds Adaptivity/Maximum DoFs = 100000"
+          -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/target_unreachable
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_unconverged.cmake)

@@ -49,6 +49,10 @@ namespace FourierSSI
     double             refine_fraction = 0.3;
     std::string        goal            = "all"; // K_H | K_M | K_MH | all
     double             goal_tolerance  = 0.;    // relative; 0: no stop
+    /** Work bound of Discretization/Target accuracy (DoFs per harmonic). */
+    double maximum_dofs = 5e5;
+    /** Exit 0 although Target accuracy was not reached (the CSV says so). */
+    bool allow_unconverged = false;
     /**
      * A priori grading: each (point, levels) pair refines the cells that
      * touch the point `levels` times before the first cycle.

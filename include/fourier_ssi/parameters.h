@@ -46,6 +46,12 @@ namespace FourierSSI
     /** True if `volumetric` was chosen by 'auto' (the log says so). */
     bool         volumetric_automatic = false;
     unsigned int refinement_cycles    = 1;
+    /**
+     * Relative accuracy asked of the goal values (0: not set). When set,
+     * the program designs an FE_Q(4) discretization and refines it until
+     * the estimated error is below it (discretization_design.h).
+     */
+    double target_accuracy = 0.;
     /** Harmonics solved at the same time (threads); 0: one per core. */
     unsigned int concurrent_harmonics = 0;
   };

@@ -22,6 +22,7 @@
 #include <fourier_ssi/parameters.h>
 #include <fourier_ssi/results_table.h>
 #include <fourier_ssi/scene_plan.h>
+#include <fourier_ssi/sequence_error_estimate.h>
 #include <functional>
 #include <memory>
 #include <ostream>
@@ -60,6 +61,17 @@ namespace FourierSSI
       return triangulation;
     }
 
+    /**
+     * Empty, or the one line saying that Discretization/Target accuracy was
+     * not reached (after run(); the front end exits non-zero with it unless
+     * Adaptivity/Allow unconverged is set).
+     */
+    const std::string &
+    unmet_target() const
+    {
+      return target_not_reached;
+    }
+
     /** The scene plan (after run()): the one list of harmonics. */
     const ScenePlan &
     get_plan() const
@@ -92,6 +104,18 @@ namespace FourierSSI
 
     void
     check_output_paths() const;
+
+    /**
+     * A goal value of one harmonic (K_H, a foundation motion, a reaction)
+     * on each nested mesh solved so far, coarse to fine.
+     */
+    struct GoalHistory
+    {
+      Harmonic            harmonic;
+      std::string         quantity;
+      std::string         unit;
+      std::vector<double> values;
+    };
 
     void
     remove_stale_results() const;
@@ -145,6 +169,45 @@ namespace FourierSSI
     void
     collect_cycle(const unsigned int cycle, std::ostream &log);
 
+    /**
+     * Discretization/Target accuracy: solve the members of the designed
+     * family (discretization_design.h) until the estimated error of every
+     * goal value is below the target or the next member would exceed
+     * Adaptivity/Maximum DoFs.
+     */
+    void
+    solve_to_target(std::ostream &log);
+
+    /**
+     * A run on one mesh of its own: solve the mesh coarsened once (every
+     * refinement undone by one level) for the goal values only, so that
+     * the answer has an error estimate (no rows, log lines or files).
+     */
+    void
+    solve_coarser_member(std::ostream &log);
+
+    /** Append this cycle's goal values (the quantities goal_rows() picks). */
+    void
+    record_goal_values();
+
+    /** The ratio eq. (1) assumes where it cannot observe one. */
+    double
+    assumed_ratio() const;
+
+    /**
+     * The estimated relative error of every goal value from its nested
+     * values (eq. (1) of sequence_error_estimate.h); the largest one.
+     */
+    double
+    largest_estimated_error() const;
+
+    /**
+     * Log "K_H = 10.7993 +- 2.1e-05 (rel)" per goal value and write the
+     * rows <quantity>_error (relative) under the last cycle.
+     */
+    void
+    report_error_estimates(const unsigned int cycle, std::ostream &log);
+
     /** True if the goal strategy's estimate meets its tolerance. */
     bool
     goal_tolerance_reached(const unsigned int cycle, std::ostream &log) const;
@@ -158,6 +221,12 @@ namespace FourierSSI
     const AllParameters &parameters;
     const MPI_Comm       communicator;
     bool                 write_files = true;
+    /** A solve made only for the error estimate: no files. */
+    bool                     estimate_only = false;
+    std::vector<GoalHistory> goal_histories;
+    /** Wall time of the solves made only for the error estimate [s]. */
+    double      estimate_wall_time = 0.;
+    std::string target_not_reached;
     /** Owned here: the reconstruction's DoF handlers live on it. */
     Triangulation<2>                     triangulation;
     std::set<types::boundary_id>         interface_ids;

@@ -199,6 +199,32 @@ main(int argc, char **argv)
                               tolerance);
               continue;
             }
+          if (kind == "effectivity")
+            {
+              // effectivity QUANTITY N FAMILY CYCLE REFERENCE MIN MAX: the
+              // run's estimate QUANTITY_error (relative) over the true
+              // relative error |value - reference| / |reference|
+              std::string  quantity, family, cycle;
+              unsigned int n         = 0;
+              double       reference = 0., low = 0., high = 0.;
+              if (!(words >> quantity >> n >> family >> cycle >> reference >>
+                    low >> high))
+                throw std::runtime_error("malformed check '" + line + "'");
+              const double value = lookup(series, quantity, n, family, cycle);
+              const double estimate =
+                lookup(series, quantity + "_error", n, family, cycle);
+              const double error =
+                std::abs(value - reference) / std::abs(reference);
+              check::in_range(quantity + " n=" + std::to_string(n) + " " +
+                                family + " cycle " + cycle +
+                                " effectivity (estimate " +
+                                std::to_string(estimate) + ", error " +
+                                std::to_string(error) + ")",
+                              estimate / error,
+                              low,
+                              high);
+              continue;
+            }
           std::string  quantity, family, cycle;
           unsigned int n = 0;
           double       a = 0., b = 0.;

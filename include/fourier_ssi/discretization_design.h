@@ -1,0 +1,81 @@
+/**
+ * The discretization that Discretization/Target accuracy designs: a family
+ * of nested FE_Q(4) meshes, member k = 0, 1, 2, ..., walked until the error
+ * estimated from the members (sequence_error_estimate.h) is below the
+ * target (doc/accuracy-vs-time.md, "Accuracy on demand").
+ *
+ * Member k is the scene's coarse mesh (Mesh subsection; its Global
+ * refinements entry is replaced by k) with
+ *  - k global refinements: every error source, the far field and the
+ *    smooth parts included, falls with each member (a family graded only at
+ *    the corners stalls at the error of its base mesh: 1e-5 on the
+ *    embedded footing, so its differences under-report);
+ *  - geometric grading toward every singular point found in the scene,
+ *    first_grading_levels + grading_levels_per_member k bisections: the
+ *    ends and corners of interface lines, the corners of material regions
+ *    (rigid foundations, soil layers) and removed regions, and the edge of a
+ *    surface patch. At an r^lambda corner singularity each bisection cuts
+ *    the goal error by 2^-2lambda (0.41 rough, 0.63 smooth), for a constant
+ *    number of cells per level;
+ *  - where a material has G ~ depth^alpha (alpha > 0), anisotropic layers
+ *    under the ground surface, first_surface_layers + k cuts, since G
+ *    vanishes at the surface.
+ * The user's Point, Box and Layer refinement entries are applied as well
+ * (expert overrides: a point given there takes the larger level count).
+ */
+#ifndef fourier_ssi_discretization_design_h
+#define fourier_ssi_discretization_design_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/grid/tria.h>
+#include <fourier_ssi/parameters.h>
+#include <set>
+#include <vector>
+
+namespace FourierSSI
+{
+  using namespace dealii;
+
+  namespace DiscretizationDesign
+  {
+    /** Corner grading of member 0, and the levels added per member. */
+    constexpr unsigned int first_grading_levels      = 8;
+    constexpr unsigned int grading_levels_per_member = 2;
+    /** Surface layers of member 0 (G ~ depth^alpha soil). */
+    constexpr unsigned int first_surface_layers = 2;
+
+    /**
+     * The singular points of a built-in rectangle scene, inside the domain
+     * (off the axis and off the far boundaries), each once. A gmsh mesh
+     * has none (its points are not known here).
+     */
+    std::vector<Point<2>>
+    singular_points(const MeshBuilder &mesh);
+
+    /** The a priori refinements of member `member` (user's entries added). */
+    AdaptivityParameters
+    refinements(const AllParameters &parameters, const unsigned int member);
+
+    /**
+     * Build member `member` into `triangulation`: the scene's coarse mesh
+     * refined `member` times globally, then refinements().
+     */
+    void
+    build_member(const AllParameters                &parameters,
+                 const unsigned int                  member,
+                 const std::set<types::boundary_id> &interface_ids,
+                 Triangulation<2>                   &triangulation);
+
+    /**
+     * Undo the last refinement of every cell whose siblings are all active
+     * (the coarser nested member of a user's mesh: one level less of its
+     * global refinements and of its grading). False if nothing can be
+     * coarsened (a coarse mesh).
+     */
+    bool
+    coarsen_once(Triangulation<2>                   &triangulation,
+                 const std::set<types::boundary_id> &interface_ids);
+  } // namespace DiscretizationDesign
+} // namespace FourierSSI
+
+#endif

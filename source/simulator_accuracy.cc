@@ -1,0 +1,273 @@
+// The Simulator's error estimates and Discretization/Target accuracy
+// (doc/accuracy-vs-time.md, "Accuracy on demand"): every goal value of a run
+// is recorded on each nested mesh it is solved on, and its error estimated
+// from those values (sequence_error_estimate.h).
+#include <algorithm>
+#include <deal.II/base/timer.h>
+#include <fourier_ssi/discretization_design.h>
+#include <fourier_ssi/messages.h>
+#include <fourier_ssi/simulator.h>
+#include <iomanip>
+#include <sstream>
+
+namespace FourierSSI
+{
+  namespace
+  {
+    /**
+     * The goal values among a harmonic's rows: K_H, K_M, K_MH on the
+     * stiffness harmonic; else the rigid foundation's motions; else the
+     * reactions of the supports. Values at round-off next to the largest
+     * of their group (a motion or reaction zero by symmetry) have no
+     * relative error and are left out.
+     */
+    std::vector<HarmonicReport::Row>
+    goal_rows(const HarmonicReport &report, const bool has_coefficients)
+    {
+      auto picked = [&](auto &&predicate) {
+        std::vector<HarmonicReport::Row> rows;
+        double                           largest = 0.;
+        for (const HarmonicReport::Row &row : report.rows)
+          if (predicate(row.quantity))
+            {
+              rows.push_back(row);
+              largest = std::max(largest, std::abs(row.value));
+            }
+        rows.erase(std::remove_if(rows.begin(),
+                                  rows.end(),
+                                  [&](const auto &row) {
+                                    return !(std::abs(row.value) >
+                                             1e-8 * largest);
+                                  }),
+                   rows.end());
+        return rows;
+      };
+      if (has_coefficients)
+        return picked([](const std::string &q) {
+          return q == "K_H" || q == "K_M" || q == "K_MH";
+        });
+      auto motions = picked([](const std::string &q) {
+        return q == "foundation_horizontal_displacement" ||
+               q == "foundation_rotation" ||
+               q == "foundation_vertical_displacement" ||
+               q == "foundation_twist";
+      });
+      if (!motions.empty())
+        return motions;
+      return picked([](const std::string &q) {
+        return q.rfind("reaction_force_boundary_", 0) == 0 ||
+               q.rfind("reaction_moment_boundary_", 0) == 0;
+      });
+    }
+  } // namespace
+
+  double
+  Simulator::assumed_ratio() const
+  {
+    return parameters.discretization.target_accuracy > 0. ?
+             design_member_ratio :
+             one_halving_ratio;
+  }
+
+  void
+  Simulator::record_goal_values()
+  {
+    for (unsigned int i = 0; i < outcomes.size(); ++i)
+      {
+        const Harmonic &harmonic = harmonic_set->harmonic(i);
+        for (const HarmonicReport::Row &row :
+             goal_rows(outcomes[i].report,
+                       outcomes[i].solution.has_coefficients))
+          {
+            auto history =
+              std::find_if(goal_histories.begin(),
+                           goal_histories.end(),
+                           [&](const GoalHistory &h) {
+                             return h.quantity == row.quantity &&
+                                    h.harmonic.n == harmonic.n &&
+                                    h.harmonic.family == harmonic.family;
+                           });
+            if (history == goal_histories.end())
+              goal_histories.push_back(
+                {harmonic, row.quantity, row.unit, {row.value}});
+            else
+              history->values.push_back(row.value);
+          }
+      }
+  }
+
+  double
+  Simulator::largest_estimated_error() const
+  {
+    double largest = 0.;
+    for (const GoalHistory &h : goal_histories)
+      if (h.values.size() >= 2)
+        largest =
+          std::max(largest,
+                   estimate_sequence_error(h.values, assumed_ratio()).relative);
+    return largest;
+  }
+
+  void
+  Simulator::solve_coarser_member(std::ostream &log)
+  {
+    if (!parameters.rigid_foundation.enabled &&
+        parameters.boundary_conditions.dirichlet.empty())
+      return; // no goal value
+    Timer timer;
+    if (!DiscretizationDesign::coarsen_once(triangulation, interface_ids))
+      {
+        log << "error estimate: none (the mesh has no refinement level to "
+               "undo; set Discretization/Target accuracy, or Refinement "
+               "cycles >= 2)"
+            << std::endl;
+        return;
+      }
+    estimate_only = true;
+    try
+      {
+        solve_harmonics(0);
+        record_goal_values();
+      }
+    catch (const std::exception &e)
+      {
+        log << "error estimate: none (the mesh coarsened once: "
+            << one_line_message(e) << ")" << std::endl;
+        goal_histories.clear();
+      }
+    estimate_only = false;
+    harmonic_set.reset();
+    outcomes.clear();
+    make_mesh();
+    estimate_wall_time = timer.wall_time();
+  }
+
+  void
+  Simulator::solve_to_target(std::ostream &log)
+  {
+    const double target = parameters.discretization.target_accuracy;
+    const double limit  = parameters.adaptivity.maximum_dofs;
+    Timer        run_timer;
+    double       last_member_time = 0., dofs = 0.;
+    unsigned int member = 0, last_solved = 0;
+    for (;; ++member)
+      {
+        if (member > 0)
+          {
+            // The next member's size: its mesh is built aside (cheap next
+            // to a solve) and its DoFs scaled from this member's by the
+            // cell count.
+            Triangulation<2> next;
+            DiscretizationDesign::build_member(parameters,
+                                               member,
+                                               interface_ids,
+                                               next);
+            const double growth = static_cast<double>(next.n_active_cells()) /
+                                  triangulation.n_active_cells();
+            if (dofs * growth > limit)
+              {
+                std::ostringstream line;
+                line << "Discretization/Target accuracy " << target
+                     << " not reached: estimated relative error ";
+                if (member >= 2)
+                  line << std::setprecision(2) << largest_estimated_error();
+                else
+                  line << "unknown (one mesh solved)";
+                line << " with " << static_cast<long long>(dofs)
+                     << " DoFs; the next mesh (about "
+                     << static_cast<long long>(dofs * growth)
+                     << " DoFs) exceeds Adaptivity/Maximum DoFs = "
+                     << std::setprecision(6) << limit;
+                target_not_reached = line.str();
+                log << target_not_reached << std::endl;
+                break;
+              }
+            reconstruction = FieldReconstruction();
+            harmonic_set.reset();
+            outcomes.clear();
+            DiscretizationDesign::build_member(parameters,
+                                               member,
+                                               interface_ids,
+                                               triangulation);
+          }
+        Timer member_timer;
+        last_solved = member;
+        solve_harmonics(member);
+        collect_cycle(member, log);
+        record_goal_values();
+        last_member_time = member_timer.wall_time();
+        dofs             = 0.;
+        for (unsigned int i = 0; i < harmonic_set->size(); ++i)
+          dofs = std::max<double>(
+            dofs, harmonic_set->problem(i).get_dof_handler().n_dofs());
+        if (member == 0)
+          continue;
+        const double error = largest_estimated_error();
+        log << "target accuracy " << target << ": mesh " << member << ", "
+            << static_cast<long long>(dofs)
+            << " DoFs, largest estimated relative error "
+            << std::setprecision(2) << error << std::endl;
+        if (error <= target)
+          break;
+      }
+    // The meshes before the answer's were solved for the estimate.
+    estimate_wall_time = run_timer.wall_time() - last_member_time;
+    report_error_estimates(last_solved, log);
+  }
+
+  void
+  Simulator::report_error_estimates(const unsigned int cycle, std::ostream &log)
+  {
+    unsigned int n_meshes = 0;
+    for (const GoalHistory &h : goal_histories)
+      n_meshes = std::max<unsigned int>(n_meshes, h.values.size());
+    const double target = parameters.discretization.target_accuracy;
+    if (goal_histories.empty() || (n_meshes < 2 && target == 0.))
+      return;
+    log << "error estimates (relative, from the goal values on the last "
+        << std::min(n_meshes, 3u)
+        << " nested meshes, geometric tail; doc/accuracy-vs-time.md):";
+    for (const GoalHistory &h : goal_histories)
+      {
+        // The answer is the last mesh's (a quantity missing on the last
+        // mesh, e.g. zero there, keeps its own last row).
+        const unsigned int row_cycle =
+          std::min<unsigned int>(cycle, h.values.size() - 1);
+        bool converged = false;
+        if (h.values.size() >= 2)
+          {
+            const SequenceErrorEstimate e =
+              estimate_sequence_error(h.values, assumed_ratio());
+            results.add(
+              h.quantity + "_error", h.harmonic, row_cycle, e.relative, "-");
+            converged = target_not_reached.empty() && e.relative <= target;
+            log << "\n    " << h.harmonic.name() << ": " << h.quantity << " = "
+                << std::setprecision(7) << h.values.back() << " " << h.unit
+                << " \u00b1 " << std::setprecision(2) << e.relative << " (rel)"
+                << (e.asymptotic ? "" : ", rate assumed");
+          }
+        else
+          log << "\n    " << h.harmonic.name() << ": " << h.quantity << " = "
+              << std::setprecision(7) << h.values.back() << " " << h.unit
+              << " (no estimate: one mesh)";
+        if (target > 0.)
+          results.add(h.quantity + "_converged",
+                      h.harmonic,
+                      row_cycle,
+                      converged ? 1. : 0.,
+                      "-");
+      }
+    log << std::endl;
+    const Harmonic &first = goal_histories.front().harmonic;
+    results.add("time_error_estimate", first, cycle, estimate_wall_time, "s");
+    if (target > 0.)
+      {
+        results.add("target_accuracy", first, cycle, target, "-");
+        results.add("target_accuracy_reached",
+                    first,
+                    cycle,
+                    target_not_reached.empty() ? 1. : 0.,
+                    "-");
+      }
+  }
+} // namespace FourierSSI

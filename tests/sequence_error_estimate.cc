@@ -1,0 +1,82 @@
+// The error of a value on nested meshes from the values on the coarser ones
+// (include/fourier_ssi/sequence_error_estimate.h, eq. (1)): checked on
+// sequences whose limit is known, Q_k = Q + C r^k.
+//  - r in [0.25, 1): eq. (1) is exact for a geometric sequence (the tail
+//    sum), so the estimate equals the true error to round-off (1e-9,
+//    differences of values of order 1 lose about 1e-15 / (C r^k)).
+//  - r below the floor 0.25: the estimate uses 0.25, an over-estimate by
+//    (0.25 / 0.75) / (r / (1 - r)), never an under-estimate.
+//  - two values, or differences that do not fall: the assumed ratio.
+#include "check.h"
+
+#include <cmath>
+#include <fourier_ssi/sequence_error_estimate.h>
+#include <vector>
+
+using namespace FourierSSI;
+
+namespace
+{
+  std::vector<double>
+  geometric(const double       limit,
+            const double       c,
+            const double       r,
+            const unsigned int n)
+  {
+    std::vector<double> values;
+    for (unsigned int k = 0; k < n; ++k)
+      values.push_back(limit + c * std::pow(r, k));
+    return values;
+  }
+} // namespace
+
+int
+main()
+{
+  for (const double r : {0.25, 0.4, 0.63, 0.9})
+    {
+      const std::vector<double>   q = geometric(10., 0.5, r, 4);
+      const SequenceErrorEstimate e =
+        estimate_sequence_error(q, one_halving_ratio);
+      const double true_error = std::abs(q.back() - 10.);
+      check::relative("geometric r = " + std::to_string(r) + ": estimate",
+                      e.absolute,
+                      true_error,
+                      1e-9);
+      check::relative("geometric r = " + std::to_string(r) + ": relative",
+                      e.relative,
+                      true_error / std::abs(q.back()),
+                      1e-9);
+      check::relative("observed ratio", e.ratio, r, 1e-9);
+      check::that("asymptotic", e.asymptotic);
+    }
+  {
+    // A fast fall (r = 0.1) is estimated with the floor 0.25: 3x the truth.
+    const std::vector<double>   q = geometric(-8., -1., 0.1, 3);
+    const SequenceErrorEstimate e =
+      estimate_sequence_error(q, one_halving_ratio);
+    const double true_error = std::abs(q.back() + 8.);
+    check::relative("r = 0.1: estimate / error = (1/3) / (1/9)",
+                    e.absolute / true_error,
+                    3.,
+                    1e-9);
+  }
+  {
+    // Two values: the assumed ratio, 0.5 -> error estimate = |d|.
+    const SequenceErrorEstimate e =
+      estimate_sequence_error({2., 1.5}, design_member_ratio);
+    check::relative("two values, assumed 0.5: |d|", e.absolute, 0.5, 1e-15);
+    check::that("two values: not asymptotic", !e.asymptotic);
+  }
+  {
+    // Differences that change sign: not asymptotic, the assumed ratio.
+    const SequenceErrorEstimate e =
+      estimate_sequence_error({1., 1.2, 1.1}, one_halving_ratio);
+    check::relative("sign change: |d| 0.65 / 0.35",
+                    e.absolute,
+                    0.1 * 0.65 / 0.35,
+                    1e-12);
+    check::that("sign change: not asymptotic", !e.asymptotic);
+  }
+  return check::summary();
+}
