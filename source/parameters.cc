@@ -263,6 +263,7 @@ namespace FourierSSI
     LoadParameters::declare_parameters(prm);
     InitialStressParameters::declare_parameters(prm);
     NonlinearInterfaceParameters::declare_parameters(prm);
+    SoilPlasticityParameters::declare_parameters(prm);
   }
 
   void
@@ -289,6 +290,12 @@ namespace FourierSSI
           "standard";
     initial_stress.parse_parameters(prm);
     nonlinear_interfaces.parse_parameters(prm);
+    soil_plasticity.parse_parameters(prm);
+    for (const auto &law : soil_plasticity.laws)
+      AssertThrow(materials.has(law.first),
+                  ExcMessage("Soil plasticity/Laws: material " +
+                             std::to_string(law.first) +
+                             " is not in Materials/Materials"));
     for (const auto &[id, e] : loads.displacement)
       AssertThrow(boundary_conditions.dirichlet.count(id) == 0,
                   ExcMessage("Loads/Prescribed displacement: boundary id " +

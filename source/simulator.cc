@@ -30,6 +30,11 @@ namespace FourierSSI
         remove_stale_results();
         make_mesh();
         make_plan(log);
+        if (parameters.soil_plasticity.any())
+          {
+            solve_plastic_soil(log);
+            return results;
+          }
         if (parameters.interfaces.any_nonlinear())
           {
             solve_nonlinear_interfaces(log);
