@@ -3,7 +3,6 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 #include <fourier_ssi/coupled_soil_solver.h>
-#include <fourier_ssi/sparse_direct.h>
 #include <fourier_ssi/stress_postprocessor.h>
 #include <fstream>
 #include <iomanip>
@@ -136,11 +135,6 @@ namespace FourierSSI
                              ": not yet: prescribed (non-zero) Dirichlet "
                              "values with plastic soil; load the scene "
                              "through the Rigid foundation"));
-    AssertThrow(!parameters.soil_plasticity.newton ||
-                  (harmonics.size() == 1 && harmonics[0].n == 0),
-                ExcMessage(entry + "/Iteration: not yet: newton with more "
-                                   "than one harmonic or n > 0 (use initial "
-                                   "stiffness, which couples any harmonics)"));
     make_points();
     solve_load_pattern();
     committed.correction_solution = pattern_solution;
@@ -523,173 +517,6 @@ namespace FourierSSI
     return false;
   }
 
-  Vector<double>
-  CoupledSoilSolver::elastic_force(const unsigned int    h,
-                                   const Vector<double> &v) const
-  {
-    Vector<double> Kv(v.size());
-    set.problem(h).get_system_matrix().vmult(Kv, v);
-    set.problem(h).get_homogeneous_constraints().set_zero(Kv);
-    return Kv;
-  }
-
-  void
-  CoupledSoilSolver::assemble_tangent(const std::vector<StrainVector> &strain,
-                                      SparseMatrix<double> &tangent) const
-  {
-    const unsigned int N = sampling.n_samples(), n_dofs = component.size();
-    tangent.reinit(set.problem(0).get_system_matrix().get_sparsity_pattern());
-    tangent.copy_from(set.problem(0).get_system_matrix());
-    const HarmonicOperator                &op = operators[0];
-    std::vector<std::vector<StrainVector>> shape_strain; // [i][q]
-    for (const SoilCell &cell : cells)
-      {
-        const unsigned int n_q = cell.radius.size();
-        // (D - D_alg) per quadrature point; empty if elastic everywhere.
-        std::vector<std::array<StrainVector, 6>> softening(n_q);
-        bool                                     plastic = false;
-        for (unsigned int q = 0; q < n_q; ++q)
-          {
-            const unsigned int p   = cell.first_point + q;
-            const SoilPoint   &pt  = points[p];
-            const auto         law = laws[pt.law];
-            const double       G = pt.shear_modulus, L = pt.lambda;
-            const auto         stress_of = [&](const StrainVector &e) {
-              StrainVector trial = hooke_stress(e, L, G);
-              for (unsigned int c = 0; c < 6; ++c)
-                trial[c] -= committed.plastic[p * N][c];
-              return law.return_map(trial, G, L + 2. * G / 3., pt.depth);
-            };
-            const StrainVector &e = strain[p * N];
-            if (stress_of(e).state == SoilState::elastic)
-              {
-                for (auto &column : softening[q])
-                  column.fill(0.);
-                continue;
-              }
-            plastic     = true;
-            double size = 0.;
-            for (const double c : e)
-              size = std::max(size, std::abs(c));
-            const double step = 1e-6 * (size > 0. ? size : 1e-6);
-            for (unsigned int l = 0; l < 6; ++l)
-              {
-                StrainVector plus = e, minus = e, unit = {{0, 0, 0, 0, 0, 0}};
-                plus[l] += step;
-                minus[l] -= step;
-                unit[l]                    = 1.;
-                const StrainVector elastic = hooke_stress(unit, L, G);
-                const SoilReturn   a = stress_of(plus), b = stress_of(minus);
-                for (unsigned int k = 0; k < 6; ++k)
-                  softening[q][l][k] =
-                    elastic[k] - (a.stress[k] - b.stress[k]) / (2. * step);
-              }
-          }
-        if (!plastic)
-          continue;
-        shape_strain.assign(n_dofs, std::vector<StrainVector>(n_q));
-        for (unsigned int i = 0; i < n_dofs; ++i)
-          {
-            for (unsigned int q = 0; q < n_q; ++q)
-              shape_strain[i][q] =
-                op.strain_of_component(component[i],
-                                       cell.shape_value[q][i],
-                                       cell.shape_grad[q][i],
-                                       cell.radius[q]);
-            apply_bbar(cell.projection.get(), shape_strain[i]);
-          }
-        FullMatrix<double> local(n_dofs, n_dofs);
-        for (unsigned int q = 0; q < n_q; ++q)
-          {
-            const double dV = points[cell.first_point + q].dV;
-            for (unsigned int j = 0; j < n_dofs; ++j)
-              {
-                // (D - D_alg) Bbar_j, weighted like the stiffness.
-                StrainVector s = {{0, 0, 0, 0, 0, 0}};
-                for (unsigned int l = 0; l < 6; ++l)
-                  for (unsigned int k = 0; k < 6; ++k)
-                    s[k] += softening[q][l][k] * shape_strain[j][q][l];
-                for (unsigned int i = 0; i < n_dofs; ++i)
-                  {
-                    double sum = 0.;
-                    for (unsigned int k = 0; k < 6; ++k)
-                      sum += shape_strain[i][q][k] * op.weight(k) * s[k];
-                    local(i, j) -= sum * dV;
-                  }
-              }
-          }
-        set.problem(0).get_homogeneous_constraints().distribute_local_to_global(
-          local, cell.dof_indices[0], tangent);
-      }
-  }
-
-  bool
-  CoupledSoilSolver::solve_step_newton(const double    target,
-                                       StepState      &state,
-                                       SoilStepResult &result)
-  {
-    const bool displacement_control =
-      settings.control == NonlinearInterfaceParameters::Control::displacement;
-    const AffineConstraints<double> &constraints =
-      set.problem(0).get_homogeneous_constraints();
-    std::vector<StrainVector> plastic;
-    SparseMatrix<double>      tangent;
-    for (unsigned int iteration = 0; iteration <= settings.maximum_iterations;
-         ++iteration)
-      {
-        state.load_factor =
-          displacement_control ?
-            controlled_load_factor(state.correction_solution, target) :
-            target;
-        const std::vector<StrainVector> strain =
-          strain_samples(state.correction_solution, state.load_factor);
-        return_map(strain, plastic, result);
-        // R = lambda F - f_int = G(s_p) - K v (K u_F = F).
-        std::vector<Vector<double>> residual  = load_of(plastic);
-        const double                load_norm = residual[0].l2_norm();
-        state.correction_load[0] =
-          elastic_force(0, state.correction_solution[0]);
-        residual[0] -= state.correction_load[0];
-        const double residual_norm = residual[0].l2_norm();
-        const double applied = std::abs(state.load_factor) * pattern_load_norm;
-        const double scale   = applied > 0. ? applied : load_norm;
-        if (!std::isfinite(residual_norm))
-          return false;
-        if (residual_norm <= settings.tolerance * scale)
-          {
-            state.plastic     = plastic;
-            result.iterations = iteration;
-            result.residual   = scale > 0. ? residual_norm / scale : 0.;
-            return true;
-          }
-        assemble_tangent(strain, tangent);
-        SparseDirect direct("lu");
-        direct.initialize(tangent);
-        // du = K_t^-1 (R + dlambda F) = b + dlambda a.
-        std::vector<Vector<double>> x = {residual[0],
-                                         set.problem(0).get_system_rhs()};
-        direct.solve(x);
-        for (Vector<double> &v : x)
-          constraints.distribute(v);
-        if (displacement_control)
-          {
-            const RigidFoundation *foundation = set.problem(0).get_foundation();
-            const double           m_b =
-              component_of(foundation->motion(x[0]), settings.motion);
-            const double m_a =
-              component_of(foundation->motion(x[1]), settings.motion);
-            // Keep the controlled motion at its target: lambda follows in
-            // controlled_load_factor; v takes du - dlambda u_F.
-            const double dlambda = -m_b / m_a;
-            state.correction_solution[0].add(1., x[0], dlambda, x[1]);
-            state.correction_solution[0].add(-dlambda, pattern_solution[0]);
-          }
-        else
-          state.correction_solution[0] += x[0];
-      }
-    return false;
-  }
-
   std::array<double, 6>
   CoupledSoilSolver::applied_loads(const double load_factor) const
   {
@@ -752,11 +579,8 @@ namespace FourierSSI
           load_control ? fraction : fraction * settings.target;
         StepState      state = committed;
         SoilStepResult result;
-        const auto     start     = std::chrono::steady_clock::now();
-        const bool     converged = parameters.soil_plasticity.newton ?
-                                     solve_step_newton(target, state, result) :
-                                     solve_step(target, state, result);
-        if (!converged)
+        const auto     start = std::chrono::steady_clock::now();
+        if (!solve_step(target, state, result))
           {
             AssertThrow(++cuts <= settings.maximum_step_cuts,
                         ExcMessage(entry + ": load step " +
@@ -787,7 +611,7 @@ namespace FourierSSI
             << result.iterations << " iterations; plastic samples "
             << result.n_plastic << " of " << result.n_plastic + result.n_elastic
             << "; max f " << result.largest_yield_value << " kPa; "
-            << result.time << " s\n";
+            << result.time << " s" << std::endl;
       }
   }
 

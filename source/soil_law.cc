@@ -103,12 +103,15 @@ namespace FourierSSI
       return true;
     }
 
+    /**
+     * s1 >= s2 >= s3 up to the round-off of a return from `trial` (the
+     * returned stresses are differences of trial-sized numbers).
+     */
     bool
-    ordered(const Principal &s)
+    ordered(const Principal &s, const Principal &trial)
     {
-      // Relative slack for round-off where two principal stresses meet.
       const double slack =
-        1e-12 * (std::abs(s[0]) + std::abs(s[1]) + std::abs(s[2]));
+        1e-12 * (std::abs(trial[0]) + std::abs(trial[1]) + std::abs(trial[2]));
       return s[0] + slack >= s[1] && s[1] + slack >= s[2];
     }
   } // namespace
@@ -162,7 +165,7 @@ namespace FourierSSI
                      k};
 
     Principal returned;
-    if (return_to_planes(s, {main}, G, K, returned) && ordered(returned))
+    if (return_to_planes(s, {main}, G, K, returned) && ordered(returned, s))
       result.state = SoilState::plane;
     else
       {
@@ -172,7 +175,7 @@ namespace FourierSSI
         const bool   to_right = returned[1] > returned[0];
         const Plane &second   = to_right ? right : left;
         if (return_to_planes(s, {main, second}, G, K, returned) &&
-            ordered(returned))
+            ordered(returned, s))
           result.state = SoilState::edge;
         else
           {
@@ -210,14 +213,6 @@ namespace FourierSSI
       "'id: mohr-coulomb, c=C, phi=PHI[, psi=PSI]' with c' [kPa], phi' and "
       "the dilation angle psi [degrees, 0 < phi < 90, 0 <= psi <= phi]. "
       "The loading and the iteration are set in 'Nonlinear interfaces'.");
-    prm.declare_entry(
-      "Iteration",
-      "initial stiffness",
-      Patterns::Selection("initial stiffness|newton"),
-      "initial stiffness: out-of-balance loads re-solved on every harmonic's "
-      "kept elastic factorization (any harmonics). newton: consistent "
-      "tangent, refactorized every iteration (one harmonic only, e.g. the "
-      "n = 0 bearing capacity).");
     prm.leave_subsection();
   }
 
@@ -226,7 +221,6 @@ namespace FourierSSI
   {
     prm.enter_subsection("Soil plasticity");
     parse_law_list(prm.get("Laws"));
-    newton = prm.get("Iteration") == "newton";
     prm.leave_subsection();
   }
 

@@ -169,26 +169,6 @@ namespace FourierSSI
     bool
     solve_step(const double target, StepState &state, SoilStepResult &result);
 
-    /**
-     * Newton on one n = 0 harmonic: K_t = K - int Bbar^T W (D - D_alg) Bbar
-     * over the plastic points, D_alg the consistent tangent of the return
-     * mapping (central differences), refactorized every iteration;
-     * displacement control by the bordered update of the load factor.
-     */
-    bool
-    solve_step_newton(const double    target,
-                      StepState      &state,
-                      SoilStepResult &result);
-
-    /** The tangent matrix at the strain samples (n = 0: sample 0). */
-    void
-    assemble_tangent(const std::vector<StrainVector> &strain,
-                     SparseMatrix<double>            &tangent) const;
-
-    /** K_h v on the unconstrained rows (condensed), zero elsewhere. */
-    Vector<double>
-    elastic_force(const unsigned int h, const Vector<double> &v) const;
-
     RigidMotion
     motion_of(const StepState &state) const;
 

@@ -106,12 +106,6 @@ namespace FourierSSI
     }
 
     std::map<types::material_id, SoilLaw> laws;
-    /**
-     * Newton with the consistent (algorithmic) tangent instead of the
-     * initial-stiffness iteration: one harmonic only (n = 0 scenes), the
-     * tangent refactorized every iteration (doc/soil-plasticity.md 4).
-     */
-    bool newton = false;
   };
 } // namespace FourierSSI
 
