@@ -15,78 +15,51 @@
 
 namespace FourierSSI
 {
-  namespace
+  LinearProjection::LinearProjection(const FEValues<2> &fe_values)
+    : n_q(fe_values.n_quadrature_points)
+    , dV(n_q)
+    , points(n_q)
+    , inverse(3, 3)
   {
-    /**
-     * The L2(r dr dz) projection of one cell onto the linear polynomials
-     * {1, r - r_c, z - z_c} (r_c, z_c: the cell's r-weighted centroid), from
-     * the cell's quadrature: the volumetric space of the stable Q2-P1disc
-     * mixed element, used by B-bar.
-     */
-    struct LinearProjection
-    {
-      explicit LinearProjection(const FEValues<2> &fe_values)
-        : n_q(fe_values.n_quadrature_points)
-        , dV(n_q)
-        , points(n_q)
-        , inverse(3, 3)
+    double volume = 0.;
+    for (unsigned int q = 0; q < n_q; ++q)
       {
-        double volume = 0.;
-        for (unsigned int q = 0; q < n_q; ++q)
-          {
-            points[q] = fe_values.quadrature_point(q);
-            dV[q]     = points[q][0] * fe_values.JxW(q);
-            center += dV[q] * points[q];
-            volume += dV[q];
-          }
-        valid = volume > 0.; // a degenerate cell (zero r-weighted volume)
-        if (!valid)
-          return;
-        center /= volume;
-        FullMatrix<double> mass(3, 3);
-        for (unsigned int q = 0; q < n_q; ++q)
-          {
-            const auto p = basis(points[q]);
-            for (unsigned int a = 0; a < 3; ++a)
-              for (unsigned int b = 0; b < 3; ++b)
-                mass(a, b) += p[a] * p[b] * dV[q];
-          }
-        inverse.invert(mass);
+        points[q] = fe_values.quadrature_point(q);
+        dV[q]     = points[q][0] * fe_values.JxW(q);
+        center += dV[q] * points[q];
+        volume += dV[q];
       }
-
-      std::array<double, 3>
-      basis(const Point<2> &x) const
+    valid = volume > 0.; // a degenerate cell (zero r-weighted volume)
+    if (!valid)
+      return;
+    center /= volume;
+    FullMatrix<double> mass(3, 3);
+    for (unsigned int q = 0; q < n_q; ++q)
       {
-        const Tensor<1, 2> d = x - center;
-        return {{1., d[0], d[1]}};
-      }
-
-      /** Coefficients of the projection of f, given at the quadrature points.
-       */
-      std::array<double, 3>
-      project(const std::vector<double> &f) const
-      {
-        std::array<double, 3> moments = {{0., 0., 0.}}, c = {{0., 0., 0.}};
-        for (unsigned int q = 0; q < n_q; ++q)
-          {
-            const auto p = basis(points[q]);
-            for (unsigned int a = 0; a < 3; ++a)
-              moments[a] += p[a] * f[q] * dV[q];
-          }
+        const auto p = basis(points[q]);
         for (unsigned int a = 0; a < 3; ++a)
           for (unsigned int b = 0; b < 3; ++b)
-            c[a] += inverse(a, b) * moments[b];
-        return c;
+            mass(a, b) += p[a] * p[b] * dV[q];
       }
+    inverse.invert(mass);
+  }
 
-      unsigned int          n_q;
-      std::vector<double>   dV;
-      std::vector<Point<2>> points;
-      Point<2>              center;
-      FullMatrix<double>    inverse;
-      bool                  valid = false;
-    };
-  } // namespace
+  std::array<double, 3>
+  LinearProjection::project(const std::vector<double> &f) const
+  {
+    std::array<double, 3> moments = {{0., 0., 0.}}, c = {{0., 0., 0.}};
+    for (unsigned int q = 0; q < n_q; ++q)
+      {
+        const auto p = basis(points[q]);
+        for (unsigned int a = 0; a < 3; ++a)
+          moments[a] += p[a] * f[q] * dV[q];
+      }
+    for (unsigned int a = 0; a < 3; ++a)
+      for (unsigned int b = 0; b < 3; ++b)
+        c[a] += inverse(a, b) * moments[b];
+    return c;
+  }
+
 
   StrainVector
   with_dilatation(const StrainVector &strain, const double dilatation)

@@ -312,6 +312,7 @@ namespace FourierSSI
     LoadParameters::declare_parameters(prm);
     InitialStressParameters::declare_parameters(prm);
     NonlinearInterfaceParameters::declare_parameters(prm);
+    SoilPlasticityParameters::declare_parameters(prm);
   }
 
   void
@@ -338,6 +339,12 @@ namespace FourierSSI
           "standard";
     initial_stress.parse_parameters(prm);
     nonlinear_interfaces.parse_parameters(prm);
+    soil_plasticity.parse_parameters(prm);
+    for (const auto &law : soil_plasticity.laws)
+      AssertThrow(materials.has(law.first),
+                  ExcMessage("Soil plasticity/Laws: material " +
+                             std::to_string(law.first) +
+                             " is not in Materials/Materials"));
     if (discretization.target_accuracy > 0.)
       {
         AssertThrow(rigid_foundation.enabled ||
@@ -352,6 +359,10 @@ namespace FourierSSI
         AssertThrow(!interfaces.any_nonlinear(),
                     ExcMessage("Discretization/Target accuracy: not yet "
                                "available with coulomb interfaces"));
+        AssertThrow(soil_plasticity.laws.empty(),
+                    ExcMessage("Discretization/Target accuracy: not yet "
+                               "available with plastic soil (Soil "
+                               "plasticity/Laws)"));
       }
     for (const auto &[id, e] : loads.displacement)
       AssertThrow(boundary_conditions.dirichlet.count(id) == 0,

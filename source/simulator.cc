@@ -35,6 +35,11 @@ namespace FourierSSI
         target_not_reached.clear();
         make_mesh();
         make_plan(log);
+        if (parameters.soil_plasticity.any())
+          {
+            solve_plastic_soil(log);
+            return results;
+          }
         if (parameters.interfaces.any_nonlinear())
           {
             solve_nonlinear_interfaces(log);

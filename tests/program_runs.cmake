@@ -83,3 +83,16 @@ add_test(NAME program_target_accuracy_unreachable
           "-DEXPECTED=Discretization/Target accuracy 1e-08 not reached: estimated relative error [0-9.e+-]+ with [0-9]+ DoFs; the next mesh \\(about [0-9]+ DoFs\\) exceeds Adaptivity/Maximum DoFs = 100000"
           -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/target_unreachable
           -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_unconverged.cmake)
+
+# Plastic soil: a load step that does not converge stops with one line
+# naming Soil plasticity, non-zero exit, no result file (serial only, as
+# the interface case above).
+add_test(NAME input_nonconverging_soil_step
+  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi>
+          -DPRM=${CMAKE_CURRENT_SOURCE_DIR}/prm/nonconverging_soil_step.prm
+          "-DEXPECTED=Soil plasticity: load step 1 did not converge"
+          -DOUTPUT_DIR=${CMAKE_CURRENT_BINARY_DIR}/bad_output
+          -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_failure.cmake)
+set_tests_properties(input_nonconverging_soil_step PROPERTIES
+  RESOURCE_LOCK bad_output)

@@ -13,6 +13,8 @@
 #include <array>
 #include <cmath>
 #include <deal.II/base/point.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/full_matrix.h>
 #include <fourier_ssi/harmonic_operator.h>
 #include <vector>
 
@@ -41,6 +43,44 @@ namespace FourierSSI
       return coefficients[0] + coefficients[1] * (x[0] - center[0]) +
              coefficients[2] * (x[1] - center[1]);
     }
+  };
+
+  /**
+   * The L2(r dr dz) projection of one cell onto the linear polynomials
+   * {1, r - r_c, z - z_c} (r_c, z_c: the cell's r-weighted centroid), from
+   * the cell's quadrature: the volumetric space of the stable Q2-P1disc
+   * mixed element, used by B-bar (the stiffness, the output stresses and
+   * the plastic soil's strains, doc/soil-plasticity.md).
+   */
+  struct LinearProjection
+  {
+    explicit LinearProjection(const FEValues<2> &fe_values);
+
+    std::array<double, 3>
+    basis(const Point<2> &x) const
+    {
+      const Tensor<1, 2> d = x - center;
+      return {{1., d[0], d[1]}};
+    }
+
+    /** Coefficients of the projection of f, given at the quadrature points. */
+    std::array<double, 3>
+    project(const std::vector<double> &f) const;
+
+    /** The projection of f evaluated at the quadrature points. */
+    double
+    value_at(const std::array<double, 3> &c, const unsigned int q) const
+    {
+      const auto p = basis(points[q]);
+      return c[0] * p[0] + c[1] * p[1] + c[2] * p[2];
+    }
+
+    unsigned int          n_q;
+    std::vector<double>   dV;
+    std::vector<Point<2>> points;
+    Point<2>              center;
+    FullMatrix<double>    inverse;
+    bool                  valid = false;
   };
 
   /**

@@ -17,6 +17,7 @@
 #include <fourier_ssi/mesh_builder.h>
 #include <fourier_ssi/nonlinear_interface_parameters.h>
 #include <fourier_ssi/rigid_foundation.h>
+#include <fourier_ssi/soil_law.h>
 #include <string>
 #include <vector>
 
@@ -134,6 +135,7 @@ namespace FourierSSI
     LoadParameters               loads;
     InitialStressParameters      initial_stress;
     NonlinearInterfaceParameters nonlinear_interfaces;
+    SoilPlasticityParameters     soil_plasticity;
   };
 } // namespace FourierSSI
 

@@ -140,6 +140,13 @@ namespace FourierSSI
     void
     keep_last_step(const CoupledInterfaceSolver &solver);
 
+    /**
+     * A scene with plastic soil (Soil plasticity/Laws): the load steps of
+     * CoupledSoilSolver on one HarmonicSet (simulator_soil.cc).
+     */
+    void
+    solve_plastic_soil(std::ostream &log);
+
     /** Set up, assemble, solve and post-process every harmonic. */
     void
     solve_harmonics(const unsigned int cycle);

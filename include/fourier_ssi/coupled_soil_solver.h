@@ -1,0 +1,194 @@
+/**
+ * Perfectly plastic soil (Tresca, Mohr-Coulomb; soil_law.h) on a set of
+ * Fourier harmonics coupled through theta (doc/soil-plasticity.md,
+ * section 3): the interfaces' coupled iteration (coupled_interface_solver.h)
+ * applied at the soil's quadrature points.
+ *
+ * Every harmonic keeps its elastic matrix K_h and factorization (HarmonicSet).
+ * With s_p = D eps_p the "plastic stress" at every (quadrature point, theta
+ * sample), the discrete equilibrium of harmonic h is
+ *   K_h u_h = lambda F_h + c_h,   c_h = int Bbar_h^T [int factor_h s_p dtheta]
+ *                                          r dr dz,
+ * (the internal force int Bbar^T sigma = K u - c, sigma = D (eps - eps_p)).
+ * One iteration:
+ *   1. strain amplitudes of every harmonic at every soil quadrature point
+ *      (Bbar u_h: with B-bar the dilatation projected per cell), summed at N
+ *      theta samples (ThetaSampling::evaluate);
+ *   2. the return mapping at every (point, theta) from the last converged
+ *      plastic stress -> s_p = D eps - sigma;
+ *   3. G_h = int Bbar_h^T (theta-integrated s_p) for every harmonic;
+ *   4. R = G - c; converged if |R| <= tolerance |lambda F| (2-norms over
+ *      the harmonics); else c <- c + omega R, all harmonics re-solved with
+ *      their kept factorizations, omega by Aitken's Delta^2 rule.
+ * Loading (load or displacement control of the rigid foundation), step
+ * cutting and the settings are those of subsection "Nonlinear interfaces".
+ */
+#ifndef fourier_ssi_coupled_soil_solver_h
+#define fourier_ssi_coupled_soil_solver_h
+
+#include <array>
+#include <deal.II/lac/vector.h>
+#include <fourier_ssi/bbar_projection.h>
+#include <fourier_ssi/harmonic_set.h>
+#include <fourier_ssi/nonlinear_interface_parameters.h>
+#include <fourier_ssi/parameters.h>
+#include <fourier_ssi/soil_law.h>
+#include <fourier_ssi/theta_sampling.h>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace FourierSSI
+{
+  using namespace dealii;
+
+  /** One converged load step of the plastic soil. */
+  struct SoilStepResult
+  {
+    double       load_factor = 0.;
+    RigidMotion  motion;
+    unsigned int iterations = 0;
+    /** |R| / |lambda F| at convergence. */
+    double residual = 0.;
+    /** (point, theta) samples elastic and plastic. */
+    unsigned int n_elastic = 0, n_plastic = 0;
+    /** Largest f(sigma) over every (point, theta) [kPa] (<= 0 admissible). */
+    double largest_yield_value = 0.;
+    double time                = 0.;
+  };
+
+  class CoupledSoilSolver
+  {
+  public:
+    /** `set` must be assembled and factorized. */
+    CoupledSoilSolver(const HarmonicSet &set, const AllParameters &parameters);
+
+    /** All load steps; throws one line if a step does not converge. */
+    void
+    run(std::ostream &log);
+
+    const std::vector<SoilStepResult> &
+    get_steps() const
+    {
+      return steps;
+    }
+
+    /** Total displacement amplitudes of harmonic i (last converged state). */
+    Vector<double>
+    solution(const unsigned int i) const;
+
+    /** (F_x, F_y, F_z, M_x, M_y, M_z) applied at load factor lambda. */
+    std::array<double, 6>
+    applied_loads(const double load_factor) const;
+
+    /**
+     * int Bbar_h^T D eps(fields) over the plastic soil, theta by sampling:
+     * equals the soil part of K_h u (a check of the projection that builds
+     * the out-of-balance loads).
+     */
+    std::vector<Vector<double>>
+    soil_force(const std::vector<Vector<double>> &fields) const;
+
+    unsigned int
+    n_soil_points() const
+    {
+      return points.size();
+    }
+
+    unsigned int
+    n_theta_samples() const
+    {
+      return sampling.n_samples();
+    }
+
+    /** CSV: step, load factor, loads, motion, iterations, residual, ... */
+    void
+    write_csv(const std::string &filename) const;
+
+  private:
+    /** A soil quadrature point: its cell, weight and elastic constants. */
+    struct SoilPoint
+    {
+      unsigned int cell;
+      unsigned int q;
+      double       r, dV, depth, shear_modulus, lambda;
+      unsigned int law;
+    };
+
+    /** A cell of plastic soil: shape data at its quadrature points. */
+    struct SoilCell
+    {
+      /** Local DoF indices per harmonic. */
+      std::vector<std::vector<types::global_dof_index>> dof_indices;
+      /** shape_value[q][i], shape_grad[q][i]. */
+      std::vector<std::vector<double>>       shape_value;
+      std::vector<std::vector<Tensor<1, 2>>> shape_grad;
+      std::vector<double>                    radius;
+      /** B-bar projection of the cell (null: standard strains). */
+      std::shared_ptr<LinearProjection> projection;
+      unsigned int                      first_point;
+    };
+
+    struct StepState
+    {
+      double                      load_factor = 0.;
+      std::vector<Vector<double>> correction_solution, correction_load;
+      /** s_p = D eps_p per (point, theta). */
+      std::vector<StrainVector> plastic;
+    };
+
+    void
+    make_points();
+    void
+    solve_load_pattern();
+
+    /** Strain amplitudes [point][harmonic] of fields (one per harmonic). */
+    std::vector<std::vector<StrainVector>>
+    strain_amplitudes(const std::vector<Vector<double>> &fields) const;
+
+    /** Total strain samples [point * N + j] at lambda. */
+    std::vector<StrainVector>
+    strain_samples(const std::vector<Vector<double>> &correction,
+                   const double                       load_factor) const;
+
+    /** Return mapping everywhere from the committed state. */
+    void
+    return_map(const std::vector<StrainVector> &strain,
+               std::vector<StrainVector>       &plastic,
+               SoilStepResult                  &result) const;
+
+    /** G_h = int Bbar_h^T (theta integral of samples), every harmonic. */
+    std::vector<Vector<double>>
+    load_of(const std::vector<StrainVector> &samples) const;
+
+    double
+    controlled_load_factor(const std::vector<Vector<double>> &v,
+                           const double                       target) const;
+
+    bool
+    solve_step(const double target, StepState &state, SoilStepResult &result);
+
+    RigidMotion
+    motion_of(const StepState &state) const;
+
+    const HarmonicSet            &set;
+    const AllParameters          &parameters;
+    NonlinearInterfaceParameters  settings;
+    std::vector<Harmonic>         harmonics;
+    std::vector<HarmonicOperator> operators;
+    ThetaSampling                 sampling;
+    std::vector<SoilLaw>          laws;
+    std::vector<SoilCell>         cells;
+    std::vector<SoilPoint>        points;
+    std::vector<unsigned int>     component;
+    std::vector<Vector<double>>   pattern_solution;
+    double                        pattern_load_norm = 0.;
+    /** Strain amplitudes of the load pattern [point][harmonic]. */
+    std::vector<std::vector<StrainVector>> pattern_strain;
+    StepState                              committed;
+    std::vector<SoilStepResult>            steps;
+  };
+} // namespace FourierSSI
+
+#endif

@@ -1,0 +1,643 @@
+#include <chrono>
+#include <cmath>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <fourier_ssi/coupled_soil_solver.h>
+#include <fourier_ssi/stress_postprocessor.h>
+#include <fstream>
+#include <iomanip>
+
+namespace FourierSSI
+{
+  namespace
+  {
+    const std::string entry = "Soil plasticity";
+
+    std::vector<Harmonic>
+    harmonics_of(const HarmonicSet &set)
+    {
+      std::vector<Harmonic> list;
+      for (unsigned int h = 0; h < set.size(); ++h)
+        list.push_back(set.harmonic(h));
+      return list;
+    }
+
+    /** Automatic N = 4 (n_max + 1); a given N must exceed 2 n_max. */
+    unsigned int
+    theta_samples_for(const std::vector<Harmonic> &list,
+                      const unsigned int           requested)
+    {
+      unsigned int n_max = 0;
+      for (const Harmonic &h : list)
+        n_max = std::max(n_max, h.n);
+      if (requested == 0)
+        return 4 * (n_max + 1);
+      AssertThrow(requested >= minimum_theta_samples(n_max),
+                  ExcMessage(
+                    "Nonlinear interfaces/Theta samples: " +
+                    std::to_string(requested) + " must exceed 2 n_max = " +
+                    std::to_string(2 * n_max) + " (else the harmonics alias)"));
+      return requested;
+    }
+
+    /** Strain components 0..3 carry the in-plane factor, 4, 5 the other. */
+    ThetaFactor
+    factor_of(const unsigned int k)
+    {
+      return k < 4 ? ThetaFactor::in_plane : ThetaFactor::circumferential;
+    }
+
+    double
+    norm_over_harmonics(const std::vector<Vector<double>> &vectors)
+    {
+      double sum = 0.;
+      for (const Vector<double> &v : vectors)
+        sum += v.norm_sqr();
+      return std::sqrt(sum);
+    }
+
+    double
+    dot_over_harmonics(const std::vector<Vector<double>> &a,
+                       const std::vector<Vector<double>> &b)
+    {
+      double sum = 0.;
+      for (unsigned int h = 0; h < a.size(); ++h)
+        sum += a[h] * b[h];
+      return sum;
+    }
+
+    Harmonic
+    harmonic_of(const NonlinearInterfaceParameters::Motion motion)
+    {
+      using M = NonlinearInterfaceParameters::Motion;
+      if (motion == M::vertical)
+        return {0, Family::symmetric};
+      if (motion == M::twist)
+        return {0, Family::antisymmetric};
+      return {1, Family::symmetric};
+    }
+
+    double
+    component_of(const RigidMotion                         &m,
+                 const NonlinearInterfaceParameters::Motion motion)
+    {
+      using M = NonlinearInterfaceParameters::Motion;
+      switch (motion)
+        {
+          case M::vertical:
+            return m.vertical_displacement;
+          case M::twist:
+            return m.twist;
+          case M::horizontal:
+            return m.horizontal_displacement;
+          case M::rotation:
+            return m.rotation;
+        }
+      return 0.;
+    }
+
+    /**
+     * B-bar on a cell's strain field: the dilatation replaced by its
+     * projection (with_dilatation). Applied to a stress field it is also
+     * the transpose: sum_q dV Bbar^T s = sum_q dV B^T bar(s), since the
+     * r-weighted projection is self-adjoint (doc/soil-plasticity.md 3).
+     */
+    void
+    apply_bbar(const LinearProjection    *projection,
+               std::vector<StrainVector> &field)
+    {
+      if (projection == nullptr || !projection->valid)
+        return;
+      std::vector<double> trace(field.size());
+      for (unsigned int q = 0; q < field.size(); ++q)
+        trace[q] = field[q][0] + field[q][1] + field[q][2];
+      const auto c = projection->project(trace);
+      for (unsigned int q = 0; q < field.size(); ++q)
+        field[q] = with_dilatation(field[q], projection->value_at(c, q));
+    }
+  } // namespace
+
+  CoupledSoilSolver::CoupledSoilSolver(const HarmonicSet   &set,
+                                       const AllParameters &parameters)
+    : set(set)
+    , parameters(parameters)
+    , settings(parameters.nonlinear_interfaces)
+    , harmonics(harmonics_of(set))
+    , sampling(harmonics,
+               theta_samples_for(harmonics,
+                                 parameters.nonlinear_interfaces.theta_samples))
+  {
+    for (const Harmonic &h : harmonics)
+      operators.emplace_back(h);
+    for (unsigned int h = 0; h < set.size(); ++h)
+      AssertThrow(!set.problem(h).get_constraints().has_inhomogeneities(),
+                  ExcMessage(entry +
+                             ": not yet: prescribed (non-zero) Dirichlet "
+                             "values with plastic soil; load the scene "
+                             "through the Rigid foundation"));
+    make_points();
+    solve_load_pattern();
+    committed.correction_solution = pattern_solution;
+    for (Vector<double> &v : committed.correction_solution)
+      v = 0.;
+    committed.correction_load = committed.correction_solution;
+    committed.plastic.assign(points.size() * sampling.n_samples(),
+                             {{0., 0., 0., 0., 0., 0.}});
+  }
+
+  void
+  CoupledSoilSolver::make_points()
+  {
+    std::map<types::material_id, unsigned int> law_index;
+    for (const auto &[id, law] : parameters.soil_plasticity.laws)
+      {
+        law_index[id] = laws.size();
+        laws.push_back(law);
+      }
+    const DoFHandler<2> &dofs0 = set.problem(0).get_dof_handler();
+    const auto          &fe    = dofs0.get_fe();
+    // The stiffness's own quadrature (HarmonicProblem), so that a field
+    // with eps_p = eps gives back exactly the soil part of K u.
+    FEValues<2> fe_values(fe,
+                          QGauss<2>(fe.degree + 2),
+                          update_values | update_gradients |
+                            update_quadrature_points | update_JxW_values);
+    const bool  bbar =
+      parameters.discretization.volumetric == "bbar" && fe.degree == 2;
+    const unsigned int n_dofs = fe.n_dofs_per_cell();
+    for (unsigned int i = 0; i < n_dofs; ++i)
+      component.push_back(fe.system_to_component_index(i).first);
+    std::vector<typename DoFHandler<2>::active_cell_iterator> iterators;
+    for (unsigned int h = 0; h < set.size(); ++h)
+      iterators.push_back(set.problem(h).get_dof_handler().begin_active());
+    for (; iterators[0] != dofs0.end();)
+      {
+        const auto law = law_index.find(iterators[0]->material_id());
+        if (law != law_index.end())
+          {
+            fe_values.reinit(iterators[0]);
+            SoilCell cell;
+            cell.first_point = points.size();
+            for (unsigned int h = 0; h < set.size(); ++h)
+              {
+                std::vector<types::global_dof_index> indices(n_dofs);
+                iterators[h]->get_dof_indices(indices);
+                cell.dof_indices.push_back(indices);
+              }
+            if (bbar)
+              cell.projection = std::make_shared<LinearProjection>(fe_values);
+            const ElasticMaterial &material =
+              parameters.materials.get(iterators[0]->material_id());
+            for (const unsigned int q : fe_values.quadrature_point_indices())
+              {
+                const Point<2> &x = fe_values.quadrature_point(q);
+                cell.radius.push_back(x[0]);
+                cell.shape_value.emplace_back(n_dofs);
+                cell.shape_grad.emplace_back(n_dofs);
+                for (unsigned int i = 0; i < n_dofs; ++i)
+                  {
+                    cell.shape_value[q][i] = fe_values.shape_value(i, q);
+                    cell.shape_grad[q][i]  = fe_values.shape_grad(i, q);
+                  }
+                SoilPoint point;
+                point.cell          = cells.size();
+                point.q             = q;
+                point.r             = x[0];
+                point.dV            = x[0] * fe_values.JxW(q);
+                point.depth         = parameters.materials.depth(x[1]);
+                point.shear_modulus = material.shear_modulus(point.depth);
+                point.lambda        = material.lambda(point.depth);
+                point.law           = law->second;
+                points.push_back(point);
+              }
+            cells.push_back(std::move(cell));
+          }
+        for (auto &it : iterators)
+          ++it;
+      }
+    AssertThrow(!points.empty(),
+                ExcMessage(entry + "/Laws: no cell of the mesh has a "
+                                   "material id with a plastic law"));
+  }
+
+  void
+  CoupledSoilSolver::solve_load_pattern()
+  {
+    std::vector<std::vector<Vector<double>>> b(set.size());
+    double                                   norm_sqr = 0.;
+    for (unsigned int h = 0; h < set.size(); ++h)
+      {
+        b[h] = {set.problem(h).get_system_rhs()};
+        norm_sqr += b[h][0].norm_sqr();
+      }
+    pattern_load_norm = std::sqrt(norm_sqr);
+    set.solve_increments(b);
+    for (unsigned int h = 0; h < set.size(); ++h)
+      pattern_solution.push_back(b[h][0]);
+    pattern_strain = strain_amplitudes(pattern_solution);
+  }
+
+  std::vector<std::vector<StrainVector>>
+  CoupledSoilSolver::strain_amplitudes(
+    const std::vector<Vector<double>> &fields) const
+  {
+    std::vector<std::vector<StrainVector>> result(
+      points.size(), std::vector<StrainVector>(set.size()));
+    // Harmonics concurrently: each writes its own column.
+    set.for_each([&](const unsigned int h) {
+      std::vector<StrainVector> cell_strain;
+      for (const SoilCell &cell : cells)
+        {
+          const unsigned int n_q = cell.radius.size();
+          cell_strain.resize(n_q);
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              std::array<double, 3>       values = {{0., 0., 0.}};
+              std::array<Tensor<1, 2>, 3> gradients;
+              for (unsigned int i = 0; i < cell.shape_value[q].size(); ++i)
+                {
+                  const double u = fields[h](cell.dof_indices[h][i]);
+                  values[component[i]] += u * cell.shape_value[q][i];
+                  gradients[component[i]] += u * cell.shape_grad[q][i];
+                }
+              cell_strain[q] =
+                operators[h].strain(values, gradients, cell.radius[q]);
+            }
+          apply_bbar(cell.projection.get(), cell_strain);
+          for (unsigned int q = 0; q < n_q; ++q)
+            result[cell.first_point + q][h] = cell_strain[q];
+        }
+    });
+    return result;
+  }
+
+  std::vector<StrainVector>
+  CoupledSoilSolver::strain_samples(
+    const std::vector<Vector<double>> &correction,
+    const double                       load_factor) const
+  {
+    const unsigned int        N = sampling.n_samples(), H = set.size();
+    const auto                amplitude = strain_amplitudes(correction);
+    std::vector<StrainVector> samples(points.size() * N);
+    std::vector<double>       a(H), s;
+    for (unsigned int p = 0; p < points.size(); ++p)
+      for (unsigned int k = 0; k < 6; ++k)
+        {
+          for (unsigned int h = 0; h < H; ++h)
+            a[h] = amplitude[p][h][k] + load_factor * pattern_strain[p][h][k];
+          sampling.evaluate(a, factor_of(k), s);
+          for (unsigned int j = 0; j < N; ++j)
+            samples[p * N + j][k] = s[j];
+        }
+    return samples;
+  }
+
+  void
+  CoupledSoilSolver::return_map(const std::vector<StrainVector> &strain,
+                                std::vector<StrainVector>       &plastic,
+                                SoilStepResult                  &result) const
+  {
+    const unsigned int N = sampling.n_samples();
+    plastic.resize(strain.size());
+    result.n_elastic           = 0;
+    result.n_plastic           = 0;
+    result.largest_yield_value = -std::numeric_limits<double>::max();
+    for (unsigned int p = 0; p < points.size(); ++p)
+      {
+        const SoilPoint &point = points[p];
+        const double     G = point.shear_modulus, lambda = point.lambda;
+        for (unsigned int j = 0; j < N; ++j)
+          {
+            const unsigned int k = p * N + j;
+            // Trial: D (eps - eps_p,committed) = D eps - s_p,committed.
+            const StrainVector elastic = hooke_stress(strain[k], lambda, G);
+            StrainVector       trial   = elastic;
+            for (unsigned int c = 0; c < 6; ++c)
+              trial[c] -= committed.plastic[k][c];
+            const SoilReturn r = laws[point.law].return_map(
+              trial, G, lambda + 2. * G / 3., point.depth);
+            for (unsigned int c = 0; c < 6; ++c)
+              plastic[k][c] = elastic[c] - r.stress[c];
+            if (r.state == SoilState::elastic)
+              ++result.n_elastic;
+            else
+              ++result.n_plastic;
+            result.largest_yield_value =
+              std::max(result.largest_yield_value,
+                       laws[point.law].yield_function(r.stress, point.depth));
+          }
+      }
+  }
+
+  std::vector<Vector<double>>
+  CoupledSoilSolver::load_of(const std::vector<StrainVector> &samples) const
+  {
+    const unsigned int          N = sampling.n_samples(), H = set.size();
+    std::vector<Vector<double>> load(H);
+    for (unsigned int h = 0; h < H; ++h)
+      load[h].reinit(set.problem(h).get_dof_handler().n_dofs());
+    // Theta integrals int factor_h s dtheta per point, component, harmonic.
+    std::vector<std::vector<StrainVector>> integral(
+      points.size(), std::vector<StrainVector>(H));
+    std::vector<char>   any(points.size(), 0);
+    std::vector<double> s(N), coefficient;
+    for (unsigned int p = 0; p < points.size(); ++p)
+      {
+        for (unsigned int j = 0; j < N; ++j)
+          for (unsigned int k = 0; k < 6; ++k)
+            any[p] = any[p] || samples[p * N + j][k] != 0.;
+        if (!any[p])
+          continue; // an elastic point: no load, no work
+        for (unsigned int k = 0; k < 6; ++k)
+          {
+            for (unsigned int j = 0; j < N; ++j)
+              s[j] = samples[p * N + j][k];
+            sampling.integrate(s, factor_of(k), coefficient);
+            for (unsigned int h = 0; h < H; ++h)
+              integral[p][h][k] = coefficient[h];
+          }
+      }
+    set.for_each([&](const unsigned int h) {
+      std::vector<StrainVector> field;
+      for (const SoilCell &cell : cells)
+        {
+          const unsigned int n_q    = cell.radius.size();
+          bool               active = false;
+          field.resize(n_q);
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              field[q] = integral[cell.first_point + q][h];
+              active   = active || any[cell.first_point + q];
+            }
+          if (!active)
+            continue; // only the points that yield cost work
+          apply_bbar(cell.projection.get(), field);
+          const unsigned int n_dofs = component.size();
+          Vector<double>     local(n_dofs);
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              const double dV = points[cell.first_point + q].dV;
+              for (unsigned int i = 0; i < n_dofs; ++i)
+                {
+                  const StrainVector b =
+                    operators[h].strain_of_component(component[i],
+                                                     cell.shape_value[q][i],
+                                                     cell.shape_grad[q][i],
+                                                     cell.radius[q]);
+                  double sum = 0.;
+                  for (unsigned int k = 0; k < 6; ++k)
+                    sum += b[k] * field[q][k];
+                  local(i) += sum * dV;
+                }
+            }
+          set.problem(h)
+            .get_homogeneous_constraints()
+            .distribute_local_to_global(local, cell.dof_indices[h], load[h]);
+        }
+    });
+    return load;
+  }
+
+  std::vector<Vector<double>>
+  CoupledSoilSolver::soil_force(const std::vector<Vector<double>> &fields) const
+  {
+    const unsigned int        N = sampling.n_samples();
+    std::vector<StrainVector> strain(points.size() * N);
+    const auto                amplitude = strain_amplitudes(fields);
+    std::vector<double>       a(set.size()), s;
+    for (unsigned int p = 0; p < points.size(); ++p)
+      for (unsigned int k = 0; k < 6; ++k)
+        {
+          for (unsigned int h = 0; h < set.size(); ++h)
+            a[h] = amplitude[p][h][k];
+          sampling.evaluate(a, factor_of(k), s);
+          for (unsigned int j = 0; j < N; ++j)
+            strain[p * N + j][k] = s[j];
+        }
+    for (unsigned int p = 0; p < points.size(); ++p)
+      for (unsigned int j = 0; j < N; ++j)
+        strain[p * N + j] = hooke_stress(strain[p * N + j],
+                                         points[p].lambda,
+                                         points[p].shear_modulus);
+    return load_of(strain);
+  }
+
+  double
+  CoupledSoilSolver::controlled_load_factor(
+    const std::vector<Vector<double>> &v,
+    const double                       target) const
+  {
+    const Harmonic wanted = harmonic_of(settings.motion);
+    for (unsigned int h = 0; h < set.size(); ++h)
+      if (harmonics[h].n == wanted.n && harmonics[h].family == wanted.family)
+        {
+          const RigidFoundation *foundation = set.problem(h).get_foundation();
+          AssertThrow(foundation != nullptr,
+                      ExcMessage("Nonlinear interfaces/Control: displacement "
+                                 "control needs a Rigid foundation"));
+          const double by_pattern =
+            component_of(foundation->motion(pattern_solution[h]),
+                         settings.motion);
+          AssertThrow(by_pattern != 0.,
+                      ExcMessage("Nonlinear interfaces/Controlled motion: "
+                                 "the Rigid foundation loads do not drive "
+                                 "this motion (give the load that does)"));
+          return (target -
+                  component_of(foundation->motion(v[h]), settings.motion)) /
+                 by_pattern;
+        }
+    AssertThrow(false,
+                ExcMessage("Nonlinear interfaces/Controlled motion: its "
+                           "harmonic is not solved"));
+    return 0.;
+  }
+
+  bool
+  CoupledSoilSolver::solve_step(const double    target,
+                                StepState      &state,
+                                SoilStepResult &result)
+  {
+    const bool displacement_control =
+      settings.control == NonlinearInterfaceParameters::Control::displacement;
+    std::vector<StrainVector>   plastic;
+    std::vector<Vector<double>> previous_residual;
+    double                      omega = 1.;
+    for (unsigned int iteration = 0; iteration <= settings.maximum_iterations;
+         ++iteration)
+      {
+        state.load_factor =
+          displacement_control ?
+            controlled_load_factor(state.correction_solution, target) :
+            target;
+        // 1-2: strains at every (point, theta), the return mapping.
+        return_map(strain_samples(state.correction_solution, state.load_factor),
+                   plastic,
+                   result);
+        // 3-4: out-of-balance load and force residual R = G - c.
+        std::vector<Vector<double>> residual  = load_of(plastic);
+        const double                load_norm = norm_over_harmonics(residual);
+        for (unsigned int h = 0; h < set.size(); ++h)
+          residual[h] -= state.correction_load[h];
+        const double residual_norm = norm_over_harmonics(residual);
+        const double applied = std::abs(state.load_factor) * pattern_load_norm;
+        const double scale   = applied > 0. ? applied : load_norm;
+        if (!std::isfinite(residual_norm))
+          return false;
+        if (residual_norm <= settings.tolerance * scale)
+          {
+            state.plastic     = plastic;
+            result.iterations = iteration;
+            result.residual   = scale > 0. ? residual_norm / scale : 0.;
+            return true;
+          }
+        // Aitken's Delta^2 relaxation of the fixed point c = G(c), as the
+        // interface solver.
+        if (settings.aitken && !previous_residual.empty())
+          {
+            std::vector<Vector<double>> change = residual;
+            for (unsigned int h = 0; h < set.size(); ++h)
+              change[h] -= previous_residual[h];
+            const double change_sqr = dot_over_harmonics(change, change);
+            if (change_sqr > 0.)
+              omega = -omega * dot_over_harmonics(previous_residual, change) /
+                      change_sqr;
+          }
+        previous_residual = residual;
+        std::vector<std::vector<Vector<double>>> increment(set.size());
+        for (unsigned int h = 0; h < set.size(); ++h)
+          {
+            residual[h] *= omega;
+            state.correction_load[h] += residual[h];
+            increment[h] = {residual[h]};
+          }
+        set.solve_increments(increment);
+        for (unsigned int h = 0; h < set.size(); ++h)
+          state.correction_solution[h] += increment[h][0];
+      }
+    return false;
+  }
+
+  std::array<double, 6>
+  CoupledSoilSolver::applied_loads(const double load_factor) const
+  {
+    const RigidFoundationParameters &f     = parameters.rigid_foundation;
+    const double                     z_ref = f.reference_elevation;
+    return {{load_factor * f.horizontal_force,
+             load_factor * f.horizontal_force_y,
+             load_factor * f.vertical_force,
+             load_factor * (f.moment_x - z_ref * f.horizontal_force_y),
+             load_factor * (f.moment + z_ref * f.horizontal_force),
+             load_factor * f.torque}};
+  }
+
+  RigidMotion
+  CoupledSoilSolver::motion_of(const StepState &state) const
+  {
+    RigidMotion total;
+    for (unsigned int h = 0; h < set.size(); ++h)
+      {
+        const RigidFoundation *foundation = set.problem(h).get_foundation();
+        if (foundation == nullptr || harmonics[h].n > 1 ||
+            (harmonics[h].n == 1 && harmonics[h].family != Family::symmetric))
+          continue;
+        Vector<double> u = pattern_solution[h];
+        u.sadd(state.load_factor, 1., state.correction_solution[h]);
+        const RigidMotion m = foundation->motion(u);
+        total.vertical_displacement += m.vertical_displacement;
+        total.twist += m.twist;
+        total.horizontal_displacement += m.horizontal_displacement;
+        total.rotation += m.rotation;
+      }
+    return total;
+  }
+
+  Vector<double>
+  CoupledSoilSolver::solution(const unsigned int i) const
+  {
+    Vector<double> u = pattern_solution[i];
+    u.sadd(committed.load_factor, 1., committed.correction_solution[i]);
+    return u;
+  }
+
+  void
+  CoupledSoilSolver::run(std::ostream &log)
+  {
+    const bool load_control =
+      settings.control == NonlinearInterfaceParameters::Control::load;
+    log << "plastic soil: " << points.size() << " quadrature points x "
+        << sampling.n_samples() << " theta samples, " << set.size()
+        << " harmonics, " << (load_control ? "load" : "displacement")
+        << " control, " << settings.load_steps << " steps, tolerance "
+        << settings.tolerance << (settings.aitken ? ", Aitken" : "")
+        << (cells.front().projection ? ", B-bar" : "") << '\n';
+    double       done = 0., increment = 1. / settings.load_steps;
+    unsigned int cuts = 0;
+    while (done < 1. - 1e-12)
+      {
+        const double fraction = std::min(1., done + increment);
+        const double target =
+          load_control ? fraction : fraction * settings.target;
+        StepState      state = committed;
+        SoilStepResult result;
+        const auto     start = std::chrono::steady_clock::now();
+        if (!solve_step(target, state, result))
+          {
+            AssertThrow(++cuts <= settings.maximum_step_cuts,
+                        ExcMessage(entry + ": load step " +
+                                   std::to_string(steps.size() + 1) +
+                                   " did not converge in " +
+                                   std::to_string(settings.maximum_iterations) +
+                                   " iterations after " +
+                                   std::to_string(settings.maximum_step_cuts) +
+                                   " step cuts; the " +
+                                   std::to_string(steps.size()) +
+                                   " converged steps are kept"));
+            increment /= 2.;
+            log << "  step cut to " << increment << " of the loading\n";
+            continue;
+          }
+        committed          = state;
+        done               = fraction;
+        result.load_factor = state.load_factor;
+        result.motion      = motion_of(state);
+        result.time        = std::chrono::duration<double>(
+                        std::chrono::steady_clock::now() - start)
+                        .count();
+        steps.push_back(result);
+        const auto loads = applied_loads(result.load_factor);
+        log << "  step " << steps.size() << ": V " << loads[2] << " kN, H "
+            << loads[0] << " kN; w " << result.motion.vertical_displacement
+            << " m, u " << result.motion.horizontal_displacement << " m; "
+            << result.iterations << " iterations; plastic samples "
+            << result.n_plastic << " of " << result.n_plastic + result.n_elastic
+            << "; max f " << result.largest_yield_value << " kPa; "
+            << result.time << " s" << std::endl;
+      }
+  }
+
+  void
+  CoupledSoilSolver::write_csv(const std::string &filename) const
+  {
+    std::ofstream out(filename);
+    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+    out << "step,load_factor,V_kN,H_kN,M_kNm,T_kNm,vertical_m,horizontal_m,"
+           "rotation_rad,twist_rad,iterations,residual,elastic,plastic,"
+           "max_yield_kPa,time_s,converged\n"
+        << std::setprecision(12);
+    for (unsigned int s = 0; s < steps.size(); ++s)
+      {
+        const SoilStepResult &r = steps[s];
+        const auto            f = parameters.rigid_foundation;
+        out << s + 1 << ',' << r.load_factor << ','
+            << r.load_factor * f.vertical_force << ','
+            << r.load_factor * f.horizontal_force << ','
+            << r.load_factor * f.moment << ',' << r.load_factor * f.torque
+            << ',' << r.motion.vertical_displacement << ','
+            << r.motion.horizontal_displacement << ',' << r.motion.rotation
+            << ',' << r.motion.twist << ',' << r.iterations << ',' << r.residual
+            << ',' << r.n_elastic << ',' << r.n_plastic << ','
+            << r.largest_yield_value << ',' << r.time << ",1\n";
+      }
+    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+  }
+} // namespace FourierSSI

@@ -1,0 +1,98 @@
+// Helpers of the plastic-soil tests: the bundled footing scene with entries
+// changed, set up on a HarmonicSet with its CoupledSoilSolver, and the
+// bearing-capacity check (doc/soil-plasticity.md section 5).
+#ifndef fourier_ssi_tests_soil_test_support_h
+#define fourier_ssi_tests_soil_test_support_h
+
+#include "check.h"
+#include "test_support.h"
+
+#include <deal.II/grid/tria.h>
+#include <fourier_ssi/coupled_soil_solver.h>
+#include <fourier_ssi/harmonic_set.h>
+#include <fourier_ssi/scene_plan.h>
+#include <regex>
+
+namespace soil_test
+{
+  using namespace FourierSSI;
+
+  inline std::string
+  scene(const std::vector<std::pair<std::string, std::string>> &changes)
+  {
+    std::string text = test_support::bundled_prm("prm/footing-capacity.prm");
+    for (const auto &[entry, value] : changes)
+      text = std::regex_replace(text,
+                                std::regex("set " + entry + " *= [^\n]*"),
+                                "set " + entry + " = " + value);
+    return text;
+  }
+
+  struct Run
+  {
+    AllParameters                      parameters;
+    Triangulation<2>                   triangulation;
+    std::unique_ptr<HarmonicSet>       set;
+    std::unique_ptr<CoupledSoilSolver> solver;
+
+    explicit Run(const std::string &text)
+      : parameters(test_support::parameters_from(text))
+    {
+      parameters.mesh.build(triangulation);
+      const ScenePlan plan = plan_scene(parameters, triangulation);
+      set                  = std::make_unique<HarmonicSet>(parameters,
+                                          plan.harmonics,
+                                          triangulation,
+                                          plan.loads,
+                                          MPI_COMM_SELF,
+                                          0);
+      set->setup_and_assemble();
+      set->factorize();
+      solver = std::make_unique<CoupledSoilSolver>(*set, parameters);
+    }
+  };
+
+  /**
+   * N_c = V_ult / (pi a^2 s_u) of the footing (a = 1 m, s_u = 10 kPa) at
+   * the end of the curve against `reference` within 2 %; equilibrium and
+   * the yield condition at every converged step.
+   */
+  inline void
+  check_capacity(const std::string &name,
+                 const std::string &tied,
+                 const double       reference)
+  {
+    std::cout << name << " footing, n = 0" << std::endl;
+    // The bundled curve to w = 0.04 m = 0.04 a in 8 steps: V there is
+    // within 0.05 % of V at w = 0.1 a (doc/soil-plasticity.md table 1).
+    Run run(scene(
+      {{"Tied components", tied}, {"Load steps", "8"}, {"Target", "-0.04"}}));
+    run.solver->run(std::cout);
+    const auto  &steps = run.solver->get_steps();
+    const double su = 10., a = 1.;
+    double       worst_residual = 0., worst_f = -1e300;
+    for (const SoilStepResult &s : steps)
+      {
+        worst_residual = std::max(worst_residual, s.residual);
+        worst_f        = std::max(worst_f, s.largest_yield_value);
+      }
+    const double V  = -run.solver->applied_loads(steps.back().load_factor)[2];
+    const double Nc = V / (numbers::PI * a * a * su);
+    const double V9 =
+      -run.solver->applied_loads(steps[steps.size() - 3].load_factor)[2];
+    std::cout << "  N_c = " << Nc
+              << " at w = " << steps.back().motion.vertical_displacement
+              << " m; change over the last 3 steps " << (V - V9) / V * 100.
+              << " %" << std::endl;
+    check::relative(name + " N_c vs the published limit", Nc, reference, 0.02);
+    check::small(name + " equilibrium: max |R| / |lambda F|",
+                 worst_residual,
+                 1e-8);
+    check::in_range(name + " max f(sigma) over every point [kPa]",
+                    worst_f,
+                    -1e300,
+                    1e-9 * 2. * su);
+  }
+} // namespace soil_test
+
+#endif
