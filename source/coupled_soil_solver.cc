@@ -13,6 +13,18 @@ namespace FourierSSI
   {
     const std::string entry = "Soil plasticity";
 
+    /**
+     * The soil iteration relaxes by Aitken unless acceleration is off;
+     * Anderson (Nonlinear interfaces/Acceleration = anderson) is built for
+     * the interface iteration only, so the soil falls back to Aitken.
+     */
+    bool
+    uses_aitken(const NonlinearInterfaceParameters &settings)
+    {
+      return settings.acceleration !=
+             NonlinearInterfaceParameters::Acceleration::none;
+    }
+
     std::vector<Harmonic>
     harmonics_of(const HarmonicSet &set)
     {
@@ -492,7 +504,7 @@ namespace FourierSSI
           }
         // Aitken's Delta^2 relaxation of the fixed point c = G(c), as the
         // interface solver.
-        if (settings.aitken && !previous_residual.empty())
+        if (uses_aitken(settings) && !previous_residual.empty())
           {
             std::vector<Vector<double>> change = residual;
             for (unsigned int h = 0; h < set.size(); ++h)
@@ -568,7 +580,7 @@ namespace FourierSSI
         << sampling.n_samples() << " theta samples, " << set.size()
         << " harmonics, " << (load_control ? "load" : "displacement")
         << " control, " << settings.load_steps << " steps, tolerance "
-        << settings.tolerance << (settings.aitken ? ", Aitken" : "")
+        << settings.tolerance << (uses_aitken(settings) ? ", Aitken" : "")
         << (cells.front().projection ? ", B-bar" : "") << '\n';
     double       done = 0., increment = 1. / settings.load_steps;
     unsigned int cuts = 0;
