@@ -3,24 +3,8 @@
 # folder itself) left in OUTPUT_DIR. Usage: cmake -DEXE=... -DPRM=... -DEXPECTED=... -DOUTPUT_DIR=...
 #                          -P expect_failure.cmake
 file(REMOVE_RECURSE ${OUTPUT_DIR})
-execute_process(COMMAND ${EXE} ${PRM}
-                RESULT_VARIABLE exit_code
-                OUTPUT_VARIABLE out
-                ERROR_VARIABLE err
-                WORKING_DIRECTORY ${WORK_DIR})
-string(STRIP "${err}" err)
-message(STATUS "exit code ${exit_code}, stderr: ${err}")
-if(exit_code EQUAL 0)
-  message(FATAL_ERROR "expected a non-zero exit code")
-endif()
-string(REGEX MATCHALL "\n" newlines "${err}")
-list(LENGTH newlines n_newlines)
-if(NOT n_newlines EQUAL 0)
-  message(FATAL_ERROR "expected a one-line error, got ${n_newlines}+1 lines")
-endif()
-if(NOT err MATCHES "${EXPECTED}")
-  message(FATAL_ERROR "error message does not match '${EXPECTED}'")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/one_line_error.cmake)
+run_expecting_one_line_error()
 file(GLOB leftovers ${OUTPUT_DIR}/*)
 if(leftovers)
   message(FATAL_ERROR "partial output left behind: ${leftovers}")

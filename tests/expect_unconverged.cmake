@@ -7,24 +7,8 @@
 #              -P expect_unconverged.cmake
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})
-execute_process(COMMAND ${EXE} ${PRM}
-                RESULT_VARIABLE exit_code
-                OUTPUT_VARIABLE out
-                ERROR_VARIABLE err
-                WORKING_DIRECTORY ${WORK_DIR})
-string(STRIP "${err}" err)
-message(STATUS "exit code ${exit_code}, stderr: ${err}")
-if(exit_code EQUAL 0)
-  message(FATAL_ERROR "expected a non-zero exit code")
-endif()
-string(REGEX MATCHALL "\n" newlines "${err}")
-list(LENGTH newlines n_newlines)
-if(NOT n_newlines EQUAL 0)
-  message(FATAL_ERROR "expected a one-line message, got ${n_newlines}+1 lines")
-endif()
-if(NOT err MATCHES "${EXPECTED}")
-  message(FATAL_ERROR "message does not match '${EXPECTED}'")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/one_line_error.cmake)
+run_expecting_one_line_error()
 if(NOT EXISTS ${WORK_DIR}/out/results.csv)
   message(FATAL_ERROR "no results.csv: the values reached must be written")
 endif()
