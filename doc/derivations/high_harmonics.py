@@ -41,72 +41,23 @@ def main():
         ROOT, 'tests', 'mms_high_harmonics.h')
     rng = random.Random(5)
     Ev, nuv = 2.5, 0.3
-    lamv = Ev * nuv / ((1 + nuv) * (1 - 2 * nuv))
-    muv = Ev / (2 * (1 + nuv))
     entries = []
     for nn in HARMONICS:
         fam = SYM
         tag = f'n={nn} {fam}'
-        U, V, W = ms.amplitudes(nn, fam)
-        A = op.equilibrium_amplitudes(nn, fam, U, V, W, lam, mu)
-        fields = {'U': U, 'V': V, 'W': W,
-                  'dU_dr': sp.diff(U, r), 'dU_dz': sp.diff(U, z),
-                  'dV_dr': sp.diff(V, r), 'dV_dz': sp.diff(V, z),
-                  'dW_dr': sp.diff(W, r), 'dW_dz': sp.diff(W, z)}
-        strings = {}
-        ok_reg = True
-        for k, e in fields.items():
-            e, bad = ms.regular_form(e)
-            ok_reg &= not bad
-            fields[k] = e
-            strings[k] = ms.mup(e)
-        for k, a in zip(('f_r', 'f_z', 'f_theta'), A):
-            f, bad = ms.regular_form(-a)
-            ok_reg &= not bad
-            fl = sp.expand(f.coeff(lam))
-            fm = sp.expand(f.coeff(mu))
-            ok_reg &= sp.expand(f - lam * fl - mu * fm) == 0
-            fields[k] = f
-            parts = []
-            if fl != 0:
-                parts.append(f'{ms.LAM_STR}*({ms.mup(fl)})')
-            if fm != 0:
-                parts.append(f'{ms.MU_STR}*({ms.mup(fm)})')
-            strings[k] = ' + '.join(parts) if parts else '0'
+        (U, V, W), fields, strings, ok_reg = ms.harmonic_fields(nn, fam)
         ms.check(ok_reg, f'{tag}: only r^k, k >= 0 (no division by r)')
         U0, V0, W0 = [sp.limit(q, r, 0) for q in (U, V, W)]
         ms.check(U0 == 0 and V0 == 0 and W0 == 0, f'{tag}: axis conditions')
         # 3D Cartesian div(sigma) + f = 0 at a few points
-        cart = ms.cartesian_field(nn, fam, U, V, W)
-        X3 = (x, y, z)
-        uc = sp.Matrix([e for e, _ in cart])
-        grad = uc.jacobian(X3)
-        eps = (grad + grad.T) / 2
-        sig = lamv * eps.trace() * sp.eye(3) + 2 * muv * eps
-        div = [sum(sp.diff(sig[i, j], X3[j]) for j in range(3)) for i in range(3)]
-        divf = sp.lambdify(X3, div, 'math')
-        err = 0.
-        for _ in range(5):
-            rv, tv, zv = rng.uniform(0.2, 1), rng.uniform(0, 2 * math.pi), rng.uniform(0, 1)
-            d = divf(rv * math.cos(tv), rv * math.sin(tv), zv)
-            fr, fz, ft = [ms.eval_string(strings[k], rv, zv, Ev, nuv)
-                          for k in ('f_r', 'f_z', 'f_theta')]
-            cn, sn = math.cos(nn * tv), math.sin(nn * tv)
-            fx = fr * cn * math.cos(tv) - ft * sn * math.sin(tv)
-            fy = fr * cn * math.sin(tv) + ft * sn * math.cos(tv)
-            scale = 1 + max(abs(q) for q in d)
-            err = max(err, abs(d[0] + fx) / scale, abs(d[1] + fy) / scale,
-                      abs(d[2] + fz * cn) / scale)
+        pts = [(rng.uniform(0.2, 1), rng.uniform(0, 2 * math.pi), rng.uniform(0, 1))
+               for _ in range(5)]
+        err = ms.cartesian_equilibrium_residual(nn, fam, (U, V, W), strings, pts, Ev, nuv)
         ms.check(err < 1e-9, f'{tag}: Cartesian div(sigma) + f = 0 (max rel. {err:.1e})')
         # strings equal sympy
-        ok = True
-        for k, e in fields.items():
-            fnum = sp.lambdify((r, z), e.subs({lam: lamv, mu: muv}), 'mpmath')
-            for rv, zv in [(0.0, 0.3), (0.37, 0.81), (1.0, 1.0), (0.9, 0.0)]:
-                sv = ms.eval_string(strings[k], rv, zv, Ev, nuv)
-                ok &= math.isfinite(sv)
-                if rv > 0:
-                    ok &= abs(sv - float(fnum(rv, zv))) <= 1e-11 * (1 + abs(sv))
+        ok = ms.strings_match_sympy(fields, strings,
+                                    [(0.0, 0.3), (0.37, 0.81), (1.0, 1.0), (0.9, 0.0)],
+                                    Ev, nuv, 1e-11)
         ms.check(ok, f'{tag}: muparser strings match sympy')
         entries.append((nn, fam, strings, (U, V, W)))
     tmp = out_path + '.tmp'

@@ -153,45 +153,95 @@ def cartesian_field(nn, family, U, V, W):
     return out
 
 
+def harmonic_fields(nn, fam):
+    """The amplitudes of harmonic (nn, fam), their 15 fields (U, V, W, their
+    first derivatives, the body-force amplitudes) as sympy expressions and as
+    muparser strings; ok is False if a field divides by r."""
+    U, V, W = amplitudes(nn, fam)
+    A = op.equilibrium_amplitudes(nn, fam, U, V, W, lam, mu)
+    fields = {'U': U, 'V': V, 'W': W,
+              'dU_dr': sp.diff(U, r), 'dU_dz': sp.diff(U, z),
+              'dV_dr': sp.diff(V, r), 'dV_dz': sp.diff(V, z),
+              'dW_dr': sp.diff(W, r), 'dW_dz': sp.diff(W, z)}
+    strings = {}
+    ok = True
+    for k, e in fields.items():
+        e, bad = regular_form(e)
+        ok &= not bad
+        fields[k] = e
+        strings[k] = mup(e)
+    for k, a in zip(('f_r', 'f_z', 'f_theta'), A):
+        f, bad = regular_form(-a)
+        ok &= not bad
+        if bad:
+            print('   singular terms:', bad)
+        # f = lam * fl + mu * fm exactly: the strings carry E and nu.
+        fl = sp.expand(f.coeff(lam))
+        fm = sp.expand(f.coeff(mu))
+        ok &= sp.expand(f - lam * fl - mu * fm) == 0
+        fields[k] = f
+        parts = []
+        if fl != 0:
+            parts.append(f'{LAM_STR}*({mup(fl)})')
+        if fm != 0:
+            parts.append(f'{MU_STR}*({mup(fm)})')
+        strings[k] = ' + '.join(parts) if parts else '0'
+    return (U, V, W), fields, strings, ok
+
+
+def cartesian_equilibrium_residual(nn, fam, UVW, strings, points, Ev, nuv):
+    """Largest relative |div(sigma) + f| of the reconstructed 3D Cartesian
+    field at the points (r, theta, z), f taken from the muparser strings."""
+    lamv = Ev * nuv / ((1 + nuv) * (1 - 2 * nuv))
+    muv = Ev / (2 * (1 + nuv))
+    cart = cartesian_field(nn, fam, *UVW)
+    X3 = (x, y, z)
+    uc = sp.Matrix([e for e, _ in cart])
+    grad = uc.jacobian(X3)
+    eps = (grad + grad.T) / 2
+    sig = lamv * eps.trace() * sp.eye(3) + 2 * muv * eps
+    div = [sum(sp.diff(sig[i, j], X3[j]) for j in range(3)) for i in range(3)]
+    divf = sp.lambdify(X3, div, 'math')
+    err = 0.
+    for rv, tv, zv in points:
+        d = divf(rv * math.cos(tv), rv * math.sin(tv), zv)
+        fr, fz, ft = [eval_string(strings[k], rv, zv, Ev, nuv)
+                      for k in ('f_r', 'f_z', 'f_theta')]
+        cn, sn = math.cos(nn * tv), math.sin(nn * tv)
+        Tu, Tw = (cn, sn) if fam == SYM else (sn, cn)
+        fx = fr * Tu * math.cos(tv) - ft * Tw * math.sin(tv)
+        fy = fr * Tu * math.sin(tv) + ft * Tw * math.cos(tv)
+        scale = 1 + max(abs(q) for q in d)
+        err = max(err, abs(d[0] + fx) / scale, abs(d[1] + fy) / scale,
+                  abs(d[2] + fz * Tu) / scale)
+    return err
+
+
+def strings_match_sympy(fields, strings, points, Ev, nuv, rtol):
+    """Every string is finite at the points (r, z) and equals its sympy
+    expression to rtol where r > 0."""
+    lamv = Ev * nuv / ((1 + nuv) * (1 - 2 * nuv))
+    muv = Ev / (2 * (1 + nuv))
+    ok = True
+    for k, e in fields.items():
+        fnum = sp.lambdify((r, z), e.subs({lam: lamv, mu: muv}), 'mpmath')
+        for rv, zv in points:
+            sv = eval_string(strings[k], rv, zv, Ev, nuv)
+            ok &= math.isfinite(sv)
+            if rv > 0:
+                ok &= abs(sv - float(fnum(rv, zv))) <= rtol * (1 + abs(sv))
+    return ok
+
+
 def main():
     out_path = sys.argv[1] if len(sys.argv) > 1 else os.path.join(ROOT, 'tests', 'mms_solutions.h')
     rng = random.Random(20070101)
     Ev, nuv = 2.5, 0.3
-    lamv = Ev * nuv / ((1 + nuv) * (1 - 2 * nuv))
-    muv = Ev / (2 * (1 + nuv))
     entries = []
     for nn in range(4):
         for fam in (SYM, ANTI):
             tag = f'n={nn} {fam}'
-            U, V, W = amplitudes(nn, fam)
-            A = op.equilibrium_amplitudes(nn, fam, U, V, W, lam, mu)
-            fields = {'U': U, 'V': V, 'W': W,
-                      'dU_dr': sp.diff(U, r), 'dU_dz': sp.diff(U, z),
-                      'dV_dr': sp.diff(V, r), 'dV_dz': sp.diff(V, z),
-                      'dW_dr': sp.diff(W, r), 'dW_dz': sp.diff(W, z)}
-            strings = {}
-            ok_reg = True
-            for k, e in fields.items():
-                e, bad = regular_form(e)
-                ok_reg &= not bad
-                fields[k] = e
-                strings[k] = mup(e)
-            for k, a in zip(('f_r', 'f_z', 'f_theta'), A):
-                f = -a
-                f, bad = regular_form(f)
-                ok_reg &= not bad
-                if bad:
-                    print('   singular terms:', bad)
-                fl = sp.expand(f.coeff(lam))
-                fm = sp.expand(f.coeff(mu))
-                ok_reg &= sp.expand(f - lam * fl - mu * fm) == 0
-                fields[k] = f
-                parts = []
-                if fl != 0:
-                    parts.append(f'{LAM_STR}*({mup(fl)})')
-                if fm != 0:
-                    parts.append(f'{MU_STR}*({mup(fm)})')
-                strings[k] = ' + '.join(parts) if parts else '0'
+            (U, V, W), fields, strings, ok_reg = harmonic_fields(nn, fam)
             check(ok_reg, f'{tag}: U,V,W, derivatives and f contain only r^k, k >= 0 '
                           f'(no division by r)')
             # axis conditions and parity on the amplitudes
@@ -213,44 +263,18 @@ def main():
             check(ok, f'{tag}: reconstructed Cartesian field is smooth (no sqrt(x^2+y^2), '
                       f'no 1/(x^2+y^2))')
             # 3D Cartesian div(sigma) at random points vs the f strings
-            X3 = (x, y, z)
-            uc = sp.Matrix([e for e, _ in cart])
-            grad = uc.jacobian(X3)
-            eps = (grad + grad.T) / 2
-            sig = lamv * eps.trace() * sp.eye(3) + 2 * muv * eps
-            div = [sum(sp.diff(sig[i, j], X3[j]) for j in range(3)) for i in range(3)]
-            divf = sp.lambdify(X3, div, 'math')
             pts = [(rng.uniform(0, 1), rng.uniform(0, 2 * math.pi), rng.uniform(0, 1))
                    for _ in range(8)]
             pts += [(1e-8, rng.uniform(0, 2 * math.pi), rng.uniform(0, 1)) for _ in range(3)]
             pts += [(1.0, 0.7, 1.0), (0.5, 2.0, 0.0)]
-            err = 0.
-            for rv, tv, zv in pts:
-                xv, yv = rv * math.cos(tv), rv * math.sin(tv)
-                d = divf(xv, yv, zv)
-                fr = eval_string(strings['f_r'], rv, zv, Ev, nuv)
-                fz = eval_string(strings['f_z'], rv, zv, Ev, nuv)
-                ft = eval_string(strings['f_theta'], rv, zv, Ev, nuv)
-                cn, sn = math.cos(nn * tv), math.sin(nn * tv)
-                Tu, Tw = (cn, sn) if fam == SYM else (sn, cn)
-                fx = fr * Tu * math.cos(tv) - ft * Tw * math.sin(tv)
-                fy = fr * Tu * math.sin(tv) + ft * Tw * math.cos(tv)
-                fzc = fz * Tu
-                scale = 1 + max(abs(q) for q in d)
-                err = max(err, abs(d[0] + fx) / scale, abs(d[1] + fy) / scale,
-                          abs(d[2] + fzc) / scale)
+            err = cartesian_equilibrium_residual(nn, fam, (U, V, W), strings, pts, Ev, nuv)
             check(err < 1e-10, f'{tag}: Cartesian 3D div(sigma) + f = 0 at {len(pts)} random '
                                f'points incl. r = 1e-8 (max rel. residual {err:.1e})')
             # strings equal the sympy expressions; finite at r = 0 and continuous
-            ok = True
-            subsd = {lam: lamv, mu: muv}
-            for k, e in fields.items():
-                fnum = sp.lambdify((r, z), e.subs(subsd), 'mpmath')
-                for rv, zv in [(0.0, 0.3), (1e-8, 0.3), (0.37, 0.81), (1.0, 1.0), (0.9, 0.0)]:
-                    sv = eval_string(strings[k], rv, zv, Ev, nuv)
-                    ok &= math.isfinite(sv)
-                    if rv > 0:
-                        ok &= abs(sv - float(fnum(rv, zv))) <= 1e-12 * (1 + abs(sv))
+            ok = strings_match_sympy(fields, strings,
+                                     [(0.0, 0.3), (1e-8, 0.3), (0.37, 0.81), (1.0, 1.0), (0.9, 0.0)],
+                                     Ev, nuv, 1e-12)
+            for k in fields:
                 near = eval_string(strings[k], 1e-8, 0.3, Ev, nuv)
                 at0 = eval_string(strings[k], 0.0, 0.3, Ev, nuv)
                 ok &= abs(near - at0) <= 1e-6 * (1 + abs(at0))
