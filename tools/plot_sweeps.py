@@ -86,7 +86,7 @@ def plot_family(rows, geo, title, png):
                 unmet = [(a, b) for a, b, r in zip(x, y, sub) if r.get("converged") == 0.]
                 if unmet:
                     ax.plot(*zip(*unmet), ls="none", marker=markers[m % len(markers)], ms=7,
-                            mfc="white", color=line[0].get_color())
+                            mfc="white", color=line[0].get_color(), zorder=3)
             ax.set_xlabel(r"$\alpha$")
             ax.set_ylabel(qlabel)
             bar = f", largest error {worst:.0e}" if worst > 0. else ""

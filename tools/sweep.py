@@ -204,7 +204,9 @@ def prm_text(template_text, scene, case, refinements, directory, target=None):
         mesh += [f"  set Global refinements = {refinements}"]
         adaptivity = []
     else:
-        discretization = [f"  set Target accuracy = {target:g}"]
+        # The design walks its own meshes: one cycle each (the template's
+        # Refinement cycles would be refused with a target).
+        discretization = ["  set Refinement cycles = 1", f"  set Target accuracy = {target:g}"]
         adaptivity = ["subsection Adaptivity", "  set Allow unconverged = true", "end"]
     lines = [
         "", "# ---- overrides written by tools/sweep.py ----",
