@@ -10,6 +10,14 @@ e/a (footing) or L/d (pile; one figure per Ep/Es if several). Plus one PNG
 <csv-stem>-smooth-over-rough.png with the ratio smooth/rough of K_H and K_M
 when both interfaces are present.
 
+Where the CSV has error columns (K_H_error, ...: estimated relative errors,
+tools/sweep.py with 'target accuracy'), every point carries its error bar
+(value x relative error; at 1e-4 smaller than the marker) and each panel's
+title names the largest relative error of its points; a case that did not
+reach its target (converged = 0) is drawn with an open marker.
+
+A rigid pile CSV (Ep_over_Es = rigid) is plotted like a flexible one.
+
 K_MH is plotted as -K_MH: ours is the off-diagonal of the true inverse of
 the influence matrix with H along +x and M about +y (u_x = Theta z), which
 is negative for an embedded footing or a pile; the thesis plots a positive
@@ -46,8 +54,9 @@ def load(path):
     geo = "e_over_a" if "e_over_a" in rows[0] else "L_over_d"
     for r in rows:
         for k, v in r.items():
-            if k != "interface":
-                r[k] = float(v)
+            if k == "interface" or (k == "Ep_over_Es" and v == "rigid"):
+                continue
+            r[k] = float(v) if v not in ("", None) else float("nan")
     return rows, geo
 
 
@@ -61,15 +70,27 @@ def plot_family(rows, geo, title, png):
     for j, nu in enumerate(nus):
         for i, (q, qlabel, sign) in enumerate(QUANT):
             ax = axes[i][j]
+            worst = 0.
             for m, g in enumerate(geos):
-                pts = sorted((r["alpha"], sign * r[q]) for r in rows
-                             if r["nu"] == nu and r[geo] == g)
-                if pts:
-                    ax.plot(*zip(*pts), marker=markers[m % len(markers)], ms=4,
-                            label=f"{glabel} = {g:g}")
+                sub = sorted((r for r in rows if r["nu"] == nu and r[geo] == g),
+                             key=lambda r: r["alpha"])
+                if not sub:
+                    continue
+                x = [r["alpha"] for r in sub]
+                y = [sign * r[q] for r in sub]
+                rel = [r.get(q + "_error", float("nan")) for r in sub]
+                err = [abs(v) * e if e == e else 0. for v, e in zip(y, rel)]
+                worst = max([worst] + [e for e in rel if e == e])
+                line = ax.errorbar(x, y, yerr=err, marker=markers[m % len(markers)], ms=4,
+                                   capsize=2, label=f"{glabel} = {g:g}")
+                unmet = [(a, b) for a, b, r in zip(x, y, sub) if r.get("converged") == 0.]
+                if unmet:
+                    ax.plot(*zip(*unmet), ls="none", marker=markers[m % len(markers)], ms=7,
+                            mfc="white", color=line[0].get_color(), zorder=3)
             ax.set_xlabel(r"$\alpha$")
             ax.set_ylabel(qlabel)
-            ax.set_title(f"{qlabel}, $\\nu_s$ = {nu:g}", fontsize=10)
+            bar = f", largest error {worst:.0e}" if worst > 0. else ""
+            ax.set_title(f"{qlabel}, $\\nu_s$ = {nu:g}{bar}", fontsize=10)
             ax.grid(alpha=0.3)
             if geo == "L_over_d" or q == "K_M":
                 ax.set_yscale("log")
@@ -127,14 +148,15 @@ def main():
             groups[(r["interface"], r.get("Ep_over_Es"))].append(r)
         several_ep = len({k[1] for k in groups}) > 1
         for (itf, ep), sub in sorted(groups.items(), key=lambda kv: str(kv[0])):
-            tag = f"{stem}-{itf}" + (f"-Ep{ep:g}" if several_ep else "")
-            extra = f", $E_p/E_s$ = {ep:g}" if ep is not None else ""
+            ep_name = ep if isinstance(ep, str) else (f"{ep:g}" if ep is not None else None)
+            tag = f"{stem}-{itf}" + (f"-Ep{ep_name}" if several_ep else "")
+            extra = f", $E_p/E_s$ = {ep_name}" if ep is not None else ""
             plot_family(sub, geo, f"{scene}, {itf} interface{extra}",
                         os.path.join(args.out, tag + ".png"))
         if {"rough", "smooth"} <= {r["interface"] for r in rows}:
             for ep in sorted({k[1] for k in groups}, key=str):
                 sub = [r for r in rows if r.get("Ep_over_Es") == ep]
-                tag = f"{stem}-smooth-over-rough" + (f"-Ep{ep:g}" if several_ep else "")
+                tag = f"{stem}-smooth-over-rough" + (f"-Ep{ep}" if several_ep else "")
                 plot_ratio(sub, geo, f"{scene}: smooth / rough",
                            os.path.join(args.out, tag + ".png"))
 

@@ -18,7 +18,10 @@ A sweep file (prm/sweeps/*.sweep) holds lines 'set key = v1, v2, ...'
     set interface      = rough, smooth
     set e/a            = 0.5, 1, 2                  # footing only
     set L/d            = 10, 25                     # pile only
-    set Ep/Es          = 1000                       # pile only
+    set Ep/Es          = 1000, rigid                # pile only; rigid: the
+                                                    # whole pile tied as a rigid
+                                                    # body (own CSV family)
+    set target accuracy = rough: 1e-4, smooth: 1e-3 # or one number for all
 
 Every combination is run: the template text is copied and override
 subsections are appended (a later 'subsection X / set Y = ... / end' wins in
@@ -40,15 +43,27 @@ modulus of the soil at the tip depth), nu_p = 0.25.
 nu = 0.5 is replaced by 0.49 (the operator needs nu < 0.5; the thesis does the
 same for its FE runs, section 6.2).
 
-Each case solves the template coarse mesh refined --refinements times (default
-1) once (Refinement cycles = 1). One progress line per case; one CSV row per
-case in DIR/<family>.csv (DIR default output/sweeps).
+With 'target accuracy' every case is driven by Discretization/Target
+accuracy (doc/accuracy-vs-time.md: the program designs its nested meshes from
+the coarse base mesh and stops when the estimated relative error of K_H, K_M
+and K_MH is below the target; Adaptivity/Allow unconverged = true, so a case
+stopped by Adaptivity/Maximum DoFs keeps its best value with converged = 0).
+The CSV then has K_H_error, K_M_error, K_MH_error (estimated relative errors)
+next to each K, and 'converged'. Without it each case solves the template
+coarse mesh refined --refinements times (default 1) once, and the error
+columns hold the one-mesh estimate (the mesh against its coarsening by one
+level; doc/accuracy-vs-time.md).
 
---mpi N writes every case's .prm first and hands them all to one
-'mpirun -np N fourier-ssi --batch' call (cases dealt round-robin to the
-ranks, each solved serially: README, "MPI"); the CSV is the same, except the
-'seconds' column, which then holds the case's setup + assembly + solve wall
-time from its results.csv instead of the whole process time.
+A rigid pile (Ep/Es = rigid) ties the whole pile region (material 1) to the
+rigid motion (Rigid foundation/Tie = material, as the embedded footing): its
+rows go to DIR/<family>-rigid.csv, the flexible ones to DIR/<family>.csv.
+
+All cases run in one process, 'fourier-ssi --batch' (no start-up per case);
+--mpi N hands them to 'mpirun -np N fourier-ssi --batch' instead (cases dealt
+round-robin to the ranks, each solved serially: README, "MPI"). The
+'seconds' column is the case's computation: the sum over its meshes of the
+setup, assembly, solve and postprocess wall times from its results.csv.
+One progress line per case; one CSV row per case (DIR default output/sweeps).
 """
 import argparse
 import csv
@@ -63,6 +78,7 @@ import time
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 G_REF = 1000.0  # kPa, G at depth e (footing) or L (pile)
+RIGID = "rigid"  # Ep/Es of a rigid pile
 
 
 def parse_sweep(path):
@@ -101,10 +117,28 @@ def growth_for(n, length, h_end):
     return 0.5 * (lo + hi)
 
 
-def footing_overrides(case):
+def footing_overrides(case, designed=False):
     a = 1.0
     e = case["e/a"] * a
     depth = 25.0 * e
+    if designed:
+        # The coarse base mesh of the designed family (that of
+        # prm/embedded-footing-graded.prm scaled with e): the program grades
+        # and refines it (doc/accuracy-vs-time.md). The side cells shrink
+        # toward the surface (G vanishes there for alpha > 0), the top one
+        # about 0.14 a as in the recipe.
+        n_side = 3 + int(round(math.log2(e / a)))
+        mesh = [
+            f"  set R breakpoints    = 0, {a:g}, {20 * a:g}",
+            "  set R cells          = 3, 6",
+            "  set R growth         = 0.64, 1.69",
+            f"  set Z breakpoints    = {-depth:g}, {-e:g}, 0",
+            f"  set Z cells          = 12, {n_side}",
+            f"  set Z growth         = 0.8, {growth_for(n_side, e, 0.143 * a):.10g}",
+            f"  set Material regions = 1: 0, {a:g}, {-e:g}, 0",
+            f"  set Interface lines  = 5: z={-e:g}, r=0..{a:g}; 5: r={a:g}, z={-e:g}..0",
+        ]
+        return mesh, *footing_materials(case, a, e)
     # cells on the embedded side: 6 for e <= a, more for deeper footings so
     # that the side cells stay <= ~0.35 a on the coarse mesh
     n_side = max(6, int(math.ceil(e / 0.35)))
@@ -118,13 +152,17 @@ def footing_overrides(case):
         f"  set Material regions = 1: 0, {a:g}, {-e:g}, 0",
         f"  set Interface lines  = 5: z={-e:g}, r=0..{a:g}; 5: r={a:g}, z={-e:g}..0",
     ]
+    return mesh, *footing_materials(case, a, e)
+
+
+def footing_materials(case, a, e):
     materials = (f"0: G={G_REF:g}, nu={case['nu']:g}, alpha={case['alpha']:g}, "
                  f"depth_ref={e:g}; 1: E=1e6, nu=0.2")
     rigid = ["  set Reference shear modulus = %g" % G_REF, f"  set Reference length = {a:g}"]
-    return mesh, materials, rigid
+    return materials, rigid
 
 
-def pile_overrides(case):
+def pile_overrides(case, designed=False):
     d = 1.0
     r = 0.5 * d
     L = case["L/d"] * d
@@ -145,29 +183,46 @@ def pile_overrides(case):
         f"  set Interface lines      = 5: r={r:g}, z={-L:g}..0; 5: z={-L:g}, r=0..{r:g}",
     ]
     E_s = 2.0 * G_REF * (1.0 + case["nu"])
-    E_p = case["Ep/Es"] * E_s
+    rigid = ["  set Reference shear modulus = %g" % G_REF, f"  set Reference length = {r:g}"]
+    if case["Ep/Es"] == RIGID:
+        # The whole pile is one rigid body (as the embedded footing): its
+        # material only fills the matrix pattern.
+        E_p = 1000.0 * E_s
+        rigid += ["  set Tie = material", "  set Id = 1", "  set Reference elevation = 0"]
+    else:
+        E_p = case["Ep/Es"] * E_s
     materials = (f"0: G={G_REF:g}, nu={case['nu']:g}, alpha={case['alpha']:g}, "
                  f"depth_ref={L:g}; 1: E={E_p:.8g}, nu=0.25")
-    rigid = ["  set Reference shear modulus = %g" % G_REF, f"  set Reference length = {r:g}"]
     return mesh, materials, rigid
 
 
-def prm_text(template_text, scene, case, refinements, directory):
-    mesh, materials, rigid = (footing_overrides if scene == "footing" else pile_overrides)(case)
+def prm_text(template_text, scene, case, refinements, directory, target=None):
+    overrides = footing_overrides if scene == "footing" else pile_overrides
+    mesh, materials, rigid = overrides(case, designed=target is not None)
+    if target is None:
+        discretization = ["  set Refinement cycles = 1"]
+        mesh += [f"  set Global refinements = {refinements}"]
+        adaptivity = []
+    else:
+        # The design walks its own meshes: one cycle each (the template's
+        # Refinement cycles would be refused with a target).
+        discretization = ["  set Refinement cycles = 1", f"  set Target accuracy = {target:g}"]
+        adaptivity = ["subsection Adaptivity", "  set Allow unconverged = true", "end"]
     lines = [
         "", "# ---- overrides written by tools/sweep.py ----",
-        "subsection Discretization", "  set Refinement cycles = 1", "end",
-        "subsection Mesh", *mesh, f"  set Global refinements = {refinements}", "end",
+        "subsection Discretization", *discretization, "end",
+        "subsection Mesh", *mesh, "end", *adaptivity,
         "subsection Materials", f"  set Materials = {materials}", "end",
         "subsection Interfaces", f"  set Interfaces = 5: {case['interface']}", "end",
         "subsection Rigid foundation", "  set Stiffness coefficients = true", *rigid, "end",
         "subsection Output", f"  set Directory = {directory}", "  set Results file = results.csv",
-        "  set Write vtu = false", "end",
+        "  set Write vtu = false", "  set Write interface tractions = false", "end",
     ]
     return template_text.rstrip("\n") + "\n" + "\n".join(lines) + "\n"
 
 
 def read_results(path):
+    """The last cycle's rows, and the computation summed over every cycle."""
     last = {}
     with open(path) as f:
         rows = list(csv.DictReader(f))
@@ -175,7 +230,25 @@ def read_results(path):
     for r in rows:
         if int(r["cycle"]) == cycle:
             last[r["quantity"]] = float(r["value"])
+    last["seconds"] = sum(float(r["value"]) for r in rows if r["quantity"] in
+                          ("time_setup", "time_assembly", "time_interface_assembly",
+                           "time_solve", "time_postprocess"))
     return last
+
+
+def parse_targets(raw, path):
+    """'1e-4' (every interface) or 'rough: 1e-4, smooth: 1e-3'."""
+    targets = {}
+    for item in raw:
+        key, _, value = item.rpartition(":")
+        key = key.strip() or "*"
+        try:
+            targets[key] = float(value)
+        except ValueError:
+            sys.exit(f"{path}: target accuracy: '{item}' is not 'interface: value' or a number")
+        if not 0. < targets[key] < 1.:
+            sys.exit(f"{path}: target accuracy: '{item}' is not between 0 and 1")
+    return targets
 
 
 def main():
@@ -183,7 +256,8 @@ def main():
     ap.add_argument("sweep")
     ap.add_argument("--exe", default=os.path.join(ROOT, "build/fourier-ssi"))
     ap.add_argument("--out", default=os.path.join(ROOT, "output/sweeps"))
-    ap.add_argument("--refinements", type=int, default=1)
+    ap.add_argument("--refinements", type=int, default=1,
+                    help="global refinements of each case (without 'target accuracy')")
     ap.add_argument("--mpi", type=int, default=0, metavar="N",
                     help="run all cases in one 'mpirun -np N fourier-ssi --batch' call")
     ap.add_argument("--mpirun", default="mpirun",
@@ -201,6 +275,7 @@ def main():
     scene = sw.get("scene", [None])[0] or ("pile" if "l/d" in sw else "footing")
     if scene not in ("footing", "pile"):
         sys.exit(f"{args.sweep}: scene must be footing or pile")
+    targets = parse_targets(sw["target accuracy"], args.sweep) if "target accuracy" in sw else None
     geo = ["e/a"] if scene == "footing" else ["L/d", "Ep/Es"]
     keys = ["interface", "nu"] + geo + ["alpha"]
     defaults = {"interface": ["rough"], "nu": ["0.25"], "alpha": ["0"], "e/a": ["1"],
@@ -213,6 +288,11 @@ def main():
                 if v not in ("rough", "smooth"):
                     sys.exit(f"{args.sweep}: interface must be rough or smooth, not '{v}'")
             values[k] = raw
+        elif k == "Ep/Es":
+            try:
+                values[k] = [RIGID if v.lower() == RIGID else float(v) for v in raw]
+            except ValueError:
+                sys.exit(f"{args.sweep}: Ep/Es must be numbers or 'rigid'")
         else:
             vals = [float(v) for v in raw]
             if k == "nu":
@@ -220,82 +300,102 @@ def main():
                     print("note: nu = 0.5 replaced by 0.49 (the operator needs nu < 0.5)")
                 vals = [0.49 if v >= 0.5 else v for v in vals]
             values[k] = vals
-    unknown = set(sw) - {"template", "figure family", "scene"} - {k.lower() for k in keys}
+    unknown = (set(sw) - {"template", "figure family", "scene", "target accuracy"}
+               - {k.lower() for k in keys})
     if unknown:
         sys.exit(f"{args.sweep}: unknown or not applicable entries for the {scene}: "
                  + ", ".join(sorted(unknown)))
+    if targets is not None:
+        for interface in values["interface"]:
+            if interface not in targets and "*" not in targets:
+                sys.exit(f"{args.sweep}: target accuracy: no value for the {interface} interface")
+
+    def target_of(case):
+        if targets is None:
+            return None
+        return targets.get(case["interface"], targets.get("*"))
 
     cases = [dict(zip(keys, combo)) for combo in itertools.product(*(values[k] for k in keys))]
     col = {"e/a": "e_over_a", "L/d": "L_over_d", "Ep/Es": "Ep_over_Es"}
-    fields = [col.get(k, k) for k in keys] + ["K_H", "K_M", "K_MH", "I_H", "I_M", "I_MH",
-                                             "I_MH_asym", "dofs", "seconds"]
+    fields = ([col.get(k, k) for k in keys] +
+              ["K_H", "K_H_error", "K_M", "K_M_error", "K_MH", "K_MH_error", "converged",
+               "target", "I_H", "I_M", "I_MH", "I_MH_asym", "dofs", "seconds"])
     os.makedirs(args.out, exist_ok=True)
-    csv_path = os.path.join(args.out, family + ".csv")
     work = tempfile.mkdtemp(prefix="sweep-")
-    if args.dry_run:
-        print(prm_text(template_text, scene, cases[0], args.refinements, os.path.join(work, "c")))
-        shutil.rmtree(work)
-        return 0
-    t_all = time.time()
-
-    def label_of(case):
-        return " ".join(f"{k}={case[k]:g}" for k in keys[1:]) + f" {case['interface']}"
 
     def paths(i):
         out = os.path.join(work, f"case{i}")
         return out, out + ".prm"
 
-    batch_failed = None
+    for i, case in enumerate(cases, 1):
+        out, prm = paths(i)
+        with open(prm, "w") as f:
+            f.write(prm_text(template_text, scene, case, args.refinements, out, target_of(case)))
+    if args.dry_run:
+        print(open(paths(1)[1]).read())
+        shutil.rmtree(work)
+        return 0
+
+    # Every case in one process (or one MPI job): the executable runs them
+    # one after the other, without a start-up per case.
+    t_all = time.time()
+    cmd = [args.exe, "--batch", "--csv", os.path.join(work, "batch.csv")]
     if args.mpi > 0:
-        # All cases in one MPI job: the executable deals them to the ranks.
-        for i, case in enumerate(cases, 1):
-            out, prm = paths(i)
-            with open(prm, "w") as f:
-                f.write(prm_text(template_text, scene, case, args.refinements, out))
-        cmd = args.mpirun.split() + ["-np", str(args.mpi), args.exe, "--batch",
-                                     "--csv", os.path.join(work, "batch.csv")]
-        cmd += [paths(i)[1] for i in range(1, len(cases) + 1)]
-        p = subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-        if p.returncode != 0:
-            batch_failed = p.stderr.strip()
-    with open(csv_path, "w", newline="") as fcsv:
-        w = csv.DictWriter(fcsv, fieldnames=fields)
-        w.writeheader()
-        for i, case in enumerate(cases, 1):
-            out, prm = paths(i)
-            label = label_of(case)
-            if args.mpi > 0:
-                if not os.path.exists(os.path.join(out, "results.csv")):
-                    sys.exit(f"case {i}/{len(cases)}: {label}: failed ({batch_failed}); "
-                             f"prm kept in {prm}")
-                res = read_results(os.path.join(out, "results.csv"))
-                dt = sum(res.get(t, 0.0) for t in ("time_setup", "time_assembly", "time_solve"))
-            else:
-                with open(prm, "w") as f:
-                    f.write(prm_text(template_text, scene, case, args.refinements, out))
-                t0 = time.time()
-                p = subprocess.run([args.exe, prm], stdout=subprocess.DEVNULL,
-                                   stderr=subprocess.PIPE, text=True)
-                dt = time.time() - t0
-                if p.returncode != 0:
-                    sys.exit(f"case {i}/{len(cases)}: {label}: failed ({p.stderr.strip()}); prm kept in {prm}")
-                res = read_results(os.path.join(out, "results.csv"))
-            i_mh = 0.5 * (res["I_MH_from_H"] + res["I_MH_from_M"])
-            asym = abs(res["I_MH_from_H"] - res["I_MH_from_M"]) / max(abs(i_mh), 1e-300)
-            row = {col.get(k, k): case[k] for k in keys}
-            row.update(K_H=f"{res['K_H']:.6g}", K_M=f"{res['K_M']:.6g}", K_MH=f"{res['K_MH']:.6g}",
-                       I_H=f"{res['I_H']:.6g}", I_M=f"{res['I_M']:.6g}", I_MH=f"{i_mh:.6g}",
-                       I_MH_asym=f"{asym:.2e}", dofs=int(res["n_dofs"]), seconds=f"{dt:.2f}")
-            w.writerow(row)
-            fcsv.flush()
-            print(f"case {i}/{len(cases)}: {label}: K_H={res['K_H']:.4g} K_M={res['K_M']:.4g} "
-                  f"K_MH={res['K_MH']:.4g} ({dt:.1f} s)", flush=True)
-            shutil.rmtree(out, ignore_errors=True)
-            os.remove(prm)
+        cmd = args.mpirun.split() + ["-np", str(args.mpi)] + cmd
+    with open(os.path.join(work, "cases.txt"), "w") as f:
+        f.write("\n".join(paths(i)[1] for i in range(1, len(cases) + 1)) + "\n")
+    p = subprocess.run(cmd + [os.path.join(work, "cases.txt")], stdout=subprocess.DEVNULL,
+                       stderr=subprocess.PIPE, text=True)
+    wall = time.time() - t_all
+    batch_failed = p.stderr.strip() if p.returncode != 0 else None
+
+    # Rigid piles in their own family: a rigid pile is another body, not a
+    # point of the flexible curves.
+    files = {}
+    for name in sorted({family + ("-rigid" if case.get("Ep/Es") == RIGID else "")
+                        for case in cases}):
+        f = open(os.path.join(args.out, name + ".csv"), "w", newline="")
+        files[name] = (f, csv.DictWriter(f, fieldnames=fields))
+        files[name][1].writeheader()
+    worst = 0.
+    for i, case in enumerate(cases, 1):
+        out, prm = paths(i)
+        label = " ".join(f"{k}={case[k]:g}" if k != "Ep/Es" or case[k] != RIGID else f"{k}=rigid"
+                         for k in keys[1:]) + f" {case['interface']}"
+        if not os.path.exists(os.path.join(out, "results.csv")):
+            sys.exit(f"case {i}/{len(cases)}: {label}: failed ({batch_failed}); "
+                     f"prm kept in {prm}")
+        res = read_results(os.path.join(out, "results.csv"))
+        i_mh = 0.5 * (res["I_MH_from_H"] + res["I_MH_from_M"])
+        asym = abs(res["I_MH_from_H"] - res["I_MH_from_M"]) / max(abs(i_mh), 1e-300)
+        row = {col.get(k, k): case[k] if isinstance(case[k], str) else f"{case[k]:g}"
+               for k in keys}
+        row.update(K_H=f"{res['K_H']:.8g}", K_M=f"{res['K_M']:.8g}", K_MH=f"{res['K_MH']:.8g}",
+                   I_H=f"{res['I_H']:.8g}", I_M=f"{res['I_M']:.8g}", I_MH=f"{i_mh:.8g}",
+                   I_MH_asym=f"{asym:.2e}", dofs=int(res["n_dofs"]),
+                   seconds=f"{res['seconds']:.2f}")
+        for q in ("K_H", "K_M", "K_MH"):
+            e = res.get(q + "_error", float("nan"))
+            row[q + "_error"] = f"{e:.2e}"
+            if e == e:
+                worst = max(worst, e)
+        target = target_of(case)
+        row["target"] = f"{target:g}" if target else ""
+        row["converged"] = int(res.get("target_accuracy_reached", 0)) if target else ""
+        name = family + ("-rigid" if case.get("Ep/Es") == RIGID else "")
+        files[name][1].writerow(row)
+        print(f"case {i}/{len(cases)}: {label}: K_H={res['K_H']:.6g} K_M={res['K_M']:.6g} "
+              f"K_MH={res['K_MH']:.6g} (largest error {max(res.get(q + '_error', 0.) for q in ('K_H', 'K_M', 'K_MH')):.1e}, "
+              f"{res['dofs'] if 'dofs' in res else int(res['n_dofs'])} DoFs, {res['seconds']:.2f} s)",
+              flush=True)
+    for f, _ in files.values():
+        f.close()
     if batch_failed is not None:
-        sys.exit(f"mpirun --batch failed: {batch_failed}")
+        sys.exit(f"fourier-ssi --batch failed: {batch_failed}")
     shutil.rmtree(work, ignore_errors=True)
-    print(f"{len(cases)} cases in {time.time() - t_all:.0f} s -> {csv_path}")
+    print(f"{len(cases)} cases in {wall:.1f} s wall (one --batch process"
+          f"{'' if args.mpi <= 0 else f' on {args.mpi} ranks'}); largest estimated error "
+          f"{worst:.1e} -> " + ", ".join(os.path.join(args.out, n + ".csv") for n in files))
     return 0
 
 
