@@ -313,8 +313,9 @@ namespace FourierSSI
     pattern_solution.clear();
     for (unsigned int h = 0; h < set.size(); ++h)
       pattern_solution.push_back(
-        set.owns(h) ? b[h][0] :
-                      Vector<double>(set.problem(h).get_dof_handler().n_dofs()));
+        set.owns(h) ?
+          b[h][0] :
+          Vector<double>(set.problem(h).get_dof_handler().n_dofs()));
     pattern_relative = relative_displacements(pattern_solution);
     if (settings.control == NonlinearInterfaceParameters::Control::displacement)
       {
@@ -340,7 +341,7 @@ namespace FourierSSI
     std::vector<double> amplitudes(points.size() * 3 * H, 0.);
     for (unsigned int i = 0; i < points.size(); ++i)
       {
-        const InterfacePoint &point     = points[i];
+        const InterfacePoint &point        = points[i];
         double *const         amplitude[3] = {&amplitudes[(i * 3 + 0) * H],
                                               &amplitudes[(i * 3 + 1) * H],
                                               &amplitudes[(i * 3 + 2) * H]};
@@ -380,9 +381,9 @@ namespace FourierSSI
                     amplitudes.begin() + (i * 3 + c + 1) * H,
                     amplitude.begin());
           sampling.evaluate(amplitude,
-                              c == 2 ? ThetaFactor::circumferential :
-                                       ThetaFactor::in_plane,
-                              samples);
+                            c == 2 ? ThetaFactor::circumferential :
+                                     ThetaFactor::in_plane,
+                            samples);
           for (unsigned int j = 0; j < N; ++j)
             result[i * N + j][c] = samples[j];
         }
@@ -684,11 +685,12 @@ namespace FourierSSI
     state.interface_solution = state.correction_solution;
     if (settings.control == NonlinearInterfaceParameters::Control::displacement)
       {
-        const unsigned int h    = controlled_harmonic();
-        state.controlled_motion = from_owner(
-          h,
-          set.owns(h) ? controlled_motion_of(h, state.correction_solution[h]) :
-                        0.);
+        const unsigned int h = controlled_harmonic();
+        state.controlled_motion =
+          from_owner(h,
+                     set.owns(h) ?
+                       controlled_motion_of(h, state.correction_solution[h]) :
+                       0.);
       }
   }
 
@@ -926,11 +928,8 @@ namespace FourierSSI
     u.sadd(committed.load_factor, 1., committed.correction_solution[i]);
     if (set.n_owning_ranks() > 1)
       {
-        const int ierr = MPI_Bcast(u.begin(),
-                                   u.size(),
-                                   MPI_DOUBLE,
-                                   set.owner(i),
-                                   set.get_ranks());
+        const int ierr = MPI_Bcast(
+          u.begin(), u.size(), MPI_DOUBLE, set.owner(i), set.get_ranks());
         AssertThrowMPI(ierr);
       }
     return u;
@@ -946,9 +945,9 @@ namespace FourierSSI
         << " harmonics";
     if (set.n_owning_ranks() > 1)
       log << " distributed over " << set.n_owning_ranks() << " MPI ranks";
-    log << ", " << (load_control ? "load" : "displacement")
-        << " control, " << settings.load_steps << " steps, tolerance "
-        << settings.tolerance << name_of(settings);
+    log << ", " << (load_control ? "load" : "displacement") << " control, "
+        << settings.load_steps << " steps, tolerance " << settings.tolerance
+        << name_of(settings);
     if (!candidates.empty())
       log << ", harmonics grow up to n = " << settings.maximum_harmonic
           << " where the interface traction calls for them (tolerance "

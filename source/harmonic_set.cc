@@ -156,6 +156,8 @@ namespace FourierSSI
     AssertThrow(!uses_distributed_solve(parameters.solver, communicator),
                 ExcMessage("HarmonicSet::distribute_over: the harmonics' "
                            "systems must be serial (MPI_COMM_SELF)"));
+    if (!Utilities::MPI::job_supports_mpi())
+      return; // a serial run: one rank, every harmonic its own
     ranks   = communicator_of_ranks;
     n_ranks = Utilities::MPI::n_mpi_processes(ranks);
     rank    = Utilities::MPI::this_mpi_process(ranks);

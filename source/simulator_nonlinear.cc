@@ -76,13 +76,21 @@ namespace FourierSSI
     Timer timer;
     // Every rank owns some harmonics, serial systems (MPI_COMM_SELF), and
     // shares the cores of its node with the other ranks.
-    const unsigned int n_ranks = Utilities::MPI::n_mpi_processes(communicator);
+    // (A serial run does not start MPI: no communicator to ask.)
+    const unsigned int n_ranks =
+      Utilities::MPI::job_supports_mpi() ?
+        Utilities::MPI::n_mpi_processes(communicator) :
+        1;
     const unsigned int threads =
       parameters.discretization.concurrent_harmonics > 0 ?
         parameters.discretization.concurrent_harmonics :
         std::max(1u, MultithreadInfo::n_cores() / n_ranks);
-    harmonic_set = std::make_unique<HarmonicSet>(
-      parameters, plan.harmonics, triangulation, plan.loads, MPI_COMM_SELF, threads);
+    harmonic_set = std::make_unique<HarmonicSet>(parameters,
+                                                 plan.harmonics,
+                                                 triangulation,
+                                                 plan.loads,
+                                                 MPI_COMM_SELF,
+                                                 threads);
     harmonic_set->distribute_over(communicator);
     harmonic_set->setup_and_assemble();
     harmonic_set->factorize();

@@ -132,10 +132,9 @@ main(int argc, char **argv)
   try
     {
       using coupled_test::with_entry;
-      std::string pile =
-        test_support::bundled_prm("prm/pile-lateral-slip.prm");
-      pile = with_entry(pile, "Target", "0.02");
-      pile = with_entry(pile, "Load steps", "4");
+      std::string pile = test_support::bundled_prm("prm/pile-lateral-slip.prm");
+      pile             = with_entry(pile, "Target", "0.02");
+      pile             = with_entry(pile, "Load steps", "4");
       compare("pile", pile, false, root);
       std::string disc = test_support::bundled_prm("prm/disc-gap.prm");
       disc             = with_entry(disc, "Harmonics", "1");
