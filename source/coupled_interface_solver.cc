@@ -395,13 +395,18 @@ namespace FourierSSI
   {
     if (set.n_owning_ranks() > 1)
       {
-        const int ierr = MPI_Allreduce(MPI_IN_PLACE,
+        const auto start = std::chrono::steady_clock::now();
+        const int  ierr  = MPI_Allreduce(MPI_IN_PLACE,
                                        values.data(),
                                        values.size(),
                                        MPI_DOUBLE,
                                        MPI_SUM,
                                        set.get_ranks());
         AssertThrowMPI(ierr);
+        ++n_exchanges;
+        exchange_time += std::chrono::duration<double>(
+                           std::chrono::steady_clock::now() - start)
+                           .count();
       }
   }
 
@@ -1010,6 +1015,10 @@ namespace FourierSSI
             << result.states[1] << '/' << result.states[2] << "; "
             << result.n_harmonics << " harmonics\n";
       }
+    if (set.n_owning_ranks() > 1)
+      log << "  MPI: " << n_exchanges << " sums over the ranks ("
+          << "one per iteration, a few per step), " << exchange_time
+          << " s in them on rank 0 (computing or waiting for the others)\n";
   }
 
 } // namespace FourierSSI

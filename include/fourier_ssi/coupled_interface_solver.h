@@ -358,6 +358,13 @@ namespace FourierSSI
     StepState                      committed;
     std::vector<LoadStepResult>    steps;
     std::vector<InterfaceSnapshot> snapshots;
+    /**
+     * Collectives of sum_over_ranks (one per iteration, a few per step) and
+     * the wall time spent in them on this rank [s]: the cost of keeping the
+     * ranks in step, logged at the end of run().
+     */
+    mutable unsigned int n_exchanges   = 0;
+    mutable double       exchange_time = 0.;
   };
 } // namespace FourierSSI
 
