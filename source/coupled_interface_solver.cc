@@ -297,23 +297,31 @@ namespace FourierSSI
   void
   CoupledInterfaceSolver::solve_load_pattern()
   {
+    // Each rank solves the harmonics it owns; the others' fields stay zero
+    // here (never read: their amplitudes come from their owners).
     std::vector<std::vector<Vector<double>>> b(set.size());
-    double                                   norm_sqr = 0.;
+    std::vector<double>                      norm_sqr = {0.};
     for (unsigned int h = 0; h < set.size(); ++h)
-      {
-        b[h] = {set.problem(h).get_system_rhs()};
-        norm_sqr += b[h][0].norm_sqr();
-      }
-    pattern_load_norm = std::sqrt(norm_sqr);
+      if (set.owns(h))
+        {
+          b[h] = {set.problem(h).get_system_rhs()};
+          norm_sqr[0] += b[h][0].norm_sqr();
+        }
+    sum_over_ranks(norm_sqr);
+    pattern_load_norm = std::sqrt(norm_sqr[0]);
     set.solve_increments(b);
     pattern_solution.clear();
     for (unsigned int h = 0; h < set.size(); ++h)
-      pattern_solution.push_back(b[h][0]);
+      pattern_solution.push_back(
+        set.owns(h) ?
+          b[h][0] :
+          Vector<double>(set.problem(h).get_dof_handler().n_dofs()));
     pattern_relative = relative_displacements(pattern_solution);
     if (settings.control == NonlinearInterfaceParameters::Control::displacement)
       {
         const unsigned int h = controlled_harmonic();
-        pattern_motion       = controlled_motion_of(h, pattern_solution[h]);
+        pattern_motion       = from_owner(
+          h, set.owns(h) ? controlled_motion_of(h, pattern_solution[h]) : 0.);
         AssertThrow(pattern_motion != 0.,
                     ExcMessage(entry +
                                "/Controlled motion: the Rigid foundation "
@@ -326,16 +334,21 @@ namespace FourierSSI
   CoupledInterfaceSolver::relative_displacements(
     const std::vector<Vector<double>> &fields) const
   {
-    const unsigned int       N = sampling.n_samples(), H = set.size();
-    std::vector<LocalVector> result(points.size() * N, {{0., 0., 0.}});
-    std::vector<double>      amplitude[3], samples;
+    const unsigned int N = sampling.n_samples(), H = set.size();
+    // 1. The amplitudes of (d_s, d_n, d_theta) at every point, index
+    //    (i * 3 + c) * H + h, of the harmonics this rank owns (zero for the
+    //    others).
+    std::vector<double> amplitudes(points.size() * 3 * H, 0.);
     for (unsigned int i = 0; i < points.size(); ++i)
       {
-        const InterfacePoint &point = points[i];
-        for (auto &a : amplitude)
-          a.assign(H, 0.);
+        const InterfacePoint &point        = points[i];
+        double *const         amplitude[3] = {&amplitudes[(i * 3 + 0) * H],
+                                              &amplitudes[(i * 3 + 1) * H],
+                                              &amplitudes[(i * 3 + 2) * H]};
         for (unsigned int h = 0; h < H; ++h)
           {
+            if (!set.owns(h))
+              continue;
             const InterfacePair &pair =
               interfaces_of(set.problem(h)).get_pairs()[point.pair];
             const unsigned int n_nodes = pair.nodes.size();
@@ -353,17 +366,72 @@ namespace FourierSSI
                 amplitude[2][h] += N_k * jump[2];
               }
           }
-        for (unsigned int c = 0; c < 3; ++c)
-          {
-            sampling.evaluate(amplitude[c],
-                              c == 2 ? ThetaFactor::circumferential :
-                                       ThetaFactor::in_plane,
-                              samples);
-            for (unsigned int j = 0; j < N; ++j)
-              result[i * N + j][c] = samples[j];
-          }
       }
+    // 2. Every harmonic's amplitudes on every rank: the one collective of an
+    //    iteration. Each entry is non-zero on its owner only, so the sum is
+    //    exact and the same bits on every rank, whatever the reduction order.
+    sum_over_ranks(amplitudes);
+    // 3. The samples at every theta_j, summed over the harmonics.
+    std::vector<LocalVector> result(points.size() * N, {{0., 0., 0.}});
+    std::vector<double>      amplitude(H), samples;
+    for (unsigned int i = 0; i < points.size(); ++i)
+      for (unsigned int c = 0; c < 3; ++c)
+        {
+          std::copy(amplitudes.begin() + (i * 3 + c) * H,
+                    amplitudes.begin() + (i * 3 + c + 1) * H,
+                    amplitude.begin());
+          sampling.evaluate(amplitude,
+                            c == 2 ? ThetaFactor::circumferential :
+                                     ThetaFactor::in_plane,
+                            samples);
+          for (unsigned int j = 0; j < N; ++j)
+            result[i * N + j][c] = samples[j];
+        }
     return result;
+  }
+
+  void
+  CoupledInterfaceSolver::sum_over_ranks(std::vector<double> &values) const
+  {
+    if (set.n_owning_ranks() > 1)
+      {
+        const auto start = std::chrono::steady_clock::now();
+        const int  ierr  = MPI_Allreduce(MPI_IN_PLACE,
+                                       values.data(),
+                                       values.size(),
+                                       MPI_DOUBLE,
+                                       MPI_SUM,
+                                       set.get_ranks());
+        AssertThrowMPI(ierr);
+        ++n_exchanges;
+        exchange_time += std::chrono::duration<double>(
+                           std::chrono::steady_clock::now() - start)
+                           .count();
+      }
+  }
+
+  void
+  CoupledInterfaceSolver::from_owner(const unsigned int   h,
+                                     std::vector<double> &values) const
+  {
+    if (set.n_owning_ranks() > 1)
+      {
+        const int ierr = MPI_Bcast(values.data(),
+                                   values.size(),
+                                   MPI_DOUBLE,
+                                   set.owner(h),
+                                   set.get_ranks());
+        AssertThrowMPI(ierr);
+      }
+  }
+
+  double
+  CoupledInterfaceSolver::from_owner(const unsigned int h,
+                                     const double       value) const
+  {
+    std::vector<double> values = {value};
+    from_owner(h, values);
+    return values[0];
   }
 
   std::array<unsigned int, 3>
@@ -525,28 +593,31 @@ namespace FourierSSI
             }
         condensed[h].write.assign(write.begin(), write.end());
         condensed[h].read.assign(read.begin(), read.end());
-        condensed[h].flexibility.reinit(read.size(), write.size());
+        if (set.owns(h))
+          condensed[h].flexibility.reinit(read.size(), write.size());
         condensed[h].controlled_motion.assign(write.size(), 0.);
       }
     // 2. K^-1 e_j for every write DoF j, in batches (memory), every
-    //    harmonic concurrently with the kept factorizations.
+    //    harmonic this rank owns concurrently with the kept factorizations.
+    //    The number of batches is the same on every rank (solve_increments
+    //    is collective when the harmonics are distributed).
+    std::size_t n_write = 0;
+    for (unsigned int h = first; h < set.size(); ++h)
+      n_write = std::max(n_write, condensed[h].write.size());
     const unsigned int batch = 64;
-    for (unsigned int start = 0;; start += batch)
+    for (unsigned int start = 0; start < n_write; start += batch)
       {
         std::vector<std::vector<Vector<double>>> x(set.size());
-        bool                                     any = false;
         for (unsigned int h = first; h < set.size(); ++h)
-          for (unsigned int j = start;
-               j <
-               std::min<std::size_t>(start + batch, condensed[h].write.size());
-               ++j)
-            {
-              x[h].emplace_back(pattern_solution[h].size());
-              x[h].back()(condensed[h].write[j]) = 1.;
-              any                                = true;
-            }
-        if (!any)
-          break;
+          if (set.owns(h))
+            for (unsigned int j = start;
+                 j < std::min<std::size_t>(start + batch,
+                                           condensed[h].write.size());
+                 ++j)
+              {
+                x[h].emplace_back(pattern_solution[h].size());
+                x[h].back()(condensed[h].write[j]) = 1.;
+              }
         set.solve_increments(x);
         for (unsigned int h = first; h < set.size(); ++h)
           for (unsigned int k = 0; k < x[h].size(); ++k)
@@ -559,6 +630,10 @@ namespace FourierSSI
                   controlled_motion_of(h, x[h][k]);
             }
       }
+    // 3. The controlled motion of every column on every rank: the iteration
+    //    updates the motion (and so lambda) redundantly.
+    if (controlled >= first && controlled < set.size())
+      from_owner(controlled, condensed[controlled].controlled_motion);
   }
 
   std::vector<Vector<double>>
@@ -584,10 +659,13 @@ namespace FourierSSI
     for (unsigned int h = 0; h < set.size(); ++h)
       {
         const Condensation &c = condensed[h];
-        Vector<double>      dv_read(c.read.size());
-        c.flexibility.vmult(dv_read, dc_write[h]);
-        for (unsigned int i = 0; i < c.read.size(); ++i)
-          state.interface_solution[h](c.read[i]) += dv_read(i);
+        if (set.owns(h))
+          {
+            Vector<double> dv_read(c.read.size());
+            c.flexibility.vmult(dv_read, dc_write[h]);
+            for (unsigned int i = 0; i < c.read.size(); ++i)
+              state.interface_solution[h](c.read[i]) += dv_read(i);
+          }
         for (unsigned int j = 0; j < c.write.size(); ++j)
           {
             state.correction_load[h](c.write[j]) += dc_write[h](j);
@@ -601,10 +679,12 @@ namespace FourierSSI
   {
     std::vector<std::vector<Vector<double>>> x(set.size());
     for (unsigned int h = 0; h < set.size(); ++h)
-      x[h] = {state.correction_load[h]};
+      if (set.owns(h))
+        x[h] = {state.correction_load[h]};
     set.solve_increments(x);
     for (unsigned int h = 0; h < set.size(); ++h)
-      state.correction_solution[h] = x[h][0];
+      if (set.owns(h))
+        state.correction_solution[h] = x[h][0];
     // Restart the next step's condensed view from the exact field (no
     // accumulation of round-off over the steps).
     state.interface_solution = state.correction_solution;
@@ -612,7 +692,10 @@ namespace FourierSSI
       {
         const unsigned int h = controlled_harmonic();
         state.controlled_motion =
-          controlled_motion_of(h, state.correction_solution[h]);
+          from_owner(h,
+                     set.owns(h) ?
+                       controlled_motion_of(h, state.correction_solution[h]) :
+                       0.);
       }
   }
 
@@ -751,22 +834,28 @@ namespace FourierSSI
   RigidMotion
   CoupledInterfaceSolver::motion_of(const StepState &state) const
   {
-    RigidMotion total;
+    std::vector<double> total(4, 0.);
     for (unsigned int h = 0; h < set.size(); ++h)
       {
         const RigidFoundation *foundation = set.problem(h).get_foundation();
-        if (foundation == nullptr || harmonics[h].n > 1 ||
+        if (!set.owns(h) || foundation == nullptr || harmonics[h].n > 1 ||
             (harmonics[h].n == 1 && harmonics[h].family != Family::symmetric))
           continue;
         Vector<double> u = pattern_solution[h];
         u.sadd(state.load_factor, 1., state.correction_solution[h]);
         const RigidMotion m = foundation->motion(u);
-        total.vertical_displacement += m.vertical_displacement;
-        total.twist += m.twist;
-        total.horizontal_displacement += m.horizontal_displacement;
-        total.rotation += m.rotation;
+        total[0] += m.vertical_displacement;
+        total[1] += m.twist;
+        total[2] += m.horizontal_displacement;
+        total[3] += m.rotation;
       }
-    return total;
+    sum_over_ranks(total);
+    RigidMotion motion;
+    motion.vertical_displacement   = total[0];
+    motion.twist                   = total[1];
+    motion.horizontal_displacement = total[2];
+    motion.rotation                = total[3];
+    return motion;
   }
 
   std::vector<Harmonic>
@@ -842,6 +931,12 @@ namespace FourierSSI
   {
     Vector<double> u = pattern_solution[i];
     u.sadd(committed.load_factor, 1., committed.correction_solution[i]);
+    if (set.n_owning_ranks() > 1)
+      {
+        const int ierr = MPI_Bcast(
+          u.begin(), u.size(), MPI_DOUBLE, set.owner(i), set.get_ranks());
+        AssertThrowMPI(ierr);
+      }
     return u;
   }
 
@@ -852,9 +947,12 @@ namespace FourierSSI
       settings.control == NonlinearInterfaceParameters::Control::load;
     log << "nonlinear interfaces: " << points.size() << " points x "
         << sampling.n_samples() << " theta samples, " << set.size()
-        << " harmonics, " << (load_control ? "load" : "displacement")
-        << " control, " << settings.load_steps << " steps, tolerance "
-        << settings.tolerance << name_of(settings);
+        << " harmonics";
+    if (set.n_owning_ranks() > 1)
+      log << " distributed over " << set.n_owning_ranks() << " MPI ranks";
+    log << ", " << (load_control ? "load" : "displacement") << " control, "
+        << settings.load_steps << " steps, tolerance " << settings.tolerance
+        << name_of(settings);
     if (!candidates.empty())
       log << ", harmonics grow up to n = " << settings.maximum_harmonic
           << " where the interface traction calls for them (tolerance "
@@ -917,6 +1015,10 @@ namespace FourierSSI
             << result.states[1] << '/' << result.states[2] << "; "
             << result.n_harmonics << " harmonics\n";
       }
+    if (set.n_owning_ranks() > 1)
+      log << "  MPI: " << n_exchanges << " sums over the ranks ("
+          << "one per iteration, a few per step), " << exchange_time
+          << " s in them on rank 0 (computing or waiting for the others)\n";
   }
 
 } // namespace FourierSSI

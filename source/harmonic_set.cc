@@ -106,6 +106,8 @@ namespace FourierSSI
         for (auto &worker : workers)
           worker.join();
       }
+    if (n_ranks > 1)
+      agree_on_failure(errors, first);
     for (unsigned int i = first; i < size(); ++i)
       if (errors[i])
         try
@@ -121,18 +123,63 @@ namespace FourierSSI
   }
 
   void
+  HarmonicSet::agree_on_failure(const std::vector<std::exception_ptr> &errors,
+                                const unsigned int first) const
+  {
+    // The first failure in (harmonic, rank) order, found by one minimum;
+    // its rank sends the message. No failure: key = size() * n_ranks.
+    unsigned int key = size() * n_ranks;
+    for (unsigned int i = first; i < size() && key == size() * n_ranks; ++i)
+      if (errors[i])
+        key = i * n_ranks + rank;
+    key = Utilities::MPI::min(key, ranks);
+    if (key == size() * n_ranks)
+      return;
+    const unsigned int failed = key / n_ranks, sender = key % n_ranks;
+    std::string        message;
+    if (rank == sender)
+      try
+        {
+          std::rethrow_exception(errors[failed]);
+        }
+      catch (const std::exception &e)
+        {
+          message = one_line_message(e);
+        }
+    message = Utilities::MPI::broadcast(ranks, message, sender);
+    AssertThrow(false, ExcMessage(harmonics[failed].name() + ": " + message));
+  }
+
+  void
+  HarmonicSet::distribute_over(const MPI_Comm communicator_of_ranks)
+  {
+    AssertThrow(!uses_distributed_solve(parameters.solver, communicator),
+                ExcMessage("HarmonicSet::distribute_over: the harmonics' "
+                           "systems must be serial (MPI_COMM_SELF)"));
+    if (!Utilities::MPI::job_supports_mpi())
+      return; // a serial run: one rank, every harmonic its own
+    ranks   = communicator_of_ranks;
+    n_ranks = Utilities::MPI::n_mpi_processes(ranks);
+    rank    = Utilities::MPI::this_mpi_process(ranks);
+  }
+
+  void
   HarmonicSet::setup_and_assemble()
   {
     for_each([this](const unsigned int i) {
       problems[i]->setup_system();
-      problems[i]->assemble_system();
+      if (owns(i))
+        problems[i]->assemble_system();
     });
   }
 
   void
   HarmonicSet::factorize()
   {
-    for_each([this](const unsigned int i) { problems[i]->factorize(); });
+    for_each([this](const unsigned int i) {
+      if (owns(i))
+        problems[i]->factorize();
+    });
   }
 
   void
@@ -142,8 +189,10 @@ namespace FourierSSI
     AssertThrow(b_to_x.size() == size(),
                 ExcMessage("HarmonicSet::solve_increments: one list of "
                            "loads per harmonic expected"));
-    for_each(
-      [&](const unsigned int i) { problems[i]->solve_increments(b_to_x[i]); });
+    for_each([&](const unsigned int i) {
+      if (owns(i))
+        problems[i]->solve_increments(b_to_x[i]);
+    });
   }
 
   void
@@ -158,8 +207,11 @@ namespace FourierSSI
       }
     for_each_from(first, [this](const unsigned int i) {
       problems[i]->setup_system();
-      problems[i]->assemble_system();
-      problems[i]->factorize();
+      if (owns(i))
+        {
+          problems[i]->assemble_system();
+          problems[i]->factorize();
+        }
     });
   }
 

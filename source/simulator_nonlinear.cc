@@ -1,6 +1,7 @@
 // The driver's path for scenes with nonlinear (coulomb) interfaces: the
 // harmonics are coupled through theta, so they are solved together by
 // CoupledInterfaceSolver on one HarmonicSet (doc/nonlinear-interfaces.md).
+#include <deal.II/base/multithread_info.h>
 #include <deal.II/base/timer.h>
 #include <fourier_ssi/command_line.h>
 #include <fourier_ssi/coupled_interface_solver.h>
@@ -20,10 +21,16 @@ namespace FourierSSI
       AssertThrow(parameters.discretization.refinement_cycles == 1,
                   ExcMessage(entry + ": not yet: Discretization/Refinement "
                                      "cycles > 1 with a coulomb interface"));
-      AssertThrow(!uses_distributed_solve(parameters.solver, comm),
-                  ExcMessage(entry + ": not yet: a distributed solve (MPI "
-                                     "ranks or Distributed = always) with a "
-                                     "coulomb interface"));
+      // Under mpirun the harmonics are distributed over the ranks (each
+      // harmonic's system serial); one harmonic's system over several ranks
+      // is the other kind of distribution.
+      (void)comm;
+      AssertThrow(!parameters.solver.distributed_always,
+                  ExcMessage(entry + ": not yet: Linear solver/Distributed = "
+                                     "always (a harmonic's system over "
+                                     "several ranks) with a coulomb "
+                                     "interface; under mpirun the harmonics "
+                                     "are distributed over the ranks"));
       AssertThrow(!parameters.rigid_foundation.stiffness_coefficients,
                   ExcMessage(entry + ": Rigid foundation/Stiffness "
                                      "coefficients are linear quantities; "
@@ -67,17 +74,40 @@ namespace FourierSSI
   {
     check_supported(parameters, communicator);
     Timer timer;
-    harmonic_set = std::make_unique<HarmonicSet>(
-      parameters,
-      plan.harmonics,
-      triangulation,
-      plan.loads,
-      communicator,
-      parameters.discretization.concurrent_harmonics);
+    // Every rank owns some harmonics, serial systems (MPI_COMM_SELF), and
+    // shares the cores of its node with the other ranks.
+    // (A serial run does not start MPI: no communicator to ask.)
+    const unsigned int n_ranks =
+      Utilities::MPI::job_supports_mpi() ?
+        Utilities::MPI::n_mpi_processes(communicator) :
+        1;
+    const unsigned int threads =
+      parameters.discretization.concurrent_harmonics > 0 ?
+        parameters.discretization.concurrent_harmonics :
+        std::max(1u, MultithreadInfo::n_cores() / n_ranks);
+    harmonic_set = std::make_unique<HarmonicSet>(parameters,
+                                                 plan.harmonics,
+                                                 triangulation,
+                                                 plan.loads,
+                                                 MPI_COMM_SELF,
+                                                 threads);
+    harmonic_set->distribute_over(communicator);
     harmonic_set->setup_and_assemble();
     harmonic_set->factorize();
     log << "assembled and factorized " << harmonic_set->size()
         << " harmonics in " << timer.wall_time() << " s" << std::endl;
+    if (n_ranks > 1)
+      {
+        log << "harmonics distributed over " << n_ranks << " MPI ranks:";
+        for (unsigned int r = 0; r < n_ranks; ++r)
+          {
+            log << (r == 0 ? " rank " : "; rank ") << r;
+            for (unsigned int h = 0; h < harmonic_set->size(); ++h)
+              if (harmonic_set->owner(h) == r)
+                log << ' ' << harmonic_set->harmonic(h).name();
+          }
+        log << std::endl;
+      }
     CoupledInterfaceSolver solver(*harmonic_set, parameters);
     const std::string      directory = parameters.output.directory;
     try

@@ -62,8 +62,8 @@ set_tests_properties(program_disc_gap PROPERTIES
   PASS_REGULAR_EXPRESSION "load-displacement curve written to")
 
 # A load step that does not converge: one line naming Nonlinear interfaces,
-# non-zero exit, no result file. Serial only (not a bad_*.prm: under mpirun
-# the coupled solve stops earlier with its "not yet: distributed" line).
+# non-zero exit, no result file. Not a bad_*.prm (those also run under
+# mpirun): its 2-rank variant is tests/mpi/ mpi_input_nonconverging_coulomb_step.
 add_test(NAME input_nonconverging_coulomb_step
   COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi>
           -DPRM=${CMAKE_CURRENT_SOURCE_DIR}/prm/nonconverging_coulomb_step.prm

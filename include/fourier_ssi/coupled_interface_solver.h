@@ -28,6 +28,13 @@
  * amplitude in the interface traction has not decayed below Harmonic
  * tolerance are added to the set after a converged step (HarmonicSet::add)
  * and the step is solved again.
+ * Under mpirun the harmonics are distributed over the ranks
+ * (HarmonicSet::distribute_over): each rank owns some harmonics, their
+ * factorizations and flexibility blocks, and an iteration exchanges once
+ * (one MPI_Allreduce) the interface amplitudes of every harmonic at the
+ * Gauss points; each amplitude is non-zero on its owner only, so the sum is
+ * exact and every rank samples, return-maps, accelerates and decides on
+ * bitwise the same numbers (the decisions cannot diverge).
  * Load control scales the scene's loads by lambda; displacement control
  * chooses lambda in every iteration so that one rigid-foundation motion
  * equals its target (needed past the peak). A step that does not converge is
@@ -143,7 +150,11 @@ namespace FourierSSI
     void
     write_interface_state_vtu(const std::string &filename) const;
 
-    /** Total displacement amplitudes of harmonic i (last converged state). */
+    /**
+     * Total displacement amplitudes of harmonic i (last converged state).
+     * Collective when the harmonics are distributed over ranks: every rank
+     * calls it for the same i and gets the owner's field.
+     */
     Vector<double>
     solution(const unsigned int i) const;
 
@@ -238,9 +249,24 @@ namespace FourierSSI
     void
     solve_load_pattern();
 
-    /** Relative displacement samples (points x N) of fields per harmonic. */
+    /**
+     * Relative displacement samples (points x N) of fields per harmonic:
+     * the amplitudes of the harmonics this rank owns, summed over the
+     * ranks (the one collective of an iteration), then sampled in theta.
+     */
     std::vector<LocalVector>
     relative_displacements(const std::vector<Vector<double>> &fields) const;
+
+    /** values := their sum over the ranks (in place; one rank: as is). */
+    void
+    sum_over_ranks(std::vector<double> &values) const;
+
+    /** The owner's copy of values of harmonic h on every rank. */
+    void
+    from_owner(const unsigned int h, std::vector<double> &values) const;
+
+    double
+    from_owner(const unsigned int h, const double value) const;
 
     /**
      * Return mapping everywhere from the committed state; fills plastic,
@@ -332,6 +358,13 @@ namespace FourierSSI
     StepState                      committed;
     std::vector<LoadStepResult>    steps;
     std::vector<InterfaceSnapshot> snapshots;
+    /**
+     * Collectives of sum_over_ranks (one per iteration, a few per step) and
+     * the wall time spent in them on this rank [s]: the cost of keeping the
+     * ranks in step, logged at the end of run().
+     */
+    mutable unsigned int n_exchanges   = 0;
+    mutable double       exchange_time = 0.;
   };
 } // namespace FourierSSI
 

@@ -9,6 +9,11 @@
  * them runs concurrently on threads; a distributed solve (MPI ranks, or
  * `Linear solver/Distributed = always`) runs one harmonic at a time, since
  * collective calls must not interleave on one communicator.
+ *
+ * A solve that couples harmonics under mpirun (CoupledInterfaceSolver)
+ * distributes them instead: distribute_over() gives each rank its own
+ * harmonics (serial systems), which only it assembles, factorizes and
+ * solves (doc/nonlinear-interfaces.md section 5, "Under MPI").
  */
 #ifndef fourier_ssi_harmonic_set_h
 #define fourier_ssi_harmonic_set_h
@@ -16,6 +21,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/vector.h>
+#include <exception>
 #include <fourier_ssi/harmonic.h>
 #include <fourier_ssi/harmonic_problem.h>
 #include <fourier_ssi/load_decomposition.h>
@@ -124,6 +130,52 @@ namespace FourierSSI
     unsigned int
     n_factorizations() const;
 
+    /**
+     * Distribute the harmonics over the ranks of `ranks`: harmonic i (in
+     * the set's order, those added later included) belongs to rank
+     * i mod P. Every harmonic has the same mesh and element, so its
+     * factorization and its solves cost about the same: the count balances
+     * the cost, and a harmonic added later goes to a least-loaded rank.
+     * Every rank still sets up every harmonic (DoFs and constraints: what
+     * maps an interface force onto it); assembly, factorization and solves
+     * run on the owner only. The problems must be serial (constructed on
+     * MPI_COMM_SELF). From then on every call of for_each_from (and so
+     * setup_and_assemble, factorize, solve_increments, add) is collective
+     * over `ranks`: a harmonic failing on its owner fails on every rank
+     * with the same message, instead of leaving the others waiting. Call
+     * right after the constructor; with one rank it changes nothing.
+     */
+    void
+    distribute_over(const MPI_Comm ranks);
+
+    /** Does this rank assemble, factorize and solve harmonic i? */
+    bool
+    owns(const unsigned int i) const
+    {
+      return i % n_ranks == rank;
+    }
+
+    /** The rank that owns harmonic i. */
+    unsigned int
+    owner(const unsigned int i) const
+    {
+      return i % n_ranks;
+    }
+
+    /** The ranks the harmonics are distributed over (distribute_over()). */
+    MPI_Comm
+    get_ranks() const
+    {
+      return ranks;
+    }
+
+    /** Number of ranks the harmonics are distributed over (1: none). */
+    unsigned int
+    n_owning_ranks() const
+    {
+      return n_ranks;
+    }
+
   private:
     /** What a harmonic added later is built from (the constructor's). */
     const AllParameters     &parameters;
@@ -134,6 +186,15 @@ namespace FourierSSI
     std::vector<Harmonic>                         harmonics;
     std::vector<std::shared_ptr<HarmonicProblem>> problems;
     unsigned int                                  threads;
+    /** distribute_over(): the ranks, their number, this rank. */
+    MPI_Comm     ranks   = MPI_COMM_SELF;
+    unsigned int n_ranks = 1;
+    unsigned int rank    = 0;
+
+    /** Every rank throws the first failure of any rank (distributed). */
+    void
+    agree_on_failure(const std::vector<std::exception_ptr> &errors,
+                     const unsigned int                     first) const;
   };
 } // namespace FourierSSI
 

@@ -1,0 +1,144 @@
+#!/usr/bin/python3
+"""The bundled prm/disc-gap.prm (a coulomb interface, 9 harmonics, 4
+displacement steps) run as shipped by the program on 1 rank and under
+mpirun on 2 ranks (harmonics distributed over the ranks,
+doc/nonlinear-interfaces.md section 5 "Under MPI") with Write 3D vtu on:
+
+(1) both runs exit 0 and write load-displacement.csv, interface-state.csv,
+    results.csv, solution-3d.vtu and interface-state-3d.vtu once (rank 0:
+    no per-rank copies, the 2-rank log names the distribution);
+(2) the curves agree: every column of load-displacement.csv except the
+    iteration count, residual and wall time to 1e-7 relative to the largest
+    magnitude of its kind (forces and moments together, motions together:
+    a column that is round-off, like V here, is measured against the
+    load, not against itself; both runs converge to a force residual
+    below 1e-10 of the load; their iterates differ by round-off, amplified
+    by the open modes' conditioning: 1e-7 is three decades above the
+    iteration tolerance and far below a lost or doubled harmonic's share);
+    the stick/slip/open counts exactly;
+(3) the interface state (traction, relative displacement at every point,
+    theta sample and step) to the same 1e-7 of the largest traction resp.
+    relative displacement, the positions to 1e-7 of the largest, the states
+    exactly.
+Usage: coupled_output_same.py "MPIEXEC;-np;2;..." FOURIER_SSI_EXE SOURCE_DIR
+       WORK_DIR
+"""
+import csv
+import os
+import shutil
+import subprocess
+import sys
+
+TOLERANCE = 1e-7
+
+
+def run(command, directory, log):
+    result = subprocess.run(command, cwd=directory, capture_output=True,
+                            text=True, timeout=50)
+    with open(log, "w") as out:
+        out.write(result.stdout + result.stderr)
+    if result.returncode != 0:
+        sys.exit(f"FAIL {' '.join(command)}: exit {result.returncode}\n"
+                 f"{result.stdout}{result.stderr}")
+    return result.stdout
+
+
+def table(path):
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def compare(name, one, two, exact, skip, kinds):
+    """kinds: column -> its kind; the scale is the largest |value| of the
+    columns of that kind (a column of its own kind if not listed)."""
+    failures = 0
+    if len(one) != len(two):
+        print(f"  FAIL {name}: {len(two)} rows on 2 ranks, {len(one)} on 1")
+        return 1
+    largest = {}
+    for column in one[0].keys():
+        if column in skip or column in exact:
+            continue
+        kind = kinds.get(column, column)
+        largest[kind] = max(largest.get(kind, 0.),
+                            max(abs(float(a[column])) for a in one))
+    for column in one[0].keys():
+        if column in skip:
+            continue
+        if column in exact:
+            differ = sum(a[column] != b[column] for a, b in zip(one, two))
+            ok = differ == 0
+            print(f"  {'ok  ' if ok else 'FAIL'} {name} {column}: "
+                  f"{differ} rows differ (exact)")
+            failures += not ok
+            continue
+        x = [float(a[column]) for a in one]
+        y = [float(b[column]) for b in two]
+        scale = max(largest[kinds.get(column, column)], 1e-300)
+        error = max(abs(a - b) for a, b in zip(x, y)) / scale
+        ok = error <= TOLERANCE
+        print(f"  {'ok  ' if ok else 'FAIL'} {name} {column}: max difference "
+              f"{error:.2e} of the largest |value| of its kind {scale:.6g} "
+              f"(tol {TOLERANCE})")
+        failures += not ok
+    return failures
+
+
+def main():
+    mpiexec, exe, source, work = sys.argv[1].split(";"), *sys.argv[2:5]
+    shutil.rmtree(work, ignore_errors=True)
+    os.makedirs(work)
+    with open(os.path.join(source, "prm", "disc-gap.prm")) as f:
+        text = f.read()
+    outputs = {}
+    for ranks in (1, 2):
+        directory = os.path.join(work, f"ranks{ranks}")
+        os.makedirs(directory)
+        prm = os.path.join(directory, "disc-gap.prm")
+        with open(prm, "w") as f:
+            # A later subsection wins in deal.II's ParameterHandler.
+            f.write(text + "\nsubsection Output\n  set Directory = out\n"
+                    "  set Write 3D vtu = true\nend\n")
+        launcher = [] if ranks == 1 else mpiexec
+        log = run(launcher + [exe, prm], directory,
+                  os.path.join(directory, "log.txt"))
+        outputs[ranks] = os.path.join(directory, "out")
+        if ranks == 2 and "harmonics distributed over 2 MPI ranks" not in log:
+            sys.exit("FAIL the 2-rank log does not name the distribution")
+    failures = 0
+    expected = {"load-displacement.csv", "interface-state.csv",
+                "results.csv", "solution-3d.vtu", "interface-state-3d.vtu"}
+    for ranks, directory in outputs.items():
+        files = set(os.listdir(directory))
+        ok = files == expected
+        print(f"  {'ok  ' if ok else 'FAIL'} {ranks} rank(s) wrote "
+              f"{sorted(files)}")
+        failures += not ok
+    failures += compare("load-displacement.csv",
+                        table(os.path.join(outputs[1], "load-displacement.csv")),
+                        table(os.path.join(outputs[2], "load-displacement.csv")),
+                        exact={"step", "stick", "slip", "open", "harmonics",
+                               "converged"},
+                        skip={"iterations", "residual", "time_s"},
+                        kinds={"load_factor": "factor", "V_kN": "force",
+                               "H_kN": "force", "M_kNm": "force",
+                               "T_kNm": "force", "vertical_m": "motion",
+                               "horizontal_m": "motion",
+                               "rotation_rad": "motion",
+                               "twist_rad": "motion"})
+    failures += compare("interface-state.csv",
+                        table(os.path.join(outputs[1], "interface-state.csv")),
+                        table(os.path.join(outputs[2], "interface-state.csv")),
+                        exact={"step", "point", "state"}, skip=set(),
+                        kinds={"r_m": "position", "z_m": "position",
+                               "normal_r": "normal", "normal_z": "normal",
+                               "t_s_kPa": "traction", "t_n_kPa": "traction",
+                               "t_theta_kPa": "traction",
+                               "d_s_m": "relative", "d_n_m": "relative",
+                               "d_theta_m": "relative"})
+    print(f"{'FAILED' if failures else 'passed'}: {failures} failure(s)")
+    sys.exit(1 if failures else 0)
+
+
+if __name__ == "__main__":
+    main()
