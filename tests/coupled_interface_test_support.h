@@ -4,12 +4,9 @@
 #ifndef fourier_ssi_tests_coupled_interface_test_support_h
 #define fourier_ssi_tests_coupled_interface_test_support_h
 
-#include "test_support.h"
+#include "factorized_scene.h"
 
-#include <deal.II/grid/tria.h>
 #include <fourier_ssi/coupled_interface_solver.h>
-#include <fourier_ssi/harmonic_set.h>
-#include <fourier_ssi/scene_plan.h>
 #include <iostream>
 #include <regex>
 #include <string>
@@ -51,15 +48,10 @@ namespace coupled_test
   inline Curve
   run(const std::string &text, std::ostream &log = std::cout)
   {
-    const AllParameters parameters = test_support::parameters_from(text);
-    Triangulation<2>    triangulation;
-    parameters.mesh.build(triangulation);
-    const ScenePlan plan = plan_scene(parameters, triangulation);
-    HarmonicSet     set(
-      parameters, plan.harmonics, triangulation, plan.loads, MPI_COMM_SELF, 0);
-    set.setup_and_assemble();
-    set.factorize();
-    CoupledInterfaceSolver solver(set, parameters);
+    test_support::FactorizedScene scene(text);
+    const AllParameters          &parameters = scene.parameters;
+    HarmonicSet                  &set        = scene.set;
+    CoupledInterfaceSolver        solver(set, parameters);
     solver.run(log);
     Curve curve;
     for (const LoadStepResult &r : solver.get_steps())
@@ -87,20 +79,13 @@ namespace coupled_test
   inline double
   linear_lateral_slope(std::string text, const std::string &law)
   {
-    text                           = with_entry(text, "Interfaces", law);
-    text                           = with_entry(text, "Harmonics", "1");
-    const AllParameters parameters = test_support::parameters_from(text);
-    Triangulation<2>    triangulation;
-    parameters.mesh.build(triangulation);
-    const ScenePlan plan = plan_scene(parameters, triangulation);
-    HarmonicSet     set(
-      parameters, plan.harmonics, triangulation, plan.loads, MPI_COMM_SELF, 0);
-    set.setup_and_assemble();
-    set.factorize();
-    std::vector<std::vector<Vector<double>>> b = {
-      {set.problem(0).get_system_rhs()}};
-    set.solve_increments(b);
-    const RigidMotion m = set.problem(0).get_foundation()->motion(b[0][0]);
+    text = with_entry(text, "Interfaces", law);
+    text = with_entry(text, "Harmonics", "1");
+    test_support::FactorizedScene scene(text);
+    const AllParameters          &parameters = scene.parameters;
+    HarmonicSet                  &set        = scene.set;
+    const RigidMotion             m =
+      set.problem(0).get_foundation()->motion(scene.linear_solutions()[0]);
     return parameters.rigid_foundation.horizontal_force /
            m.horizontal_displacement;
   }

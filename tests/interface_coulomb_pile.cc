@@ -28,12 +28,9 @@
 //     iteration tolerance 1e-10 on the force residual, which is the only
 //     imbalance left).
 #include "check.h"
-#include "test_support.h"
+#include "factorized_scene.h"
 
-#include <deal.II/grid/tria.h>
 #include <fourier_ssi/coupled_interface_solver.h>
-#include <fourier_ssi/harmonic_set.h>
-#include <fourier_ssi/scene_plan.h>
 
 using namespace FourierSSI;
 
@@ -103,15 +100,10 @@ end
   Run
   run(const std::string &text)
   {
-    const AllParameters parameters = test_support::parameters_from(text);
-    Triangulation<2>    triangulation;
-    parameters.mesh.build(triangulation);
-    const ScenePlan plan = plan_scene(parameters, triangulation);
-    HarmonicSet     set(
-      parameters, plan.harmonics, triangulation, plan.loads, MPI_COMM_SELF, 0);
-    set.setup_and_assemble();
-    set.factorize();
-    CoupledInterfaceSolver solver(set, parameters);
+    test_support::FactorizedScene scene(text);
+    const AllParameters          &parameters = scene.parameters;
+    HarmonicSet                  &set        = scene.set;
+    CoupledInterfaceSolver        solver(set, parameters);
     solver.run(std::cout);
     Run result;
     result.steps = solver.get_steps();
@@ -126,22 +118,7 @@ end
   std::vector<Vector<double>>
   linear_solution(const std::string &text)
   {
-    const AllParameters parameters = test_support::parameters_from(text);
-    Triangulation<2>    triangulation;
-    parameters.mesh.build(triangulation);
-    const ScenePlan plan = plan_scene(parameters, triangulation);
-    HarmonicSet     set(
-      parameters, plan.harmonics, triangulation, plan.loads, MPI_COMM_SELF, 0);
-    set.setup_and_assemble();
-    set.factorize();
-    std::vector<std::vector<Vector<double>>> b(set.size());
-    for (unsigned int h = 0; h < set.size(); ++h)
-      b[h] = {set.problem(h).get_system_rhs()};
-    set.solve_increments(b);
-    std::vector<Vector<double>> x;
-    for (auto &v : b)
-      x.push_back(v[0]);
-    return x;
+    return test_support::FactorizedScene(text).linear_solutions();
   }
 
   double
@@ -187,16 +164,11 @@ end
     text.replace(text.find("set Harmonics         = 0"),
                  25,
                  "set Harmonics         = 0, 1, 2, 3");
-    const AllParameters parameters = test_support::parameters_from(text);
-    Triangulation<2>    triangulation;
-    parameters.mesh.build(triangulation);
-    const ScenePlan plan = plan_scene(parameters, triangulation);
-    HarmonicSet     set(
-      parameters, plan.harmonics, triangulation, plan.loads, MPI_COMM_SELF, 0);
-    set.setup_and_assemble();
-    set.factorize();
-    const CoupledInterfaceSolver solver(set, parameters);
-    std::vector<Vector<double>>  fields;
+    test_support::FactorizedScene scene(text);
+    const AllParameters          &parameters = scene.parameters;
+    HarmonicSet                  &set        = scene.set;
+    const CoupledInterfaceSolver  solver(set, parameters);
+    std::vector<Vector<double>>   fields;
     for (unsigned int h = 0; h < set.size(); ++h)
       {
         Vector<double> u(set.problem(h).get_dof_handler().n_dofs());

@@ -13,12 +13,9 @@
 //    Coulomb one lies between it and the bilateral bonded one (kn = ks);
 //  * equilibrium: the interface tractions balance the applied H to 1e-8.
 #include "check.h"
-#include "test_support.h"
+#include "factorized_scene.h"
 
-#include <deal.II/grid/tria.h>
 #include <fourier_ssi/coupled_interface_solver.h>
-#include <fourier_ssi/harmonic_set.h>
-#include <fourier_ssi/scene_plan.h>
 #include <regex>
 
 using namespace FourierSSI;
@@ -43,15 +40,10 @@ namespace
   Curve
   run(const std::string &text)
   {
-    const AllParameters parameters = test_support::parameters_from(text);
-    Triangulation<2>    triangulation;
-    parameters.mesh.build(triangulation);
-    const ScenePlan plan = plan_scene(parameters, triangulation);
-    HarmonicSet     set(
-      parameters, plan.harmonics, triangulation, plan.loads, MPI_COMM_SELF, 0);
-    set.setup_and_assemble();
-    set.factorize();
-    CoupledInterfaceSolver solver(set, parameters);
+    test_support::FactorizedScene scene(text);
+    const AllParameters          &parameters = scene.parameters;
+    HarmonicSet                  &set        = scene.set;
+    CoupledInterfaceSolver        solver(set, parameters);
     solver.run(std::cout);
     Curve curve;
     for (const LoadStepResult &step : solver.get_steps())
@@ -71,22 +63,15 @@ namespace
   double
   linear_stiffness(const std::string &law)
   {
-    std::string text            = with_law(law);
-    text                        = std::regex_replace(text,
+    std::string text = with_law(law);
+    text             = std::regex_replace(text,
                               std::regex("set Harmonics *= [^\n]*"),
                               "set Harmonics = 1");
-    AllParameters    parameters = test_support::parameters_from(text);
-    Triangulation<2> triangulation;
-    parameters.mesh.build(triangulation);
-    const ScenePlan plan = plan_scene(parameters, triangulation);
-    HarmonicSet     set(
-      parameters, plan.harmonics, triangulation, plan.loads, MPI_COMM_SELF, 0);
-    set.setup_and_assemble();
-    set.factorize();
-    std::vector<std::vector<Vector<double>>> b = {
-      {set.problem(0).get_system_rhs()}};
-    set.solve_increments(b);
-    const RigidMotion m = set.problem(0).get_foundation()->motion(b[0][0]);
+    test_support::FactorizedScene scene(text);
+    const AllParameters          &parameters = scene.parameters;
+    HarmonicSet                  &set        = scene.set;
+    const RigidMotion             m =
+      set.problem(0).get_foundation()->motion(scene.linear_solutions()[0]);
     return parameters.rigid_foundation.horizontal_force /
            m.horizontal_displacement;
   }

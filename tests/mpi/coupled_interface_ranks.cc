@@ -44,21 +44,10 @@ namespace
   Run
   solve(const std::string &text, const bool distributed, std::ostream &log)
   {
-    const AllParameters parameters = test_support::parameters_from(text);
-    Triangulation<2>    triangulation;
-    parameters.mesh.build(triangulation);
-    const ScenePlan plan = plan_scene(parameters, triangulation);
-    HarmonicSet     set(parameters,
-                    plan.harmonics,
-                    triangulation,
-                    plan.loads,
-                    MPI_COMM_SELF,
-                    distributed ? 1 : 0);
-    if (distributed)
-      set.distribute_over(MPI_COMM_WORLD);
-    set.setup_and_assemble();
-    set.factorize();
-    CoupledInterfaceSolver solver(set, parameters);
+    test_support::FactorizedScene scene(text, distributed);
+    const AllParameters          &parameters = scene.parameters;
+    HarmonicSet                  &set        = scene.set;
+    CoupledInterfaceSolver        solver(set, parameters);
     solver.run(log);
     Run run;
     run.steps = solver.get_steps();
