@@ -53,6 +53,7 @@ namespace FourierSSI
           results.add("step_load_factor", any, s + 1, r.load_factor, "-");
           results.add("step_vertical_force", any, s + 1, loads[2], "kN");
           results.add("step_horizontal_force", any, s + 1, loads[0], "kN");
+          results.add("step_moment", any, s + 1, loads[4], "kN.m");
           results.add("step_vertical_displacement",
                       any,
                       s + 1,
@@ -63,7 +64,9 @@ namespace FourierSSI
                       s + 1,
                       r.motion.horizontal_displacement,
                       "m");
+          results.add("step_rotation", any, s + 1, r.motion.rotation, "rad");
           results.add("step_iterations", any, s + 1, r.iterations, "-");
+          results.add("step_residual", any, s + 1, r.residual, "-");
           results.add("step_plastic_samples", any, s + 1, r.n_plastic, "-");
           results.add("step_largest_yield_value",
                       any,

@@ -96,3 +96,17 @@ add_test(NAME input_nonconverging_soil_step
           -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_failure.cmake)
 set_tests_properties(input_nonconverging_soil_step PROPERTIES
   RESOURCE_LOCK bad_output)
+
+# Mohr-Coulomb limit load from above: the thick cylinder of
+# prm/cylinder-mohr-coulomb.prm loaded in one step to 1.02 times its
+# closed-form limit pressure cannot converge (no equilibrium exists); the
+# scene variant cylinder_mohr_coulomb_below_limit converges at 0.98 times it.
+add_test(NAME input_cylinder_mohr_coulomb_above_limit
+  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi>
+          -DPRM=${CMAKE_CURRENT_SOURCE_DIR}/prm/cylinder_mohr_coulomb_above_limit.prm
+          "-DEXPECTED=Soil plasticity: load step 1 did not converge"
+          -DOUTPUT_DIR=${CMAKE_CURRENT_BINARY_DIR}/bad_output
+          -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_failure.cmake)
+set_tests_properties(input_cylinder_mohr_coulomb_above_limit PROPERTIES
+  RESOURCE_LOCK bad_output)
