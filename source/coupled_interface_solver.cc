@@ -2,8 +2,8 @@
 #include <chrono>
 #include <cmath>
 #include <deal.II/base/quadrature_lib.h>
-#include <fourier_ssi/anderson_acceleration.h>
 #include <fourier_ssi/coupled_interface_solver.h>
+#include <fourier_ssi/coupled_iteration.h>
 #include <fstream>
 #include <iomanip>
 #include <set>
@@ -15,44 +15,17 @@ namespace FourierSSI
   {
     const std::string entry = "Nonlinear interfaces";
 
-    std::vector<Harmonic>
-    harmonics_of(const HarmonicSet &set)
-    {
-      std::vector<Harmonic> list;
-      for (unsigned int h = 0; h < set.size(); ++h)
-        list.push_back(set.harmonic(h));
-      return list;
-    }
-
-    unsigned int
-    highest_harmonic(const std::vector<Harmonic> &list)
-    {
-      unsigned int n_max = 0;
-      for (const Harmonic &h : list)
-        n_max = std::max(n_max, h.n);
-      return n_max;
-    }
-
     /**
-     * Automatic N = 4 (n_max + 1); a given N must exceed 2 n_max. With
-     * growth n_max is Maximum harmonic, so that the samples (and the state
-     * kept at them) stay valid when harmonics are added.
+     * With growth n_max is Maximum harmonic, so that the samples (and the
+     * state kept at them) stay valid when harmonics are added.
      */
     unsigned int
     theta_samples_for(const std::vector<Harmonic>        &list,
                       const NonlinearInterfaceParameters &settings)
     {
-      const unsigned int requested = settings.theta_samples;
-      const unsigned int n_max =
-        std::max(highest_harmonic(list), settings.maximum_harmonic);
-      if (requested == 0)
-        return 4 * (n_max + 1);
-      AssertThrow(requested >= minimum_theta_samples(n_max),
-                  ExcMessage(
-                    entry + "/Theta samples: " + std::to_string(requested) +
-                    " must exceed 2 n_max = " + std::to_string(2 * n_max) +
-                    " (else the harmonics alias)"));
-      return requested;
+      return FourierSSI::theta_samples_for(std::max(highest_harmonic(list),
+                                                    settings.maximum_harmonic),
+                                           settings.theta_samples);
     }
 
     /** Lagrange basis of the equidistant nodes k / p at xi. */
@@ -66,108 +39,6 @@ namespace FourierSSI
             values[k] *= (xi - double(m) / p) / (double(k) - double(m)) * p;
       return values;
     }
-
-    double
-    norm_over_harmonics(const std::vector<Vector<double>> &vectors)
-    {
-      double sum = 0.;
-      for (const Vector<double> &v : vectors)
-        sum += v.norm_sqr();
-      return std::sqrt(sum);
-    }
-
-    double
-    dot_over_harmonics(const std::vector<Vector<double>> &a,
-                       const std::vector<Vector<double>> &b)
-    {
-      double sum = 0.;
-      for (unsigned int h = 0; h < a.size(); ++h)
-        sum += a[h] * b[h];
-      return sum;
-    }
-
-    /** The harmonic that carries a rigid-foundation motion. */
-    Harmonic
-    harmonic_of(const NonlinearInterfaceParameters::Motion motion)
-    {
-      using M = NonlinearInterfaceParameters::Motion;
-      if (motion == M::vertical)
-        return {0, Family::symmetric};
-      if (motion == M::twist)
-        return {0, Family::antisymmetric};
-      return {1, Family::symmetric};
-    }
-
-    double
-    component(const RigidMotion                         &m,
-              const NonlinearInterfaceParameters::Motion motion)
-    {
-      using M = NonlinearInterfaceParameters::Motion;
-      switch (motion)
-        {
-          case M::vertical:
-            return m.vertical_displacement;
-          case M::twist:
-            return m.twist;
-          case M::horizontal:
-            return m.horizontal_displacement;
-          case M::rotation:
-            return m.rotation;
-        }
-      return 0.;
-    }
-
-    /**
-     * The update of the correction load c <- c + dc of one iteration from
-     * the force residual R = G(c) - c: dc = R (none), omega R with Aitken's
-     * Delta^2 rule omega_k = -omega_{k-1} R_{k-1}^T (R_k - R_{k-1}) /
-     * |R_k - R_{k-1}|^2, or the Anderson update on the last m residuals
-     * (doc/nonlinear-interfaces.md section 5). One per load step.
-     */
-    class FixedPointAcceleration
-    {
-    public:
-      using Kind = NonlinearInterfaceParameters::Acceleration;
-
-      FixedPointAcceleration(const NonlinearInterfaceParameters &settings)
-        : kind(settings.acceleration)
-        , anderson(settings.anderson_depth)
-      {}
-
-      std::vector<Vector<double>>
-      increment(const std::vector<Vector<double>> &load,
-                const std::vector<Vector<double>> &residual)
-      {
-        if (kind == Kind::anderson)
-          return anderson.increment(load, residual);
-        if (kind == Kind::aitken && !previous_residual.empty())
-          omega = aitken_factor(residual);
-        previous_residual                  = residual;
-        std::vector<Vector<double>> result = residual;
-        for (Vector<double> &block : result)
-          block *= omega;
-        return result;
-      }
-
-    private:
-      double
-      aitken_factor(const std::vector<Vector<double>> &residual) const
-      {
-        std::vector<Vector<double>> change = residual;
-        for (unsigned int h = 0; h < change.size(); ++h)
-          change[h] -= previous_residual[h];
-        const double change_sqr = dot_over_harmonics(change, change);
-        return change_sqr > 0. ?
-                 -omega * dot_over_harmonics(previous_residual, change) /
-                   change_sqr :
-                 omega;
-      }
-
-      Kind                        kind;
-      AndersonAcceleration        anderson;
-      double                      omega = 1.;
-      std::vector<Vector<double>> previous_residual;
-    };
 
     std::string
     name_of(const NonlinearInterfaceParameters &settings)
@@ -222,7 +93,7 @@ namespace FourierSSI
     : set(set)
     , parameters(parameters)
     , settings(parameters.nonlinear_interfaces)
-    , harmonics(harmonics_of(set))
+    , harmonics(set.get_harmonics())
     , sampling(harmonics, theta_samples_for(harmonics, settings))
     , candidates(candidate_harmonics(harmonics, settings.maximum_harmonic))
     , spectrum(candidates, sampling.n_samples())
@@ -535,7 +406,7 @@ namespace FourierSSI
   unsigned int
   CoupledInterfaceSolver::controlled_harmonic() const
   {
-    const Harmonic wanted = harmonic_of(settings.motion);
+    const Harmonic wanted = FourierSSI::controlled_harmonic(settings.motion);
     for (unsigned int h = 0; h < set.size(); ++h)
       if (harmonics[h].n == wanted.n && harmonics[h].family == wanted.family)
         {
@@ -557,8 +428,8 @@ namespace FourierSSI
   CoupledInterfaceSolver::controlled_motion_of(const unsigned int    h,
                                                const Vector<double> &v) const
   {
-    return component(set.problem(h).get_foundation()->motion(v),
-                     settings.motion);
+    return controlled_component(set.problem(h).get_foundation()->motion(v),
+                                settings.motion);
   }
 
   void
@@ -709,7 +580,8 @@ namespace FourierSSI
       settings.control == NonlinearInterfaceParameters::Control::displacement;
     std::vector<LocalVector>  plastic, traction;
     std::vector<ContactState> contact;
-    FixedPointAcceleration    acceleration(settings);
+    FixedPointAcceleration    acceleration(settings.acceleration,
+                                        settings.anderson_depth);
     for (unsigned int iteration = 0; iteration <= settings.maximum_iterations;
          ++iteration)
       {
@@ -913,7 +785,7 @@ namespace FourierSSI
   CoupledInterfaceSolver::grow(const std::vector<Harmonic> &added)
   {
     set.add(added);
-    harmonics = harmonics_of(set);
+    harmonics = set.get_harmonics();
     sampling  = ThetaSampling(harmonics, sampling.n_samples());
     solve_load_pattern();
     const unsigned int first = committed.correction_solution.size();

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
+#include <fourier_ssi/coupled_iteration.h>
 #include <fourier_ssi/coupled_soil_solver.h>
 #include <fourier_ssi/stress_postprocessor.h>
 #include <fstream>
@@ -25,87 +26,11 @@ namespace FourierSSI
              NonlinearInterfaceParameters::Acceleration::none;
     }
 
-    std::vector<Harmonic>
-    harmonics_of(const HarmonicSet &set)
-    {
-      std::vector<Harmonic> list;
-      for (unsigned int h = 0; h < set.size(); ++h)
-        list.push_back(set.harmonic(h));
-      return list;
-    }
-
-    /** Automatic N = 4 (n_max + 1); a given N must exceed 2 n_max. */
-    unsigned int
-    theta_samples_for(const std::vector<Harmonic> &list,
-                      const unsigned int           requested)
-    {
-      unsigned int n_max = 0;
-      for (const Harmonic &h : list)
-        n_max = std::max(n_max, h.n);
-      if (requested == 0)
-        return 4 * (n_max + 1);
-      AssertThrow(requested >= minimum_theta_samples(n_max),
-                  ExcMessage(
-                    "Nonlinear interfaces/Theta samples: " +
-                    std::to_string(requested) + " must exceed 2 n_max = " +
-                    std::to_string(2 * n_max) + " (else the harmonics alias)"));
-      return requested;
-    }
-
     /** Strain components 0..3 carry the in-plane factor, 4, 5 the other. */
     ThetaFactor
     factor_of(const unsigned int k)
     {
       return k < 4 ? ThetaFactor::in_plane : ThetaFactor::circumferential;
-    }
-
-    double
-    norm_over_harmonics(const std::vector<Vector<double>> &vectors)
-    {
-      double sum = 0.;
-      for (const Vector<double> &v : vectors)
-        sum += v.norm_sqr();
-      return std::sqrt(sum);
-    }
-
-    double
-    dot_over_harmonics(const std::vector<Vector<double>> &a,
-                       const std::vector<Vector<double>> &b)
-    {
-      double sum = 0.;
-      for (unsigned int h = 0; h < a.size(); ++h)
-        sum += a[h] * b[h];
-      return sum;
-    }
-
-    Harmonic
-    harmonic_of(const NonlinearInterfaceParameters::Motion motion)
-    {
-      using M = NonlinearInterfaceParameters::Motion;
-      if (motion == M::vertical)
-        return {0, Family::symmetric};
-      if (motion == M::twist)
-        return {0, Family::antisymmetric};
-      return {1, Family::symmetric};
-    }
-
-    double
-    component_of(const RigidMotion                         &m,
-                 const NonlinearInterfaceParameters::Motion motion)
-    {
-      using M = NonlinearInterfaceParameters::Motion;
-      switch (motion)
-        {
-          case M::vertical:
-            return m.vertical_displacement;
-          case M::twist:
-            return m.twist;
-          case M::horizontal:
-            return m.horizontal_displacement;
-          case M::rotation:
-            return m.rotation;
-        }
-      return 0.;
     }
 
     /**
@@ -134,9 +59,9 @@ namespace FourierSSI
     : set(set)
     , parameters(parameters)
     , settings(parameters.nonlinear_interfaces)
-    , harmonics(harmonics_of(set))
+    , harmonics(set.get_harmonics())
     , sampling(harmonics,
-               theta_samples_for(harmonics,
+               theta_samples_for(highest_harmonic(harmonics),
                                  parameters.nonlinear_interfaces.theta_samples))
   {
     for (const Harmonic &h : harmonics)
@@ -439,7 +364,7 @@ namespace FourierSSI
     const std::vector<Vector<double>> &v,
     const double                       target) const
   {
-    const Harmonic wanted = harmonic_of(settings.motion);
+    const Harmonic wanted = controlled_harmonic(settings.motion);
     for (unsigned int h = 0; h < set.size(); ++h)
       if (harmonics[h].n == wanted.n && harmonics[h].family == wanted.family)
         {
@@ -448,14 +373,14 @@ namespace FourierSSI
                       ExcMessage("Nonlinear interfaces/Control: displacement "
                                  "control needs a Rigid foundation"));
           const double by_pattern =
-            component_of(foundation->motion(pattern_solution[h]),
-                         settings.motion);
+            controlled_component(foundation->motion(pattern_solution[h]),
+                                 settings.motion);
           AssertThrow(by_pattern != 0.,
                       ExcMessage("Nonlinear interfaces/Controlled motion: "
                                  "the Rigid foundation loads do not drive "
                                  "this motion (give the load that does)"));
-          return (target -
-                  component_of(foundation->motion(v[h]), settings.motion)) /
+          return (target - controlled_component(foundation->motion(v[h]),
+                                                settings.motion)) /
                  by_pattern;
         }
     AssertThrow(false,
@@ -471,9 +396,12 @@ namespace FourierSSI
   {
     const bool displacement_control =
       settings.control == NonlinearInterfaceParameters::Control::displacement;
-    std::vector<StrainVector>   plastic;
-    std::vector<Vector<double>> previous_residual;
-    double                      omega = 1.;
+    std::vector<StrainVector> plastic;
+    // Aitken unless acceleration is off (see uses_aitken).
+    FixedPointAcceleration acceleration(uses_aitken(settings) ?
+                                          FixedPointAcceleration::Kind::aitken :
+                                          FixedPointAcceleration::Kind::none,
+                                        settings.anderson_depth);
     for (unsigned int iteration = 0; iteration <= settings.maximum_iterations;
          ++iteration)
       {
@@ -502,25 +430,13 @@ namespace FourierSSI
             result.residual   = scale > 0. ? residual_norm / scale : 0.;
             return true;
           }
-        // Aitken's Delta^2 relaxation of the fixed point c = G(c), as the
-        // interface solver.
-        if (uses_aitken(settings) && !previous_residual.empty())
-          {
-            std::vector<Vector<double>> change = residual;
-            for (unsigned int h = 0; h < set.size(); ++h)
-              change[h] -= previous_residual[h];
-            const double change_sqr = dot_over_harmonics(change, change);
-            if (change_sqr > 0.)
-              omega = -omega * dot_over_harmonics(previous_residual, change) /
-                      change_sqr;
-          }
-        previous_residual = residual;
+        std::vector<Vector<double>> correction =
+          acceleration.increment(state.correction_load, residual);
         std::vector<std::vector<Vector<double>>> increment(set.size());
         for (unsigned int h = 0; h < set.size(); ++h)
           {
-            residual[h] *= omega;
-            state.correction_load[h] += residual[h];
-            increment[h] = {residual[h]};
+            state.correction_load[h] += correction[h];
+            increment[h] = {std::move(correction[h])};
           }
         set.solve_increments(increment);
         for (unsigned int h = 0; h < set.size(); ++h)

@@ -1,7 +1,9 @@
+#include <algorithm>
 #include <cmath>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/numbers.h>
 #include <fourier_ssi/theta_sampling.h>
+#include <string>
 
 namespace FourierSSI
 {
@@ -47,6 +49,28 @@ namespace FourierSSI
     for (const Harmonic &h : harmonics)
       n_max = std::max(n_max, h.n);
     return n_angles >= minimum_theta_samples(n_max);
+  }
+
+  unsigned int
+  highest_harmonic(const std::vector<Harmonic> &harmonics)
+  {
+    unsigned int n_max = 0;
+    for (const Harmonic &h : harmonics)
+      n_max = std::max(n_max, h.n);
+    return n_max;
+  }
+
+  unsigned int
+  theta_samples_for(const unsigned int n_max, const unsigned int requested)
+  {
+    if (requested == 0)
+      return 4 * (n_max + 1);
+    AssertThrow(requested >= minimum_theta_samples(n_max),
+                dealii::ExcMessage(
+                  "Nonlinear interfaces/Theta samples: " +
+                  std::to_string(requested) + " must exceed 2 n_max = " +
+                  std::to_string(2 * n_max) + " (else the harmonics alias)"));
+    return requested;
   }
 
   void

@@ -54,6 +54,13 @@ namespace FourierSSI
       return problems.size();
     }
 
+    /** The harmonics of the set, in the order of problem(i). */
+    const std::vector<Harmonic> &
+    get_harmonics() const
+    {
+      return harmonics;
+    }
+
     const Harmonic &
     harmonic(const unsigned int i) const
     {

@@ -49,6 +49,19 @@ namespace FourierSSI
     return 2 * n_max + 1;
   }
 
+  /** The highest n of a list of harmonics. */
+  unsigned int
+  highest_harmonic(const std::vector<Harmonic> &harmonics);
+
+  /**
+   * The number of theta samples of a coupled iteration whose fields reach
+   * n_max: automatic (requested = 0) N = 4 (n_max + 1), else the requested
+   * N, which must exceed 2 n_max (else the harmonics alias; one-line error
+   * naming Nonlinear interfaces/Theta samples).
+   */
+  unsigned int
+  theta_samples_for(const unsigned int n_max, const unsigned int requested);
+
   class ThetaSampling
   {
   public:

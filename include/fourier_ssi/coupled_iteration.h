@@ -1,0 +1,73 @@
+/**
+ * What the coupled iterations (nonlinear interfaces, plastic soil) share:
+ * sums over the harmonics of a correction, the acceleration of the fixed
+ * point c = G(c), and the harmonic and component that carry a controlled
+ * rigid-foundation motion (doc/nonlinear-interfaces.md section 5,
+ * doc/soil-plasticity.md).
+ */
+#ifndef fourier_ssi_coupled_iteration_h
+#define fourier_ssi_coupled_iteration_h
+
+#include <deal.II/lac/vector.h>
+#include <fourier_ssi/anderson_acceleration.h>
+#include <fourier_ssi/harmonic.h>
+#include <fourier_ssi/nonlinear_interface_parameters.h>
+#include <fourier_ssi/rigid_foundation.h>
+#include <vector>
+
+namespace FourierSSI
+{
+  using namespace dealii;
+
+  /** sqrt(sum_h |v_h|^2): the norm of a field given per harmonic. */
+  double
+  norm_over_harmonics(const std::vector<Vector<double>> &vectors);
+
+  /** sum_h a_h . b_h. */
+  double
+  dot_over_harmonics(const std::vector<Vector<double>> &a,
+                     const std::vector<Vector<double>> &b);
+
+  /**
+   * The harmonic that carries a controlled foundation motion: n = 0
+   * symmetric (vertical), n = 0 antisymmetric (twist), n = 1 symmetric
+   * (horizontal, rotation).
+   */
+  Harmonic
+  controlled_harmonic(const NonlinearInterfaceParameters::Motion motion);
+
+  /** The component of a rigid motion that a load step controls. */
+  double
+  controlled_component(const RigidMotion                         &motion,
+                       const NonlinearInterfaceParameters::Motion controlled);
+
+  /**
+   * The update of the correction load c <- c + dc of one iteration from
+   * the force residual R = G(c) - c: dc = R (none), omega R with Aitken's
+   * Delta^2 rule omega_k = -omega_{k-1} R_{k-1}^T (R_k - R_{k-1}) /
+   * |R_k - R_{k-1}|^2, or the Anderson update on the last m residuals
+   * (doc/nonlinear-interfaces.md section 5). One per load step.
+   */
+  class FixedPointAcceleration
+  {
+  public:
+    using Kind = NonlinearInterfaceParameters::Acceleration;
+
+    FixedPointAcceleration(const Kind kind, const unsigned int anderson_depth);
+
+    std::vector<Vector<double>>
+    increment(const std::vector<Vector<double>> &load,
+              const std::vector<Vector<double>> &residual);
+
+  private:
+    double
+    aitken_factor(const std::vector<Vector<double>> &residual) const;
+
+    Kind                        kind;
+    AndersonAcceleration        anderson;
+    double                      omega = 1.;
+    std::vector<Vector<double>> previous_residual;
+  };
+} // namespace FourierSSI
+
+#endif

@@ -1,0 +1,90 @@
+#include <cmath>
+#include <fourier_ssi/coupled_iteration.h>
+
+namespace FourierSSI
+{
+  double
+  norm_over_harmonics(const std::vector<Vector<double>> &vectors)
+  {
+    double sum = 0.;
+    for (const Vector<double> &v : vectors)
+      sum += v.norm_sqr();
+    return std::sqrt(sum);
+  }
+
+  double
+  dot_over_harmonics(const std::vector<Vector<double>> &a,
+                     const std::vector<Vector<double>> &b)
+  {
+    double sum = 0.;
+    for (unsigned int h = 0; h < a.size(); ++h)
+      sum += a[h] * b[h];
+    return sum;
+  }
+
+  Harmonic
+  controlled_harmonic(const NonlinearInterfaceParameters::Motion motion)
+  {
+    using M = NonlinearInterfaceParameters::Motion;
+    if (motion == M::vertical)
+      return {0, Family::symmetric};
+    if (motion == M::twist)
+      return {0, Family::antisymmetric};
+    return {1, Family::symmetric};
+  }
+
+  double
+  controlled_component(const RigidMotion                         &motion,
+                       const NonlinearInterfaceParameters::Motion controlled)
+  {
+    using M = NonlinearInterfaceParameters::Motion;
+    switch (controlled)
+      {
+        case M::vertical:
+          return motion.vertical_displacement;
+        case M::twist:
+          return motion.twist;
+        case M::horizontal:
+          return motion.horizontal_displacement;
+        case M::rotation:
+          return motion.rotation;
+      }
+    return 0.;
+  }
+
+  FixedPointAcceleration::FixedPointAcceleration(
+    const Kind         kind,
+    const unsigned int anderson_depth)
+    : kind(kind)
+    , anderson(anderson_depth)
+  {}
+
+  std::vector<Vector<double>>
+  FixedPointAcceleration::increment(const std::vector<Vector<double>> &load,
+                                    const std::vector<Vector<double>> &residual)
+  {
+    if (kind == Kind::anderson)
+      return anderson.increment(load, residual);
+    if (kind == Kind::aitken && !previous_residual.empty())
+      omega = aitken_factor(residual);
+    previous_residual                  = residual;
+    std::vector<Vector<double>> result = residual;
+    for (Vector<double> &block : result)
+      block *= omega;
+    return result;
+  }
+
+  double
+  FixedPointAcceleration::aitken_factor(
+    const std::vector<Vector<double>> &residual) const
+  {
+    std::vector<Vector<double>> change = residual;
+    for (unsigned int h = 0; h < change.size(); ++h)
+      change[h] -= previous_residual[h];
+    const double change_sqr = dot_over_harmonics(change, change);
+    return change_sqr > 0. ?
+             -omega * dot_over_harmonics(previous_residual, change) /
+               change_sqr :
+             omega;
+  }
+} // namespace FourierSSI
