@@ -691,16 +691,7 @@ namespace FourierSSI
   std::array<double, 6>
   CoupledInterfaceSolver::applied_loads(const double load_factor) const
   {
-    const RigidFoundationParameters &f     = parameters.rigid_foundation;
-    const double                     z_ref = f.reference_elevation;
-    // (H, M) act at the reference point (0, 0, z_ref): moved to the origin,
-    // M_y gains z_ref H_x and M_x loses z_ref H_y.
-    return {{load_factor * f.horizontal_force,
-             load_factor * f.horizontal_force_y,
-             load_factor * f.vertical_force,
-             load_factor * (f.moment_x - z_ref * f.horizontal_force_y),
-             load_factor * (f.moment + z_ref * f.horizontal_force),
-             load_factor * f.torque}};
+    return applied_foundation_loads(parameters.rigid_foundation, load_factor);
   }
 
   RigidMotion

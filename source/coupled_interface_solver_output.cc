@@ -3,6 +3,7 @@
 // section 9). The solve itself is in coupled_interface_solver.cc.
 #include <cmath>
 #include <fourier_ssi/coupled_interface_solver.h>
+#include <fourier_ssi/coupled_iteration.h>
 #include <fstream>
 #include <iomanip>
 
@@ -26,22 +27,20 @@ namespace FourierSSI
   {
     std::ofstream out(filename);
     AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
-    out << "step,load_factor,V_kN,H_kN,M_kNm,T_kNm,vertical_m,horizontal_m,"
-           "rotation_rad,twist_rad,iterations,residual,stick,slip,open,"
-           "time_s,harmonics,converged\n"
+    out << load_step_csv_header << ",stick,slip,open,time_s,harmonics,"
+        << "converged\n"
         << std::setprecision(12);
     for (unsigned int s = 0; s < steps.size(); ++s)
       {
         const LoadStepResult &r = steps[s];
-        const auto            f = parameters.rigid_foundation;
-        out << s + 1 << ',' << r.load_factor << ','
-            << r.load_factor * f.vertical_force << ','
-            << r.load_factor * f.horizontal_force << ','
-            << r.load_factor * f.moment << ',' << r.load_factor * f.torque
-            << ',' << r.motion.vertical_displacement << ','
-            << r.motion.horizontal_displacement << ',' << r.motion.rotation
-            << ',' << r.motion.twist << ',' << r.iterations << ',' << r.residual
-            << ',' << r.states[0] << ',' << r.states[1] << ',' << r.states[2]
+        write_load_step_columns(out,
+                                s + 1,
+                                r.load_factor,
+                                parameters.rigid_foundation,
+                                r.motion,
+                                r.iterations,
+                                r.residual);
+        out << ',' << r.states[0] << ',' << r.states[1] << ',' << r.states[2]
             << ',' << r.time << ',' << r.n_harmonics << ",1\n";
       }
     AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));

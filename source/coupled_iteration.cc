@@ -52,6 +52,36 @@ namespace FourierSSI
     return 0.;
   }
 
+  std::array<double, 6>
+  applied_foundation_loads(const RigidFoundationParameters &f,
+                           const double                     load_factor)
+  {
+    const double z_ref = f.reference_elevation;
+    return {{load_factor * f.horizontal_force,
+             load_factor * f.horizontal_force_y,
+             load_factor * f.vertical_force,
+             load_factor * (f.moment_x - z_ref * f.horizontal_force_y),
+             load_factor * (f.moment + z_ref * f.horizontal_force),
+             load_factor * f.torque}};
+  }
+
+  void
+  write_load_step_columns(std::ostream                    &out,
+                          const unsigned int               step,
+                          const double                     load_factor,
+                          const RigidFoundationParameters &f,
+                          const RigidMotion               &motion,
+                          const unsigned int               iterations,
+                          const double                     residual)
+  {
+    out << step << ',' << load_factor << ',' << load_factor * f.vertical_force
+        << ',' << load_factor * f.horizontal_force << ','
+        << load_factor * f.moment << ',' << load_factor * f.torque << ','
+        << motion.vertical_displacement << ',' << motion.horizontal_displacement
+        << ',' << motion.rotation << ',' << motion.twist << ',' << iterations
+        << ',' << residual;
+  }
+
   FixedPointAcceleration::FixedPointAcceleration(
     const Kind         kind,
     const unsigned int anderson_depth)

@@ -448,14 +448,7 @@ namespace FourierSSI
   std::array<double, 6>
   CoupledSoilSolver::applied_loads(const double load_factor) const
   {
-    const RigidFoundationParameters &f     = parameters.rigid_foundation;
-    const double                     z_ref = f.reference_elevation;
-    return {{load_factor * f.horizontal_force,
-             load_factor * f.horizontal_force_y,
-             load_factor * f.vertical_force,
-             load_factor * (f.moment_x - z_ref * f.horizontal_force_y),
-             load_factor * (f.moment + z_ref * f.horizontal_force),
-             load_factor * f.torque}};
+    return applied_foundation_loads(parameters.rigid_foundation, load_factor);
   }
 
   RigidMotion
@@ -548,22 +541,20 @@ namespace FourierSSI
   {
     std::ofstream out(filename);
     AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
-    out << "step,load_factor,V_kN,H_kN,M_kNm,T_kNm,vertical_m,horizontal_m,"
-           "rotation_rad,twist_rad,iterations,residual,elastic,plastic,"
-           "max_yield_kPa,time_s,converged\n"
+    out << load_step_csv_header << ",elastic,plastic,max_yield_kPa,time_s,"
+        << "converged\n"
         << std::setprecision(12);
     for (unsigned int s = 0; s < steps.size(); ++s)
       {
         const SoilStepResult &r = steps[s];
-        const auto            f = parameters.rigid_foundation;
-        out << s + 1 << ',' << r.load_factor << ','
-            << r.load_factor * f.vertical_force << ','
-            << r.load_factor * f.horizontal_force << ','
-            << r.load_factor * f.moment << ',' << r.load_factor * f.torque
-            << ',' << r.motion.vertical_displacement << ','
-            << r.motion.horizontal_displacement << ',' << r.motion.rotation
-            << ',' << r.motion.twist << ',' << r.iterations << ',' << r.residual
-            << ',' << r.n_elastic << ',' << r.n_plastic << ','
+        write_load_step_columns(out,
+                                s + 1,
+                                r.load_factor,
+                                parameters.rigid_foundation,
+                                r.motion,
+                                r.iterations,
+                                r.residual);
+        out << ',' << r.n_elastic << ',' << r.n_plastic << ','
             << r.largest_yield_value << ',' << r.time << ",1\n";
       }
     AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));

@@ -8,11 +8,13 @@
 #ifndef fourier_ssi_coupled_iteration_h
 #define fourier_ssi_coupled_iteration_h
 
+#include <array>
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/anderson_acceleration.h>
 #include <fourier_ssi/harmonic.h>
 #include <fourier_ssi/nonlinear_interface_parameters.h>
 #include <fourier_ssi/rigid_foundation.h>
+#include <ostream>
 #include <vector>
 
 namespace FourierSSI
@@ -40,6 +42,31 @@ namespace FourierSSI
   double
   controlled_component(const RigidMotion                         &motion,
                        const NonlinearInterfaceParameters::Motion controlled);
+
+  /**
+   * The foundation loads of a load step, load_factor times the given ones,
+   * as the resultant (F_x, F_y, F_z, M_x, M_y, M_z) about the origin [kN,
+   * kN.m]: (H, M) act at (0, 0, z_ref), so moved to the origin M_y gains
+   * z_ref H_x and M_x loses z_ref H_y.
+   */
+  std::array<double, 6>
+  applied_foundation_loads(const RigidFoundationParameters &foundation,
+                           const double                     load_factor);
+
+  /** The leading columns of every load-displacement.csv (both solvers). */
+  constexpr const char *load_step_csv_header =
+    "step,load_factor,V_kN,H_kN,M_kNm,T_kNm,vertical_m,horizontal_m,"
+    "rotation_rad,twist_rad,iterations,residual";
+
+  /** One row's leading columns, in the order of load_step_csv_header. */
+  void
+  write_load_step_columns(std::ostream                    &out,
+                          const unsigned int               step,
+                          const double                     load_factor,
+                          const RigidFoundationParameters &foundation,
+                          const RigidMotion               &motion,
+                          const unsigned int               iterations,
+                          const double                     residual);
 
   /**
    * The update of the correction load c <- c + dc of one iteration from
