@@ -5,6 +5,7 @@
 #include <deal.II/base/timer.h>
 #include <fourier_ssi/command_line.h>
 #include <fourier_ssi/coupled_interface_solver.h>
+#include <fourier_ssi/coupled_iteration.h>
 #include <fourier_ssi/distributed_linear_system.h>
 #include <fourier_ssi/simulator.h>
 
@@ -37,36 +38,6 @@ namespace FourierSSI
                                      "set it false with a coulomb interface"));
     }
 
-    /** One row per converged step and quantity; cycle = step number. */
-    void
-    add_step_rows(const CoupledInterfaceSolver &solver, ResultsTable &results)
-    {
-      const Harmonic any{0, Family::symmetric};
-      const auto    &steps = solver.get_steps();
-      for (unsigned int s = 0; s < steps.size(); ++s)
-        {
-          const LoadStepResult &r     = steps[s];
-          const auto            loads = solver.applied_loads(r.load_factor);
-          results.add("step_load_factor", any, s + 1, r.load_factor, "-");
-          results.add("step_vertical_force", any, s + 1, loads[2], "kN");
-          results.add("step_horizontal_force", any, s + 1, loads[0], "kN");
-          results.add("step_torque", any, s + 1, loads[5], "kN.m");
-          results.add("step_vertical_displacement",
-                      any,
-                      s + 1,
-                      r.motion.vertical_displacement,
-                      "m");
-          results.add("step_horizontal_displacement",
-                      any,
-                      s + 1,
-                      r.motion.horizontal_displacement,
-                      "m");
-          results.add("step_rotation", any, s + 1, r.motion.rotation, "rad");
-          results.add("step_twist", any, s + 1, r.motion.twist, "rad");
-          results.add("step_iterations", any, s + 1, r.iterations, "-");
-          results.add("step_wall_time", any, s + 1, r.time, "s");
-        }
-    }
   } // namespace
 
   void
@@ -124,7 +95,7 @@ namespace FourierSSI
       }
     log << "coupled solve: " << solver.get_steps().size() << " steps in "
         << timer.wall_time() << " s" << std::endl;
-    add_step_rows(solver, results);
+    add_load_step_rows(solver, results);
     keep_last_step(solver);
     if (!writes_csv())
       return;

@@ -2,6 +2,7 @@
 // through theta at the soil's quadrature points, so they are solved together
 // by CoupledSoilSolver on one HarmonicSet (doc/soil-plasticity.md).
 #include <deal.II/base/timer.h>
+#include <fourier_ssi/coupled_iteration.h>
 #include <fourier_ssi/coupled_soil_solver.h>
 #include <fourier_ssi/distributed_linear_system.h>
 #include <fourier_ssi/simulator.h>
@@ -41,39 +42,22 @@ namespace FourierSSI
                                      "soil has its strength from c' only)"));
     }
 
+    /** The plastic state of every converged step, after the common rows. */
     void
-    add_step_rows(const CoupledSoilSolver &solver, ResultsTable &results)
+    add_plastic_state_rows(const CoupledSoilSolver &solver,
+                           ResultsTable            &results)
     {
       const Harmonic any{0, Family::symmetric};
       const auto    &steps = solver.get_steps();
       for (unsigned int s = 0; s < steps.size(); ++s)
         {
-          const SoilStepResult &r     = steps[s];
-          const auto            loads = solver.applied_loads(r.load_factor);
-          results.add("step_load_factor", any, s + 1, r.load_factor, "-");
-          results.add("step_vertical_force", any, s + 1, loads[2], "kN");
-          results.add("step_horizontal_force", any, s + 1, loads[0], "kN");
-          results.add("step_moment", any, s + 1, loads[4], "kN.m");
-          results.add("step_vertical_displacement",
-                      any,
-                      s + 1,
-                      r.motion.vertical_displacement,
-                      "m");
-          results.add("step_horizontal_displacement",
-                      any,
-                      s + 1,
-                      r.motion.horizontal_displacement,
-                      "m");
-          results.add("step_rotation", any, s + 1, r.motion.rotation, "rad");
-          results.add("step_iterations", any, s + 1, r.iterations, "-");
-          results.add("step_residual", any, s + 1, r.residual, "-");
-          results.add("step_plastic_samples", any, s + 1, r.n_plastic, "-");
+          results.add(
+            "step_plastic_samples", any, s + 1, steps[s].n_plastic, "-");
           results.add("step_largest_yield_value",
                       any,
                       s + 1,
-                      r.largest_yield_value,
+                      steps[s].largest_yield_value,
                       "kPa");
-          results.add("step_wall_time", any, s + 1, r.time, "s");
         }
     }
   } // namespace
@@ -109,7 +93,8 @@ namespace FourierSSI
       }
     log << "coupled solve: " << solver.get_steps().size() << " steps in "
         << timer.wall_time() << " s" << std::endl;
-    add_step_rows(solver, results);
+    add_load_step_rows(solver, results);
+    add_plastic_state_rows(solver, results);
     if (!writes_csv())
       return;
     const std::string curve = directory + "/load-displacement.csv";

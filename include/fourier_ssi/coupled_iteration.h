@@ -13,6 +13,7 @@
 #include <fourier_ssi/anderson_acceleration.h>
 #include <fourier_ssi/harmonic.h>
 #include <fourier_ssi/nonlinear_interface_parameters.h>
+#include <fourier_ssi/results_table.h>
 #include <fourier_ssi/rigid_foundation.h>
 #include <ostream>
 #include <vector>
@@ -67,6 +68,48 @@ namespace FourierSSI
                           const RigidMotion               &motion,
                           const unsigned int               iterations,
                           const double                     residual);
+
+  /**
+   * The rows of results.csv every coupled solver writes per converged load
+   * step (cycle = step number): the applied loads [kN, kN.m], the
+   * foundation motion [m, rad], iterations, residual and wall time. A step
+   * result has load_factor, motion, iterations, residual and time; the
+   * solver has applied_loads(load_factor).
+   */
+  template <class Solver>
+  void
+  add_load_step_rows(const Solver &solver, ResultsTable &results)
+  {
+    const Harmonic any{0, Family::symmetric};
+    const auto    &steps = solver.get_steps();
+    for (unsigned int s = 0; s < steps.size(); ++s)
+      {
+        const auto        &r     = steps[s];
+        const auto         loads = solver.applied_loads(r.load_factor);
+        const RigidMotion &m     = r.motion;
+        const unsigned int step  = s + 1;
+        results.add("step_load_factor", any, step, r.load_factor, "-");
+        results.add("step_vertical_force", any, step, loads[2], "kN");
+        results.add("step_horizontal_force", any, step, loads[0], "kN");
+        results.add("step_moment", any, step, loads[4], "kN.m");
+        results.add("step_torque", any, step, loads[5], "kN.m");
+        results.add("step_vertical_displacement",
+                    any,
+                    step,
+                    m.vertical_displacement,
+                    "m");
+        results.add("step_horizontal_displacement",
+                    any,
+                    step,
+                    m.horizontal_displacement,
+                    "m");
+        results.add("step_rotation", any, step, m.rotation, "rad");
+        results.add("step_twist", any, step, m.twist, "rad");
+        results.add("step_iterations", any, step, r.iterations, "-");
+        results.add("step_residual", any, step, r.residual, "-");
+        results.add("step_wall_time", any, step, r.time, "s");
+      }
+  }
 
   /**
    * The update of the correction load c <- c + dc of one iteration from
