@@ -82,6 +82,18 @@ namespace FourierSSI
         << ',' << residual;
   }
 
+  std::string
+  unconverged_step_message(const std::string                  &entry,
+                           const unsigned int                  converged_steps,
+                           const NonlinearInterfaceParameters &settings)
+  {
+    return entry + ": load step " + std::to_string(converged_steps + 1) +
+           " did not converge in " +
+           std::to_string(settings.maximum_iterations) + " iterations after " +
+           std::to_string(settings.maximum_step_cuts) + " step cuts; the " +
+           std::to_string(converged_steps) + " converged steps are kept";
+  }
+
   FixedPointAcceleration::FixedPointAcceleration(
     const Kind         kind,
     const unsigned int anderson_depth)

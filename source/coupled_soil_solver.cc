@@ -504,15 +504,9 @@ namespace FourierSSI
         if (!solve_step(target, state, result))
           {
             AssertThrow(++cuts <= settings.maximum_step_cuts,
-                        ExcMessage(entry + ": load step " +
-                                   std::to_string(steps.size() + 1) +
-                                   " did not converge in " +
-                                   std::to_string(settings.maximum_iterations) +
-                                   " iterations after " +
-                                   std::to_string(settings.maximum_step_cuts) +
-                                   " step cuts; the " +
-                                   std::to_string(steps.size()) +
-                                   " converged steps are kept"));
+                        ExcMessage(unconverged_step_message(entry,
+                                                            steps.size(),
+                                                            settings)));
             increment /= 2.;
             log << "  step cut to " << increment << " of the loading\n";
             continue;

@@ -81,18 +81,12 @@ namespace FourierSSI
       }
     CoupledInterfaceSolver solver(*harmonic_set, parameters);
     const std::string      directory = parameters.output.directory;
-    try
-      {
-        solver.run(log);
-      }
-    catch (const std::exception &e)
-      {
-        // Keep the converged steps, marked as such by the file name (not
-        // in `written`: a failed run removes its results, not this record).
-        if (writes_csv() && !solver.get_steps().empty())
-          solver.write_csv(directory + "/load-displacement-incomplete.csv");
-        throw;
-      }
+    // Keep the converged steps, marked as such by the file name (not in
+    // `written`: a failed run removes its results, not this record).
+    run_keeping_converged_steps(
+      solver,
+      log,
+      writes_csv() ? directory + "/load-displacement-incomplete.csv" : "");
     log << "coupled solve: " << solver.get_steps().size() << " steps in "
         << timer.wall_time() << " s" << std::endl;
     add_load_step_rows(solver, results);

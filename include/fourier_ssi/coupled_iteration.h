@@ -16,6 +16,7 @@
 #include <fourier_ssi/results_table.h>
 #include <fourier_ssi/rigid_foundation.h>
 #include <ostream>
+#include <string>
 #include <vector>
 
 namespace FourierSSI
@@ -108,6 +109,38 @@ namespace FourierSSI
         results.add("step_iterations", any, step, r.iterations, "-");
         results.add("step_residual", any, step, r.residual, "-");
         results.add("step_wall_time", any, step, r.time, "s");
+      }
+  }
+
+  /**
+   * The one line of a load step that did not converge even after the
+   * allowed step cuts (`entry` names the solver's parameter section).
+   */
+  std::string
+  unconverged_step_message(const std::string                  &entry,
+                           const unsigned int                  converged_steps,
+                           const NonlinearInterfaceParameters &settings);
+
+  /**
+   * Runs a coupled solver's load steps; if one fails, the converged steps
+   * are written to `incomplete_curve` (unless empty; the name marks them
+   * as such) before the error goes on.
+   */
+  template <class Solver>
+  void
+  run_keeping_converged_steps(Solver            &solver,
+                              std::ostream      &log,
+                              const std::string &incomplete_curve)
+  {
+    try
+      {
+        solver.run(log);
+      }
+    catch (const std::exception &)
+      {
+        if (!incomplete_curve.empty() && !solver.get_steps().empty())
+          solver.write_csv(incomplete_curve);
+        throw;
       }
   }
 
