@@ -54,7 +54,8 @@ namespace FourierSSI
                       "1",
                       Patterns::Integer(1, 40),
                       "Solve, refine globally, solve again ... (convergence "
-                      "studies).");
+                      "studies). Replaced by Target accuracy when that is "
+                      "set (the log says so).");
     prm.declare_entry("Target accuracy",
                       "",
                       Patterns::Anything(),
@@ -139,9 +140,6 @@ namespace FourierSSI
           }
         AssertThrow(target_accuracy > 0. && target_accuracy < 1.,
                     ExcMessage(error));
-        AssertThrow(refinement_cycles == 1,
-                    ExcMessage("Discretization/Target accuracy: replaces "
-                               "Refinement cycles (leave it at 1)"));
         // The designed discretization is FE_Q(4) (its grading pairs with
         // the 10-node interface element; FE_Q(4) does not lock).
         AssertThrow(volumetric != "bbar",

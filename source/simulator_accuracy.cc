@@ -147,6 +147,15 @@ namespace FourierSSI
   {
     const double target = parameters.discretization.target_accuracy;
     const double limit  = parameters.adaptivity.maximum_dofs;
+    // The target decides which meshes are solved: a scene written as a
+    // convergence study (Refinement cycles > 1) runs with a target appended,
+    // and the log says what the target replaced.
+    if (parameters.discretization.refinement_cycles != 1)
+      log << "Discretization/Refinement cycles = "
+          << parameters.discretization.refinement_cycles
+          << ": replaced by the nested meshes of Discretization/Target "
+             "accuracy"
+          << std::endl;
     Timer        run_timer;
     double       last_member_time = 0., dofs = 0.;
     unsigned int member = 0, last_solved = 0;
