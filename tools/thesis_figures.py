@@ -2,15 +2,19 @@
 """Regenerate the thesis figure families with error bars (issue 14, item 5).
 
 Usage: tools/thesis_figures.py [--exe build/fourier-ssi] [--mpi 2]
-                               [--only footing,pile] [--out doc/figures]
+                               [--only footing,pile,table-4-1,table-7-1]
+                               [--out doc/figures]
 
 Runs the stiffness sweeps of prm/sweeps/ (footing: Figs 4.6-4.11, 80 cases;
 pile: Figs 6.2-6.7, 48 flexible and 48 rigid cases), each case driven by the
 sweep file's 'target accuracy' (1e-4 rough, 1e-3 smooth) through one
 'fourier-ssi --batch' job (tools/sweep.py), copies the CSVs to --out and
 plots them with tools/plot_sweeps.py (every point with its error bar, the
-largest error in each panel's title). Prints the wall time of each step and
-of the whole set.
+largest error in each panel's title). The tables, each in one --batch
+process (--mpi does not apply): Table 4.1 (30 cases,
+benchmarks/table-4-1/run.py --target 1e-4,1e-3 -> table-4-1.csv, .md) and
+Table 7.1 (tools/table_7_1.py -> table-7-1.csv, .md). Prints the wall time
+of each step and of the whole set.
 """
 import argparse
 import os
@@ -25,6 +29,15 @@ FAMILIES = {
     "footing": ("prm/sweeps/footing.sweep", ["footing-stiffness"]),
     "pile": ("prm/sweeps/pile.sweep", ["pile-stiffness", "pile-stiffness-rigid"]),
 }
+# The tables: the command that writes them into OUT (one process each).
+TABLES = {
+    "table-4-1": lambda exe, out: [
+        os.path.join(ROOT, "benchmarks/table-4-1/run.py"), "--exe", exe, "--target",
+        "1e-4,1e-3", "--out", out, "--tag", "table-4-1"],
+    "table-7-1": lambda exe, out: [
+        os.path.join(ROOT, "tools/table_7_1.py"), "--exe", exe, "--target", "1e-4,1e-3",
+        "--out", out],
+}
 
 
 def main():
@@ -33,14 +46,20 @@ def main():
     ap.add_argument("--mpi", type=int, default=2, metavar="N",
                     help="MPI ranks of the --batch job (0: one process, no mpirun)")
     ap.add_argument("--mpirun", default="mpirun")
-    ap.add_argument("--only", default="footing,pile")
+    ap.add_argument("--only", default=",".join([*FAMILIES, *TABLES]))
     ap.add_argument("--out", default=os.path.join(ROOT, "doc/figures"))
     args = ap.parse_args()
     work = tempfile.mkdtemp(prefix="thesis-figures-")
     t_all = time.time()
     for name in args.only.split(","):
+        if name in TABLES:
+            t0 = time.time()
+            if subprocess.run([sys.executable, *TABLES[name](args.exe, args.out)]).returncode:
+                sys.exit(f"{name}: the table failed")
+            print(f"{name}: {time.time() - t0:.1f} s wall, one process", flush=True)
+            continue
         if name not in FAMILIES:
-            sys.exit(f"--only: '{name}' is not one of {', '.join(FAMILIES)}")
+            sys.exit(f"--only: '{name}' is not one of {', '.join([*FAMILIES, *TABLES])}")
         sweep, stems = FAMILIES[name]
         t0 = time.time()
         cmd = [sys.executable, os.path.join(ROOT, "tools/sweep.py"), os.path.join(ROOT, sweep),

@@ -22,6 +22,16 @@ Usage: benchmarks/table-4-1/run.py [--exe BUILD/fourier-ssi] [--levels 4]
        [--L 100] [--out benchmarks/table-4-1] [--rows bonded,k1e10,...]
        [--nus 0,0.3]
 Writes OUT/table-4-1.csv (one row per nu, model, level) and OUT/table-4-1.md.
+
+With --target ROUGH,SMOOTH (e.g. 1e-4,1e-3) the same scenes are driven by
+Discretization/Target accuracy instead (ROUGH for the bonded and interface
+rows, SMOOTH for the smooth one): the program designs its nested FE_Q(4)
+meshes from the coarse mesh above and stops when the estimated relative
+error of the foundation's motion is below the target
+(doc/accuracy-vs-time.md). Every case runs in one 'fourier-ssi --batch'
+process. Writes OUT/TAG.csv and OUT/TAG.md (default tag table-4-1-target):
+each value with its estimated error, next to the thesis, the exact smooth
+value and the 4-level Richardson study of benchmarks/table-4-1/table-4-1.csv.
 """
 import argparse
 import csv
@@ -78,7 +88,7 @@ def mesh_entries(L, h_edge=0.05, n_foot=6, n_out=14, n_depth=16):
     return g_foot, g_out, g_depth
 
 
-def prm_text(row, nu, L, levels, directory):
+def prm_text(row, nu, L, levels, directory, target=None):
     G = 1000.0
     E = 2 * G * (1 + nu)
     g_foot, g_out, g_depth = mesh_entries(L)
@@ -141,6 +151,11 @@ def prm_text(row, nu, L, levels, directory):
         "  set Write vtu = false",
         "end",
     ]
+    if target is not None:
+        # The design replaces Refinement cycles; a case the DoF limit stops
+        # keeps its value, marked not converged.
+        lines += ["subsection Discretization", f"  set Target accuracy = {target:g}", "end",
+                  "subsection Adaptivity", "  set Allow unconverged = true", "end"]
     return "\n".join(lines) + "\n", E
 
 
@@ -171,12 +186,19 @@ def main():
     ap.add_argument("--out", default=here)
     ap.add_argument("--rows", default=",".join(ROWS))
     ap.add_argument("--nus", default=",".join(str(n) for n in NUS))
-    ap.add_argument("--tag", default="table-4-1")
+    ap.add_argument("--tag", default=None,
+                    help="output stem (default table-4-1, with --target table-4-1-target)")
+    ap.add_argument("--target", default=None, metavar="ROUGH,SMOOTH",
+                    help="drive every case by Discretization/Target accuracy (e.g. 1e-4,1e-3)")
     ap.add_argument("--from-csv", action="store_true",
                     help="only rewrite OUT/TAG.md from OUT/TAG.csv")
     args = ap.parse_args()
     rows = args.rows.split(",")
     nus = [float(x) for x in args.nus.split(",")]
+    if args.tag is None:
+        args.tag = "table-4-1-target" if args.target else "table-4-1"
+    if args.target:
+        return run_targets(args, rows, nus, here)
     if args.from_csv:
         with open(os.path.join(args.out, args.tag + ".csv")) as f:
             records = list(csv.DictReader(f))
@@ -233,6 +255,124 @@ def main():
         for r in records:
             w.writerow(r)
     write_markdown(records, rows, nus, args, os.path.join(args.out, args.tag + ".md"))
+
+
+def read_last_cycle(path):
+    """The rows of the answer's mesh (the last cycle of results.csv), and
+    the computation summed over every mesh solved."""
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    last = max(int(r["cycle"]) for r in rows)
+    values = {r["quantity"]: float(r["value"]) for r in rows if int(r["cycle"]) == last}
+    values["members"] = last + 1
+    values["seconds"] = sum(float(r["value"]) for r in rows if r["quantity"] in (
+        "time_setup", "time_assembly", "time_interface_assembly", "time_solve",
+        "time_postprocess"))
+    return values
+
+
+def study_values(here):
+    """The 4-level Richardson study (table-4-1.csv), extrapolated values."""
+    path = os.path.join(here, "table-4-1.csv")
+    study = {}
+    if os.path.exists(path):
+        with open(path) as f:
+            for r in csv.DictReader(f):
+                if r["level"] == "extrapolated":
+                    study[(r["model"], float(r["nu"]))] = float(r["value"])
+    return study
+
+
+def run_targets(args, rows, nus, here):
+    """Every (row, nu) driven by Target accuracy in one --batch process."""
+    try:
+        rough, smooth = (float(x) for x in args.target.split(","))
+    except ValueError:
+        sys.exit(f"--target: '{args.target}' is not ROUGH,SMOOTH (e.g. 1e-4,1e-3)")
+    work = tempfile.mkdtemp(prefix="table41-target-")
+    cases = []
+    for row in rows:
+        for nu in nus:
+            out = os.path.join(work, f"{row}-{nu}")
+            target = smooth if row == "smooth" else rough
+            text, E = prm_text(row, nu, args.L, 1, out, target)
+            with open(out + ".prm", "w") as f:
+                f.write(text)
+            cases.append((row, nu, E, target, out))
+    with open(os.path.join(work, "cases.txt"), "w") as f:
+        f.write("".join(c[4] + ".prm\n" for c in cases))
+    t0 = time.time()
+    p = subprocess.run([args.exe, "--batch", "--csv", os.path.join(work, "batch.csv"),
+                        os.path.join(work, "cases.txt")],
+                       stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    wall = time.time() - t0
+    if p.returncode != 0:
+        sys.exit(f"fourier-ssi --batch failed ({p.stderr.strip()}); cases in {work}")
+    study = study_values(here)
+    records = []
+    for row, nu, E, target, out in cases:
+        res = read_last_cycle(os.path.join(out, "results.csv"))
+        value = res["foundation_rotation"] * E  # theta E_s a^3 / M, M = 1, a = 1
+        error = res["foundation_rotation_error"]
+        ref = reference(row, NUS.index(nu), nu)
+        old = study.get((row, nu))
+        records.append(dict(
+            model=row, nu=f"{nu:g}", L=f"{args.L:g}", value=f"{value:.8f}",
+            error=f"{error:.2e}", target=f"{target:g}",
+            converged=int(res.get("target_accuracy_reached", 0)),
+            reference=f"{ref:.5f}", diff_percent=f"{100 * (value / ref - 1):+.3f}",
+            study=f"{old:.6f}" if old else "",
+            diff_study=f"{value / old - 1:+.1e}" if old else "",
+            dofs=int(res["n_dofs"]), members=res["members"], seconds=f"{res['seconds']:.2f}"))
+        print(f"{row:7s} nu={nu:<5g} {value:.6f} +- {error:.1e} (rel, target {target:g}, "
+              f"{'reached' if records[-1]['converged'] else 'NOT reached'}) ref {ref:.5f} "
+              f"({records[-1]['diff_percent']}%), {int(res['n_dofs'])} DoFs, "
+              f"{res['seconds']:.1f} s", flush=True)
+    fields = list(records[0])
+    with open(os.path.join(args.out, args.tag + ".csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=fields)
+        w.writeheader()
+        w.writerows(records)
+    write_target_markdown(records, rows, nus, args, wall,
+                          os.path.join(args.out, args.tag + ".md"))
+    print(f"{len(cases)} cases in {wall:.1f} s wall (one --batch process); largest estimated "
+          f"error {max(float(r['error']) for r in records):.1e} -> "
+          f"{os.path.join(args.out, args.tag)}.csv, .md")
+    return 0
+
+
+def write_target_markdown(records, rows, nus, args, wall, path):
+    get = {(r["model"], float(r["nu"])): r for r in records}
+    out = [f"# Table 4.1 at target accuracy (L = {args.L:g} a)", "",
+           "Generated by `benchmarks/table-4-1/run.py --target "
+           f"{args.target}` (tools/thesis_figures.py). theta E_s a^3 / M "
+           "with its estimated relative error (Discretization/Target accuracy: "
+           "rough/bonded and interface rows at the first target, smooth at the "
+           "second); in brackets the thesis value (smooth: exact "
+           f"3(1-nu^2)/4, half-space). {len(records)} cases in {wall:.0f} s wall, "
+           "one process.", "",
+           "| row | " + " | ".join(f"nu = {nu:g}" for nu in nus) + " |",
+           "|---" * (len(nus) + 1) + "|"]
+    for row in rows:
+        cells = []
+        for nu in nus:
+            r = get[(row, nu)]
+            mark = "" if r["converged"] else " (not reached)"
+            cells.append(f"{float(r['value']):.5f} ± {float(r['error']):.0e}{mark} "
+                         f"({float(r['reference']):.5f})")
+        out.append(f"| {LABEL[row]} | " + " | ".join(cells) + " |")
+    out += ["", "## Every case", "",
+            "| row | nu | value | est. rel. error | target | reached | thesis / exact "
+            "| diff % | 4-level Richardson study | rel. diff to study | DoFs | meshes "
+            "| computation [s] |",
+            "|---" * 13 + "|"]
+    for r in records:
+        out.append(f"| {r['model']} | {r['nu']} | {r['value']} | {r['error']} | {r['target']} "
+                   f"| {'yes' if r['converged'] else 'no'} | {r['reference']} "
+                   f"| {r['diff_percent']} | {r['study']} | {r['diff_study']} | {r['dofs']} "
+                   f"| {r['members']} | {r['seconds']} |")
+    with open(path, "w") as f:
+        f.write("\n".join(out) + "\n")
 
 
 def write_markdown(records, rows, nus, args, path):

@@ -1,10 +1,19 @@
 # Run a bundled scene exactly as shipped and check its results.csv.
 # The scene runs in WORK_DIR (in the build tree), so its relative
 # Output/Directory lands there and nothing is written to the source tree.
+# With APPEND (a .prm file) the scene runs with those entries appended
+# (later entries win): WORK_DIR/scene.prm.
 # Usage: cmake -DEXE=... -DPRM=... -DRESULTS=<path relative to WORK_DIR>
-#              -DCHECKS=... -DCHECKER=... -DWORK_DIR=... -P run_scene.cmake
+#              -DCHECKS=... -DCHECKER=... -DWORK_DIR=... [-DAPPEND=...]
+#              -P run_scene.cmake
 file(REMOVE_RECURSE ${WORK_DIR})
 file(MAKE_DIRECTORY ${WORK_DIR})
+if(APPEND)
+  file(READ ${PRM} scene)
+  file(READ ${APPEND} entries)
+  file(WRITE ${WORK_DIR}/scene.prm "${scene}\n${entries}")
+  set(PRM ${WORK_DIR}/scene.prm)
+endif()
 execute_process(COMMAND ${EXE} ${PRM}
                 RESULT_VARIABLE exit_code
                 OUTPUT_VARIABLE out
