@@ -2,7 +2,7 @@
 """Regenerate the thesis figure families with error bars (issue 14, item 5).
 
 Usage: tools/thesis_figures.py [--exe build/fourier-ssi] [--mpi 2]
-                               [--only footing,pile,table-4-1,table-7-1]
+                               [--only footing,pile,table-4-1,table-7-1,disc]
                                [--out doc/figures]
 
 Runs the stiffness sweeps of prm/sweeps/ (footing: Figs 4.6-4.11, 80 cases;
@@ -11,10 +11,12 @@ sweep file's 'target accuracy' (1e-4 rough, 1e-3 smooth) through one
 'fourier-ssi --batch' job (tools/sweep.py), copies the CSVs to --out and
 plots them with tools/plot_sweeps.py (every point with its error bar, the
 largest error in each panel's title). The tables, each in one --batch
-process (--mpi does not apply): Table 4.1 (30 cases,
+process (--mpi does not apply there): Table 4.1 (30 cases,
 benchmarks/table-4-1/run.py --target 1e-4,1e-3 -> table-4-1.csv, .md) and
-Table 7.1 (tools/table_7_1.py -> table-7-1.csv, .md). Prints the wall time
-of each step and of the whole set.
+Table 7.1 (tools/table_7_1.py -> table-7-1.csv, .md), and the disc
+stresses of Figs 5.6-5.24 (10 cases, tools/plot_disc.py --converged ->
+disc-stresses-converged.csv, .png, disc-stresses-poisson.png). Prints the
+wall time of each step and of the whole set.
 """
 import argparse
 import os
@@ -29,14 +31,17 @@ FAMILIES = {
     "footing": ("prm/sweeps/footing.sweep", ["footing-stiffness"]),
     "pile": ("prm/sweeps/pile.sweep", ["pile-stiffness", "pile-stiffness-rigid"]),
 }
-# The tables: the command that writes them into OUT (one process each).
-TABLES = {
+# The tables and the disc stresses: the command that writes them into OUT
+# (one --batch process each).
+SCRIPTS = {
     "table-4-1": lambda exe, out: [
         os.path.join(ROOT, "benchmarks/table-4-1/run.py"), "--exe", exe, "--target",
         "1e-4,1e-3", "--out", out, "--tag", "table-4-1"],
     "table-7-1": lambda exe, out: [
         os.path.join(ROOT, "tools/table_7_1.py"), "--exe", exe, "--target", "1e-4,1e-3",
         "--out", out],
+    "disc": lambda exe, out: [
+        os.path.join(ROOT, "tools/plot_disc.py"), "--converged", "--exe", exe, "--out", out],
 }
 
 
@@ -46,20 +51,20 @@ def main():
     ap.add_argument("--mpi", type=int, default=2, metavar="N",
                     help="MPI ranks of the --batch job (0: one process, no mpirun)")
     ap.add_argument("--mpirun", default="mpirun")
-    ap.add_argument("--only", default=",".join([*FAMILIES, *TABLES]))
+    ap.add_argument("--only", default=",".join([*FAMILIES, *SCRIPTS]))
     ap.add_argument("--out", default=os.path.join(ROOT, "doc/figures"))
     args = ap.parse_args()
     work = tempfile.mkdtemp(prefix="thesis-figures-")
     t_all = time.time()
     for name in args.only.split(","):
-        if name in TABLES:
+        if name in SCRIPTS:
             t0 = time.time()
-            if subprocess.run([sys.executable, *TABLES[name](args.exe, args.out)]).returncode:
+            if subprocess.run([sys.executable, *SCRIPTS[name](args.exe, args.out)]).returncode:
                 sys.exit(f"{name}: the table failed")
             print(f"{name}: {time.time() - t0:.1f} s wall, one process", flush=True)
             continue
         if name not in FAMILIES:
-            sys.exit(f"--only: '{name}' is not one of {', '.join([*FAMILIES, *TABLES])}")
+            sys.exit(f"--only: '{name}' is not one of {', '.join([*FAMILIES, *SCRIPTS])}")
         sweep, stems = FAMILIES[name]
         t0 = time.time()
         cmd = [sys.executable, os.path.join(ROOT, "tools/sweep.py"), os.path.join(ROOT, sweep),
