@@ -115,9 +115,10 @@ def main():
     ap.add_argument("--target", default="1e-4,1e-3", metavar="ROUGH,SMOOTH")
     args = ap.parse_args()
     try:
-        targets = dict(zip(("rough", "smooth"), (float(x) for x in args.target.split(","))))
+        rough, smooth = (float(x) for x in args.target.split(","))
     except ValueError:
         sys.exit(f"--target: '{args.target}' is not ROUGH,SMOOTH (e.g. 1e-4,1e-3)")
+    targets = {"rough": rough, "smooth": smooth}
     work = tempfile.mkdtemp(prefix="table71-")
     cases = [(i, n) for i in ("rough", "smooth") for n in (10, 6)]
     for interface, nodes in cases:
