@@ -1,5 +1,6 @@
 #include <chrono>
 #include <cmath>
+#include <deal.II/base/parallel.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 #include <fourier_ssi/coupled_iteration.h>
@@ -15,15 +16,46 @@ namespace FourierSSI
     const std::string entry = "Soil plasticity";
 
     /**
-     * The soil iteration relaxes by Aitken unless acceleration is off;
-     * Anderson (Nonlinear interfaces/Acceleration = anderson) is built for
-     * the interface iteration only, so the soil falls back to Aitken.
+     * Stiffness = tangent: the shortest fraction of a Newton update the
+     * backtracking tries, and how many updates without a new smallest
+     * residual mean the iteration cycles between plastic states (the step
+     * is then cut).
      */
-    bool
-    uses_aitken(const NonlinearInterfaceParameters &settings)
+    constexpr double       smallest_step_length = 1. / 16.;
+    constexpr unsigned int stagnation_limit     = 20;
+    /**
+     * The tangent is refactorized when an update reduced the residual by
+     * less than this factor (the state it was built at has moved on).
+     */
+    constexpr double refresh_ratio = 0.1;
+
+    /**
+     * The acceleration of the out-of-balance iteration: Newton updates are
+     * taken as they are (relaxing them by Aitken or Anderson was measured
+     * to double the iterations, doc/soil-plasticity.md section 3); the
+     * initial-stiffness iteration takes Nonlinear interfaces/Acceleration.
+     */
+    NonlinearInterfaceParameters::Acceleration
+    acceleration_of(const NonlinearInterfaceParameters &settings,
+                    const bool                          tangent)
     {
-      return settings.acceleration !=
-             NonlinearInterfaceParameters::Acceleration::none;
+      return tangent ? NonlinearInterfaceParameters::Acceleration::none :
+                       settings.acceleration;
+    }
+
+    /** How the log names the iteration. */
+    std::string
+    iteration_name(const NonlinearInterfaceParameters &settings,
+                   const bool                          tangent)
+    {
+      using Acceleration = NonlinearInterfaceParameters::Acceleration;
+      if (tangent)
+        return "Newton on the coupled tangent, backtracking";
+      return settings.acceleration == Acceleration::aitken ?
+               "initial stiffness, Aitken" :
+             settings.acceleration == Acceleration::anderson ?
+               "initial stiffness, Anderson" :
+               "initial stiffness";
     }
 
     /** Strain components 0..3 carry the in-plane factor, 4, 5 the other. */
@@ -359,6 +391,37 @@ namespace FourierSSI
     return load_of(strain);
   }
 
+  std::vector<Vector<double>>
+  CoupledSoilSolver::out_of_balance_load(
+    const std::vector<Vector<double>> &fields)
+  {
+    std::vector<StrainVector> plastic;
+    SoilStepResult            result;
+    return_map(strain_samples(fields, 0.), plastic, result);
+    return load_of(plastic);
+  }
+
+  std::vector<Vector<double>>
+  CoupledSoilSolver::tangent_product(const std::vector<Vector<double>> &fields,
+                                     const std::vector<Vector<double>> &x)
+  {
+    update_tangent(strain_samples(fields, 0.));
+    std::vector<Vector<double>> y;
+    tangent->vmult(y, x);
+    return y;
+  }
+
+  double
+  CoupledSoilSolver::controlled_motion(const unsigned int    h,
+                                       const Vector<double> &v) const
+  {
+    const RigidFoundation *foundation = set.problem(h).get_foundation();
+    AssertThrow(foundation != nullptr,
+                ExcMessage("Nonlinear interfaces/Control: displacement "
+                           "control needs a Rigid foundation"));
+    return controlled_component(foundation->motion(v), settings.motion);
+  }
+
   double
   CoupledSoilSolver::controlled_load_factor(
     const std::vector<Vector<double>> &v,
@@ -368,25 +431,218 @@ namespace FourierSSI
     for (unsigned int h = 0; h < set.size(); ++h)
       if (harmonics[h].n == wanted.n && harmonics[h].family == wanted.family)
         {
-          const RigidFoundation *foundation = set.problem(h).get_foundation();
-          AssertThrow(foundation != nullptr,
-                      ExcMessage("Nonlinear interfaces/Control: displacement "
-                                 "control needs a Rigid foundation"));
-          const double by_pattern =
-            controlled_component(foundation->motion(pattern_solution[h]),
-                                 settings.motion);
+          const double by_pattern = controlled_motion(h, pattern_solution[h]);
           AssertThrow(by_pattern != 0.,
                       ExcMessage("Nonlinear interfaces/Controlled motion: "
                                  "the Rigid foundation loads do not drive "
                                  "this motion (give the load that does)"));
-          return (target - controlled_component(foundation->motion(v[h]),
-                                                settings.motion)) /
-                 by_pattern;
+          return (target - controlled_motion(h, v[h])) / by_pattern;
         }
     AssertThrow(false,
                 ExcMessage("Nonlinear interfaces/Controlled motion: its "
                            "harmonic is not solved"));
     return 0.;
+  }
+
+  bool
+  CoupledSoilSolver::softening_at(const unsigned int      p,
+                                  const unsigned int      k,
+                                  const StrainVector     &strain,
+                                  std::array<double, 36> &softening) const
+  {
+    const SoilPoint &point = points[p];
+    const double     G = point.shear_modulus, lambda = point.lambda;
+    const auto       stress = [&](const StrainVector &eps) {
+      StrainVector trial = hooke_stress(eps, lambda, G);
+      for (unsigned int c = 0; c < 6; ++c)
+        trial[c] -= committed.plastic[k][c];
+      return laws[point.law].return_map(trial,
+                                        G,
+                                        lambda + 2. * G / 3.,
+                                        point.depth);
+    };
+    const SoilReturn at = stress(strain);
+    if (at.state == SoilState::elastic)
+      return false;
+    // A step small next to the strain but far above round-off: the
+    // forward difference is then exact on each plane of the surface (the
+    // return is linear there); at an edge it takes one side's tangent.
+    double size = 0.;
+    for (const double e : strain)
+      size = std::max(size, std::abs(e));
+    const double step = 1e-6 * std::max(size, 1e-12);
+    for (unsigned int l = 0; l < 6; ++l)
+      {
+        StrainVector plus = strain, unit{};
+        plus[l] += step;
+        unit[l]                    = 1.;
+        const StrainVector s_plus  = stress(plus).stress,
+                           elastic = hooke_stress(unit, lambda, G);
+        for (unsigned int a = 0; a < 6; ++a)
+          softening[a * 6 + l] = elastic[a] - (s_plus[a] - at.stress[a]) / step;
+      }
+    return true;
+  }
+
+  void
+  CoupledSoilSolver::update_tangent(const std::vector<StrainVector> &strain)
+  {
+    const unsigned int N = sampling.n_samples(), H = set.size();
+    // 1. S_hg = theta integral of factor_h (D_e - D_ep) factor_g per point,
+    //    over the samples that yield; empty: a point elastic at every theta.
+    std::vector<std::vector<double>> factor(2 * H, std::vector<double>(N));
+    for (unsigned int h = 0; h < H; ++h)
+      for (unsigned int j = 0; j < N; ++j)
+        for (unsigned int kind = 0; kind < 2; ++kind)
+          factor[2 * h + kind][j] =
+            theta_factor(harmonics[h],
+                         kind == 0 ? ThetaFactor::in_plane :
+                                     ThetaFactor::circumferential,
+                         sampling.angle(j));
+    const auto   kind_of = [](const unsigned int a) { return a < 4 ? 0u : 1u; };
+    const double weight  = 2. * numbers::PI / N;
+    // softening[p][(a * 6 + b) * H^2 + h * H + g], the harmonic pair
+    // innermost (contiguous in the accumulation).
+    const unsigned int               HH = H * H;
+    std::vector<std::vector<double>> softening(points.size());
+    parallel::apply_to_subranges(
+      0u,
+      static_cast<unsigned int>(points.size()),
+      [&](const unsigned int first, const unsigned int last) {
+        std::array<double, 36> c;
+        std::vector<double>    f(6 * H);
+        for (unsigned int p = first; p < last; ++p)
+          for (unsigned int j = 0; j < N; ++j)
+            {
+              if (!softening_at(p, p * N + j, strain[p * N + j], c))
+                continue;
+              if (softening[p].empty())
+                softening[p].assign(36 * HH, 0.);
+              for (unsigned int a = 0; a < 6; ++a)
+                for (unsigned int h = 0; h < H; ++h)
+                  f[a * H + h] = factor[2 * h + kind_of(a)][j];
+              for (unsigned int a = 0; a < 6; ++a)
+                for (unsigned int b = 0; b < 6; ++b)
+                  {
+                    if (c[a * 6 + b] == 0.)
+                      continue;
+                    double *s = &softening[p][(a * 6 + b) * HH];
+                    for (unsigned int h = 0; h < H; ++h)
+                      {
+                        const double x = weight * f[a * H + h] * c[a * 6 + b];
+                        for (unsigned int g = 0; g < H; ++g)
+                          s[h * H + g] += x * f[b * H + g];
+                      }
+                  }
+            }
+      },
+      16);
+    // 2. K_t = diag(K_h) - the softening of the yielding cells, block row h
+    //    by harmonic h's thread.
+    if (!tangent)
+      {
+        std::vector<std::vector<std::vector<types::global_dof_index>>> dofs;
+        for (const SoilCell &cell : cells)
+          dofs.push_back(cell.dof_indices);
+        tangent = std::make_unique<CoupledTangent>(set, dofs);
+      }
+    tangent->reset_to_elastic();
+    const unsigned int n_dofs = component.size();
+    // Bbar of every shape function [cell-local point][h][i].
+    const auto shape_strains = [&](const SoilCell &cell, const unsigned int h) {
+      const unsigned int                     n_q = cell.radius.size();
+      std::vector<std::vector<StrainVector>> b(n_dofs,
+                                               std::vector<StrainVector>(n_q));
+      for (unsigned int i = 0; i < n_dofs; ++i)
+        {
+          for (unsigned int q = 0; q < n_q; ++q)
+            b[i][q] = operators[h].strain_of_component(component[i],
+                                                       cell.shape_value[q][i],
+                                                       cell.shape_grad[q][i],
+                                                       cell.radius[q]);
+          apply_bbar(cell.projection.get(), b[i]);
+        }
+      return b;
+    };
+    set.for_each([&](const unsigned int h) {
+      FullMatrix<double> local(n_dofs, n_dofs);
+      for (const SoilCell &cell : cells)
+        {
+          const unsigned int n_q    = cell.radius.size();
+          bool               yields = false;
+          for (unsigned int q = 0; q < n_q; ++q)
+            yields = yields || !softening[cell.first_point + q].empty();
+          if (!yields)
+            continue;
+          const auto row_strain = shape_strains(cell, h);
+          for (unsigned int g = 0; g < H; ++g)
+            {
+              const auto column_strain =
+                g == h ? row_strain : shape_strains(cell, g);
+              local = 0.;
+              for (unsigned int q = 0; q < n_q; ++q)
+                {
+                  const unsigned int p = cell.first_point + q;
+                  if (softening[p].empty())
+                    continue;
+                  const double *s  = &softening[p][h * H + g];
+                  const double  dV = points[p].dV;
+                  for (unsigned int j = 0; j < n_dofs; ++j)
+                    {
+                      StrainVector sb{};
+                      for (unsigned int a = 0; a < 6; ++a)
+                        for (unsigned int e = 0; e < 6; ++e)
+                          sb[a] += s[(a * 6 + e) * HH] * column_strain[j][q][e];
+                      for (unsigned int i = 0; i < n_dofs; ++i)
+                        {
+                          double sum = 0.;
+                          for (unsigned int a = 0; a < 6; ++a)
+                            sum += row_strain[i][q][a] * sb[a];
+                          local(i, j) += dV * sum;
+                        }
+                    }
+                }
+              tangent->subtract(
+                h, g, local, cell.dof_indices[h], cell.dof_indices[g]);
+            }
+        }
+    });
+    tangent->factorize();
+    tangent_pattern.resize(H);
+    for (unsigned int h = 0; h < H; ++h)
+      tangent_pattern[h] = set.problem(h).get_system_rhs();
+    tangent->solve(tangent_pattern);
+  }
+
+  std::vector<Vector<double>>
+  CoupledSoilSolver::tangent_correction(
+    const std::vector<Vector<double>> &residual) const
+  {
+    std::vector<Vector<double>> du = residual;
+    tangent->solve(du);
+    double load_change = 0.;
+    if (settings.control == NonlinearInterfaceParameters::Control::displacement)
+      {
+        const Harmonic wanted = controlled_harmonic(settings.motion);
+        for (unsigned int h = 0; h < set.size(); ++h)
+          if (harmonics[h].n == wanted.n &&
+              harmonics[h].family == wanted.family)
+            {
+              const double by_pattern =
+                controlled_motion(h, tangent_pattern[h]);
+              if (by_pattern != 0.)
+                load_change = -controlled_motion(h, du[h]) / by_pattern;
+            }
+      }
+    std::vector<Vector<double>> change(set.size());
+    set.for_each([&](const unsigned int h) {
+      du[h].add(load_change, tangent_pattern[h]);
+      change[h].reinit(du[h].size());
+      set.problem(h).get_system_matrix().vmult(change[h], du[h]);
+      change[h].add(-load_change, set.problem(h).get_system_rhs());
+      set.problem(h).get_homogeneous_constraints().set_zero(change[h]);
+    });
+    return change;
   }
 
   bool
@@ -396,12 +652,18 @@ namespace FourierSSI
   {
     const bool displacement_control =
       settings.control == NonlinearInterfaceParameters::Control::displacement;
+    const bool tangent_stiffness = parameters.soil_plasticity.tangent;
     std::vector<StrainVector> plastic;
-    // Aitken unless acceleration is off (see uses_aitken).
-    FixedPointAcceleration acceleration(uses_aitken(settings) ?
-                                          FixedPointAcceleration::Kind::aitken :
-                                          FixedPointAcceleration::Kind::none,
+    const auto acceleration_kind = acceleration_of(settings, tangent_stiffness);
+    FixedPointAcceleration acceleration(acceleration_kind,
                                         settings.anderson_depth);
+    // Stiffness = tangent: the last update (to go back along it when it
+    // overshot), and the progress of the iteration.
+    std::vector<Vector<double>> last_load(set.size()),
+      last_solution(set.size());
+    double       step_length = 1., previous_norm = 0., update_norm = 0.;
+    double       smallest_norm = std::numeric_limits<double>::max();
+    unsigned int updates = 0, since_smallest = 0;
     for (unsigned int iteration = 0; iteration <= settings.maximum_iterations;
          ++iteration)
       {
@@ -410,9 +672,9 @@ namespace FourierSSI
             controlled_load_factor(state.correction_solution, target) :
             target;
         // 1-2: strains at every (point, theta), the return mapping.
-        return_map(strain_samples(state.correction_solution, state.load_factor),
-                   plastic,
-                   result);
+        const std::vector<StrainVector> strain =
+          strain_samples(state.correction_solution, state.load_factor);
+        return_map(strain, plastic, result);
         // 3-4: out-of-balance load and force residual R = G - c.
         std::vector<Vector<double>> residual  = load_of(plastic);
         const double                load_norm = norm_over_harmonics(residual);
@@ -430,17 +692,60 @@ namespace FourierSSI
             result.residual   = scale > 0. ? residual_norm / scale : 0.;
             return true;
           }
+        if (tangent_stiffness)
+          {
+            // A Newton update that increased the residual crossed many
+            // changes of plastic state: halve it (backtracking).
+            if (updates > 0 && residual_norm > previous_norm &&
+                step_length > smallest_step_length)
+              {
+                step_length /= 2.;
+                for (unsigned int h = 0; h < set.size(); ++h)
+                  {
+                    state.correction_load[h].add(-step_length, last_load[h]);
+                    state.correction_solution[h].add(-step_length,
+                                                     last_solution[h]);
+                  }
+                continue;
+              }
+            // Cycling between plastic states: cut the step instead.
+            if (residual_norm < smallest_norm)
+              {
+                smallest_norm  = residual_norm;
+                since_smallest = 0;
+              }
+            else if (++since_smallest > stagnation_limit)
+              return false;
+            previous_norm = residual_norm;
+            update_norm   = residual_norm;
+            step_length   = 1.;
+            // A tangent that still contracts well is kept (modified
+            // Newton): refactorizing costs several iterations.
+            if (updates == 0 || residual_norm > refresh_ratio * update_norm)
+              {
+                update_tangent(strain);
+                // The map changed: the old differences mislead.
+                acceleration = FixedPointAcceleration(acceleration_kind,
+                                                      settings.anderson_depth);
+              }
+            residual = tangent_correction(residual);
+            ++updates;
+          }
         std::vector<Vector<double>> correction =
           acceleration.increment(state.correction_load, residual);
         std::vector<std::vector<Vector<double>>> increment(set.size());
         for (unsigned int h = 0; h < set.size(); ++h)
           {
             state.correction_load[h] += correction[h];
+            last_load[h] = correction[h];
             increment[h] = {std::move(correction[h])};
           }
         set.solve_increments(increment);
         for (unsigned int h = 0; h < set.size(); ++h)
-          state.correction_solution[h] += increment[h][0];
+          {
+            state.correction_solution[h] += increment[h][0];
+            last_solution[h] = increment[h][0];
+          }
       }
     return false;
   }
@@ -489,7 +794,8 @@ namespace FourierSSI
         << sampling.n_samples() << " theta samples, " << set.size()
         << " harmonics, " << (load_control ? "load" : "displacement")
         << " control, " << settings.load_steps << " steps, tolerance "
-        << settings.tolerance << (uses_aitken(settings) ? ", Aitken" : "")
+        << settings.tolerance << ", "
+        << iteration_name(settings, parameters.soil_plasticity.tangent)
         << (cells.front().projection ? ", B-bar" : "") << '\n';
     double       done = 0., increment = 1. / settings.load_steps;
     unsigned int cuts = 0;

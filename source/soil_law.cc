@@ -213,6 +213,17 @@ namespace FourierSSI
       "'id: mohr-coulomb, c=C, phi=PHI[, psi=PSI]' with c' [kPa], phi' and "
       "the dilation angle psi [degrees, 0 < phi < 90, 0 <= psi <= phi]. "
       "The loading and the iteration are set in 'Nonlinear interfaces'.");
+    prm.declare_entry(
+      "Stiffness",
+      "tangent",
+      Patterns::Selection("elastic|tangent"),
+      "What the out-of-balance iteration solves with. elastic: the kept "
+      "elastic factorization of every harmonic (initial stiffness, hundreds "
+      "of iterations per step near the limit load); tangent: Newton on all "
+      "harmonics together, their coupling through the plastic points "
+      "included (the tangent of the return mapping, theta-integrated for "
+      "every pair of harmonics; refactorized when an update reduced the "
+      "residual by less than 10x; benchmarks/soil-plasticity).");
     prm.leave_subsection();
   }
 
@@ -221,6 +232,7 @@ namespace FourierSSI
   {
     prm.enter_subsection("Soil plasticity");
     parse_law_list(prm.get("Laws"));
+    tangent = prm.get("Stiffness") == "tangent";
     prm.leave_subsection();
   }
 

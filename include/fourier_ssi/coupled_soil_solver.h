@@ -29,6 +29,7 @@
 #include <array>
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/bbar_projection.h>
+#include <fourier_ssi/coupled_tangent.h>
 #include <fourier_ssi/harmonic_set.h>
 #include <fourier_ssi/nonlinear_interface_parameters.h>
 #include <fourier_ssi/parameters.h>
@@ -89,6 +90,24 @@ namespace FourierSSI
      */
     std::vector<Vector<double>>
     soil_force(const std::vector<Vector<double>> &fields) const;
+
+    /**
+     * The out-of-balance load G(u) = int Bbar^T (D eps(u) - sigma(u)) of
+     * the displacement fields u (one per harmonic), the return mapping from
+     * the committed state: what the iteration balances.
+     */
+    std::vector<Vector<double>>
+    out_of_balance_load(const std::vector<Vector<double>> &fields);
+
+    /**
+     * K_t(u) x: the coupled tangent (Stiffness = tangent) built at the
+     * fields u and applied to x; K u - G(u) is the internal force, so
+     * K_t x = K x - dG/du x (checked against differences of
+     * out_of_balance_load in tests/soil_coupled_tangent.cc).
+     */
+    std::vector<Vector<double>>
+    tangent_product(const std::vector<Vector<double>> &fields,
+                    const std::vector<Vector<double>> &x);
 
     unsigned int
     n_soil_points() const
@@ -172,6 +191,40 @@ namespace FourierSSI
     RigidMotion
     motion_of(const StepState &state) const;
 
+    /**
+     * D_e - D_ep at sample k of point p (row-major 6 x 6, central
+     * differences of the return mapping from the committed state); false
+     * where the return is elastic (no softening).
+     */
+    bool
+    softening_at(const unsigned int      p,
+                 const unsigned int      k,
+                 const StrainVector     &strain,
+                 std::array<double, 36> &softening) const;
+
+    /**
+     * Stiffness = tangent: K_t,hg = delta_hg K_h - int Bbar_h^T
+     * [theta integral of factor_h (D_e - D_ep) factor_g] Bbar_g
+     * (coupled_tangent.h) at the strain samples given; factorized, with
+     * K_t^-1 F.
+     */
+    void
+    update_tangent(const std::vector<StrainVector> &strain);
+
+    /**
+     * The out-of-balance load correction of one tangent (Newton) step:
+     * du = K_t^-1 (R + dlambda F), dlambda keeping the controlled motion
+     * (displacement control; 0 under load control); returns
+     * dc = K du - dlambda F, the change of the correction load that moves
+     * the total displacement by du.
+     */
+    std::vector<Vector<double>>
+    tangent_correction(const std::vector<Vector<double>> &residual) const;
+
+    /** The controlled motion component of harmonic h's field v. */
+    double
+    controlled_motion(const unsigned int h, const Vector<double> &v) const;
+
     const HarmonicSet            &set;
     const AllParameters          &parameters;
     NonlinearInterfaceParameters  settings;
@@ -188,6 +241,9 @@ namespace FourierSSI
     std::vector<std::vector<StrainVector>> pattern_strain;
     StepState                              committed;
     std::vector<SoilStepResult>            steps;
+    /** Stiffness = tangent: the coupled tangent and K_t^-1 F. */
+    std::unique_ptr<CoupledTangent> tangent;
+    std::vector<Vector<double>>     tangent_pattern;
   };
 } // namespace FourierSSI
 

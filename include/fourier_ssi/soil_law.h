@@ -106,6 +106,13 @@ namespace FourierSSI
     }
 
     std::map<types::material_id, SoilLaw> laws;
+
+    /**
+     * What the coupled iteration re-solves with (doc/soil-plasticity.md
+     * section 3): the kept elastic factorizations only (initial stiffness),
+     * or the tangent of all harmonics coupled (Newton; coupled_tangent.h).
+     */
+    bool tangent = true;
   };
 } // namespace FourierSSI
 

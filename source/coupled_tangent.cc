@@ -1,0 +1,111 @@
+#include <deal.II/lac/affine_constraints.templates.h>
+#include <deal.II/lac/block_vector.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <fourier_ssi/coupled_tangent.h>
+
+namespace FourierSSI
+{
+  CoupledTangent::CoupledTangent(
+    const HarmonicSet &set,
+    const std::vector<std::vector<std::vector<types::global_dof_index>>>
+      &cell_dofs)
+    : set(set)
+  {
+    const unsigned int          H = set.size();
+    BlockDynamicSparsityPattern dsp(H, H);
+    for (unsigned int h = 0; h < H; ++h)
+      for (unsigned int g = 0; g < H; ++g)
+        dsp.block(h, g).reinit(set.problem(h).get_dof_handler().n_dofs(),
+                               set.problem(g).get_dof_handler().n_dofs());
+    dsp.collect_sizes();
+    for (unsigned int h = 0; h < H; ++h)
+      {
+        // The elastic couplings (the interfaces, the rigid foundation's
+        // constraints and the elastic materials included).
+        const SparseMatrix<double> &elastic =
+          set.problem(h).get_system_matrix();
+        for (unsigned int row = 0; row < elastic.m(); ++row)
+          for (auto entry = elastic.begin(row); entry != elastic.end(row);
+               ++entry)
+            dsp.block(h, h).add(row, entry->column());
+        const auto &rows = set.problem(h).get_homogeneous_constraints();
+        for (const auto &dofs : cell_dofs)
+          for (unsigned int g = 0; g < H; ++g)
+            rows.add_entries_local_to_global(
+              dofs[h],
+              set.problem(g).get_homogeneous_constraints(),
+              dofs[g],
+              dsp.block(h, g),
+              false);
+      }
+    pattern.copy_from(dsp);
+    matrix.reinit(pattern);
+  }
+
+  void
+  CoupledTangent::reset_to_elastic()
+  {
+    matrix = 0.;
+    set.for_each([&](const unsigned int h) {
+      const SparseMatrix<double> &elastic = set.problem(h).get_system_matrix();
+      SparseMatrix<double>       &block   = matrix.block(h, h);
+      for (unsigned int row = 0; row < elastic.m(); ++row)
+        for (auto entry = elastic.begin(row); entry != elastic.end(row);
+             ++entry)
+          block.set(row, entry->column(), entry->value());
+    });
+  }
+
+  void
+  CoupledTangent::subtract(
+    const unsigned int                          h,
+    const unsigned int                          g,
+    const FullMatrix<double>                   &local,
+    const std::vector<types::global_dof_index> &row_dofs,
+    const std::vector<types::global_dof_index> &column_dofs)
+  {
+    FullMatrix<double> negative(local.m(), local.n());
+    negative.add(-1., local);
+    set.problem(h).get_homogeneous_constraints().distribute_local_to_global(
+      negative,
+      row_dofs,
+      set.problem(g).get_homogeneous_constraints(),
+      column_dofs,
+      matrix.block(h, g));
+  }
+
+  void
+  CoupledTangent::factorize()
+  {
+    direct.factorize(matrix);
+    ++factorizations;
+  }
+
+  void
+  CoupledTangent::vmult(std::vector<Vector<double>>       &y,
+                        const std::vector<Vector<double>> &x) const
+  {
+    BlockVector<double> in(pattern.get_row_indices()),
+      out(pattern.get_row_indices());
+    for (unsigned int h = 0; h < x.size(); ++h)
+      in.block(h) = x[h];
+    matrix.vmult(out, in);
+    y.resize(x.size());
+    for (unsigned int h = 0; h < x.size(); ++h)
+      y[h] = out.block(h);
+  }
+
+  void
+  CoupledTangent::solve(std::vector<Vector<double>> &b_to_x) const
+  {
+    BlockVector<double> x(pattern.get_row_indices());
+    for (unsigned int h = 0; h < b_to_x.size(); ++h)
+      x.block(h) = b_to_x[h];
+    direct.solve(x);
+    for (unsigned int h = 0; h < b_to_x.size(); ++h)
+      {
+        b_to_x[h] = x.block(h);
+        set.problem(h).get_homogeneous_constraints().distribute(b_to_x[h]);
+      }
+  }
+} // namespace FourierSSI
