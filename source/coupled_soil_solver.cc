@@ -825,15 +825,35 @@ namespace FourierSSI
                         std::chrono::steady_clock::now() - start)
                         .count();
         steps.push_back(result);
-        const auto loads = applied_loads(result.load_factor);
-        log << "  step " << steps.size() << ": V " << loads[2] << " kN, H "
-            << loads[0] << " kN; w " << result.motion.vertical_displacement
-            << " m, u " << result.motion.horizontal_displacement << " m; "
-            << result.iterations << " iterations; plastic samples "
+        log << "  step " << steps.size() << ": ";
+        write_foundation_state(log, result.load_factor, result.motion);
+        log << "; " << result.iterations << " iterations; plastic samples "
             << result.n_plastic << " of " << result.n_plastic + result.n_elastic
             << "; max f " << result.largest_yield_value << " kPa; "
             << result.time << " s" << std::endl;
       }
+  }
+
+  void
+  CoupledSoilSolver::write_foundation_state(std::ostream      &log,
+                                            const double       load_factor,
+                                            const RigidMotion &motion) const
+  {
+    // The loads the scene applies (as in load-displacement.csv), each
+    // with the motion it works on.
+    const RigidFoundationParameters &f = parameters.rigid_foundation;
+    log << "V " << load_factor * f.vertical_force << " kN, H "
+        << load_factor * f.horizontal_force << " kN";
+    if (f.moment != 0.)
+      log << ", M " << load_factor * f.moment << " kNm";
+    if (f.torque != 0.)
+      log << ", T " << load_factor * f.torque << " kNm";
+    log << "; w " << motion.vertical_displacement << " m, u "
+        << motion.horizontal_displacement << " m";
+    if (f.moment != 0.)
+      log << ", rotation " << motion.rotation << " rad";
+    if (f.torque != 0.)
+      log << ", twist " << motion.twist << " rad";
   }
 
   void

@@ -221,6 +221,15 @@ namespace FourierSSI
     std::vector<Vector<double>>
     tangent_correction(const std::vector<Vector<double>> &residual) const;
 
+    /**
+     * The log's account of a step: V, H and the moment and torque where
+     * the scene applies them, with the motion each works on.
+     */
+    void
+    write_foundation_state(std::ostream      &log,
+                           const double       load_factor,
+                           const RigidMotion &motion) const;
+
     /** The controlled motion component of harmonic h's field v. */
     double
     controlled_motion(const unsigned int h, const Vector<double> &v) const;
