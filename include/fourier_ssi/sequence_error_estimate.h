@@ -23,7 +23,7 @@
  *      `design_member_ratio` = 0.4: measured, not derived. The member
  *      0 -> 1 error ratio e_1/e_0 of the accuracy study (8 cases: rough
  *      and smooth, footing and pile, alpha = 0 ... 1, nu = 0.25 and 0.49;
- *      27 goal values) lies in 0.17 ... 0.39, and in 0.03 ... 0.17 on the
+ *      24 goal values) lies in 0.17 ... 0.39, and in 0.03 ... 0.17 on the
  *      30 scenes of Table 4.1. With two values the estimate is
  *      |d| r/(1-r) and the truth |d| rho/(1-rho), so a ratio r above the
  *      largest rho never under-reports: 0.4 against rho = 0.39 (rough
