@@ -62,10 +62,14 @@ main()
                     1e-9);
   }
   {
-    // Two values: the assumed ratio, 0.5 -> error estimate = |d|.
+    // Two values: the assumed ratio of a design member, 0.4 -> error
+    // estimate = |d| 0.4 / 0.6 (eq. (1) with r = 0.4; round-off only).
     const SequenceErrorEstimate e =
       estimate_sequence_error({2., 1.5}, design_member_ratio);
-    check::relative("two values, assumed 0.5: |d|", e.absolute, 0.5, 1e-15);
+    check::relative("two values, assumed 0.4: |d| 2/3",
+                    e.absolute,
+                    0.5 * 0.4 / 0.6,
+                    1e-15);
     check::that("two values: not asymptotic", !e.asymptotic);
   }
   {
