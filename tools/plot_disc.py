@@ -39,6 +39,8 @@ import tempfile
 import zlib
 from collections import defaultdict
 
+from batch_runs import run_batch
+
 # Debian's python3-matplotlib / python3-numpy import under /usr/bin/python3
 # only; another python3 first on PATH may lack them: re-run under Debian's.
 try:
@@ -151,15 +153,8 @@ def converged(args):
                  f"subsection Output\n  set Directory = {out}\n  set Write vtu = true\nend\n")
         with open(out + ".prm", "w") as f:
             f.write(text)
-    with open(os.path.join(work, "cases.txt"), "w") as f:
-        f.write("".join(os.path.join(work, f"{itf}-{nu}.prm\n") for itf, nu in cases))
-    t0 = time.time()
-    p = subprocess.run([args.exe, "--batch", "--csv", os.path.join(work, "batch.csv"),
-                        os.path.join(work, "cases.txt")],
-                       stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    wall = time.time() - t0
-    if p.returncode != 0:
-        sys.exit(f"fourier-ssi --batch failed ({p.stderr.strip()}); cases in {work}")
+    wall = run_batch(args.exe, work,
+                     [os.path.join(work, f"{itf}-{nu}.prm") for itf, nu in cases])
     data, lines = {}, []
     csv_rows = ["interface,nu,r_over_r0,Sr_fe,St_fe,T_fe,Sr_exact,St_exact,T_exact,"
                 "Sr_nested,St_nested,T_nested"]

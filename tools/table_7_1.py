@@ -42,6 +42,8 @@ import shutil
 import subprocess
 import sys
 import tempfile
+
+from batch_runs import read_last_cycle, run_batch
 import time
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
@@ -83,14 +85,9 @@ def case_prm(interface, nodes, target, out):
 
 
 def read_case(out, assumed):
-    with open(os.path.join(out, "results.csv")) as f:
-        rows = list(csv.DictReader(f))
-    last = max(int(r["cycle"]) for r in rows)
-    res = {r["quantity"]: float(r["value"]) for r in rows if int(r["cycle"]) == last}
-    res["meshes"] = last + 1
-    res["seconds"] = sum(float(r["value"]) for r in rows if r["quantity"] in (
-        "time_setup", "time_assembly", "time_interface_assembly", "time_solve",
-        "time_postprocess"))
+    res = read_last_cycle(os.path.join(out, "results.csv"))
+    res["meshes"] = res["members"]
+    last = res["members"] - 1
     faces = []  # the longest face of every cycle: [(z, d_n, d_theta)], top first
     for c in range(last + 1):
         path = glob.glob(os.path.join(out, f"interface-5-n1-symmetric-cycle{c}.csv"))[0]
@@ -125,15 +122,8 @@ def main():
         out = os.path.join(work, f"{interface}-{nodes}")
         with open(out + ".prm", "w") as f:
             f.write(case_prm(interface, nodes, targets[interface], out))
-    with open(os.path.join(work, "cases.txt"), "w") as f:
-        f.write("".join(os.path.join(work, f"{i}-{n}.prm\n") for i, n in cases))
-    t0 = time.time()
-    p = subprocess.run([args.exe, "--batch", "--csv", os.path.join(work, "batch.csv"),
-                        os.path.join(work, "cases.txt")],
-                       stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    wall = time.time() - t0
-    if p.returncode != 0:
-        sys.exit(f"fourier-ssi --batch failed ({p.stderr.strip()}); cases in {work}")
+    wall = run_batch(args.exe, work,
+                     [os.path.join(work, f"{i}-{n}.prm") for i, n in cases])
 
     records, summary = [], []
     for interface, nodes in cases:

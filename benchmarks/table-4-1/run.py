@@ -42,6 +42,10 @@ import sys
 import tempfile
 import time
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
+                                "..", "..", "tools"))
+from batch_runs import read_last_cycle, run_batch  # noqa: E402
+
 THESIS = {
     "bonded": [0.66060, 0.67329, 0.67255, 0.65629, 0.62132, 0.56882],
     "k1e6": [0.68860, 0.70063, 0.69912, 0.68193, 0.64596, 0.59293],
@@ -257,19 +261,6 @@ def main():
     write_markdown(records, rows, nus, args, os.path.join(args.out, args.tag + ".md"))
 
 
-def read_last_cycle(path):
-    """The rows of the answer's mesh (the last cycle of results.csv), and
-    the computation summed over every mesh solved."""
-    with open(path) as f:
-        rows = list(csv.DictReader(f))
-    last = max(int(r["cycle"]) for r in rows)
-    values = {r["quantity"]: float(r["value"]) for r in rows if int(r["cycle"]) == last}
-    values["members"] = last + 1
-    values["seconds"] = sum(float(r["value"]) for r in rows if r["quantity"] in (
-        "time_setup", "time_assembly", "time_interface_assembly", "time_solve",
-        "time_postprocess"))
-    return values
-
 
 def study_values(here):
     """The 4-level Richardson study (table-4-1.csv), extrapolated values."""
@@ -299,15 +290,7 @@ def run_targets(args, rows, nus, here):
             with open(out + ".prm", "w") as f:
                 f.write(text)
             cases.append((row, nu, E, target, out))
-    with open(os.path.join(work, "cases.txt"), "w") as f:
-        f.write("".join(c[4] + ".prm\n" for c in cases))
-    t0 = time.time()
-    p = subprocess.run([args.exe, "--batch", "--csv", os.path.join(work, "batch.csv"),
-                        os.path.join(work, "cases.txt")],
-                       stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
-    wall = time.time() - t0
-    if p.returncode != 0:
-        sys.exit(f"fourier-ssi --batch failed ({p.stderr.strip()}); cases in {work}")
+    wall = run_batch(args.exe, work, [c[4] + ".prm" for c in cases])
     study = study_values(here)
     records = []
     for row, nu, E, target, out in cases:
