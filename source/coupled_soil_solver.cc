@@ -23,11 +23,6 @@ namespace FourierSSI
      */
     constexpr double       smallest_step_length = 1. / 16.;
     constexpr unsigned int stagnation_limit     = 20;
-    /**
-     * The tangent is refactorized when an update reduced the residual by
-     * less than this factor (the state it was built at has moved on).
-     */
-    constexpr double refresh_ratio = 0.1;
 
     /**
      * The acceleration of the out-of-balance iteration: Newton updates are
@@ -548,38 +543,51 @@ namespace FourierSSI
       }
     tangent->reset_to_elastic();
     const unsigned int n_dofs = component.size();
-    // Bbar of every shape function [cell-local point][h][i].
-    const auto shape_strains = [&](const SoilCell &cell, const unsigned int h) {
-      const unsigned int                     n_q = cell.radius.size();
-      std::vector<std::vector<StrainVector>> b(n_dofs,
-                                               std::vector<StrainVector>(n_q));
-      for (unsigned int i = 0; i < n_dofs; ++i)
+    // The cells with a yielding point, and the Bbar strains of their shape
+    // functions for every harmonic [yielding cell][h][i][q], once per build
+    // (every block row h needs every column harmonic g).
+    std::vector<unsigned int> yielding;
+    for (unsigned int c = 0; c < cells.size(); ++c)
+      for (unsigned int q = 0; q < cells[c].radius.size(); ++q)
+        if (!softening[cells[c].first_point + q].empty())
+          {
+            yielding.push_back(c);
+            break;
+          }
+    using ShapeStrains = std::vector<std::vector<StrainVector>>;
+    std::vector<std::vector<ShapeStrains>> strains(
+      yielding.size(), std::vector<ShapeStrains>(H));
+    set.for_each([&](const unsigned int h) {
+      for (unsigned int y = 0; y < yielding.size(); ++y)
         {
-          for (unsigned int q = 0; q < n_q; ++q)
-            b[i][q] = operators[h].strain_of_component(component[i],
-                                                       cell.shape_value[q][i],
-                                                       cell.shape_grad[q][i],
-                                                       cell.radius[q]);
-          apply_bbar(cell.projection.get(), b[i]);
+          const SoilCell    &cell = cells[yielding[y]];
+          const unsigned int n_q  = cell.radius.size();
+          ShapeStrains       b(n_dofs, std::vector<StrainVector>(n_q));
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            {
+              for (unsigned int q = 0; q < n_q; ++q)
+                b[i][q] =
+                  operators[h].strain_of_component(component[i],
+                                                   cell.shape_value[q][i],
+                                                   cell.shape_grad[q][i],
+                                                   cell.radius[q]);
+              apply_bbar(cell.projection.get(), b[i]);
+            }
+          strains[y][h] = std::move(b);
         }
-      return b;
-    };
+    });
+    // Block row h: K_t,hg -= int Bbar_h^T S_hg Bbar_g.
     set.for_each([&](const unsigned int h) {
       FullMatrix<double> local(n_dofs, n_dofs);
-      for (const SoilCell &cell : cells)
+      for (unsigned int y = 0; y < yielding.size(); ++y)
         {
-          const unsigned int n_q    = cell.radius.size();
-          bool               yields = false;
-          for (unsigned int q = 0; q < n_q; ++q)
-            yields = yields || !softening[cell.first_point + q].empty();
-          if (!yields)
-            continue;
-          const auto row_strain = shape_strains(cell, h);
+          const SoilCell     &cell       = cells[yielding[y]];
+          const unsigned int  n_q        = cell.radius.size();
+          const ShapeStrains &row_strain = strains[y][h];
           for (unsigned int g = 0; g < H; ++g)
             {
-              const auto column_strain =
-                g == h ? row_strain : shape_strains(cell, g);
-              local = 0.;
+              const ShapeStrains &column_strain = strains[y][g];
+              local                             = 0.;
               for (unsigned int q = 0; q < n_q; ++q)
                 {
                   const unsigned int p = cell.first_point + q;
@@ -598,11 +606,11 @@ namespace FourierSSI
                           double sum = 0.;
                           for (unsigned int a = 0; a < 6; ++a)
                             sum += row_strain[i][q][a] * sb[a];
-                          local(i, j) += dV * sum;
+                          local(i, j) -= dV * sum;
                         }
                     }
                 }
-              tangent->subtract(
+              tangent->add(
                 h, g, local, cell.dof_indices[h], cell.dof_indices[g]);
             }
         }
@@ -654,14 +662,14 @@ namespace FourierSSI
       settings.control == NonlinearInterfaceParameters::Control::displacement;
     const bool tangent_stiffness = parameters.soil_plasticity.tangent;
     std::vector<StrainVector> plastic;
-    const auto acceleration_kind = acceleration_of(settings, tangent_stiffness);
-    FixedPointAcceleration acceleration(acceleration_kind,
+    FixedPointAcceleration    acceleration(acceleration_of(settings,
+                                                        tangent_stiffness),
                                         settings.anderson_depth);
     // Stiffness = tangent: the last update (to go back along it when it
     // overshot), and the progress of the iteration.
     std::vector<Vector<double>> last_load(set.size()),
       last_solution(set.size());
-    double       step_length = 1., previous_norm = 0., update_norm = 0.;
+    double       step_length = 1., previous_norm = 0.;
     double       smallest_norm = std::numeric_limits<double>::max();
     unsigned int updates = 0, since_smallest = 0;
     for (unsigned int iteration = 0; iteration <= settings.maximum_iterations;
@@ -717,17 +725,10 @@ namespace FourierSSI
             else if (++since_smallest > stagnation_limit)
               return false;
             previous_norm = residual_norm;
-            update_norm   = residual_norm;
             step_length   = 1.;
-            // A tangent that still contracts well is kept (modified
-            // Newton): refactorizing costs several iterations.
-            if (updates == 0 || residual_norm > refresh_ratio * update_norm)
-              {
-                update_tangent(strain);
-                // The map changed: the old differences mislead.
-                acceleration = FixedPointAcceleration(acceleration_kind,
-                                                      settings.anderson_depth);
-              }
+            // Rebuilt at every update: keeping it for 3-10 updates (modified
+            // Newton) was measured slower (doc/soil-plasticity.md 3b).
+            update_tangent(strain);
             residual = tangent_correction(residual);
             ++updates;
           }

@@ -57,17 +57,14 @@ namespace FourierSSI
   }
 
   void
-  CoupledTangent::subtract(
-    const unsigned int                          h,
-    const unsigned int                          g,
-    const FullMatrix<double>                   &local,
-    const std::vector<types::global_dof_index> &row_dofs,
-    const std::vector<types::global_dof_index> &column_dofs)
+  CoupledTangent::add(const unsigned int                          h,
+                      const unsigned int                          g,
+                      const FullMatrix<double>                   &local,
+                      const std::vector<types::global_dof_index> &row_dofs,
+                      const std::vector<types::global_dof_index> &column_dofs)
   {
-    FullMatrix<double> negative(local.m(), local.n());
-    negative.add(-1., local);
     set.problem(h).get_homogeneous_constraints().distribute_local_to_global(
-      negative,
+      local,
       row_dofs,
       set.problem(g).get_homogeneous_constraints(),
       column_dofs,

@@ -222,8 +222,8 @@ namespace FourierSSI
       "of iterations per step near the limit load); tangent: Newton on all "
       "harmonics together, their coupling through the plastic points "
       "included (the tangent of the return mapping, theta-integrated for "
-      "every pair of harmonics; refactorized when an update reduced the "
-      "residual by less than 10x; benchmarks/soil-plasticity).");
+      "every pair of harmonics, refactorized at every update; "
+      "benchmarks/soil-plasticity).");
     prm.leave_subsection();
   }
 

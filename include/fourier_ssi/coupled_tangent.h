@@ -43,13 +43,16 @@ namespace FourierSSI
     void
     reset_to_elastic();
 
-    /** Block (h, g) -= the condensed local matrix (thread-safe per h). */
+    /**
+     * Block (h, g) += the condensed local matrix (the softening enters
+     * negated; thread-safe per block row h).
+     */
     void
-    subtract(const unsigned int                          h,
-             const unsigned int                          g,
-             const FullMatrix<double>                   &local,
-             const std::vector<types::global_dof_index> &row_dofs,
-             const std::vector<types::global_dof_index> &column_dofs);
+    add(const unsigned int                          h,
+        const unsigned int                          g,
+        const FullMatrix<double>                   &local,
+        const std::vector<types::global_dof_index> &row_dofs,
+        const std::vector<types::global_dof_index> &column_dofs);
 
     void
     factorize();
