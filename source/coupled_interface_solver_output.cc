@@ -25,25 +25,15 @@ namespace FourierSSI
   void
   CoupledInterfaceSolver::write_csv(const std::string &filename) const
   {
-    std::ofstream out(filename);
-    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
-    out << load_step_csv_header << ",stick,slip,open,time_s,harmonics,"
-        << "converged\n"
-        << std::setprecision(12);
-    for (unsigned int s = 0; s < steps.size(); ++s)
-      {
-        const LoadStepResult &r = steps[s];
-        write_load_step_columns(out,
-                                s + 1,
-                                r.load_factor,
-                                parameters.rigid_foundation,
-                                r.motion,
-                                r.iterations,
-                                r.residual);
-        out << ',' << r.states[0] << ',' << r.states[1] << ',' << r.states[2]
-            << ',' << r.time << ',' << r.n_harmonics << ",1\n";
-      }
-    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+    write_load_step_csv(filename,
+                        steps,
+                        parameters.rigid_foundation,
+                        "stick,slip,open,time_s,harmonics",
+                        [](std::ostream &out, const LoadStepResult &r) {
+                          out << r.states[0] << ',' << r.states[1] << ','
+                              << r.states[2] << ',' << r.time << ','
+                              << r.n_harmonics;
+                        });
   }
 
   void

@@ -860,24 +860,13 @@ namespace FourierSSI
   void
   CoupledSoilSolver::write_csv(const std::string &filename) const
   {
-    std::ofstream out(filename);
-    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
-    out << load_step_csv_header << ",elastic,plastic,max_yield_kPa,time_s,"
-        << "converged\n"
-        << std::setprecision(12);
-    for (unsigned int s = 0; s < steps.size(); ++s)
-      {
-        const SoilStepResult &r = steps[s];
-        write_load_step_columns(out,
-                                s + 1,
-                                r.load_factor,
-                                parameters.rigid_foundation,
-                                r.motion,
-                                r.iterations,
-                                r.residual);
-        out << ',' << r.n_elastic << ',' << r.n_plastic << ','
-            << r.largest_yield_value << ',' << r.time << ",1\n";
-      }
-    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+    write_load_step_csv(filename,
+                        steps,
+                        parameters.rigid_foundation,
+                        "elastic,plastic,max_yield_kPa,time_s",
+                        [](std::ostream &out, const SoilStepResult &r) {
+                          out << r.n_elastic << ',' << r.n_plastic << ','
+                              << r.largest_yield_value << ',' << r.time;
+                        });
   }
 } // namespace FourierSSI

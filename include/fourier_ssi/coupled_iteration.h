@@ -9,12 +9,15 @@
 #define fourier_ssi_coupled_iteration_h
 
 #include <array>
+#include <deal.II/base/exceptions.h>
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/anderson_acceleration.h>
 #include <fourier_ssi/harmonic.h>
 #include <fourier_ssi/nonlinear_interface_parameters.h>
 #include <fourier_ssi/results_table.h>
 #include <fourier_ssi/rigid_foundation.h>
+#include <fstream>
+#include <iomanip>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -69,6 +72,41 @@ namespace FourierSSI
                           const RigidMotion               &motion,
                           const unsigned int               iterations,
                           const double                     residual);
+
+  /**
+   * load-displacement.csv of a coupled solver: per converged step the
+   * leading columns of load_step_csv_header, then the solver's own
+   * (`extra_header`; write_extra(out, step result) writes them), then
+   * converged = 1.
+   */
+  template <class StepResult, class ExtraColumns>
+  void
+  write_load_step_csv(const std::string               &filename,
+                      const std::vector<StepResult>   &steps,
+                      const RigidFoundationParameters &foundation,
+                      const std::string               &extra_header,
+                      const ExtraColumns              &write_extra)
+  {
+    std::ofstream out(filename);
+    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+    out << load_step_csv_header << ',' << extra_header << ",converged\n"
+        << std::setprecision(12);
+    for (unsigned int s = 0; s < steps.size(); ++s)
+      {
+        const StepResult &r = steps[s];
+        write_load_step_columns(out,
+                                s + 1,
+                                r.load_factor,
+                                foundation,
+                                r.motion,
+                                r.iterations,
+                                r.residual);
+        out << ',';
+        write_extra(out, r);
+        out << ",1\n";
+      }
+    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+  }
 
   /**
    * The rows of results.csv every coupled solver writes per converged load
