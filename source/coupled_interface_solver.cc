@@ -689,9 +689,12 @@ namespace FourierSSI
   }
 
   std::array<double, 6>
-  CoupledInterfaceSolver::applied_loads(const double load_factor) const
+  CoupledInterfaceSolver::applied_loads(const double load_factor,
+                                        const double held_fraction) const
   {
-    return applied_foundation_loads(parameters.rigid_foundation, load_factor);
+    return applied_foundation_loads(parameters.rigid_foundation,
+                                    load_factor,
+                                    held_fraction);
   }
 
   RigidMotion

@@ -54,29 +54,37 @@ namespace FourierSSI
 
   std::array<double, 6>
   applied_foundation_loads(const RigidFoundationParameters &f,
-                           const double                     load_factor)
+                           const double                     load_factor,
+                           const double                     held_fraction)
   {
     const double z_ref = f.reference_elevation;
-    return {{load_factor * f.horizontal_force,
-             load_factor * f.horizontal_force_y,
-             load_factor * f.vertical_force,
-             load_factor * (f.moment_x - z_ref * f.horizontal_force_y),
-             load_factor * (f.moment + z_ref * f.horizontal_force),
-             load_factor * f.torque}};
+    const double H     = load_factor * f.horizontal_force +
+                     held_fraction * f.held_horizontal_force;
+    const double M = load_factor * f.moment + held_fraction * f.held_moment;
+    return {
+      {H,
+       load_factor * f.horizontal_force_y,
+       load_factor * f.vertical_force + held_fraction * f.held_vertical_force,
+       load_factor * (f.moment_x - z_ref * f.horizontal_force_y),
+       M + z_ref * H,
+       load_factor * f.torque + held_fraction * f.held_torque}};
   }
 
   void
   write_load_step_columns(std::ostream                    &out,
                           const unsigned int               step,
                           const double                     load_factor,
+                          const double                     held_fraction,
                           const RigidFoundationParameters &f,
                           const RigidMotion               &motion,
                           const unsigned int               iterations,
                           const double                     residual)
   {
-    out << step << ',' << load_factor << ',' << load_factor * f.vertical_force
-        << ',' << load_factor * f.horizontal_force << ','
-        << load_factor * f.moment << ',' << load_factor * f.torque << ','
+    // M about the reference point, as given in the prm.
+    const auto loads = applied_foundation_loads(f, load_factor, held_fraction);
+    const double moment = loads[4] - f.reference_elevation * loads[0];
+    out << step << ',' << load_factor << ',' << loads[2] << ',' << loads[0]
+        << ',' << moment << ',' << loads[5] << ','
         << motion.vertical_displacement << ',' << motion.horizontal_displacement
         << ',' << motion.rotation << ',' << motion.twist << ',' << iterations
         << ',' << residual;

@@ -101,6 +101,8 @@ namespace FourierSSI
                              "through the Rigid foundation"));
     make_points();
     solve_load_pattern();
+    if (parameters.rigid_foundation.any_held())
+      solve_held_loads();
     committed.correction_solution = pattern_solution;
     for (Vector<double> &v : committed.correction_solution)
       v = 0.;
@@ -201,6 +203,40 @@ namespace FourierSSI
     pattern_strain = strain_amplitudes(pattern_solution);
   }
 
+  void
+  CoupledSoilSolver::solve_held_loads()
+  {
+    std::vector<std::vector<Vector<double>>> b(set.size());
+    double                                   norm_sqr = 0., dot = 0.;
+    for (unsigned int h = 0; h < set.size(); ++h)
+      {
+        const Vector<double> &pattern_load = set.problem(h).get_system_rhs();
+        Vector<double>        held(pattern_load.size());
+        if (const RigidFoundation *foundation = set.problem(h).get_foundation())
+          foundation->add_held_loads(held);
+        norm_sqr += held.norm_sqr();
+        dot += held * pattern_load;
+        b[h] = {std::move(held)};
+      }
+    held_load_norm   = std::sqrt(norm_sqr);
+    pattern_held_dot = dot;
+    set.solve_increments(b);
+    for (unsigned int h = 0; h < set.size(); ++h)
+      held_solution.push_back(b[h][0]);
+    held_strain = strain_amplitudes(held_solution);
+  }
+
+  double
+  CoupledSoilSolver::applied_load_norm(const StepState &state) const
+  {
+    const double lambda = state.load_factor, rho = state.held_fraction;
+    const double norm_sqr =
+      lambda * lambda * pattern_load_norm * pattern_load_norm +
+      2. * lambda * rho * pattern_held_dot +
+      rho * rho * held_load_norm * held_load_norm;
+    return std::sqrt(std::max(norm_sqr, 0.));
+  }
+
   std::vector<std::vector<StrainVector>>
   CoupledSoilSolver::strain_amplitudes(
     const std::vector<Vector<double>> &fields) const
@@ -238,7 +274,8 @@ namespace FourierSSI
   std::vector<StrainVector>
   CoupledSoilSolver::strain_samples(
     const std::vector<Vector<double>> &correction,
-    const double                       load_factor) const
+    const double                       load_factor,
+    const double                       held_fraction) const
   {
     const unsigned int        N = sampling.n_samples(), H = set.size();
     const auto                amplitude = strain_amplitudes(correction);
@@ -248,7 +285,9 @@ namespace FourierSSI
       for (unsigned int k = 0; k < 6; ++k)
         {
           for (unsigned int h = 0; h < H; ++h)
-            a[h] = amplitude[p][h][k] + load_factor * pattern_strain[p][h][k];
+            a[h] =
+              amplitude[p][h][k] + load_factor * pattern_strain[p][h][k] +
+              (held_strain.empty() ? 0. : held_fraction * held_strain[p][h][k]);
           sampling.evaluate(a, factor_of(k), s);
           for (unsigned int j = 0; j < N; ++j)
             samples[p * N + j][k] = s[j];
@@ -392,7 +431,7 @@ namespace FourierSSI
   {
     std::vector<StrainVector> plastic;
     SoilStepResult            result;
-    return_map(strain_samples(fields, 0.), plastic, result);
+    return_map(strain_samples(fields, 0., 0.), plastic, result);
     return load_of(plastic);
   }
 
@@ -400,7 +439,7 @@ namespace FourierSSI
   CoupledSoilSolver::tangent_product(const std::vector<Vector<double>> &fields,
                                      const std::vector<Vector<double>> &x)
   {
-    update_tangent(strain_samples(fields, 0.));
+    update_tangent(strain_samples(fields, 0., 0.));
     std::vector<Vector<double>> y;
     tangent->vmult(y, x);
     return y;
@@ -418,9 +457,8 @@ namespace FourierSSI
   }
 
   double
-  CoupledSoilSolver::controlled_load_factor(
-    const std::vector<Vector<double>> &v,
-    const double                       target) const
+  CoupledSoilSolver::controlled_load_factor(const StepState &state,
+                                            const double     target) const
   {
     const Harmonic wanted = controlled_harmonic(settings.motion);
     for (unsigned int h = 0; h < set.size(); ++h)
@@ -431,7 +469,10 @@ namespace FourierSSI
                       ExcMessage("Nonlinear interfaces/Controlled motion: "
                                  "the Rigid foundation loads do not drive "
                                  "this motion (give the load that does)"));
-          return (target - controlled_motion(h, v[h])) / by_pattern;
+          double now = controlled_motion(h, state.correction_solution[h]);
+          if (!held_solution.empty())
+            now += state.held_fraction * controlled_motion(h, held_solution[h]);
+          return (target - now) / by_pattern;
         }
     AssertThrow(false,
                 ExcMessage("Nonlinear interfaces/Controlled motion: its "
@@ -624,12 +665,13 @@ namespace FourierSSI
 
   std::vector<Vector<double>>
   CoupledSoilSolver::tangent_correction(
-    const std::vector<Vector<double>> &residual) const
+    const std::vector<Vector<double>> &residual,
+    const bool                         displacement_control) const
   {
     std::vector<Vector<double>> du = residual;
     tangent->solve(du);
     double load_change = 0.;
-    if (settings.control == NonlinearInterfaceParameters::Control::displacement)
+    if (displacement_control)
       {
         const Harmonic wanted = controlled_harmonic(settings.motion);
         for (unsigned int h = 0; h < set.size(); ++h)
@@ -655,11 +697,16 @@ namespace FourierSSI
 
   bool
   CoupledSoilSolver::solve_step(const double    target,
+                                const bool      holding,
                                 StepState      &state,
                                 SoilStepResult &result)
   {
+    // Holding: the held loads come on at a fixed load factor.
     const bool displacement_control =
+      !holding &&
       settings.control == NonlinearInterfaceParameters::Control::displacement;
+    if (holding)
+      state.held_fraction = target;
     const bool tangent_stiffness = parameters.soil_plasticity.tangent;
     std::vector<StrainVector> plastic;
     FixedPointAcceleration    acceleration(acceleration_of(settings,
@@ -675,13 +722,15 @@ namespace FourierSSI
     for (unsigned int iteration = 0; iteration <= settings.maximum_iterations;
          ++iteration)
       {
-        state.load_factor =
-          displacement_control ?
-            controlled_load_factor(state.correction_solution, target) :
-            target;
+        if (!holding)
+          state.load_factor = displacement_control ?
+                                controlled_load_factor(state, target) :
+                                target;
         // 1-2: strains at every (point, theta), the return mapping.
         const std::vector<StrainVector> strain =
-          strain_samples(state.correction_solution, state.load_factor);
+          strain_samples(state.correction_solution,
+                         state.load_factor,
+                         state.held_fraction);
         return_map(strain, plastic, result);
         // 3-4: out-of-balance load and force residual R = G - c.
         std::vector<Vector<double>> residual  = load_of(plastic);
@@ -689,8 +738,8 @@ namespace FourierSSI
         for (unsigned int h = 0; h < set.size(); ++h)
           residual[h] -= state.correction_load[h];
         const double residual_norm = norm_over_harmonics(residual);
-        const double applied = std::abs(state.load_factor) * pattern_load_norm;
-        const double scale   = applied > 0. ? applied : load_norm;
+        const double applied       = applied_load_norm(state);
+        const double scale         = applied > 0. ? applied : load_norm;
         if (!std::isfinite(residual_norm))
           return false;
         if (residual_norm <= settings.tolerance * scale)
@@ -729,7 +778,7 @@ namespace FourierSSI
             // Rebuilt at every update: keeping it for 3-10 updates (modified
             // Newton) was measured slower (doc/soil-plasticity.md 3b).
             update_tangent(strain);
-            residual = tangent_correction(residual);
+            residual = tangent_correction(residual, displacement_control);
             ++updates;
           }
         std::vector<Vector<double>> correction =
@@ -752,9 +801,12 @@ namespace FourierSSI
   }
 
   std::array<double, 6>
-  CoupledSoilSolver::applied_loads(const double load_factor) const
+  CoupledSoilSolver::applied_loads(const double load_factor,
+                                   const double held_fraction) const
   {
-    return applied_foundation_loads(parameters.rigid_foundation, load_factor);
+    return applied_foundation_loads(parameters.rigid_foundation,
+                                    load_factor,
+                                    held_fraction);
   }
 
   RigidMotion
@@ -769,6 +821,8 @@ namespace FourierSSI
           continue;
         Vector<double> u = pattern_solution[h];
         u.sadd(state.load_factor, 1., state.correction_solution[h]);
+        if (!held_solution.empty())
+          u.add(state.held_fraction, held_solution[h]);
         const RigidMotion m = foundation->motion(u);
         total.vertical_displacement += m.vertical_displacement;
         total.twist += m.twist;
@@ -783,6 +837,8 @@ namespace FourierSSI
   {
     Vector<double> u = pattern_solution[i];
     u.sadd(committed.load_factor, 1., committed.correction_solution[i]);
+    if (!held_solution.empty())
+      u.add(committed.held_fraction, held_solution[i]);
     return u;
   }
 
@@ -798,36 +854,73 @@ namespace FourierSSI
         << settings.tolerance << ", "
         << iteration_name(settings, parameters.soil_plasticity.tangent)
         << (cells.front().projection ? ", B-bar" : "") << '\n';
-    double       done = 0., increment = 1. / settings.load_steps;
+    if (!held_solution.empty())
+      {
+        log << "held loads first (" << settings.held_load_steps
+            << " load-controlled steps), then held: ";
+        write_held_loads(log);
+        log << '\n';
+        run_stage(true, settings.held_load_steps, log);
+      }
+    run_stage(false, settings.load_steps, log);
+  }
+
+  void
+  CoupledSoilSolver::write_held_loads(std::ostream &log) const
+  {
+    const auto   held = applied_loads(0., 1.);
+    const double z    = parameters.rigid_foundation.reference_elevation;
+    log << "V " << held[2] << " kN, H " << held[0] << " kN, M "
+        << held[4] - z * held[0] << " kNm, T " << held[5] << " kNm";
+  }
+
+  void
+  CoupledSoilSolver::run_stage(const bool         holding,
+                               const unsigned int n_steps,
+                               std::ostream      &log)
+  {
+    const bool load_control =
+      settings.control == NonlinearInterfaceParameters::Control::load;
+    // Displacement control moves from where the held loads left the
+    // controlled motion to Target.
+    const double start =
+      holding || load_control ?
+        0. :
+        controlled_component(motion_of(committed), settings.motion);
+    double       done = 0., increment = 1. / n_steps;
     unsigned int cuts = 0;
     while (done < 1. - 1e-12)
       {
-        const double fraction = std::min(1., done + increment);
-        const double target =
-          load_control ? fraction : fraction * settings.target;
-        StepState      state = committed;
+        const double   fraction = std::min(1., done + increment);
+        const double   target   = holding || load_control ?
+                                    fraction :
+                                    start + fraction * (settings.target - start);
+        StepState      state    = committed;
         SoilStepResult result;
-        const auto     start = std::chrono::steady_clock::now();
-        if (!solve_step(target, state, result))
+        const auto     clock = std::chrono::steady_clock::now();
+        if (!solve_step(target, holding, state, result))
           {
             AssertThrow(++cuts <= settings.maximum_step_cuts,
                         ExcMessage(unconverged_step_message(entry,
                                                             steps.size(),
                                                             settings)));
             increment /= 2.;
-            log << "  step cut to " << increment << " of the loading\n";
+            log << "  step cut to " << increment << " of the "
+                << (holding ? "held loads" : "loading") << '\n';
             continue;
           }
-        committed          = state;
-        done               = fraction;
-        result.load_factor = state.load_factor;
-        result.motion      = motion_of(state);
-        result.time        = std::chrono::duration<double>(
-                        std::chrono::steady_clock::now() - start)
+        committed            = state;
+        done                 = fraction;
+        result.load_factor   = state.load_factor;
+        result.held_fraction = state.held_fraction;
+        result.motion        = motion_of(state);
+        result.time          = std::chrono::duration<double>(
+                        std::chrono::steady_clock::now() - clock)
                         .count();
         steps.push_back(result);
-        log << "  step " << steps.size() << ": ";
-        write_foundation_state(log, result.load_factor, result.motion);
+        log << "  step " << steps.size()
+            << (holding ? " (held loads): " : ": ");
+        write_foundation_state(log, result);
         log << "; " << result.iterations << " iterations; plastic samples "
             << result.n_plastic << " of " << result.n_plastic + result.n_elastic
             << "; max f " << result.largest_yield_value << " kPa; "
@@ -836,24 +929,26 @@ namespace FourierSSI
   }
 
   void
-  CoupledSoilSolver::write_foundation_state(std::ostream      &log,
-                                            const double       load_factor,
-                                            const RigidMotion &motion) const
+  CoupledSoilSolver::write_foundation_state(std::ostream         &log,
+                                            const SoilStepResult &result) const
   {
-    // The loads the scene applies (as in load-displacement.csv), each
-    // with the motion it works on.
+    // The loads the scene applies (as in load-displacement.csv: M about the
+    // reference point), each with the motion it works on.
     const RigidFoundationParameters &f = parameters.rigid_foundation;
-    log << "V " << load_factor * f.vertical_force << " kN, H "
-        << load_factor * f.horizontal_force << " kN";
-    if (f.moment != 0.)
-      log << ", M " << load_factor * f.moment << " kNm";
-    if (f.torque != 0.)
-      log << ", T " << load_factor * f.torque << " kNm";
+    const auto loads = applied_loads(result.load_factor, result.held_fraction);
+    const RigidMotion &motion = result.motion;
+    const bool         moment = f.moment != 0. || f.held_moment != 0.;
+    const bool         torque = f.torque != 0. || f.held_torque != 0.;
+    log << "V " << loads[2] << " kN, H " << loads[0] << " kN";
+    if (moment)
+      log << ", M " << loads[4] - f.reference_elevation * loads[0] << " kNm";
+    if (torque)
+      log << ", T " << loads[5] << " kNm";
     log << "; w " << motion.vertical_displacement << " m, u "
         << motion.horizontal_displacement << " m";
-    if (f.moment != 0.)
+    if (moment)
       log << ", rotation " << motion.rotation << " rad";
-    if (f.torque != 0.)
+    if (torque)
       log << ", twist " << motion.twist << " rad";
   }
 
@@ -863,10 +958,11 @@ namespace FourierSSI
     write_load_step_csv(filename,
                         steps,
                         parameters.rigid_foundation,
-                        "elastic,plastic,max_yield_kPa,time_s",
+                        "elastic,plastic,max_yield_kPa,time_s,held_fraction",
                         [](std::ostream &out, const SoilStepResult &r) {
                           out << r.n_elastic << ',' << r.n_plastic << ','
-                              << r.largest_yield_value << ',' << r.time;
+                              << r.largest_yield_value << ',' << r.time << ','
+                              << r.held_fraction;
                         });
   }
 } // namespace FourierSSI

@@ -210,7 +210,27 @@ namespace FourierSSI
                 "Stiffness coefficients (unit H and M)",
                 1,
                 Family::symmetric);
+        require(foundation.held_vertical_force,
+                "Held vertical force",
+                0,
+                Family::symmetric);
+        require(foundation.held_torque,
+                "Held torque",
+                0,
+                Family::antisymmetric);
+        require(foundation.held_horizontal_force,
+                "Held horizontal force",
+                1,
+                Family::symmetric);
+        require(foundation.held_moment, "Held moment", 1, Family::symmetric);
       }
+
+    // Held loads are a stage of a nonlinear load path; a linear solve has
+    // no path (add them to the loads).
+    AssertThrow(!foundation.any_held() || parameters.soil_plasticity.any(),
+                ExcMessage("Rigid foundation/Held ...: not yet: held loads "
+                           "without plastic soil (in a linear or interface "
+                           "run add them to the loads)"));
 
     // A rigid foundation tied to DoFs of a boundary fixed in u, v and w is
     // clamped by the supports (typically the soil's material id given as

@@ -17,13 +17,22 @@ namespace FourierSSI
                       Patterns::Integer(1),
                       "Equal steps from 0 to the full loads (load control) "
                       "or to the target motion (displacement control).");
+    prm.declare_entry("Held load steps",
+                      "4",
+                      Patterns::Integer(1),
+                      "Plastic soil with Rigid foundation/Held ... loads: "
+                      "equal load-controlled steps from 0 to the held loads, "
+                      "taken before the Load steps (which then start from "
+                      "the held state).");
     prm.declare_entry("Control",
                       "load",
                       Patterns::Selection("load|displacement"),
                       "load: the Rigid foundation loads (H, M, V, T) times "
                       "step/steps. displacement: those loads give the "
                       "direction, their factor is found so that the "
-                      "controlled motion reaches Target (past a peak too).");
+                      "controlled motion reaches Target (past a peak too); "
+                      "after held loads, in equal steps from the motion they "
+                      "left.");
     prm.declare_entry("Controlled motion",
                       "vertical",
                       Patterns::Selection("vertical|twist|horizontal|rotation"),
@@ -88,8 +97,9 @@ namespace FourierSSI
   NonlinearInterfaceParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Nonlinear interfaces");
-    theta_samples = prm.get_integer("Theta samples");
-    load_steps    = prm.get_integer("Load steps");
+    theta_samples   = prm.get_integer("Theta samples");
+    load_steps      = prm.get_integer("Load steps");
+    held_load_steps = prm.get_integer("Held load steps");
     control =
       prm.get("Control") == "load" ? Control::load : Control::displacement;
     const std::string m = prm.get("Controlled motion");

@@ -59,6 +59,27 @@ namespace FourierSSI
                       "0",
                       Patterns::Double(),
                       "T [kN.m] about +z (harmonic 0, antisymmetric).");
+    prm.declare_entry("Held vertical force",
+                      "0",
+                      Patterns::Double(),
+                      "Plastic soil: V [kN] applied first (Nonlinear "
+                      "interfaces/Held load steps) and then held while the "
+                      "loads above are scaled by the load or displacement "
+                      "control: a combined loading path (a fixed V, then H "
+                      "or M).");
+    prm.declare_entry("Held horizontal force",
+                      "0",
+                      Patterns::Double(),
+                      "Plastic soil: held H_x [kN] (see Held vertical force).");
+    prm.declare_entry("Held moment",
+                      "0",
+                      Patterns::Double(),
+                      "Plastic soil: held M_y [kN.m] about the reference "
+                      "point (see Held vertical force).");
+    prm.declare_entry("Held torque",
+                      "0",
+                      Patterns::Double(),
+                      "Plastic soil: held T [kN.m] (see Held vertical force).");
     prm.declare_entry("Stiffness coefficients",
                       "false",
                       Patterns::Bool(),
@@ -95,17 +116,27 @@ namespace FourierSSI
   RigidFoundationParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Rigid foundation");
-    enabled             = prm.get_bool("Enabled");
-    tie                 = prm.get("Tie");
-    id                  = prm.get_integer("Id");
-    normal_only         = prm.get("Tied components") == "normal";
-    reference_elevation = prm.get_double("Reference elevation");
-    horizontal_force    = prm.get_double("Horizontal force");
-    moment              = prm.get_double("Moment");
-    horizontal_force_y  = prm.get_double("Horizontal force y");
-    moment_x            = prm.get_double("Moment x");
-    vertical_force      = prm.get_double("Vertical force");
-    torque              = prm.get_double("Torque");
+    enabled               = prm.get_bool("Enabled");
+    tie                   = prm.get("Tie");
+    id                    = prm.get_integer("Id");
+    normal_only           = prm.get("Tied components") == "normal";
+    reference_elevation   = prm.get_double("Reference elevation");
+    horizontal_force      = prm.get_double("Horizontal force");
+    moment                = prm.get_double("Moment");
+    horizontal_force_y    = prm.get_double("Horizontal force y");
+    moment_x              = prm.get_double("Moment x");
+    vertical_force        = prm.get_double("Vertical force");
+    torque                = prm.get_double("Torque");
+    held_horizontal_force = prm.get_double("Held horizontal force");
+    held_moment           = prm.get_double("Held moment");
+    held_vertical_force   = prm.get_double("Held vertical force");
+    held_torque           = prm.get_double("Held torque");
+    AssertThrow(!any_held() || enabled,
+                ExcMessage("Rigid foundation/Held ...: held loads act on the "
+                           "rigid foundation; set Enabled = true"));
+    AssertThrow(!(normal_only && held_horizontal_force != 0.),
+                ExcMessage("Rigid foundation/Held horizontal force: 'Tied "
+                           "components = normal' has no horizontal stiffness"));
     AssertThrow(!(normal_only && enabled &&
                   (horizontal_force != 0. || horizontal_force_y != 0.)),
                 ExcMessage("Rigid foundation: 'Tied components = normal' is a "
@@ -351,6 +382,31 @@ namespace FourierSSI
   }
 
   void
+  RigidFoundation::add_held_loads(Vector<double> &rhs) const
+  {
+    // Held H and M are along x and about y: the symmetric family of n = 1.
+    const bool symmetric = harmonic.family == Family::symmetric;
+    add_master_forces(rhs,
+                      master_forces(symmetric ?
+                                      parameters.held_horizontal_force :
+                                      0.,
+                                    symmetric ? parameters.held_moment : 0.,
+                                    parameters.held_vertical_force,
+                                    parameters.held_torque));
+  }
+
+  void
+  RigidFoundation::add_master_forces(Vector<double>     &rhs,
+                                     const MasterValues &forces) const
+  {
+    const std::array<types::global_dof_index, 3> masters = {
+      {master_U, master_V, master_W}};
+    for (unsigned int k = 0; k < 3; ++k)
+      if (forces[k] != 0.)
+        rhs(masters[k]) += forces[k];
+  }
+
+  void
   RigidFoundation::add_loads(Vector<double> &rhs) const
   {
     // The antisymmetric family's rigid motion is the symmetric one turned by
@@ -359,14 +415,9 @@ namespace FourierSSI
     const bool   symmetric = harmonic.family == Family::symmetric;
     const double H =
       symmetric ? parameters.horizontal_force : parameters.horizontal_force_y;
-    const double       M = symmetric ? parameters.moment : -parameters.moment_x;
-    const MasterValues f =
-      master_forces(H, M, parameters.vertical_force, parameters.torque);
-    const std::array<types::global_dof_index, 3> masters = {
-      {master_U, master_V, master_W}};
-    for (unsigned int k = 0; k < 3; ++k)
-      if (f[k] != 0.)
-        rhs(masters[k]) += f[k];
+    const double M = symmetric ? parameters.moment : -parameters.moment_x;
+    add_master_forces(
+      rhs, master_forces(H, M, parameters.vertical_force, parameters.torque));
   }
 
   RigidMotion

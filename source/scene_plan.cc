@@ -181,6 +181,13 @@ namespace FourierSSI
           add(foundation.moment, 1, Family::symmetric, "M_y");
           add(foundation.horizontal_force_y, 1, Family::antisymmetric, "H_y");
           add(foundation.moment_x, 1, Family::antisymmetric, "M_x");
+          add(foundation.held_vertical_force, 0, Family::symmetric, "held V");
+          add(foundation.held_torque, 0, Family::antisymmetric, "held T");
+          add(foundation.held_horizontal_force,
+              1,
+              Family::symmetric,
+              "held H_x");
+          add(foundation.held_moment, 1, Family::symmetric, "held M_y");
           if (foundation.stiffness_coefficients)
             reasons[{1, Family::symmetric}].push_back(
               "unit H and M for the stiffness coefficients");

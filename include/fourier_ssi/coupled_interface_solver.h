@@ -68,6 +68,8 @@ namespace FourierSSI
   {
     /** Factor on the scene's loads (load control: step / n_steps). */
     double load_factor = 0.;
+    /** Fraction of the held loads: none here (a plastic-soil stage). */
+    double held_fraction = 0.;
     /** Rigid motion of the foundation (RigidMotion fields). */
     RigidMotion motion;
     /** Out-of-balance solves of this step (0: elastic). */
@@ -171,7 +173,8 @@ namespace FourierSSI
      * the origin (H at the reference elevation).
      */
     std::array<double, 6>
-    applied_loads(const double load_factor) const;
+    applied_loads(const double load_factor,
+                  const double held_fraction = 0.) const;
 
     /**
      * int int B_h^T D d r ds dtheta of the relative displacement d of the

@@ -52,11 +52,13 @@ namespace FourierSSI
    * The foundation loads of a load step, load_factor times the given ones,
    * as the resultant (F_x, F_y, F_z, M_x, M_y, M_z) about the origin [kN,
    * kN.m]: (H, M) act at (0, 0, z_ref), so moved to the origin M_y gains
-   * z_ref H_x and M_x loses z_ref H_y.
+   * z_ref H_x and M_x loses z_ref H_y. held_fraction times the held loads
+   * (Rigid foundation/Held ...) is added.
    */
   std::array<double, 6>
   applied_foundation_loads(const RigidFoundationParameters &foundation,
-                           const double                     load_factor);
+                           const double                     load_factor,
+                           const double                     held_fraction = 0.);
 
   /** The leading columns of every load-displacement.csv (both solvers). */
   constexpr const char *load_step_csv_header =
@@ -68,6 +70,7 @@ namespace FourierSSI
   write_load_step_columns(std::ostream                    &out,
                           const unsigned int               step,
                           const double                     load_factor,
+                          const double                     held_fraction,
                           const RigidFoundationParameters &foundation,
                           const RigidMotion               &motion,
                           const unsigned int               iterations,
@@ -97,6 +100,7 @@ namespace FourierSSI
         write_load_step_columns(out,
                                 s + 1,
                                 r.load_factor,
+                                r.held_fraction,
                                 foundation,
                                 r.motion,
                                 r.iterations,
@@ -113,7 +117,7 @@ namespace FourierSSI
    * step (cycle = step number): the applied loads [kN, kN.m], the
    * foundation motion [m, rad], iterations, residual and wall time. A step
    * result has load_factor, motion, iterations, residual and time; the
-   * solver has applied_loads(load_factor).
+   * solver has applied_loads(load_factor, held_fraction).
    */
   template <class Solver>
   void
@@ -123,10 +127,10 @@ namespace FourierSSI
     const auto    &steps = solver.get_steps();
     for (unsigned int s = 0; s < steps.size(); ++s)
       {
-        const auto        &r     = steps[s];
-        const auto         loads = solver.applied_loads(r.load_factor);
-        const RigidMotion &m     = r.motion;
-        const unsigned int step  = s + 1;
+        const auto &r    = steps[s];
+        const auto loads = solver.applied_loads(r.load_factor, r.held_fraction);
+        const RigidMotion &m    = r.motion;
+        const unsigned int step = s + 1;
         results.add("step_load_factor", any, step, r.load_factor, "-");
         results.add("step_vertical_force", any, step, loads[2], "kN");
         results.add("step_horizontal_force", any, step, loads[0], "kN");

@@ -47,7 +47,9 @@ namespace FourierSSI
   /** One converged load step of the plastic soil. */
   struct SoilStepResult
   {
-    double       load_factor = 0.;
+    double load_factor = 0.;
+    /** Fraction of the held loads (Rigid foundation/Held ...) applied. */
+    double       held_fraction = 0.;
     RigidMotion  motion;
     unsigned int iterations = 0;
     /** |R| / |lambda F| at convergence. */
@@ -79,9 +81,13 @@ namespace FourierSSI
     Vector<double>
     solution(const unsigned int i) const;
 
-    /** (F_x, F_y, F_z, M_x, M_y, M_z) applied at load factor lambda. */
+    /**
+     * (F_x, F_y, F_z, M_x, M_y, M_z) applied at load factor lambda with the
+     * fraction held_fraction of the held loads.
+     */
     std::array<double, 6>
-    applied_loads(const double load_factor) const;
+    applied_loads(const double load_factor,
+                  const double held_fraction = 0.) const;
 
     /**
      * int Bbar_h^T D eps(fields) over the plastic soil, theta by sampling:
@@ -151,7 +157,9 @@ namespace FourierSSI
 
     struct StepState
     {
-      double                      load_factor = 0.;
+      double load_factor = 0.;
+      /** rho: the held loads' part rho F_held of the load. */
+      double                      held_fraction = 0.;
       std::vector<Vector<double>> correction_solution, correction_load;
       /** s_p = D eps_p per (point, theta). */
       std::vector<StrainVector> plastic;
@@ -161,15 +169,30 @@ namespace FourierSSI
     make_points();
     void
     solve_load_pattern();
+    /** K^-1 F_held and its strains (Rigid foundation/Held ...). */
+    void
+    solve_held_loads();
 
+    /** |lambda F + rho F_held| (2-norm over the harmonics). */
+    double
+    applied_load_norm(const StepState &state) const;
+
+    /**
+     * One stage of the load path: `steps` equal steps, the held loads
+     * brought on (holding) or the loads scaled by the load or displacement
+     * control from the committed state.
+     */
+    void
+    run_stage(const bool holding, const unsigned int steps, std::ostream &log);
     /** Strain amplitudes [point][harmonic] of fields (one per harmonic). */
     std::vector<std::vector<StrainVector>>
     strain_amplitudes(const std::vector<Vector<double>> &fields) const;
 
-    /** Total strain samples [point * N + j] at lambda. */
+    /** Total strain samples [point * N + j] at lambda and rho. */
     std::vector<StrainVector>
     strain_samples(const std::vector<Vector<double>> &correction,
-                   const double                       load_factor) const;
+                   const double                       load_factor,
+                   const double                       held_fraction) const;
 
     /** Return mapping everywhere from the committed state. */
     void
@@ -181,12 +204,19 @@ namespace FourierSSI
     std::vector<Vector<double>>
     load_of(const std::vector<StrainVector> &samples) const;
 
+    /** lambda that puts the controlled motion of the state at target. */
     double
-    controlled_load_factor(const std::vector<Vector<double>> &v,
-                           const double                       target) const;
+    controlled_load_factor(const StepState &state, const double target) const;
 
+    /**
+     * Solve one step to `target`: the held fraction (holding), else the
+     * load factor (load control) or the controlled motion.
+     */
     bool
-    solve_step(const double target, StepState &state, SoilStepResult &result);
+    solve_step(const double    target,
+               const bool      holding,
+               StepState      &state,
+               SoilStepResult &result);
 
     RigidMotion
     motion_of(const StepState &state) const;
@@ -219,16 +249,20 @@ namespace FourierSSI
      * the total displacement by du.
      */
     std::vector<Vector<double>>
-    tangent_correction(const std::vector<Vector<double>> &residual) const;
+    tangent_correction(const std::vector<Vector<double>> &residual,
+                       const bool displacement_control) const;
 
     /**
      * The log's account of a step: V, H and the moment and torque where
      * the scene applies them, with the motion each works on.
      */
+    /** The held loads (V, H, M about the reference point, T). */
     void
-    write_foundation_state(std::ostream      &log,
-                           const double       load_factor,
-                           const RigidMotion &motion) const;
+    write_held_loads(std::ostream &log) const;
+
+    void
+    write_foundation_state(std::ostream         &log,
+                           const SoilStepResult &result) const;
 
     /** The controlled motion component of harmonic h's field v. */
     double
@@ -246,6 +280,10 @@ namespace FourierSSI
     std::vector<unsigned int>     component;
     std::vector<Vector<double>>   pattern_solution;
     double                        pattern_load_norm = 0.;
+    /** Held loads: K^-1 F_held, |F_held|, F . F_held; empty: none. */
+    std::vector<Vector<double>> held_solution;
+    double                      held_load_norm = 0., pattern_held_dot = 0.;
+    std::vector<std::vector<StrainVector>> held_strain;
     /** Strain amplitudes of the load pattern [point][harmonic]. */
     std::vector<std::vector<StrainVector>> pattern_strain;
     StepState                              committed;

@@ -37,8 +37,10 @@ namespace FourierSSI
     /** 0: automatic, 4 (n_max + 1), at least 2 n_max + 1 (no aliasing). */
     unsigned int theta_samples = 0;
     unsigned int load_steps    = 10;
-    Control      control       = Control::load;
-    Motion       motion        = Motion::vertical;
+    /** Steps that bring Rigid foundation/Held ... loads on (plastic soil). */
+    unsigned int held_load_steps = 4;
+    Control      control         = Control::load;
+    Motion       motion          = Motion::vertical;
     /** How the fixed point of the out-of-balance load is accelerated. */
     enum class Acceleration
     {

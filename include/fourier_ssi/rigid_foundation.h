@@ -52,6 +52,21 @@ namespace FourierSSI
     double       moment_x            = 0.; // M_x [kN.m], n = 1 antisymmetric
     double       vertical_force      = 0.; // V [kN], n = 0 symmetric
     double       torque              = 0.; // T [kN.m], n = 0 antisymmetric
+    /**
+     * Held loads (plastic soil): applied first, then kept while the loads
+     * above are scaled; a combined loading path (a fixed V, then H or M).
+     */
+    double held_horizontal_force = 0.; // H_x [kN]
+    double held_moment           = 0.; // M_y [kN.m]
+    double held_vertical_force   = 0.; // V [kN]
+    double held_torque           = 0.; // T [kN.m]
+
+    bool
+    any_held() const
+    {
+      return held_horizontal_force != 0. || held_moment != 0. ||
+             held_vertical_force != 0. || held_torque != 0.;
+    }
     /** Also solve the unit H and unit M cases (thesis eqs 4.2-4.5). */
     bool   stiffness_coefficients  = false;
     double reference_shear_modulus = 1.; // G_se (footing) or G_L (pile)
@@ -104,6 +119,13 @@ namespace FourierSSI
     /** Add the foundation loads of this harmonic to the global load vector. */
     void
     add_loads(Vector<double> &rhs) const;
+
+    /**
+     * Add the held loads of this harmonic (Held vertical force, ...: the
+     * part of a combined loading path kept constant, plastic soil).
+     */
+    void
+    add_held_loads(Vector<double> &rhs) const;
 
     RigidMotion
     motion(const Vector<double> &solution) const;
@@ -173,6 +195,10 @@ namespace FourierSSI
                   const double moment,
                   const double vertical_force,
                   const double torque) const;
+
+    /** rhs(master DoF k) += forces[k]. */
+    void
+    add_master_forces(Vector<double> &rhs, const MasterValues &forces) const;
 
     const RigidFoundationParameters &parameters;
     const Harmonic                   harmonic;
