@@ -70,6 +70,28 @@ namespace FourierSSI
        load_factor * f.torque + held_fraction * f.held_torque}};
   }
 
+  NamedLoad
+  conjugate_load(const std::array<double, 6>               &loads,
+                 const RigidFoundationParameters           &foundation,
+                 const NonlinearInterfaceParameters::Motion controlled)
+  {
+    using M = NonlinearInterfaceParameters::Motion;
+    switch (controlled)
+      {
+        case M::vertical:
+          return {"V", "kN", loads[2]};
+        case M::horizontal:
+          return {"H", "kN", loads[0]};
+        case M::rotation:
+          return {"M",
+                  "kN.m",
+                  loads[4] - foundation.reference_elevation * loads[0]};
+        case M::twist:
+          return {"T", "kN.m", loads[5]};
+      }
+    return {};
+  }
+
   void
   write_load_step_columns(std::ostream                    &out,
                           const unsigned int               step,

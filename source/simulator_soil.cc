@@ -60,6 +60,65 @@ namespace FourierSSI
                       "kPa");
         }
     }
+
+    /**
+     * Displacement control: the capacity as the plateau of the curve, the
+     * load that works on the controlled motion at the last step, and how
+     * much it rose over the last tenth of the controlled path (a plateau
+     * rises little; the mesh and harmonic errors need other meshes:
+     * doc/soil-plasticity.md 5d).
+     */
+    void
+    report_capacity(const CoupledSoilSolver &solver,
+                    const AllParameters     &parameters,
+                    std::ostream            &log,
+                    ResultsTable            &results)
+    {
+      const NonlinearInterfaceParameters &settings =
+        parameters.nonlinear_interfaces;
+      const auto &steps = solver.get_steps();
+      if (settings.control !=
+            NonlinearInterfaceParameters::Control::displacement ||
+          steps.size() < 2)
+        return;
+      const auto load_at = [&](const SoilStepResult &s) {
+        return conjugate_load(solver.applied_loads(s.load_factor,
+                                                   s.held_fraction),
+                              parameters.rigid_foundation,
+                              settings.motion);
+      };
+      const auto motion_at = [&](const SoilStepResult &s) {
+        return controlled_component(s.motion, settings.motion);
+      };
+      // The controlled path starts where the held loads left it.
+      double start = 0.;
+      for (const SoilStepResult &s : steps)
+        if (s.load_factor == 0.)
+          start = motion_at(s);
+      const double    end     = motion_at(steps.back());
+      const NamedLoad last    = load_at(steps.back());
+      double          earlier = 0.;
+      for (const SoilStepResult &s : steps)
+        if (std::abs(motion_at(s) - start) <=
+            0.9 * std::abs(end - start) * (1. + 1e-12))
+          earlier = load_at(s).value;
+      const double rise =
+        last.value != 0. ? (last.value - earlier) / last.value : 0.;
+      const Harmonic any{0, Family::symmetric};
+      results.add(
+        "capacity_" + last.name, any, steps.size(), last.value, last.unit);
+      results.add("capacity_" + last.name + "_plateau_rise",
+                  any,
+                  steps.size(),
+                  rise,
+                  "-");
+      log << "capacity (the load at the end of the controlled path): "
+          << last.name << " = " << last.value << " " << last.unit
+          << "; it rose " << 100. * rise << " % over the last tenth of the path"
+          << (std::abs(rise) < 0.01 ? " (a plateau)" :
+                                      " (not a plateau yet: go further)")
+          << std::endl;
+    }
   } // namespace
 
   void
@@ -90,6 +149,7 @@ namespace FourierSSI
         << timer.wall_time() << " s" << std::endl;
     add_load_step_rows(solver, results);
     add_plastic_state_rows(solver, results);
+    report_capacity(solver, parameters, log, results);
     if (!writes_csv())
       return;
     const std::string curve = directory + "/load-displacement.csv";

@@ -60,6 +60,24 @@ namespace FourierSSI
                            const double                     load_factor,
                            const double                     held_fraction = 0.);
 
+  /** A foundation load by name, with its unit. */
+  struct NamedLoad
+  {
+    std::string name, unit;
+    double      value = 0.;
+  };
+
+  /**
+   * The load that works on a controlled motion (vertical: V [kN],
+   * horizontal: H [kN], rotation: M about the reference point [kN.m],
+   * twist: T [kN.m]) out of the resultant about the origin
+   * (applied_foundation_loads).
+   */
+  NamedLoad
+  conjugate_load(const std::array<double, 6>               &loads,
+                 const RigidFoundationParameters           &foundation,
+                 const NonlinearInterfaceParameters::Motion controlled);
+
   /** The leading columns of every load-displacement.csv (both solvers). */
   constexpr const char *load_step_csv_header =
     "step,load_factor,V_kN,H_kN,M_kNm,T_kNm,vertical_m,horizontal_m,"
