@@ -887,8 +887,12 @@ namespace FourierSSI
       holding || load_control ?
         0. :
         controlled_component(motion_of(committed), settings.motion);
-    double       done = 0., increment = 1. / n_steps;
-    unsigned int cuts = 0;
+    const double step = 1. / n_steps;
+    double       done = 0., increment = step;
+    // Cuts of the step being solved; converged steps at a cut size since
+    // the last cut (two of them double it back toward `step`: a cut at a
+    // sharp change of plastic state need not slow the rest of the path).
+    unsigned int cuts = 0, easy_steps = 0;
     while (done < 1. - 1e-12)
       {
         const double   fraction = std::min(1., done + increment);
@@ -905,12 +909,19 @@ namespace FourierSSI
                                                             steps.size(),
                                                             settings)));
             increment /= 2.;
+            easy_steps = 0;
             log << "  step cut to " << increment << " of the "
                 << (holding ? "held loads" : "loading") << '\n';
             continue;
           }
-        committed            = state;
-        done                 = fraction;
+        committed = state;
+        done      = fraction;
+        cuts      = 0;
+        if (increment < step && ++easy_steps == 2)
+          {
+            increment  = std::min(step, 2. * increment);
+            easy_steps = 0;
+          }
         result.load_factor   = state.load_factor;
         result.held_fraction = state.held_fraction;
         result.motion        = motion_of(state);

@@ -73,7 +73,9 @@ namespace FourierSSI
                       "4",
                       Patterns::Integer(0),
                       "Halvings of a step that does not converge before "
-                      "the run stops with an error.");
+                      "the run stops with an error (plastic soil: of each "
+                      "step, and a cut step size doubles back after two "
+                      "converged steps; interfaces: over the run).");
     prm.declare_entry("Maximum harmonic",
                       "0",
                       Patterns::Integer(0),
