@@ -1,16 +1,17 @@
 #!/usr/bin/python3
 """The limit load of a plastic-soil scene with its error bar
-(doc/soil-plasticity.md section 10).
+(doc/soil-plasticity.md section 8b).
 
     /usr/bin/python3 tools/capacity.py SCENE.prm [--levels 3] [--first -1]
         [--refine r,z] [--harmonics 4,8] [--set "Mesh/R cells=2, 48"]...
         [--exe build/fourier-ssi] [--work DIR] [--csv FILE]
+    /usr/bin/python3 tools/capacity.py --curve load-displacement.csv
 
 Runs the scene (displacement control to its Target) on nested meshes and,
 when --harmonics is given, with its harmonic set truncated at each listed
 n_max, and prints one line per capacity:
 
-    N_c = 6.07 ± 0.10 (mesh 0.09, harmonics 0.00, plateau 0.01); ...
+    N_c = 6.046 ± 0.056 (mesh 0.054, harmonics 0, plateau 0.0025); V / (pi a^2 s_u), a = 1 m
 
 How each number is made (the reasons and the measurements are in the doc):
 - plateau: the load of the last step of each curve. Its bar is the rise to
@@ -220,7 +221,7 @@ def richardson(values):
             observed = math.log2((p0 - p1) / (p1 - p2))
             # At most 1, the order of a limit load set by a shear band or
             # a singular corner; a higher observed order came from meshes
-            # not yet asymptotic (doc/soil-plasticity.md section 10).
+            # not yet asymptotic (doc/soil-plasticity.md section 8b).
             if observed >= 0.5:
                 p = min(observed, 1.0)
     fine, coarse = values[-1], values[-2]
@@ -247,6 +248,24 @@ def harmonic_tail(values, start):
     return values[-1] - values[start] + tail, tail, r, weights
 
 
+def show_plateaus(path):
+    """The plateau bar after every step of an existing curve against the
+    rise still to come to its last step: how the bar was measured."""
+    if not os.path.isfile(path):
+        fail(path + ": no such file")
+    rows = read_curve(path)
+    for motion, (load_column, motion_column, unit) in LOAD_OF_MOTION.items():
+        load = [abs(float(r.get(load_column, 0) or 0)) for r in rows]
+        if max(load) > 0:
+            break
+    u = [abs(float(r[motion_column])) for r in rows]
+    print("%s, %s: step, %s, plateau bar, rise to the last step [%s]"
+          % (path, load_column, motion_column, unit))
+    for k in range(3, len(rows) + 1):
+        value, bar = plateau(u[:k], load[:k])
+        print("  %3d  %.5g  %.4g  %.4g" % (k, u[k - 1], bar, load[-1] - value))
+
+
 # ---------------------------------------------------------------- main
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
@@ -267,7 +286,13 @@ def main():
         os.path.dirname(os.path.abspath(__file__)), "..", "build", "fourier-ssi"))
     parser.add_argument("--work", default="capacity-runs")
     parser.add_argument("--csv", default="", help="default WORK/capacity.csv")
+    parser.add_argument("--curve", action="store_true",
+                        help="PRM is a load-displacement.csv: print the "
+                             "plateau and its bar after every step, and the "
+                             "rise to the last step (runs nothing)")
     args = parser.parse_args()
+    if args.curve:
+        return show_plateaus(args.prm)
 
     if not os.path.isfile(args.prm):
         fail(args.prm + ": no such file")
