@@ -248,6 +248,65 @@ def harmonic_tail(values, start):
     return values[-1] - values[start] + tail, tail, r, weights
 
 
+def combine(mesh, harmonics, start, runs):
+    """The value and its bar from the mesh study and the harmonic study
+    ((plateau, bar, run index) each) and all runs."""
+    extrapolated, p_used, p_observed, w_mesh = richardson([m[0] for m in mesh])
+    change, tail, ratio, w_harm = harmonic_tail([h[0] for h in harmonics], start)
+    mesh_bar = abs(extrapolated - mesh[-1][0]) if len(mesh) > 1 else math.nan
+    # The plateau bars carried through the linear combination that makes
+    # the value (the coarsest mesh run may sit in both studies).
+    weight = [0.0] * len(runs)
+    for (_, _, i), w in list(zip(mesh, w_mesh)) + list(zip(harmonics, w_harm)):
+        weight[i] += w
+    plateau_bar = sum(abs(w) * run[4] for w, run in zip(weight, runs))
+    return {"value": extrapolated + change,
+            "error": (0 if math.isnan(mesh_bar) else mesh_bar) + abs(tail)
+            + plateau_bar,
+            "mesh": mesh_bar, "harmonics": abs(tail), "plateau": plateau_bar,
+            "finest": mesh[-1][0], "order_used": p_used,
+            "order_observed": p_observed, "ratio": ratio}
+
+
+def report(r, name, normalisation_text, study):
+    """The capacity's line and the line saying how it was made."""
+    print("%s = %.4g ± %.2g (mesh %s, harmonics %.2g, plateau %.2g); %s" % (
+        name, r["value"], r["error"],
+        "not estimated (one mesh)" if math.isnan(r["mesh"]) else "%.2g" % r["mesh"],
+        r["harmonics"], r["plateau"], normalisation_text))
+    studied = "not studied"
+    if study:
+        studied = "n_max %s on the coarsest mesh, tail ratio %.2f used" % (
+            ",".join(map(str, study)), r["ratio"])
+    print("  finest mesh %.5g; mesh order %s%s; harmonics %s" % (
+        r["finest"],
+        "n/a" if r["order_used"] is None else "%.2f used" % r["order_used"],
+        "" if r["order_observed"] is None
+        else " (observed %.2f)" % r["order_observed"], studied))
+
+
+def write_csv(out, r, name, normalisation_text, runs):
+    """OUT: the capacity and its bar; OUT-runs.csv: every run."""
+    def optional(v):
+        return "" if v is None else "%.4g" % v
+    with open(out, "w") as f:
+        f.write("quantity,normalisation,value,error,error_mesh,error_harmonics,"
+                "error_plateau,finest_mesh_value,order_used,order_observed,"
+                "tail_ratio\n")
+        f.write("%s,%s,%.8g,%.4g,%.4g,%.4g,%.4g,%.8g,%s,%s,%s\n" % (
+            name, normalisation_text.replace(",", ";"), r["value"], r["error"],
+            r["mesh"], r["harmonics"], r["plateau"], r["finest"],
+            optional(r["order_used"]), optional(r["order_observed"]),
+            optional(r["ratio"])))
+    runs_csv = os.path.splitext(out)[0] + "-runs.csv"
+    with open(runs_csv, "w") as f:
+        f.write("run,level,n_max,plateau,plateau_error,steps,wall_s\n")
+        for kind, level, n_max, v, b, wall, steps in runs:
+            f.write("%s,%d,%s,%.8g,%.4g,%d,%.1f\n" % (
+                kind, level, "" if n_max is None else n_max, v, b, steps, wall))
+    print("wrote", out, "and", runs_csv)
+
+
 def show_plateaus(path):
     """The plateau bar after every step of an existing curve against the
     rise still to come to its last step: how the bar was measured."""
@@ -267,7 +326,7 @@ def show_plateaus(path):
 
 
 # ---------------------------------------------------------------- main
-def main():
+def parse_arguments():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("prm")
     parser.add_argument("--levels", type=int, default=3,
@@ -290,10 +349,13 @@ def main():
                         help="PRM is a load-displacement.csv: print the "
                              "plateau and its bar after every step, and the "
                              "rise to the last step (runs nothing)")
-    args = parser.parse_args()
-    if args.curve:
-        return show_plateaus(args.prm)
+    return parser.parse_args()
 
+
+def read_scene(args):
+    """The scene's text with the --set entries appended, its entries, the
+    refined directions, the n_max list and the controlled motion; one
+    line and exit 1 for anything the study cannot use."""
     if not os.path.isfile(args.prm):
         fail(args.prm + ": no such file")
     if not os.access(args.exe, os.X_OK):
@@ -327,6 +389,14 @@ def main():
     if motion not in LOAD_OF_MOTION:
         fail(args.prm + ": Controlled motion = %s is not one of %s" % (
             motion, ", ".join(LOAD_OF_MOTION)))
+    return text, entries, refine, n_maxes, motion
+
+
+def main():
+    args = parse_arguments()
+    if args.curve:
+        return show_plateaus(args.prm)
+    text, entries, refine, n_maxes, motion = read_scene(args)
     load_column, motion_column, unit = LOAD_OF_MOTION[motion]
     norm = normalisation(entries, motion)
     name, divisor = (norm[0], norm[1]) if norm else (load_column, 1.0)
@@ -362,49 +432,10 @@ def main():
                  for n in study]
     start = study.index(n_scene) if study else 0
 
-    extrapolated, p_used, p_observed, w_mesh = richardson([m[0] for m in mesh])
-    change, tail, ratio, w_harm = harmonic_tail([h[0] for h in harmonics], start)
-    mesh_bar = abs(extrapolated - mesh[-1][0]) if len(mesh) > 1 else math.nan
-    # The plateau bars carried through the linear combination that makes
-    # the value (the coarsest mesh run may sit in both studies).
-    weight = [0.0] * len(runs)
-    for (_, _, i), w in list(zip(mesh, w_mesh)) + list(zip(harmonics, w_harm)):
-        weight[i] += w
-    plateau_bar = sum(abs(w) * run_[4] for w, run_ in zip(weight, runs))
-    value = extrapolated + change
-    total = (0 if math.isnan(mesh_bar) else mesh_bar) + abs(tail) + plateau_bar
-
-    print("%s = %.4g ± %.2g (mesh %s, harmonics %.2g, plateau %.2g); %s"
-          % (name, value, total,
-             "not estimated (one mesh)" if math.isnan(mesh_bar) else "%.2g" % mesh_bar,
-             abs(tail), plateau_bar,
-             norm[2] if norm else unit))
-    if not n_maxes:
-        studied = "not studied"
-    else:
-        studied = "n_max %s on the coarsest mesh, tail ratio %.2f used" % (
-            ",".join(map(str, study)), ratio)
-    print("  finest mesh %.5g; mesh order %s%s; harmonics %s" % (
-        mesh[-1][0], "n/a" if p_used is None else "%.2f used" % p_used,
-        "" if p_observed is None else " (observed %.2f)" % p_observed, studied))
-
+    result = combine(mesh, harmonics, start, runs)
+    report(result, name, norm[2] if norm else unit, study)
     out = args.csv or os.path.join(work, "capacity.csv")
-    with open(out, "w") as f:
-        f.write("quantity,normalisation,value,error,error_mesh,error_harmonics,"
-                "error_plateau,finest_mesh_value,order_used,order_observed,"
-                "tail_ratio\n")
-        f.write("%s,%s,%.8g,%.4g,%.4g,%.4g,%.4g,%.8g,%s,%s,%s\n" % (
-            name, (norm[2] if norm else unit).replace(",", ";"), value, total,
-            mesh_bar, abs(tail), plateau_bar, mesh[-1][0],
-            "" if p_used is None else "%.4g" % p_used,
-            "" if p_observed is None else "%.4g" % p_observed,
-            "" if ratio is None else "%.4g" % ratio))
-    with open(os.path.splitext(out)[0] + "-runs.csv", "w") as f:
-        f.write("run,level,n_max,plateau,plateau_error,steps,wall_s\n")
-        for kind, level, n_max, v, b, wall, steps in runs:
-            f.write("%s,%d,%s,%.8g,%.4g,%d,%.1f\n" % (
-                kind, level, "" if n_max is None else n_max, v, b, steps, wall))
-    print("wrote", out, "and", os.path.splitext(out)[0] + "-runs.csv")
+    write_csv(out, result, name, norm[2] if norm else unit, runs)
 
 
 if __name__ == "__main__":
