@@ -1,15 +1,17 @@
 #!/usr/bin/python3
 """tools/capacity.py on the rough circular footing of prm/footing-capacity.prm
-(a = 1 m, s_u = 10 kPa) with two exact limits, each on three nested meshes
+(a = 1 m, s_u = 10 kPa) in two loadings of known limit, each on three nested
+meshes
 coarser than the shipped one (R cells 2,3 / 4,6 / 8,12 and Z cells 4 / 8 /
 16, graded like the shipped mesh: growth 0.85^(10/4) = 0.666 toward the
-edge, 1.2^(14/6) = 1.53 outward, 0.666 toward the surface), which keeps
-the whole test near 25 s:
+edge, 1.2^(14/6) = 1.53 outward, 0.85^(20/8) = 0.666 toward the surface),
+which keeps the whole test at about 20 s CPU (34 s wall on the shared
+machine):
 
 (1) torsion (n = 0 antisymmetric, twisted to 0.02 rad): T_ult / (a^3 s_u) =
     2 pi / 3 = 2.0944, exact (doc/soil-plasticity.md section 5b);
 (2) vertical (n = 0, pushed to w = 0.04 a): N_c = 6.05 (Eason & Shield
-    1960, rough).
+    1960, rough; a numerical solution given to three digits).
 
 Checks, with their reasons (doc/soil-plasticity.md section 8b):
 - the printed interval value ± error contains the exact limit: what an
