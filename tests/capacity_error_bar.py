@@ -1,12 +1,11 @@
 #!/usr/bin/python3
 """tools/capacity.py on the rough circular footing of prm/footing-capacity.prm
-(a = 1 m, s_u = 10 kPa) in two loadings of known limit, each on three nested
-meshes
-coarser than the shipped one (R cells 2,3 / 4,6 / 8,12 and Z cells 4 / 8 /
-16, graded like the shipped mesh: growth 0.85^(10/4) = 0.666 toward the
-edge, 1.2^(14/6) = 1.53 outward, 0.85^(20/8) = 0.666 toward the surface),
-which keeps the whole test at about 20 s CPU (34 s wall on the shared
-machine):
+(a = 1 m, s_u = 10 kPa) in two loadings of known limit, each on three
+nested meshes coarser than the shipped one (R cells 2,3 / 4,6 / 8,12 and Z
+cells 4 / 8 / 16, graded like the shipped mesh: growth 0.85^(10/4) = 0.666
+toward the edge, 1.2^(14/6) = 1.53 outward, 0.85^(20/8) = 0.666 toward the
+surface), which keeps the whole test at about 20 s CPU (34 s wall on the
+shared machine):
 
 (1) torsion (n = 0 antisymmetric, twisted to 0.02 rad): T_ult / (a^3 s_u) =
     2 pi / 3 = 2.0944, exact (doc/soil-plasticity.md section 5b);
