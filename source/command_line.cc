@@ -11,6 +11,7 @@
 #include <fourier_ssi/messages.h>
 #include <fourier_ssi/parameters.h>
 #include <fourier_ssi/prm_values.h>
+#include <fourier_ssi/serial_blas.h>
 #include <fourier_ssi/simulator.h>
 #include <iostream>
 #include <map>
@@ -127,6 +128,7 @@ namespace FourierSSI
       if (!mpi)
         mpi = std::make_unique<Utilities::MPI::MPI_InitFinalize>(argc, argv, 1);
     };
+    use_serial_blas();
     const bool batch = argc > 1 && std::string(argv[1]) == "--batch";
     if (launched_by_mpi() || batch)
       start_mpi();

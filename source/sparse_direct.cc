@@ -1,9 +1,28 @@
 #include <deal.II/base/exceptions.h>
+#include <fourier_ssi/huge_page_allocation.h>
 #include <fourier_ssi/sparse_direct.h>
+#include <mutex>
 #include <suitesparse/cholmod.h>
+
 
 namespace FourierSSI
 {
+  namespace
+  {
+    // CHOLMOD's large arrays (the matrix copies of its analysis, the
+    // permuted matrix, the factor) on huge pages, as the program's other
+    // large blocks (huge_page_allocation.h).
+    void
+    use_huge_pages_in_suitesparse()
+    {
+      static std::once_flag once;
+      std::call_once(once, [] {
+        SuiteSparse_config.malloc_func = huge_page_malloc;
+        SuiteSparse_config.calloc_func = huge_page_calloc;
+      });
+    }
+  } // namespace
+
   // CHOLMOD state of one factorization; the 64-bit-index interface
   // (cholmod_l_*) so that large factors do not overflow.
   struct SparseDirect::Cholmod
@@ -13,6 +32,7 @@ namespace FourierSSI
 
     Cholmod()
     {
+      use_huge_pages_in_suitesparse();
       cholmod_l_start(&common);
       // The caller reports failures in one line; CHOLMOD stays quiet.
       common.print = 0;
@@ -56,40 +76,56 @@ namespace FourierSSI
     cholmod           = std::make_unique<Cholmod>();
     cholmod_common &c = cholmod->common;
     // deal.II stores rows (CSR) with the diagonal first, then the other
-    // columns in ascending order. The upper triangle of row i (columns
-    // j >= i) is column i of the lower triangle in CSC, already sorted:
-    // handed to CHOLMOD as a symmetric matrix with stype = -1 (lower).
+    // columns in ascending order. The lower triangle of row j (columns
+    // i <= j) is column j of the upper triangle in CSC: handed to CHOLMOD
+    // as a symmetric matrix with stype = +1 (upper), sorted with the
+    // diagonal last. The upper form is the one CHOLMOD's supernodal
+    // factorization takes after one permuted transpose; the lower form
+    // needed two.
     const types::global_dof_index n       = A.m();
     std::size_t                   n_upper = 0;
-    for (types::global_dof_index i = 0; i < n; ++i)
-      for (auto entry = A.begin(i); entry != A.end(i); ++entry)
-        if (entry->column() >= i)
+    for (types::global_dof_index j = 0; j < n; ++j)
+      for (auto entry = A.begin(j); entry != A.end(j); ++entry)
+        if (entry->column() <= j)
           ++n_upper;
-    cholmod_sparse *lower = cholmod_l_allocate_sparse(
-      n, n, n_upper, /*sorted=*/1, /*packed=*/1, -1, CHOLMOD_REAL, &c);
-    AssertThrow(lower, ExcMessage("Linear solver: out of memory (CHOLMOD)"));
-    auto       *column_start = static_cast<SuiteSparse_long *>(lower->p);
-    auto       *row_index    = static_cast<SuiteSparse_long *>(lower->i);
-    auto       *value        = static_cast<double *>(lower->x);
+    cholmod_sparse *upper = cholmod_l_allocate_sparse(
+      n, n, n_upper, /*sorted=*/1, /*packed=*/1, 1, CHOLMOD_REAL, &c);
+    AssertThrow(upper, ExcMessage("Linear solver: out of memory (CHOLMOD)"));
+    auto       *column_start = static_cast<SuiteSparse_long *>(upper->p);
+    auto       *row_index    = static_cast<SuiteSparse_long *>(upper->i);
+    auto       *value        = static_cast<double *>(upper->x);
     std::size_t k            = 0;
-    for (types::global_dof_index i = 0; i < n; ++i)
+    for (types::global_dof_index j = 0; j < n; ++j)
       {
-        column_start[i] = k;
-        for (auto entry = A.begin(i); entry != A.end(i); ++entry)
-          if (entry->column() >= i)
+        column_start[j]     = k;
+        double diagonal     = 0.;
+        bool   has_diagonal = false;
+        for (auto entry = A.begin(j); entry != A.end(j); ++entry)
+          if (entry->column() < j)
             {
               row_index[k] = entry->column();
               value[k]     = entry->value();
               ++k;
             }
+          else if (entry->column() == j)
+            {
+              diagonal     = entry->value();
+              has_diagonal = true;
+            }
+        if (has_diagonal)
+          {
+            row_index[k] = j;
+            value[k]     = diagonal;
+            ++k;
+          }
       }
     column_start[n] = k;
 
-    cholmod->factor     = cholmod_l_analyze(lower, &c);
+    cholmod->factor     = cholmod_l_analyze(upper, &c);
     const bool analyzed = cholmod->factor != nullptr;
     if (analyzed)
-      cholmod_l_factorize(lower, cholmod->factor, &c);
-    cholmod_l_free_sparse(&lower, &c);
+      cholmod_l_factorize(upper, cholmod->factor, &c);
+    cholmod_l_free_sparse(&upper, &c);
     AssertThrow(analyzed && c.status != CHOLMOD_OUT_OF_MEMORY,
                 ExcMessage("Linear solver: out of memory (CHOLMOD)"));
     if (c.status == CHOLMOD_NOT_POSDEF)

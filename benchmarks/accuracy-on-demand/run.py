@@ -15,7 +15,10 @@ answer, its estimated and its true error (references: doc/accuracy-vs-time.md,
 third version, good to a few 1e-7 for rough; the smooth reference is the
 finest member of benchmarks/accuracy-on-demand/effectivity.csv).
 
-Usage: run.py --exe build/fourier-ssi [--repeat 3]
+Usage: run.py --exe build/fourier-ssi [--repeat 3] [--before OLD_EXE]
+With --before, every run of a case is made with OLD_EXE first and then
+with --exe, alternately in the same session, and the table has a
+"(before)" row above each case: before/after under the same load.
 Writes benchmark.csv and benchmark.md next to this script.
 """
 import argparse
@@ -105,32 +108,48 @@ end
     return wall, compute, value
 
 
+def summarize(name, walls, computes, value, ref):
+    estimate_time = value.get("time_error_estimate", float("nan"))
+    row = dict(case=name, runs=len(walls), dofs=int(value["n_dofs"]),
+               process_s=statistics.median(walls),
+               compute_s=statistics.median(computes),
+               estimate_share=estimate_time / computes[-1])
+    for q in ("K_H", "K_M", "K_MH"):
+        row[q + "_estimate"] = value.get(q + "_error", float("nan"))
+        row[q + "_error"] = (abs(value[q] - ref[q]) / abs(ref[q])
+                             if q in ref else float("nan"))
+    return row
+
+
 def main():
     parser = argparse.ArgumentParser()
     parser.add_argument("--exe", required=True)
+    parser.add_argument("--before", help="the previous build, run "
+                        "alternately with --exe")
     parser.add_argument("--repeat", type=int, default=3)
     args = parser.parse_args()
-    exe = str(pathlib.Path(args.exe).resolve())
+    exes = [("", str(pathlib.Path(args.exe).resolve()))]
+    if args.before:
+        exes.insert(0, (" (before)",
+                        str(pathlib.Path(args.before).resolve())))
     lines = []
     for name, text, ref, runs in CASES:
         ref = ref or smooth_reference()
-        walls, computes, value = [], [], None
+        walls = {tag: [] for tag, _ in exes}
+        computes = {tag: [] for tag, _ in exes}
+        value = {}
         for k in range(runs or args.repeat):
-            w, c, value = run(exe, text(), HERE / "runs" /
-                              re.sub(r"[^a-z0-9]+", "-", name.lower()))
-            walls.append(w)
-            computes.append(c)
-        estimate_time = value.get("time_error_estimate", float("nan"))
-        row = dict(case=name, runs=len(walls), dofs=int(value["n_dofs"]),
-                   process_s=statistics.median(walls),
-                   compute_s=statistics.median(computes),
-                   estimate_share=estimate_time / computes[-1])
-        for q in ("K_H", "K_M", "K_MH"):
-            row[q + "_estimate"] = value.get(q + "_error", float("nan"))
-            row[q + "_error"] = (abs(value[q] - ref[q]) / abs(ref[q])
-                                 if q in ref else float("nan"))
-        lines.append(row)
-        print(row, flush=True)
+            for tag, exe in exes:
+                w, c, value[tag] = run(exe, text(), HERE / "runs" /
+                                       re.sub(r"[^a-z0-9]+", "-",
+                                              name.lower()))
+                walls[tag].append(w)
+                computes[tag].append(c)
+        for tag, _ in exes:
+            row = summarize(name + tag, walls[tag], computes[tag],
+                            value[tag], ref)
+            lines.append(row)
+            print(row, flush=True)
     with open(HERE / "benchmark.csv", "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(lines[0]))
         w.writeheader()
