@@ -70,6 +70,13 @@ namespace FourierSSI
        load_factor * f.torque + held_fraction * f.held_torque}};
   }
 
+  double
+  moment_about_reference(const std::array<double, 6>     &loads,
+                         const RigidFoundationParameters &foundation)
+  {
+    return loads[4] - foundation.reference_elevation * loads[0];
+  }
+
   NamedLoad
   conjugate_load(const std::array<double, 6>               &loads,
                  const RigidFoundationParameters           &foundation,
@@ -83,9 +90,7 @@ namespace FourierSSI
         case M::horizontal:
           return {"H", "kN", loads[0]};
         case M::rotation:
-          return {"M",
-                  "kN.m",
-                  loads[4] - foundation.reference_elevation * loads[0]};
+          return {"M", "kN.m", moment_about_reference(loads, foundation)};
         case M::twist:
           return {"T", "kN.m", loads[5]};
       }
@@ -104,7 +109,7 @@ namespace FourierSSI
   {
     // M about the reference point, as given in the prm.
     const auto loads = applied_foundation_loads(f, load_factor, held_fraction);
-    const double moment = loads[4] - f.reference_elevation * loads[0];
+    const double moment = moment_about_reference(loads, f);
     out << step << ',' << load_factor << ',' << loads[2] << ',' << loads[0]
         << ',' << moment << ',' << loads[5] << ','
         << motion.vertical_displacement << ',' << motion.horizontal_displacement

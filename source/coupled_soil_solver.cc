@@ -868,10 +868,10 @@ namespace FourierSSI
   void
   CoupledSoilSolver::write_held_loads(std::ostream &log) const
   {
-    const auto   held = applied_loads(0., 1.);
-    const double z    = parameters.rigid_foundation.reference_elevation;
+    const auto held = applied_loads(0., 1.);
     log << "V " << held[2] << " kN, H " << held[0] << " kN, M "
-        << held[4] - z * held[0] << " kNm, T " << held[5] << " kNm";
+        << moment_about_reference(held, parameters.rigid_foundation)
+        << " kNm, T " << held[5] << " kNm";
   }
 
   void
@@ -952,7 +952,7 @@ namespace FourierSSI
     const bool         torque = f.torque != 0. || f.held_torque != 0.;
     log << "V " << loads[2] << " kN, H " << loads[0] << " kN";
     if (moment)
-      log << ", M " << loads[4] - f.reference_elevation * loads[0] << " kNm";
+      log << ", M " << moment_about_reference(loads, f) << " kNm";
     if (torque)
       log << ", T " << loads[5] << " kNm";
     log << "; w " << motion.vertical_displacement << " m, u "

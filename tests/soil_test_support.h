@@ -53,6 +53,31 @@ namespace soil_test
   };
 
   /**
+   * Every converged step in equilibrium (|R| / |applied load| <= 1e-8, the
+   * stopping rule's tolerance) and on or inside the yield surface
+   * (f <= 1e-9 * 2 s_u: round-off of the return mapping).
+   */
+  inline void
+  check_equilibrium_and_yield(const std::string                 &name,
+                              const std::vector<SoilStepResult> &steps,
+                              const double                       su)
+  {
+    double worst_residual = 0., worst_f = -1e300;
+    for (const SoilStepResult &s : steps)
+      {
+        worst_residual = std::max(worst_residual, s.residual);
+        worst_f        = std::max(worst_f, s.largest_yield_value);
+      }
+    check::small(name + "equilibrium: max |R| / |applied load|",
+                 worst_residual,
+                 1e-8);
+    check::in_range(name + "max f(sigma) over every point [kPa]",
+                    worst_f,
+                    -1e300,
+                    1e-9 * 2. * su);
+  }
+
+  /**
    * N_c = V_ult / (pi a^2 s_u) of the footing (a = 1 m, s_u = 10 kPa) at
    * the end of the curve against `reference` within 2 %; equilibrium and
    * the yield condition at every converged step.
@@ -70,12 +95,6 @@ namespace soil_test
     run.solver->run(std::cout);
     const auto  &steps = run.solver->get_steps();
     const double su = 10., a = 1.;
-    double       worst_residual = 0., worst_f = -1e300;
-    for (const SoilStepResult &s : steps)
-      {
-        worst_residual = std::max(worst_residual, s.residual);
-        worst_f        = std::max(worst_f, s.largest_yield_value);
-      }
     const double V  = -run.solver->applied_loads(steps.back().load_factor)[2];
     const double Nc = V / (numbers::PI * a * a * su);
     const double V9 =
@@ -85,13 +104,7 @@ namespace soil_test
               << " m; change over the last 3 steps " << (V - V9) / V * 100.
               << " %" << std::endl;
     check::relative(name + " N_c vs the published limit", Nc, reference, 0.02);
-    check::small(name + " equilibrium: max |R| / |lambda F|",
-                 worst_residual,
-                 1e-8);
-    check::in_range(name + " max f(sigma) over every point [kPa]",
-                    worst_f,
-                    -1e300,
-                    1e-9 * 2. * su);
+    check_equilibrium_and_yield(name + " ", steps, su);
   }
 } // namespace soil_test
 

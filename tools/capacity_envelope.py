@@ -91,14 +91,14 @@ def run(exe, work, name, changes):
     return rows, wall
 
 
-def plateau(rows, load, motion):
-    """The last step's |load| and its relative rise over the last tenth of
-    the path (below 1 %: on the plateau)."""
-    last = abs(float(rows[-1][load]))
-    end = abs(float(rows[-1][motion]))
-    earlier = [abs(float(r[load])) for r in rows
-               if abs(float(r[motion])) <= 0.9 * end + 1e-15]
-    return last, (last - (earlier[-1] if earlier else 0.0)) / last
+def plateau(work, name, load):
+    """The capacity the program printed for a probe (|load| at the end of
+    the controlled path, results.csv row capacity_<load>) and its relative
+    rise over the last tenth of the path (below 1 %: on the plateau)."""
+    with open(os.path.join(work, name, "results.csv")) as f:
+        values = {r["quantity"]: float(r["value"]) for r in csv.DictReader(f)}
+    return (abs(values["capacity_" + load]),
+            values["capacity_%s_plateau_rise" % load])
 
 
 def probe_changes(kind, held_v, fraction, harmonics, samples):
@@ -136,8 +136,8 @@ def main():
     print("probes in", work)
     records = []
 
-    rows, wall = run(args.exe, work, "V", {"Target": "-0.04", "Load steps": "8"})
-    v_ult, rise = plateau(rows, "V_kN", "vertical_m")
+    _, wall = run(args.exe, work, "V", {"Target": "-0.04", "Load steps": "8"})
+    v_ult, rise = plateau(work, "V", "V")
     records.append(dict(path="V", harmonics="0", v=1.0, V_kN=v_ult, H_kN=0.0,
                         M_kNm=0.0, plateau_change=rise, wall_s=wall))
 
@@ -147,10 +147,7 @@ def main():
         rows, wall = run(args.exe, work, name,
                          probe_changes(kind, held, fraction, harmonics,
                                        samples))
-        sideways = kind == "H"
-        load = "H_kN" if sideways else "M_kNm"
-        motion = "horizontal_m" if sideways else "rotation_rad"
-        value, rise = plateau(rows, load, motion)
+        value, rise = plateau(work, name, "H" if kind == "H" else "M")
         last = rows[-1]
         records.append(dict(path=kind, harmonics=harmonics, v=fraction,
                             V_kN=abs(float(last["V_kN"])),

@@ -60,6 +60,14 @@ namespace FourierSSI
                            const double                     load_factor,
                            const double                     held_fraction = 0.);
 
+  /**
+   * M_y about the reference point (as the prm gives it) out of the
+   * resultant about the origin: M_y - z_ref H_x [kN.m].
+   */
+  double
+  moment_about_reference(const std::array<double, 6>     &loads,
+                         const RigidFoundationParameters &foundation);
+
   /** A foundation load by name, with its unit. */
   struct NamedLoad
   {
