@@ -753,9 +753,15 @@ namespace FourierSSI
           {
             // A Newton update that increased the residual crossed many
             // changes of plastic state: halve it (backtracking).
-            if (updates > 0 && residual_norm > previous_norm &&
-                step_length > smallest_step_length)
+            if (updates > 0 && residual_norm > previous_norm)
               {
+                // No decrease even at the shortest step: the Newton
+                // direction is wrong (a near-singular tangent at a plateau);
+                // going on from the worse point wanders off (measured:
+                // |R| / |F| up to 1e6 before the stagnation rule stops it),
+                // so cut the step at once.
+                if (step_length <= smallest_step_length)
+                  return false;
                 step_length /= 2.;
                 for (unsigned int h = 0; h < set.size(); ++h)
                   {
@@ -875,6 +881,22 @@ namespace FourierSSI
   }
 
   void
+  CoupledSoilSolver::extrapolate(const StepState &before_last,
+                                 const double     ratio,
+                                 StepState       &state) const
+  {
+    for (unsigned int h = 0; h < set.size(); ++h)
+      {
+        state.correction_load[h].add(ratio, committed.correction_load[h]);
+        state.correction_load[h].add(-ratio, before_last.correction_load[h]);
+        state.correction_solution[h].add(ratio,
+                                         committed.correction_solution[h]);
+        state.correction_solution[h].add(-ratio,
+                                         before_last.correction_solution[h]);
+      }
+  }
+
+  void
   CoupledSoilSolver::run_stage(const bool         holding,
                                const unsigned int n_steps,
                                std::ostream      &log)
@@ -890,16 +912,28 @@ namespace FourierSSI
     const double step = 1. / n_steps;
     double       done = 0., increment = step;
     // Cuts of the step being solved; converged steps at a cut size since
-    // the last cut (two of them double it back toward `step`: a cut at a
-    // sharp change of plastic state need not slow the rest of the path).
-    unsigned int cuts = 0, easy_steps = 0;
+    // the last change of size: `needed` of them double it back toward
+    // `step` (a cut at a sharp change of plastic state need not slow the
+    // rest of the path). A doubled size that fails at once doubles `needed`:
+    // on a plateau where only the cut size converges, the failed attempts
+    // then become rarer instead of recurring every other step
+    // (doc/soil-plasticity.md 3b).
+    unsigned int cuts = 0, easy_steps = 0, needed = 2;
+    // The state before the last converged step of this stage and that
+    // step's size: the next step starts from the last correction
+    // extrapolated (secant predictor).
+    StepState before_last;
+    double    last_increment = 0.;
+    bool      just_grown     = false;
     while (done < 1. - 1e-12)
       {
-        const double   fraction = std::min(1., done + increment);
-        const double   target   = holding || load_control ?
-                                    fraction :
-                                    start + fraction * (settings.target - start);
-        StepState      state    = committed;
+        const double fraction = std::min(1., done + increment);
+        const double target   = holding || load_control ?
+                                  fraction :
+                                  start + fraction * (settings.target - start);
+        StepState    state    = committed;
+        if (last_increment > 0.)
+          extrapolate(before_last, increment / last_increment, state);
         SoilStepResult result;
         const auto     clock = std::chrono::steady_clock::now();
         if (!solve_step(target, holding, state, result))
@@ -910,17 +944,26 @@ namespace FourierSSI
                                                             settings)));
             increment /= 2.;
             easy_steps = 0;
+            if (just_grown)
+              needed *= 2;
+            just_grown = false;
             log << "  step cut to " << increment << " of the "
                 << (holding ? "held loads" : "loading") << '\n';
             continue;
           }
-        committed = state;
-        done      = fraction;
-        cuts      = 0;
-        if (increment < step && ++easy_steps == 2)
+        before_last    = std::move(committed);
+        last_increment = fraction - done;
+        committed      = state;
+        done           = fraction;
+        cuts           = 0;
+        if (just_grown) // the doubled size converged: back to the default
+          needed = 2;
+        just_grown = false;
+        if (increment < step && ++easy_steps == needed)
           {
             increment  = std::min(step, 2. * increment);
             easy_steps = 0;
+            just_grown = true;
           }
         result.load_factor   = state.load_factor;
         result.held_fraction = state.held_fraction;

@@ -184,6 +184,19 @@ namespace FourierSSI
      */
     void
     run_stage(const bool holding, const unsigned int steps, std::ostream &log);
+    /**
+     * Secant predictor: state's correction (load and displacement) moved on
+     * by ratio times the change over the last converged step (from
+     * before_last to committed). At a plateau the plastic mechanism goes on
+     * as in the last step, so Newton starts next to the answer; the elastic
+     * predictor (the correction kept) would spread the increment as
+     * elastic strain and overshoot the capacity (doc/soil-plasticity.md 3b).
+     */
+    void
+    extrapolate(const StepState &before_last,
+                const double     ratio,
+                StepState       &state) const;
+
     /** Strain amplitudes [point][harmonic] of fields (one per harmonic). */
     std::vector<std::vector<StrainVector>>
     strain_amplitudes(const std::vector<Vector<double>> &fields) const;
