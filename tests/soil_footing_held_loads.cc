@@ -63,16 +63,13 @@ namespace
     std::ostringstream load;
     load << "0\n  set Horizontal force = 1\n  set Held vertical force = "
          << held_vertical_force;
-    Run run(scene({{"Harmonics", "0, 1"},
-                   {"Vertical force", load.str()},
-                   {"Theta samples", "8"},
-                   {"Controlled motion", "horizontal"},
-                   {"Target", "0.01"},
-                   {"Load steps", "10"},
-                   {"R cells", "5, 7"},
-                   {"R growth", "0.7225, 1.44"},
-                   {"Z cells", "10"},
-                   {"Z growth", "0.7225"}}));
+    Run run(scene(joined({{"Harmonics", "0, 1"},
+                          {"Vertical force", load.str()},
+                          {"Theta samples", "8"},
+                          {"Controlled motion", "horizontal"},
+                          {"Target", "0.01"},
+                          {"Load steps", "10"}},
+                         footing_mesh(true))));
     run.solver->run(std::cout);
     const auto &steps = run.solver->get_steps();
     check_equilibrium_and_yield("", steps, 10.);

@@ -28,6 +28,34 @@ namespace soil_test
     return text;
   }
 
+  /**
+   * The shipped footing mesh (10 + 14 by 20 cells) or, coarse, the same
+   * mesh with half the cells in each direction (growth ratios squared: the
+   * coarse cells are pairs of the shipped ones).
+   */
+  inline std::vector<std::pair<std::string, std::string>>
+  footing_mesh(const bool coarse)
+  {
+    if (coarse)
+      return {{"R cells", "5, 7"},
+              {"R growth", "0.7225, 1.44"},
+              {"Z cells", "10"},
+              {"Z growth", "0.7225"}};
+    return {{"R cells", "10, 14"},
+            {"R growth", "0.85, 1.2"},
+            {"Z cells", "20"},
+            {"Z growth", "0.85"}};
+  }
+
+  /** changes followed by more changes (one list for scene()). */
+  inline std::vector<std::pair<std::string, std::string>>
+  joined(std::vector<std::pair<std::string, std::string>>        changes,
+         const std::vector<std::pair<std::string, std::string>> &more)
+  {
+    changes.insert(changes.end(), more.begin(), more.end());
+    return changes;
+  }
+
   struct Run
   {
     AllParameters                      parameters;
