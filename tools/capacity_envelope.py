@@ -1,24 +1,26 @@
 #!/usr/bin/python3
-"""The undrained V-H and V-M capacity envelope of the rough circular surface
-footing of prm/footing-capacity.prm (Tresca soil, a = 1 m, s_u = 10 kPa),
-traced by probe paths (doc/soil-plasticity.md section 5c):
+"""The undrained V-H, V-M and H-M capacity envelope of the rough circular
+surface footing of prm/footing-capacity.prm (Tresca soil, a = 1 m,
+s_u = 10 kPa), traced by probe paths (doc/soil-plasticity.md section 5c):
 
   - the vertical capacity V_ult alone (n = 0, displacement control);
   - for v = V / V_ult in VERTICAL_FRACTIONS: V brought on and held
     (Rigid foundation/Held vertical force), then the footing pushed sideways
     (horizontal displacement control) or rotated (rotation control) to the
     plateau: H_ult(V) and M_ult(V);
-  - with --radial, radial H-M paths at V = 0 (M = +-H D, rotation control).
+  - radial H-M paths at V = 0: H and M = m H D applied together in fixed
+    proportion for every m in RADIAL_RATIOS, driven by the motion the
+    mechanism is dominated by (sideways for |m| < 1, rotation otherwise).
 
 Every probe runs on the shipped mesh with harmonics n = 0 and 1 and 8 theta
-samples; --check-harmonics repeats the v = 0.5 probes with n <= 3 and 16
-samples (the truncation error of the envelope). The capacity of a probe is
-the load of its last step; `plateau_rise` is its relative rise over the last
-tenth of the path (below 1 %: on the plateau; the plot draws the others
-open, as lower bounds).
+samples; --check-harmonics repeats the v = 0 and v = 0.5 probes with n <= 3
+and 16 samples (the truncation error of the envelope). The capacity of a
+probe is the load of its last step; `plateau_rise` is its relative rise
+over the last tenth of the path (below 1 %: on the plateau; the plot draws
+the others open, as lower bounds).
 
     /usr/bin/python3 tools/capacity_envelope.py [--exe build/fourier-ssi]
-        [--out doc/figures] [--check-harmonics]
+        [--out doc/figures] [--check-harmonics] [--work DIR]
 
 Writes OUT/capacity-envelope.csv and OUT/capacity-envelope.png.
 Needs Debian's python3-matplotlib (under /usr/bin/python3).
@@ -35,15 +37,15 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SU, A, D = 10.0, math.pi, 2.0  # s_u [kPa], plan area [m^2], diameter [m]
-# v = 0.05 stands for the uniaxial H and M: Tresca's H and M do not depend
-# on V that small (section 5c), and at V = 0 exactly the Newton iteration
-# stalls at the plateau (the sliding band's stress on an edge of the
-# surface; 139 steps, 856 s, against 22 steps with V held).
-VERTICAL_FRACTIONS = (0.05, 0.5, 0.8)
-# Probe targets: 3 and 11 times the elastic motion at the uniaxial capacity
-# (further sideways the Newton iteration stalls near V = 0: doc/soil-
-# plasticity.md 5c); twice as far sideways from v = 0.75 on, where the
-# plateau comes later (the footing settles as it slides).
+# V = 0 is the uniaxial H and M. (Before the secant predictor of section
+# 3b the sideways probe stalled there, and v = 0.05 stood in for it.)
+VERTICAL_FRACTIONS = (0.0, 0.25, 0.5, 0.65, 0.8, 0.9)
+# Radial H-M paths at V = 0: M / (H D) (M about the footing's base centre,
+# positive when it turns the footing the way H pushes it).
+RADIAL_RATIOS = (-2.0, -1.0, -0.5, -0.25, 0.25, 0.5, 1.0, 2.0)
+# Probe targets: 3 and 11 times the elastic motion at the uniaxial capacity;
+# twice as far sideways from v = 0.75 on, where the plateau comes later (the
+# footing settles as it slides).
 HORIZONTAL_TARGET, ROTATION_TARGET = 0.006, 0.03  # [m], [rad]
 
 
@@ -101,14 +103,17 @@ def plateau(work, name, load):
             values["capacity_%s_plateau_rise" % load])
 
 
-def probe_changes(kind, held_v, fraction, harmonics, samples):
-    """Entries of a sideways (H) or rotation (M, or radial H-M) probe."""
-    loads = {"H": "0\n  set Horizontal force = 1",
-             "M": "0\n  set Moment = 1",
-             "HM+": "0\n  set Horizontal force = 1\n  set Moment = 2",
-             "HM-": "0\n  set Horizontal force = 1\n  set Moment = -2"}[kind]
+def probe_changes(kind, held_v, fraction, harmonics, samples, ratio=0.0):
+    """Entries of a sideways (H), rotation (M) or radial H-M (R) probe."""
+    if kind == "R":
+        loads = "0\n  set Horizontal force = 1\n  set Moment = %.10g" % (
+            ratio * D)
+        sideways = abs(ratio) < 1.0
+    else:
+        loads = {"H": "0\n  set Horizontal force = 1",
+                 "M": "0\n  set Moment = 1"}[kind]
+        sideways = kind == "H"
     loads += "\n  set Held vertical force = %.10g" % held_v
-    sideways = kind == "H"
     horizontal = HORIZONTAL_TARGET * (2.0 if fraction >= 0.75 else 1.0)
     return {"Harmonics": harmonics,
             "Vertical force": loads,
@@ -123,8 +128,6 @@ def main():
     parser.add_argument("--exe", default=os.path.join(ROOT, "build", "fourier-ssi"))
     parser.add_argument("--out", default=os.path.join(ROOT, "doc", "figures"))
     parser.add_argument("--check-harmonics", action="store_true")
-    parser.add_argument("--radial", action="store_true",
-                        help="also the radial H-M probes at V = 0")
     parser.add_argument("--fractions", default=",".join(
         str(v) for v in VERTICAL_FRACTIONS),
         help="the held V / V_ult of the H and M probes")
@@ -138,42 +141,50 @@ def main():
 
     _, wall = run(args.exe, work, "V", {"Target": "-0.04", "Load steps": "8"})
     v_ult, rise = plateau(work, "V", "V")
-    records.append(dict(path="V", harmonics="0", v=1.0, V_kN=v_ult, H_kN=0.0,
+    records.append(dict(path="V", harmonics="0", v=1.0, ratio=0.0,
+                        V_kN=v_ult, H_kN=0.0,
                         M_kNm=0.0, plateau_change=rise, wall_s=wall))
 
-    def probe(kind, fraction, harmonics="0, 1", samples=8, tag=""):
+    def probe(kind, fraction, harmonics="0, 1", samples=8, tag="", ratio=0.0):
         held = -fraction * v_ult
         name = "%s-v%.2f%s" % (kind, fraction, tag)
+        if kind == "R":
+            name = "R-m%+.2f%s" % (ratio, tag)
         rows, wall = run(args.exe, work, name,
                          probe_changes(kind, held, fraction, harmonics,
-                                       samples))
-        value, rise = plateau(work, name, "H" if kind == "H" else "M")
+                                       samples, ratio))
+        controlled = "H" if kind == "H" or (kind == "R" and abs(ratio) < 1.0) \
+            else "M"
+        value, rise = plateau(work, name, controlled)
         last = rows[-1]
         records.append(dict(path=kind, harmonics=harmonics, v=fraction,
+                            ratio=ratio,
                             V_kN=abs(float(last["V_kN"])),
-                            H_kN=abs(float(last["H_kN"])),
-                            M_kNm=abs(float(last["M_kNm"])),
+                            H_kN=float(last["H_kN"]),
+                            M_kNm=float(last["M_kNm"]),
                             plateau_change=rise, wall_s=wall))
 
     for fraction in [float(v) for v in args.fractions.split(",")]:
         probe("H", fraction)
         probe("M", fraction)
-    if args.radial:
-        probe("HM+", 0.0)
-        probe("HM-", 0.0)
+    for ratio in RADIAL_RATIOS:
+        probe("R", 0.0, ratio=ratio)
     if args.check_harmonics:
-        probe("H", 0.5, "0, 1, 2, 3", 16, "-n3")
-        probe("M", 0.5, "0, 1, 2, 3", 16, "-n3")
+        for fraction in (0.0, 0.5):
+            probe("H", fraction, "0, 1, 2, 3", 16, "-n3")
+            probe("M", fraction, "0, 1, 2, 3", 16, "-n3")
 
     os.makedirs(args.out, exist_ok=True)
     table = os.path.join(args.out, "capacity-envelope.csv")
     with open(table, "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["path", "harmonics", "v", "V_kN", "H_kN", "M_kNm",
+        w.writerow(["path", "harmonics", "v", "M_over_H_D", "V_kN", "H_kN",
+                    "M_kNm",
                     "V_over_A_su", "H_over_A_su", "M_over_A_D_su",
                     "plateau_rise", "wall_s"])
         for r in records:
             w.writerow([r["path"], r["harmonics"], "%.3f" % r["v"],
+                        "%.2f" % r["ratio"],
                         "%.4f" % r["V_kN"], "%.4f" % r["H_kN"],
                         "%.4f" % r["M_kNm"], "%.4f" % (r["V_kN"] / (A * SU)),
                         "%.4f" % (r["H_kN"] / (A * SU)),
@@ -195,11 +206,11 @@ def plot(records, out):
 
     v_ult = next(r["V_kN"] for r in records if r["path"] == "V")
     base = [r for r in records if r["harmonics"] == "0, 1"]
-    fig, (left, right) = plt.subplots(1, 2, figsize=(9.0, 3.8))
+    fig, (left, middle, right) = plt.subplots(1, 3, figsize=(13.0, 4.0))
     for kind, axis, key, scale, label in (
             ("H", left, "H_kN", A * SU, "H / (A s_u)"),
-            ("M", right, "M_kNm", A * D * SU, "M / (A D s_u)")):
-        points = sorted((r["V_kN"] / v_ult, r[key] / scale,
+            ("M", middle, "M_kNm", A * D * SU, "M / (A D s_u)")):
+        points = sorted((r["V_kN"] / v_ult, abs(r[key]) / scale,
                          r["plateau_change"] < 0.01)
                         for r in base if r["path"] == kind)
         axis.plot([p[0] for p in points] + [1.0],
@@ -211,8 +222,8 @@ def plot(records, out):
         checks = [r for r in records if r["path"] == kind and r not in base]
         if checks:
             axis.plot([r["V_kN"] / v_ult for r in checks],
-                      [r[key] / scale for r in checks], "s", ms=6, mfc="none",
-                      label="n <= 3, 16 theta samples")
+                      [abs(r[key]) / scale for r in checks], "s", ms=6,
+                      mfc="none", color="C1", label="n <= 3, 16 theta samples")
         if kind == "H":
             hs = [1.0 - i / 100.0 for i in range(101)]
             axis.plot([0.0] + [green_strip(h) for h in hs], [1.0] + hs,
@@ -224,8 +235,26 @@ def plot(records, out):
         axis.set_ylim(bottom=0)
         axis.grid(True, alpha=0.3)
         axis.legend(fontsize=7, loc="lower left")
-    fig.suptitle("Rough circular surface footing, Tresca soil: V-H and V-M "
-                 "capacity (shipped mesh: H, M about +6 % high)\nopen "
+    # H-M at V = 0: the radial probes and the uniaxial H and M, each with
+    # its mirror image (the envelope is point-symmetric: (H, M) -> (-H, -M)).
+    at_zero = [r for r in base if r["v"] == 0.0 and r["path"] in "HMR"]
+    hm = [(r["H_kN"] / (A * SU), r["M_kNm"] / (A * D * SU),
+           r["plateau_change"] < 0.01) for r in at_zero]
+    hm += [(-h, -m, flat) for h, m, flat in hm]
+    hm.sort(key=lambda p: math.atan2(p[1], p[0]))
+    right.plot([p[0] for p in hm] + [hm[0][0]],
+               [p[1] for p in hm] + [hm[0][1]], "-", color="C0",
+               label="fourier-ssi, n <= 1, V = 0")
+    for h, m, flat in hm:
+        right.plot(h, m, "o", ms=5, color="C0", mfc="C0" if flat else "white")
+    right.axhline(0.0, color="grey", lw=0.6)
+    right.axvline(0.0, color="grey", lw=0.6)
+    right.set_xlabel("H / (A s_u)")
+    right.set_ylabel("M / (A D s_u)  (M_y about the base centre)")
+    right.grid(True, alpha=0.3)
+    right.legend(fontsize=7, loc="lower left")
+    fig.suptitle("Rough circular surface footing, Tresca soil: V-H, V-M and "
+                 "H-M (V = 0) capacity (shipped mesh: about +7 % high)\nopen "
                  "markers: still rising > 1 % at the end of the probe, a "
                  "lower bound (doc/soil-plasticity.md 5c)", fontsize=8)
     fig.tight_layout()
