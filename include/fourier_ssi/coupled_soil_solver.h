@@ -22,6 +22,15 @@
  *      their kept factorizations, omega by Aitken's Delta^2 rule.
  * Loading (load or displacement control of the rigid foundation), step
  * cutting and the settings are those of subsection "Nonlinear interfaces".
+ *
+ * Under mpirun (Stiffness = elastic) the harmonics are distributed over the
+ * ranks (HarmonicSet::distribute_over), as for the interfaces: each rank
+ * solves its own harmonics and computes their strain amplitudes; one sum
+ * over the ranks (MPI_Allreduce) per iteration gives every rank every
+ * amplitude, each non-zero on its owner only, so the sum is exact and every
+ * rank runs steps 1-4 redundantly on the same bits as a serial run
+ * (doc/soil-plasticity.md section 3c). Stiffness = tangent (one block
+ * matrix over all harmonics) on several ranks is refused.
  */
 #ifndef fourier_ssi_coupled_soil_solver_h
 #define fourier_ssi_coupled_soil_solver_h
@@ -77,7 +86,11 @@ namespace FourierSSI
       return steps;
     }
 
-    /** Total displacement amplitudes of harmonic i (last converged state). */
+    /**
+     * Total displacement amplitudes of harmonic i (last converged state).
+     * Collective when the harmonics are distributed over ranks: every rank
+     * calls it for the same i and gets the owner's field.
+     */
     Vector<double>
     solution(const unsigned int i) const;
 
@@ -184,7 +197,11 @@ namespace FourierSSI
      */
     void
     run_stage(const bool holding, const unsigned int steps, std::ostream &log);
-    /** Strain amplitudes [point][harmonic] of fields (one per harmonic). */
+    /**
+     * Strain amplitudes [point][harmonic] of fields (one per harmonic): of
+     * the harmonics this rank owns, summed over the ranks (the one
+     * collective of an iteration).
+     */
     std::vector<std::vector<StrainVector>>
     strain_amplitudes(const std::vector<Vector<double>> &fields) const;
 
@@ -268,6 +285,18 @@ namespace FourierSSI
     double
     controlled_motion(const unsigned int h, const Vector<double> &v) const;
 
+    /** values := their sum over the ranks (in place; one rank: as is). */
+    void
+    sum_over_ranks(std::vector<double> &values) const;
+
+    /**
+     * sum_h values[h * n + c] for c < n, summed over the ranks first: per
+     * harmonic quantities, each non-zero on its owner only, added in the
+     * harmonics' order as a serial run adds them (the same bits).
+     */
+    std::vector<double>
+    sum_over_harmonics(std::vector<double> values, const unsigned int n) const;
+
     const HarmonicSet            &set;
     const AllParameters          &parameters;
     NonlinearInterfaceParameters  settings;
@@ -291,6 +320,12 @@ namespace FourierSSI
     /** Stiffness = tangent: the coupled tangent and K_t^-1 F. */
     std::unique_ptr<CoupledTangent> tangent;
     std::vector<Vector<double>>     tangent_pattern;
+    /**
+     * Sums over the ranks made (about one per iteration) and the wall time
+     * spent in them on this rank [s], logged at the end of run().
+     */
+    mutable unsigned int n_exchanges   = 0;
+    mutable double       exchange_time = 0.;
   };
 } // namespace FourierSSI
 
