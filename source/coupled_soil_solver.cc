@@ -108,6 +108,11 @@ namespace FourierSSI
                                    "block matrix over all harmonics); use "
                                    "Stiffness = elastic or one rank"));
     make_points();
+    if (set.n_owning_ranks() > 1)
+      {
+        point_stride = set.n_owning_ranks();
+        point_rank   = Utilities::MPI::this_mpi_process(set.get_ranks());
+      }
     solve_load_pattern();
     if (parameters.rigid_foundation.any_held())
       solve_held_loads();
@@ -333,6 +338,20 @@ namespace FourierSSI
       }
   }
 
+  void
+  CoupledSoilSolver::count_over_ranks(SoilStepResult &result) const
+  {
+    if (point_stride == 1)
+      return;
+    std::vector<double> counts = {static_cast<double>(result.n_elastic),
+                                  static_cast<double>(result.n_plastic)};
+    sum_over_ranks(counts);
+    result.n_elastic = static_cast<unsigned int>(counts[0]);
+    result.n_plastic = static_cast<unsigned int>(counts[1]);
+    result.largest_yield_value =
+      Utilities::MPI::max(result.largest_yield_value, set.get_ranks());
+  }
+
   std::vector<double>
   CoupledSoilSolver::sum_over_harmonics(std::vector<double> values,
                                         const unsigned int  n) const
@@ -356,16 +375,21 @@ namespace FourierSSI
     std::vector<StrainVector> samples(points.size() * N);
     std::vector<double>       a(H), s;
     for (unsigned int p = 0; p < points.size(); ++p)
-      for (unsigned int k = 0; k < 6; ++k)
-        {
-          for (unsigned int h = 0; h < H; ++h)
-            a[h] =
-              amplitude[p][h][k] + load_factor * pattern_strain[p][h][k] +
-              (held_strain.empty() ? 0. : held_fraction * held_strain[p][h][k]);
-          sampling.evaluate(a, factor_of(k), s);
-          for (unsigned int j = 0; j < N; ++j)
-            samples[p * N + j][k] = s[j];
-        }
+      {
+        if (!owns_point(p))
+          continue;
+        for (unsigned int k = 0; k < 6; ++k)
+          {
+            for (unsigned int h = 0; h < H; ++h)
+              a[h] =
+                amplitude[p][h][k] + load_factor * pattern_strain[p][h][k] +
+                (held_strain.empty() ? 0. :
+                                       held_fraction * held_strain[p][h][k]);
+            sampling.evaluate(a, factor_of(k), s);
+            for (unsigned int j = 0; j < N; ++j)
+              samples[p * N + j][k] = s[j];
+          }
+      }
     return samples;
   }
 
@@ -381,6 +405,8 @@ namespace FourierSSI
     result.largest_yield_value = -std::numeric_limits<double>::max();
     for (unsigned int p = 0; p < points.size(); ++p)
       {
+        if (!owns_point(p))
+          continue;
         const SoilPoint &point = points[p];
         const double     G = point.shear_modulus, lambda = point.lambda;
         for (unsigned int j = 0; j < N; ++j)
@@ -420,6 +446,8 @@ namespace FourierSSI
     std::vector<double> s(N), coefficient;
     for (unsigned int p = 0; p < points.size(); ++p)
       {
+        if (!owns_point(p))
+          continue;
         for (unsigned int j = 0; j < N; ++j)
           for (unsigned int k = 0; k < 6; ++k)
             any[p] = any[p] || samples[p * N + j][k] != 0.;
@@ -432,6 +460,32 @@ namespace FourierSSI
             sampling.integrate(s, factor_of(k), coefficient);
             for (unsigned int h = 0; h < H; ++h)
               integral[p][h][k] = coefficient[h];
+          }
+      }
+    // Every point's theta integrals on every rank (each non-zero on the
+    // rank that return-maps the point: an exact sum), then G_h of every
+    // harmonic redundantly, as the serial run assembles it.
+    if (point_stride > 1)
+      {
+        const unsigned int  size = H * 6 + 1;
+        std::vector<double> flat(points.size() * size, 0.);
+        for (unsigned int p = 0; p < points.size(); ++p)
+          if (owns_point(p) && any[p])
+            {
+              for (unsigned int h = 0; h < H; ++h)
+                std::copy(integral[p][h].begin(),
+                          integral[p][h].end(),
+                          flat.begin() + p * size + h * 6);
+              flat[p * size + H * 6] = 1.;
+            }
+        sum_over_ranks(flat);
+        for (unsigned int p = 0; p < points.size(); ++p)
+          {
+            any[p] = flat[p * size + H * 6] != 0.;
+            for (unsigned int h = 0; h < H; ++h)
+              std::copy(flat.begin() + p * size + h * 6,
+                        flat.begin() + p * size + (h + 1) * 6,
+                        integral[p][h].begin());
           }
       }
     set.for_each([&](const unsigned int h) {
@@ -827,6 +881,7 @@ namespace FourierSSI
           return false;
         if (residual_norm <= settings.tolerance * scale)
           {
+            count_over_ranks(result);
             state.plastic     = plastic;
             result.iterations = iteration;
             result.residual   = scale > 0. ? residual_norm / scale : 0.;

@@ -205,19 +205,29 @@ namespace FourierSSI
     std::vector<std::vector<StrainVector>>
     strain_amplitudes(const std::vector<Vector<double>> &fields) const;
 
-    /** Total strain samples [point * N + j] at lambda and rho. */
+    /**
+     * Total strain samples [point * N + j] at lambda and rho, at the points
+     * this rank owns (owns_point; zero at the others).
+     */
     std::vector<StrainVector>
     strain_samples(const std::vector<Vector<double>> &correction,
                    const double                       load_factor,
                    const double                       held_fraction) const;
 
-    /** Return mapping everywhere from the committed state. */
+    /**
+     * Return mapping from the committed state at every (point, theta) of
+     * the points this rank owns; the counts of `result` are this rank's
+     * (count_over_ranks: all of them).
+     */
     void
     return_map(const std::vector<StrainVector> &strain,
                std::vector<StrainVector>       &plastic,
                SoilStepResult                  &result) const;
 
-    /** G_h = int Bbar_h^T (theta integral of samples), every harmonic. */
+    /**
+     * G_h = int Bbar_h^T (theta integral of samples), every harmonic: the
+     * theta integrals at the points this rank owns, summed over the ranks.
+     */
     std::vector<Vector<double>>
     load_of(const std::vector<StrainVector> &samples) const;
 
@@ -285,6 +295,20 @@ namespace FourierSSI
     double
     controlled_motion(const unsigned int h, const Vector<double> &v) const;
 
+    /**
+     * Several ranks: point p is return-mapped by rank p mod P only (the
+     * return mapping is most of an iteration, doc/soil-plasticity.md 3c).
+     */
+    bool
+    owns_point(const unsigned int p) const
+    {
+      return p % point_stride == point_rank;
+    }
+
+    /** The elastic and plastic counts and largest f over the ranks. */
+    void
+    count_over_ranks(SoilStepResult &result) const;
+
     /** values := their sum over the ranks (in place; one rank: as is). */
     void
     sum_over_ranks(std::vector<double> &values) const;
@@ -324,6 +348,8 @@ namespace FourierSSI
      * Sums over the ranks made (about one per iteration) and the wall time
      * spent in them on this rank [s], logged at the end of run().
      */
+    /** owns_point(): the ranks and this rank (1, 0: every point). */
+    unsigned int         point_stride = 1, point_rank = 0;
     mutable unsigned int n_exchanges   = 0;
     mutable double       exchange_time = 0.;
   };
