@@ -1020,8 +1020,11 @@ namespace FourierSSI
       }
     run_stage(false, settings.load_steps, log);
     if (set.n_owning_ranks() > 1)
-      log << "  MPI: " << n_exchanges << " sums over the ranks ("
-          << "one per iteration, a few per step), " << exchange_time
+      log << "  MPI: " << n_exchanges
+          << " sums over the ranks (strain amplitudes and theta integrals "
+             "every iteration, the controlled motion under displacement "
+             "control, a few per step), "
+          << exchange_time
           << " s in them on rank 0 (computing or waiting for the others)\n";
   }
 

@@ -25,12 +25,14 @@
  *
  * Under mpirun (Stiffness = elastic) the harmonics are distributed over the
  * ranks (HarmonicSet::distribute_over), as for the interfaces: each rank
- * solves its own harmonics and computes their strain amplitudes; one sum
- * over the ranks (MPI_Allreduce) per iteration gives every rank every
- * amplitude, each non-zero on its owner only, so the sum is exact and every
- * rank runs steps 1-4 redundantly on the same bits as a serial run
- * (doc/soil-plasticity.md section 3c). Stiffness = tangent (one block
- * matrix over all harmonics) on several ranks is refused.
+ * re-solves its own harmonics and computes their strain amplitudes, and
+ * return-maps every P-th soil point. Two sums over the ranks per iteration
+ * (MPI_Allreduce: the strain amplitudes, then the theta integrals of s_p)
+ * give every rank all of them; each entry is non-zero on one rank only, so
+ * the sums are exact, and every rank assembles G, tests convergence and
+ * updates c on the same bits as a serial run (doc/soil-plasticity.md
+ * section 3c). Stiffness = tangent (one block matrix over all harmonics) on
+ * several ranks is refused.
  */
 #ifndef fourier_ssi_coupled_soil_solver_h
 #define fourier_ssi_coupled_soil_solver_h

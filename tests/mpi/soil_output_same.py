@@ -14,15 +14,17 @@ and controlled harmonic). Checks:
     comparison would not see the per-iteration exchange);
 (3) the two runs write the SAME TEXT in every column of
     load-displacement.csv and every row of results.csv except the wall
-    times (unit s). Exact, not a tolerance: every rank runs the sampling,
-    return mapping, out-of-balance load, Aitken update and convergence test
-    redundantly on the same bits as the serial run (the strain amplitudes
-    are summed over the ranks with each entry non-zero on its owner only,
-    x + 0 = x; per-harmonic norms and motions are added in the harmonics'
-    order as the serial run adds them), and each harmonic's back-substitution
-    is the same UMFPACK solve on its owner (one BLAS thread per process in
-    both runs: OPENBLAS_NUM_THREADS=1, set by the ctest). A reduction in
-    another order would show here in the last of the 12 digits written.
+    times (unit s). Exact, not a tolerance: each strain amplitude (of the
+    rank's own harmonics) and each theta integral of the plastic stress (of
+    the rank's own points) is computed by one rank with the serial run's
+    arithmetic and summed over the ranks with zeros from the others
+    (x + 0 = x); every rank then assembles the out-of-balance load, tests
+    convergence and takes the Aitken update redundantly on those bits;
+    per-harmonic norms and motions are added in the harmonics' order as the
+    serial run adds them; each harmonic's back-substitution is the same
+    sparse direct solve on its owner (one BLAS thread per process in both
+    runs: OPENBLAS_NUM_THREADS=1, set by the ctest). A reduction in another
+    order would show here in the last of the 12 digits written.
 Usage: soil_output_same.py "MPIEXEC;-np;2;..." FOURIER_SSI_EXE SOURCE_DIR
        WORK_DIR
 """
