@@ -296,9 +296,10 @@ namespace FourierSSI
             result[cell.first_point + q][h] = cell_strain[q];
         }
     });
-    // Every harmonic's amplitudes on every rank: the one collective of an
-    // iteration. Each entry is non-zero on its owner only, so the sum is
-    // exact and the same bits on every rank, whatever the reduction order.
+    // Every harmonic's amplitudes on every rank (the first sum of an
+    // iteration; load_of makes the second). Each entry is non-zero on its
+    // owner only, so the sum is exact and the same bits on every rank,
+    // whatever the reduction order.
     if (set.n_owning_ranks() > 1)
       {
         const unsigned int  H = set.size();

@@ -4,7 +4,6 @@
 #include <deal.II/base/timer.h>
 #include <fourier_ssi/coupled_iteration.h>
 #include <fourier_ssi/coupled_soil_solver.h>
-#include <fourier_ssi/distributed_linear_system.h>
 #include <fourier_ssi/simulator.h>
 
 namespace FourierSSI
