@@ -99,7 +99,20 @@ namespace FourierSSI
                              ": not yet: prescribed (non-zero) Dirichlet "
                              "values with plastic soil; load the scene "
                              "through the Rigid foundation"));
+    // Newton needs the whole coupled block matrix on one rank; the
+    // initial-stiffness iteration re-solves each harmonic on its owner.
+    AssertThrow(!parameters.soil_plasticity.tangent ||
+                  set.n_owning_ranks() == 1,
+                ExcMessage(entry + ": not yet: Stiffness = tangent on several "
+                                   "MPI ranks (the coupled tangent is one "
+                                   "block matrix over all harmonics); use "
+                                   "Stiffness = elastic or one rank"));
     make_points();
+    if (set.n_owning_ranks() > 1)
+      {
+        point_stride = set.n_owning_ranks();
+        point_rank   = Utilities::MPI::this_mpi_process(set.get_ranks());
+      }
     solve_load_pattern();
     if (parameters.rigid_foundation.any_held())
       solve_held_loads();
@@ -189,40 +202,53 @@ namespace FourierSSI
   void
   CoupledSoilSolver::solve_load_pattern()
   {
+    // Each rank solves the harmonics it owns; the others' fields stay zero
+    // here (never read: their strain amplitudes come from their owners).
     std::vector<std::vector<Vector<double>>> b(set.size());
-    double                                   norm_sqr = 0.;
+    std::vector<double>                      norm_sqr(set.size(), 0.);
     for (unsigned int h = 0; h < set.size(); ++h)
-      {
-        b[h] = {set.problem(h).get_system_rhs()};
-        norm_sqr += b[h][0].norm_sqr();
-      }
-    pattern_load_norm = std::sqrt(norm_sqr);
+      if (set.owns(h))
+        {
+          b[h]        = {set.problem(h).get_system_rhs()};
+          norm_sqr[h] = b[h][0].norm_sqr();
+        }
+    pattern_load_norm = std::sqrt(sum_over_harmonics(norm_sqr, 1)[0]);
     set.solve_increments(b);
     for (unsigned int h = 0; h < set.size(); ++h)
-      pattern_solution.push_back(b[h][0]);
+      pattern_solution.push_back(
+        set.owns(h) ?
+          b[h][0] :
+          Vector<double>(set.problem(h).get_dof_handler().n_dofs()));
     pattern_strain = strain_amplitudes(pattern_solution);
   }
 
   void
   CoupledSoilSolver::solve_held_loads()
   {
+    // |F_held|^2 and F . F_held per harmonic [h * 2 + 0, 1], on the owner.
     std::vector<std::vector<Vector<double>>> b(set.size());
-    double                                   norm_sqr = 0., dot = 0.;
+    std::vector<double>                      products(2 * set.size(), 0.);
     for (unsigned int h = 0; h < set.size(); ++h)
       {
+        if (!set.owns(h))
+          continue;
         const Vector<double> &pattern_load = set.problem(h).get_system_rhs();
         Vector<double>        held(pattern_load.size());
         if (const RigidFoundation *foundation = set.problem(h).get_foundation())
           foundation->add_held_loads(held);
-        norm_sqr += held.norm_sqr();
-        dot += held * pattern_load;
-        b[h] = {std::move(held)};
+        products[2 * h]     = held.norm_sqr();
+        products[2 * h + 1] = held * pattern_load;
+        b[h]                = {std::move(held)};
       }
-    held_load_norm   = std::sqrt(norm_sqr);
-    pattern_held_dot = dot;
+    const std::vector<double> sums = sum_over_harmonics(products, 2);
+    held_load_norm                 = std::sqrt(sums[0]);
+    pattern_held_dot               = sums[1];
     set.solve_increments(b);
     for (unsigned int h = 0; h < set.size(); ++h)
-      held_solution.push_back(b[h][0]);
+      held_solution.push_back(
+        set.owns(h) ?
+          b[h][0] :
+          Vector<double>(set.problem(h).get_dof_handler().n_dofs()));
     held_strain = strain_amplitudes(held_solution);
   }
 
@@ -245,6 +271,8 @@ namespace FourierSSI
       points.size(), std::vector<StrainVector>(set.size()));
     // Harmonics concurrently: each writes its own column.
     set.for_each([&](const unsigned int h) {
+      if (!set.owns(h))
+        return;
       std::vector<StrainVector> cell_strain;
       for (const SoilCell &cell : cells)
         {
@@ -268,7 +296,73 @@ namespace FourierSSI
             result[cell.first_point + q][h] = cell_strain[q];
         }
     });
+    // Every harmonic's amplitudes on every rank (the first sum of an
+    // iteration; load_of makes the second). Each entry is non-zero on its
+    // owner only, so the sum is exact and the same bits on every rank,
+    // whatever the reduction order.
+    if (set.n_owning_ranks() > 1)
+      {
+        const unsigned int  H = set.size();
+        std::vector<double> flat(points.size() * H * 6);
+        for (unsigned int p = 0; p < points.size(); ++p)
+          for (unsigned int h = 0; h < H; ++h)
+            std::copy(result[p][h].begin(),
+                      result[p][h].end(),
+                      flat.begin() + (p * H + h) * 6);
+        sum_over_ranks(flat);
+        for (unsigned int p = 0; p < points.size(); ++p)
+          for (unsigned int h = 0; h < H; ++h)
+            std::copy(flat.begin() + (p * H + h) * 6,
+                      flat.begin() + (p * H + h + 1) * 6,
+                      result[p][h].begin());
+      }
     return result;
+  }
+
+  void
+  CoupledSoilSolver::sum_over_ranks(std::vector<double> &values) const
+  {
+    if (set.n_owning_ranks() > 1)
+      {
+        const auto start = std::chrono::steady_clock::now();
+        const int  ierr  = MPI_Allreduce(MPI_IN_PLACE,
+                                       values.data(),
+                                       values.size(),
+                                       MPI_DOUBLE,
+                                       MPI_SUM,
+                                       set.get_ranks());
+        AssertThrowMPI(ierr);
+        ++n_exchanges;
+        exchange_time += std::chrono::duration<double>(
+                           std::chrono::steady_clock::now() - start)
+                           .count();
+      }
+  }
+
+  void
+  CoupledSoilSolver::count_over_ranks(SoilStepResult &result) const
+  {
+    if (point_stride == 1)
+      return;
+    std::vector<double> counts = {static_cast<double>(result.n_elastic),
+                                  static_cast<double>(result.n_plastic)};
+    sum_over_ranks(counts);
+    result.n_elastic = static_cast<unsigned int>(counts[0]);
+    result.n_plastic = static_cast<unsigned int>(counts[1]);
+    result.largest_yield_value =
+      Utilities::MPI::max(result.largest_yield_value, set.get_ranks());
+  }
+
+  std::vector<double>
+  CoupledSoilSolver::sum_over_harmonics(std::vector<double> values,
+                                        const unsigned int  n) const
+  {
+    sum_over_ranks(values);
+    std::vector<double> sum(n, 0.);
+    for (unsigned int h = 0; h < values.size() / n; ++h)
+      for (unsigned int c = 0; c < n; ++c)
+        sum[c] += values[h * n + c];
+    return sum;
   }
 
   std::vector<StrainVector>
@@ -282,16 +376,21 @@ namespace FourierSSI
     std::vector<StrainVector> samples(points.size() * N);
     std::vector<double>       a(H), s;
     for (unsigned int p = 0; p < points.size(); ++p)
-      for (unsigned int k = 0; k < 6; ++k)
-        {
-          for (unsigned int h = 0; h < H; ++h)
-            a[h] =
-              amplitude[p][h][k] + load_factor * pattern_strain[p][h][k] +
-              (held_strain.empty() ? 0. : held_fraction * held_strain[p][h][k]);
-          sampling.evaluate(a, factor_of(k), s);
-          for (unsigned int j = 0; j < N; ++j)
-            samples[p * N + j][k] = s[j];
-        }
+      {
+        if (!owns_point(p))
+          continue;
+        for (unsigned int k = 0; k < 6; ++k)
+          {
+            for (unsigned int h = 0; h < H; ++h)
+              a[h] =
+                amplitude[p][h][k] + load_factor * pattern_strain[p][h][k] +
+                (held_strain.empty() ? 0. :
+                                       held_fraction * held_strain[p][h][k]);
+            sampling.evaluate(a, factor_of(k), s);
+            for (unsigned int j = 0; j < N; ++j)
+              samples[p * N + j][k] = s[j];
+          }
+      }
     return samples;
   }
 
@@ -307,6 +406,8 @@ namespace FourierSSI
     result.largest_yield_value = -std::numeric_limits<double>::max();
     for (unsigned int p = 0; p < points.size(); ++p)
       {
+        if (!owns_point(p))
+          continue;
         const SoilPoint &point = points[p];
         const double     G = point.shear_modulus, lambda = point.lambda;
         for (unsigned int j = 0; j < N; ++j)
@@ -346,6 +447,8 @@ namespace FourierSSI
     std::vector<double> s(N), coefficient;
     for (unsigned int p = 0; p < points.size(); ++p)
       {
+        if (!owns_point(p))
+          continue;
         for (unsigned int j = 0; j < N; ++j)
           for (unsigned int k = 0; k < 6; ++k)
             any[p] = any[p] || samples[p * N + j][k] != 0.;
@@ -358,6 +461,32 @@ namespace FourierSSI
             sampling.integrate(s, factor_of(k), coefficient);
             for (unsigned int h = 0; h < H; ++h)
               integral[p][h][k] = coefficient[h];
+          }
+      }
+    // Every point's theta integrals on every rank (each non-zero on the
+    // rank that return-maps the point: an exact sum), then G_h of every
+    // harmonic redundantly, as the serial run assembles it.
+    if (point_stride > 1)
+      {
+        const unsigned int  size = H * 6 + 1;
+        std::vector<double> flat(points.size() * size, 0.);
+        for (unsigned int p = 0; p < points.size(); ++p)
+          if (owns_point(p) && any[p])
+            {
+              for (unsigned int h = 0; h < H; ++h)
+                std::copy(integral[p][h].begin(),
+                          integral[p][h].end(),
+                          flat.begin() + p * size + h * 6);
+              flat[p * size + H * 6] = 1.;
+            }
+        sum_over_ranks(flat);
+        for (unsigned int p = 0; p < points.size(); ++p)
+          {
+            any[p] = flat[p * size + H * 6] != 0.;
+            for (unsigned int h = 0; h < H; ++h)
+              std::copy(flat.begin() + p * size + h * 6,
+                        flat.begin() + p * size + (h + 1) * 6,
+                        integral[p][h].begin());
           }
       }
     set.for_each([&](const unsigned int h) {
@@ -464,14 +593,23 @@ namespace FourierSSI
     for (unsigned int h = 0; h < set.size(); ++h)
       if (harmonics[h].n == wanted.n && harmonics[h].family == wanted.family)
         {
-          const double by_pattern = controlled_motion(h, pattern_solution[h]);
+          // The motions by the pattern and now, from the owner of h (the
+          // others add zeros: exact).
+          std::vector<double> motion = {0., 0.};
+          if (set.owns(h))
+            {
+              motion[0] = controlled_motion(h, pattern_solution[h]);
+              motion[1] = controlled_motion(h, state.correction_solution[h]);
+              if (!held_solution.empty())
+                motion[1] +=
+                  state.held_fraction * controlled_motion(h, held_solution[h]);
+            }
+          sum_over_ranks(motion);
+          const double by_pattern = motion[0], now = motion[1];
           AssertThrow(by_pattern != 0.,
                       ExcMessage("Nonlinear interfaces/Controlled motion: "
                                  "the Rigid foundation loads do not drive "
                                  "this motion (give the load that does)"));
-          double now = controlled_motion(h, state.correction_solution[h]);
-          if (!held_solution.empty())
-            now += state.held_fraction * controlled_motion(h, held_solution[h]);
           return (target - now) / by_pattern;
         }
     AssertThrow(false,
@@ -744,6 +882,7 @@ namespace FourierSSI
           return false;
         if (residual_norm <= settings.tolerance * scale)
           {
+            count_over_ranks(result);
             state.plastic     = plastic;
             result.iterations = iteration;
             result.residual   = scale > 0. ? residual_norm / scale : 0.;
@@ -798,10 +937,11 @@ namespace FourierSSI
           }
         set.solve_increments(increment);
         for (unsigned int h = 0; h < set.size(); ++h)
-          {
-            state.correction_solution[h] += increment[h][0];
-            last_solution[h] = increment[h][0];
-          }
+          if (set.owns(h))
+            {
+              state.correction_solution[h] += increment[h][0];
+              last_solution[h] = increment[h][0];
+            }
       }
     return false;
   }
@@ -818,11 +958,12 @@ namespace FourierSSI
   RigidMotion
   CoupledSoilSolver::motion_of(const StepState &state) const
   {
-    RigidMotion total;
+    // Per harmonic [h * 4 + c], on its owner; summed in the harmonics' order.
+    std::vector<double> parts(4 * set.size(), 0.);
     for (unsigned int h = 0; h < set.size(); ++h)
       {
         const RigidFoundation *foundation = set.problem(h).get_foundation();
-        if (foundation == nullptr || harmonics[h].n > 1 ||
+        if (!set.owns(h) || foundation == nullptr || harmonics[h].n > 1 ||
             (harmonics[h].n == 1 && harmonics[h].family != Family::symmetric))
           continue;
         Vector<double> u = pattern_solution[h];
@@ -830,11 +971,17 @@ namespace FourierSSI
         if (!held_solution.empty())
           u.add(state.held_fraction, held_solution[h]);
         const RigidMotion m = foundation->motion(u);
-        total.vertical_displacement += m.vertical_displacement;
-        total.twist += m.twist;
-        total.horizontal_displacement += m.horizontal_displacement;
-        total.rotation += m.rotation;
+        parts[4 * h]        = m.vertical_displacement;
+        parts[4 * h + 1]    = m.twist;
+        parts[4 * h + 2]    = m.horizontal_displacement;
+        parts[4 * h + 3]    = m.rotation;
       }
+    const std::vector<double> sum = sum_over_harmonics(parts, 4);
+    RigidMotion               total;
+    total.vertical_displacement   = sum[0];
+    total.twist                   = sum[1];
+    total.horizontal_displacement = sum[2];
+    total.rotation                = sum[3];
     return total;
   }
 
@@ -845,6 +992,12 @@ namespace FourierSSI
     u.sadd(committed.load_factor, 1., committed.correction_solution[i]);
     if (!held_solution.empty())
       u.add(committed.held_fraction, held_solution[i]);
+    if (set.n_owning_ranks() > 1)
+      {
+        const int ierr = MPI_Bcast(
+          u.begin(), u.size(), MPI_DOUBLE, set.owner(i), set.get_ranks());
+        AssertThrowMPI(ierr);
+      }
     return u;
   }
 
@@ -855,10 +1008,14 @@ namespace FourierSSI
       settings.control == NonlinearInterfaceParameters::Control::load;
     log << "plastic soil: " << points.size() << " quadrature points x "
         << sampling.n_samples() << " theta samples, " << set.size()
-        << " harmonics, " << (load_control ? "load" : "displacement")
-        << " control, " << settings.load_steps << " steps, tolerance "
-        << settings.tolerance << ", "
-        << iteration_name(settings, parameters.soil_plasticity.tangent)
+        << " harmonics"
+        << (set.n_owning_ranks() > 1 ?
+              " distributed over " + std::to_string(set.n_owning_ranks()) +
+                " MPI ranks" :
+              std::string())
+        << ", " << (load_control ? "load" : "displacement") << " control, "
+        << settings.load_steps << " steps, tolerance " << settings.tolerance
+        << ", " << iteration_name(settings, parameters.soil_plasticity.tangent)
         << (cells.front().projection ? ", B-bar" : "") << '\n';
     if (!held_solution.empty())
       {
@@ -869,6 +1026,13 @@ namespace FourierSSI
         run_stage(true, settings.held_load_steps, log);
       }
     run_stage(false, settings.load_steps, log);
+    if (set.n_owning_ranks() > 1)
+      log << "  MPI: " << n_exchanges
+          << " sums over the ranks (strain amplitudes and theta integrals "
+             "every iteration, the controlled motion under displacement "
+             "control, a few per step), "
+          << exchange_time
+          << " s in them on rank 0 (computing or waiting for the others)\n";
   }
 
   void

@@ -45,40 +45,10 @@ namespace FourierSSI
   {
     check_supported(parameters, communicator);
     Timer timer;
-    // Every rank owns some harmonics, serial systems (MPI_COMM_SELF), and
-    // shares the cores of its node with the other ranks.
-    // (A serial run does not start MPI: no communicator to ask.)
-    const unsigned int n_ranks =
-      Utilities::MPI::job_supports_mpi() ?
-        Utilities::MPI::n_mpi_processes(communicator) :
-        1;
-    const unsigned int threads =
-      parameters.discretization.concurrent_harmonics > 0 ?
-        parameters.discretization.concurrent_harmonics :
-        std::max(1u, MultithreadInfo::n_cores() / n_ranks);
-    harmonic_set = std::make_unique<HarmonicSet>(parameters,
-                                                 plan.harmonics,
-                                                 triangulation,
-                                                 plan.loads,
-                                                 MPI_COMM_SELF,
-                                                 threads);
-    harmonic_set->distribute_over(communicator);
-    harmonic_set->setup_and_assemble();
-    harmonic_set->factorize();
+    make_distributed_harmonic_set();
     log << "assembled and factorized " << harmonic_set->size()
         << " harmonics in " << timer.wall_time() << " s" << std::endl;
-    if (n_ranks > 1)
-      {
-        log << "harmonics distributed over " << n_ranks << " MPI ranks:";
-        for (unsigned int r = 0; r < n_ranks; ++r)
-          {
-            log << (r == 0 ? " rank " : "; rank ") << r;
-            for (unsigned int h = 0; h < harmonic_set->size(); ++h)
-              if (harmonic_set->owner(h) == r)
-                log << ' ' << harmonic_set->harmonic(h).name();
-          }
-        log << std::endl;
-      }
+    log_harmonic_distribution(log);
     CoupledInterfaceSolver solver(*harmonic_set, parameters);
     const std::string      directory = parameters.output.directory;
     // Keep the converged steps, marked as such by the file name (not in
@@ -112,6 +82,48 @@ namespace FourierSSI
       }
     // Lines 3D, the revolved 3D VTU and the results, as a linear run.
     write_output(log);
+  }
+
+  void
+  Simulator::make_distributed_harmonic_set()
+  {
+    // Every rank owns some harmonics, serial systems (MPI_COMM_SELF), and
+    // shares the cores of its node with the other ranks.
+    // (A serial run does not start MPI: no communicator to ask.)
+    const unsigned int n_ranks =
+      Utilities::MPI::job_supports_mpi() ?
+        Utilities::MPI::n_mpi_processes(communicator) :
+        1;
+    const unsigned int threads =
+      parameters.discretization.concurrent_harmonics > 0 ?
+        parameters.discretization.concurrent_harmonics :
+        std::max(1u, MultithreadInfo::n_cores() / n_ranks);
+    harmonic_set = std::make_unique<HarmonicSet>(parameters,
+                                                 plan.harmonics,
+                                                 triangulation,
+                                                 plan.loads,
+                                                 MPI_COMM_SELF,
+                                                 threads);
+    harmonic_set->distribute_over(communicator);
+    harmonic_set->setup_and_assemble();
+    harmonic_set->factorize();
+  }
+
+  void
+  Simulator::log_harmonic_distribution(std::ostream &log) const
+  {
+    const unsigned int n_ranks = harmonic_set->n_owning_ranks();
+    if (n_ranks == 1)
+      return;
+    log << "harmonics distributed over " << n_ranks << " MPI ranks:";
+    for (unsigned int r = 0; r < n_ranks; ++r)
+      {
+        log << (r == 0 ? " rank " : "; rank ") << r;
+        for (unsigned int h = 0; h < harmonic_set->size(); ++h)
+          if (harmonic_set->owner(h) == r)
+            log << ' ' << harmonic_set->harmonic(h).name();
+      }
+    log << std::endl;
   }
 
   void

@@ -223,7 +223,9 @@ namespace FourierSSI
       "harmonics together, their coupling through the plastic points "
       "included (the tangent of the return mapping, theta-integrated for "
       "every pair of harmonics, refactorized at every update; "
-      "benchmarks/soil-plasticity).");
+      "benchmarks/soil-plasticity). Under mpirun only elastic: the "
+      "harmonics and the soil points are distributed over the ranks "
+      "(doc/soil-plasticity.md 3c).");
     prm.leave_subsection();
   }
 

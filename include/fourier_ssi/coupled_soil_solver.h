@@ -22,6 +22,17 @@
  *      their kept factorizations, omega by Aitken's Delta^2 rule.
  * Loading (load or displacement control of the rigid foundation), step
  * cutting and the settings are those of subsection "Nonlinear interfaces".
+ *
+ * Under mpirun (Stiffness = elastic) the harmonics are distributed over the
+ * ranks (HarmonicSet::distribute_over), as for the interfaces: each rank
+ * re-solves its own harmonics and computes their strain amplitudes, and
+ * return-maps every P-th soil point. Two sums over the ranks per iteration
+ * (MPI_Allreduce: the strain amplitudes, then the theta integrals of s_p)
+ * give every rank all of them; each entry is non-zero on one rank only, so
+ * the sums are exact, and every rank assembles G, tests convergence and
+ * updates c on the same bits as a serial run (doc/soil-plasticity.md
+ * section 3c). Stiffness = tangent (one block matrix over all harmonics) on
+ * several ranks is refused.
  */
 #ifndef fourier_ssi_coupled_soil_solver_h
 #define fourier_ssi_coupled_soil_solver_h
@@ -77,7 +88,11 @@ namespace FourierSSI
       return steps;
     }
 
-    /** Total displacement amplitudes of harmonic i (last converged state). */
+    /**
+     * Total displacement amplitudes of harmonic i (last converged state).
+     * Collective when the harmonics are distributed over ranks: every rank
+     * calls it for the same i and gets the owner's field.
+     */
     Vector<double>
     solution(const unsigned int i) const;
 
@@ -197,23 +212,37 @@ namespace FourierSSI
                 const double     ratio,
                 StepState       &state) const;
 
-    /** Strain amplitudes [point][harmonic] of fields (one per harmonic). */
+    /**
+     * Strain amplitudes [point][harmonic] of fields (one per harmonic): of
+     * the harmonics this rank owns, summed over the ranks (the one
+     * collective of an iteration).
+     */
     std::vector<std::vector<StrainVector>>
     strain_amplitudes(const std::vector<Vector<double>> &fields) const;
 
-    /** Total strain samples [point * N + j] at lambda and rho. */
+    /**
+     * Total strain samples [point * N + j] at lambda and rho, at the points
+     * this rank owns (owns_point; zero at the others).
+     */
     std::vector<StrainVector>
     strain_samples(const std::vector<Vector<double>> &correction,
                    const double                       load_factor,
                    const double                       held_fraction) const;
 
-    /** Return mapping everywhere from the committed state. */
+    /**
+     * Return mapping from the committed state at every (point, theta) of
+     * the points this rank owns; the counts of `result` are this rank's
+     * (count_over_ranks: all of them).
+     */
     void
     return_map(const std::vector<StrainVector> &strain,
                std::vector<StrainVector>       &plastic,
                SoilStepResult                  &result) const;
 
-    /** G_h = int Bbar_h^T (theta integral of samples), every harmonic. */
+    /**
+     * G_h = int Bbar_h^T (theta integral of samples), every harmonic: the
+     * theta integrals at the points this rank owns, summed over the ranks.
+     */
     std::vector<Vector<double>>
     load_of(const std::vector<StrainVector> &samples) const;
 
@@ -281,6 +310,32 @@ namespace FourierSSI
     double
     controlled_motion(const unsigned int h, const Vector<double> &v) const;
 
+    /**
+     * Several ranks: point p is return-mapped by rank p mod P only (the
+     * return mapping is most of an iteration, doc/soil-plasticity.md 3c).
+     */
+    bool
+    owns_point(const unsigned int p) const
+    {
+      return p % point_stride == point_rank;
+    }
+
+    /** The elastic and plastic counts and largest f over the ranks. */
+    void
+    count_over_ranks(SoilStepResult &result) const;
+
+    /** values := their sum over the ranks (in place; one rank: as is). */
+    void
+    sum_over_ranks(std::vector<double> &values) const;
+
+    /**
+     * sum_h values[h * n + c] for c < n, summed over the ranks first: per
+     * harmonic quantities, each non-zero on its owner only, added in the
+     * harmonics' order as a serial run adds them (the same bits).
+     */
+    std::vector<double>
+    sum_over_harmonics(std::vector<double> values, const unsigned int n) const;
+
     const HarmonicSet            &set;
     const AllParameters          &parameters;
     NonlinearInterfaceParameters  settings;
@@ -304,6 +359,14 @@ namespace FourierSSI
     /** Stiffness = tangent: the coupled tangent and K_t^-1 F. */
     std::unique_ptr<CoupledTangent> tangent;
     std::vector<Vector<double>>     tangent_pattern;
+    /**
+     * Sums over the ranks made (about one per iteration) and the wall time
+     * spent in them on this rank [s], logged at the end of run().
+     */
+    /** owns_point(): the ranks and this rank (1, 0: every point). */
+    unsigned int         point_stride = 1, point_rank = 0;
+    mutable unsigned int n_exchanges   = 0;
+    mutable double       exchange_time = 0.;
   };
 } // namespace FourierSSI
 

@@ -141,6 +141,18 @@ namespace FourierSSI
     keep_last_step(const CoupledInterfaceSolver &solver);
 
     /**
+     * The HarmonicSet of a coupled solve (coulomb interface, plastic soil),
+     * assembled and factorized: under mpirun each rank owns whole harmonics
+     * (HarmonicSet::distribute_over), serial systems on cores / ranks
+     * threads (simulator_nonlinear.cc).
+     */
+    void
+    make_distributed_harmonic_set();
+    /** Which rank owns which harmonic (several ranks only). */
+    void
+    log_harmonic_distribution(std::ostream &log) const;
+
+    /**
      * A scene with plastic soil (Soil plasticity/Laws): the load steps of
      * CoupledSoilSolver on one HarmonicSet (simulator_soil.cc).
      */
