@@ -570,6 +570,33 @@ namespace FourierSSI
       }
   }
 
+  void
+  CoupledInterfaceSolver::extrapolate(const StepState &before_last,
+                                      const double     ratio,
+                                      StepState       &state) const
+  {
+    const auto move_on = [ratio](Vector<double>       &v,
+                                 const Vector<double> &last,
+                                 const Vector<double> &before) {
+      v.add(ratio, last);
+      v.add(-ratio, before);
+    };
+    for (unsigned int h = 0; h < set.size(); ++h)
+      {
+        move_on(state.correction_load[h],
+                committed.correction_load[h],
+                before_last.correction_load[h]);
+        move_on(state.correction_solution[h],
+                committed.correction_solution[h],
+                before_last.correction_solution[h]);
+        move_on(state.interface_solution[h],
+                committed.interface_solution[h],
+                before_last.interface_solution[h]);
+      }
+    state.controlled_motion +=
+      ratio * (committed.controlled_motion - before_last.controlled_motion);
+  }
+
   bool
   CoupledInterfaceSolver::solve_step(const double       target,
                                      StepState         &state,
@@ -830,12 +857,19 @@ namespace FourierSSI
              "no strength\n";
     double       done = 0., increment = 1. / settings.load_steps;
     unsigned int cuts = 0;
+    // The state before the last converged step and that step's size: the
+    // next step starts from the last correction extrapolated (as for the
+    // plastic soil, doc/soil-plasticity.md 3b); none after harmonics grow.
+    StepState before_last;
+    double    last_increment = 0.;
     while (done < 1. - 1e-12)
       {
         const double fraction = std::min(1., done + increment);
         const double target =
           load_control ? fraction : fraction * settings.target;
-        StepState         state = committed;
+        StepState state = committed;
+        if (last_increment > 0.)
+          extrapolate(before_last, increment / last_increment, state);
         LoadStepResult    result;
         InterfaceSnapshot snapshot;
         const auto        start = std::chrono::steady_clock::now();
@@ -853,8 +887,11 @@ namespace FourierSSI
         if (!added.empty())
           {
             grow(added);
+            last_increment = 0.;
             continue;
           }
+        before_last        = std::move(committed);
+        last_increment     = fraction - done;
         committed          = state;
         done               = fraction;
         result.n_harmonics = set.size();

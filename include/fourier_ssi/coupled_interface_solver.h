@@ -313,6 +313,17 @@ namespace FourierSSI
     void
     complete(StepState &state) const;
 
+    /**
+     * Secant predictor: state's correction moved on by ratio times the
+     * change over the last converged step (before_last to committed); every
+     * part of the state but the plastic slip is linear in c
+     * (doc/nonlinear-interfaces.md section 5).
+     */
+    void
+    extrapolate(const StepState &before_last,
+                const double     ratio,
+                StepState       &state) const;
+
     /** Iterate one step to lambda (load control) or to a motion target. */
     bool
     solve_step(const double       target,
