@@ -17,9 +17,20 @@ is given with the range that uncertainty allows.
 Reliability asks effectivity >= 0.8 (at most 20 % under-reported), and
 sharpness <= 5.
 
+The assumed ratio of a two-value estimate is design_member_ratio(nu) of
+sequence_error_estimate.h (0.4 below nu = 0.45, 0.6 from it; mirrored in
+design_ratio() here). The cases are the eight of the accuracy study and six
+of the thesis figure families ('sweep-*', written by tools/sweep.py) whose
+members converge more slowly; every member value of a case run is kept in
+members.csv, from which the member-ratio table (rho = e_1/e_0 per case and
+goal, and the member-1 effectivity with r = 0.4 and with the rule) is
+formed.
+
 Usage: effectivity.py --exe build/fourier-ssi [--cases a,b] [--out DIR]
        effectivity.py --rescore [--out DIR]
-Writes effectivity.csv and effectivity.md in DIR (default: this folder).
+Writes effectivity.csv, effectivity.md and members.csv in DIR (default:
+this folder); the rows of the cases not in --cases are kept from the
+committed effectivity.csv (re-formed as --rescore does).
 --rescore re-forms the estimates of the committed effectivity.csv with the
 present ratios, without running anything: eq. (1) is |d_k| times
 r / (1 - r), and |d_k| follows from each row's estimate and ratio, so a
@@ -268,8 +279,8 @@ def rescore(path):
             l["effectivity"] = l["estimate"] / error
             l["effectivity_low"] = l["estimate"] / (error + u)
             l["effectivity_high"] = l["estimate"] / (error - u)
-            if l["member"] == 1:
-                l["member_ratio"] = error / (error + step)
+            if l["member"] == 1 and l.get("member_ratio") in ("", None):
+                l["member_ratio"] = error / (error + step)  # monotone
         lines.append(l)
     return lines
 
