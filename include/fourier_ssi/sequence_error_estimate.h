@@ -65,7 +65,7 @@ namespace FourierSSI
    *    on the shallow one (e/a = 0.5, K_M), 0.45 ... 0.46 on the rough
    *    piles, 0.57 ... 0.63 on the rigid smooth pile (L/d = 15, inferred):
    *    0.4 printed down to 0.39 of the truth there. With 0.6: 0.88 ...
-   *    4.1 (Table 4.1's nu = 0.49 column: up to 48).
+   *    4.1 (Table 4.1's nu = 0.49 column: 7.3 ... 16.5).
    * Near incompressibility slows the first members, not the corners (the
    * Williams exponent of the embedded footing's corner, 0.60 at nu = 0.25
    * and 0.55 at 0.49, predicts rho = 0.08 and 0.10): the dilatation's
@@ -73,7 +73,7 @@ namespace FourierSSI
    * 0.25, enters the displacement element's error constant (locking,
    * Babuska & Suri 1992) until h resolves it; the threshold is the one at
    * which FE_Q(2) switches to B-bar. One ratio for all, 0.6, would
-   * over-report the nu = 0.25 footings up to 7x and Table 4.1 up to 48x.
+   * over-report the nu = 0.25 footings up to 7x and Table 4.1 up to 45x.
    */
   double
   design_member_ratio(const double largest_poisson_ratio);
