@@ -1,9 +1,17 @@
 #include <cmath>
 #include <deal.II/base/exceptions.h>
+#include <fourier_ssi/input_checks.h>
 #include <fourier_ssi/sequence_error_estimate.h>
 
 namespace FourierSSI
 {
+  double
+  design_member_ratio(const double largest_poisson_ratio)
+  {
+    return largest_poisson_ratio >= locking_poisson_ratio ? 0.6 : 0.4;
+  }
+
+
   SequenceErrorEstimate
   estimate_sequence_error(const std::vector<double> &values,
                           const double               assumed_ratio)

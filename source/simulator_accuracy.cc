@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <deal.II/base/timer.h>
 #include <fourier_ssi/discretization_design.h>
+#include <fourier_ssi/input_checks.h>
 #include <fourier_ssi/messages.h>
 #include <fourier_ssi/simulator.h>
 #include <iomanip>
@@ -65,7 +66,7 @@ namespace FourierSSI
   Simulator::assumed_ratio() const
   {
     return parameters.discretization.target_accuracy > 0. ?
-             design_member_ratio :
+             design_member_ratio(largest_poisson_ratio(parameters.materials)) :
              one_halving_ratio;
   }
 

@@ -20,19 +20,7 @@
  *      smooth-interface slip wedge (doc/accuracy-vs-time.md), 2^-0.7 = 0.62,
  *      taken as `one_halving_ratio` = 0.65;
  *    - a member of the Target accuracy family (discretization_design.h),
- *      `design_member_ratio` = 0.4: measured, not derived. The member
- *      0 -> 1 error ratio e_1/e_0 of the accuracy study (8 cases: rough
- *      and smooth, footing and pile, alpha = 0 ... 1, nu = 0.25 and 0.49;
- *      24 goal values) lies in 0.17 ... 0.39, and in 0.03 ... 0.17 on the
- *      30 scenes of Table 4.1. With two values the estimate is
- *      |d| r/(1-r) and the truth |d| rho/(1-rho), so a ratio r above the
- *      largest rho never under-reports: 0.4 against rho = 0.39 (rough
- *      embedded footing, nu = 0.49, K_MH) gives effectivity 1.03, and
- *      over-reports the fast cases by (0.4/0.6)/(rho/(1-rho)): 3.2 at
- *      rho = 0.17, 5 at rho = 0.12 (doc/accuracy-vs-time.md, effectivity
- *      table). The earlier 0.5 was the slowest rate reasoned from one
- *      halving at order 1.14 (2^-1.14 = 0.45); it over-reported by 1.5x
- *      more everywhere and the measured ratios never came near it.
+ *      `design_member_ratio(nu)`, measured, not derived; see there.
  */
 #ifndef fourier_ssi_sequence_error_estimate_h
 #define fourier_ssi_sequence_error_estimate_h
@@ -55,9 +43,40 @@ namespace FourierSSI
 
   /** Ratio floor in (1): a step may fall faster than the next one. */
   constexpr double minimum_ratio = 0.25;
-  /** Assumed ratios of the two kinds of sequence (see above). */
-  constexpr double one_halving_ratio   = 0.65;
-  constexpr double design_member_ratio = 0.4;
+  /** Assumed ratio of one halving of h (see above). */
+  constexpr double one_halving_ratio = 0.65;
+
+  /**
+   * The assumed member ratio of the Target accuracy family, by the largest
+   * Poisson's ratio nu of the scene's materials:
+   *   0.4 for nu <  locking_poisson_ratio (0.45, input_checks.h),
+   *   0.6 for nu >= locking_poisson_ratio.
+   * Measured, not derived. With two values the estimate is |d| r/(1-r)
+   * and the truth |d| rho/(1-rho), rho = e_1/e_0 the member 0 -> 1 error
+   * ratio, so the effectivity is (r/(1-r)) / (rho/(1-rho)) (eq. (2) of
+   * doc/accuracy-vs-time.md), >= 0.8 (at most 20 % under-reported) for
+   * rho <= 0.45 at r = 0.4 and rho <= 0.65 at r = 0.6. Measured rho
+   * (benchmarks/accuracy-on-demand/effectivity.md, "member ratios"):
+   *  - nu < 0.45: 0.17 ... 0.28 on the footings, 0.34 ... 0.38 on the
+   *    flexible pile, 0.43 on the rigid pile (rough, L/d = 15; three
+   *    members, inferred), 0.03 ... 0.17 on Table 4.1: with 0.4 the
+   *    effectivity is 0.89 ... 3.2 (Table 4.1: up to 20);
+   *  - nu = 0.49: 0.27 ... 0.39 on the template footing (e/a = 1), 0.53
+   *    on the shallow one (e/a = 0.5, K_M), 0.45 ... 0.46 on the rough
+   *    piles, 0.57 ... 0.63 on the rigid smooth pile (L/d = 15, inferred):
+   *    0.4 printed down to 0.39 of the truth there. With 0.6: 0.88 ...
+   *    4.1 (Table 4.1's nu = 0.49 column: 7.3 ... 16.5).
+   * Near incompressibility slows the first members, not the corners (the
+   * Williams exponent of the embedded footing's corner, 0.60 at nu = 0.25
+   * and 0.55 at 0.49, predicts rho = 0.08 and 0.10): the dilatation's
+   * stiffness lambda/mu = 2 nu/(1 - 2 nu), 49 at nu = 0.49 and 1.7 at
+   * 0.25, enters the displacement element's error constant (locking,
+   * Babuska & Suri 1992) until h resolves it; the threshold is the one at
+   * which FE_Q(2) switches to B-bar. One ratio for all, 0.6, would
+   * over-report the nu = 0.25 footings up to 7x and Table 4.1 up to 45x.
+   */
+  double
+  design_member_ratio(const double largest_poisson_ratio);
 
   /**
    * Eq. (1) for the last of `values` (at least two, nested meshes, coarse
