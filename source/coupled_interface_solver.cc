@@ -178,7 +178,7 @@ namespace FourierSSI
           b[h] = {set.problem(h).get_system_rhs()};
           norm_sqr[0] += b[h][0].norm_sqr();
         }
-    sum_over_ranks(norm_sqr);
+    set.sum_over_ranks(norm_sqr);
     pattern_load_norm = std::sqrt(norm_sqr[0]);
     set.solve_increments(b);
     pattern_solution.clear();
@@ -241,7 +241,7 @@ namespace FourierSSI
     // 2. Every harmonic's amplitudes on every rank: the one collective of an
     //    iteration. Each entry is non-zero on its owner only, so the sum is
     //    exact and the same bits on every rank, whatever the reduction order.
-    sum_over_ranks(amplitudes);
+    set.sum_over_ranks(amplitudes);
     // 3. The samples at every theta_j, summed over the harmonics.
     std::vector<LocalVector> result(points.size() * N, {{0., 0., 0.}});
     std::vector<double>      amplitude(H), samples;
@@ -259,26 +259,6 @@ namespace FourierSSI
             result[i * N + j][c] = samples[j];
         }
     return result;
-  }
-
-  void
-  CoupledInterfaceSolver::sum_over_ranks(std::vector<double> &values) const
-  {
-    if (set.n_owning_ranks() > 1)
-      {
-        const auto start = std::chrono::steady_clock::now();
-        const int  ierr  = MPI_Allreduce(MPI_IN_PLACE,
-                                       values.data(),
-                                       values.size(),
-                                       MPI_DOUBLE,
-                                       MPI_SUM,
-                                       set.get_ranks());
-        AssertThrowMPI(ierr);
-        ++n_exchanges;
-        exchange_time += std::chrono::duration<double>(
-                           std::chrono::steady_clock::now() - start)
-                           .count();
-      }
   }
 
   void
@@ -742,7 +722,7 @@ namespace FourierSSI
         total[2] += m.horizontal_displacement;
         total[3] += m.rotation;
       }
-    sum_over_ranks(total);
+    set.sum_over_ranks(total);
     RigidMotion motion;
     motion.vertical_displacement   = total[0];
     motion.twist                   = total[1];
@@ -913,8 +893,8 @@ namespace FourierSSI
             << result.n_harmonics << " harmonics\n";
       }
     if (set.n_owning_ranks() > 1)
-      log << "  MPI: " << n_exchanges << " sums over the ranks ("
-          << "one per iteration, a few per step), " << exchange_time
+      log << "  MPI: " << set.n_rank_sums() << " sums over the ranks ("
+          << "one per iteration, a few per step), " << set.rank_sum_time()
           << " s in them on rank 0 (computing or waiting for the others)\n";
   }
 

@@ -309,7 +309,7 @@ namespace FourierSSI
             std::copy(result[p][h].begin(),
                       result[p][h].end(),
                       flat.begin() + (p * H + h) * 6);
-        sum_over_ranks(flat);
+        set.sum_over_ranks(flat);
         for (unsigned int p = 0; p < points.size(); ++p)
           for (unsigned int h = 0; h < H; ++h)
             std::copy(flat.begin() + (p * H + h) * 6,
@@ -320,33 +320,13 @@ namespace FourierSSI
   }
 
   void
-  CoupledSoilSolver::sum_over_ranks(std::vector<double> &values) const
-  {
-    if (set.n_owning_ranks() > 1)
-      {
-        const auto start = std::chrono::steady_clock::now();
-        const int  ierr  = MPI_Allreduce(MPI_IN_PLACE,
-                                       values.data(),
-                                       values.size(),
-                                       MPI_DOUBLE,
-                                       MPI_SUM,
-                                       set.get_ranks());
-        AssertThrowMPI(ierr);
-        ++n_exchanges;
-        exchange_time += std::chrono::duration<double>(
-                           std::chrono::steady_clock::now() - start)
-                           .count();
-      }
-  }
-
-  void
   CoupledSoilSolver::count_over_ranks(SoilStepResult &result) const
   {
     if (point_stride == 1)
       return;
     std::vector<double> counts = {static_cast<double>(result.n_elastic),
                                   static_cast<double>(result.n_plastic)};
-    sum_over_ranks(counts);
+    set.sum_over_ranks(counts);
     result.n_elastic = static_cast<unsigned int>(counts[0]);
     result.n_plastic = static_cast<unsigned int>(counts[1]);
     result.largest_yield_value =
@@ -357,7 +337,7 @@ namespace FourierSSI
   CoupledSoilSolver::sum_over_harmonics(std::vector<double> values,
                                         const unsigned int  n) const
   {
-    sum_over_ranks(values);
+    set.sum_over_ranks(values);
     std::vector<double> sum(n, 0.);
     for (unsigned int h = 0; h < values.size() / n; ++h)
       for (unsigned int c = 0; c < n; ++c)
@@ -479,7 +459,7 @@ namespace FourierSSI
                           flat.begin() + p * size + h * 6);
               flat[p * size + H * 6] = 1.;
             }
-        sum_over_ranks(flat);
+        set.sum_over_ranks(flat);
         for (unsigned int p = 0; p < points.size(); ++p)
           {
             any[p] = flat[p * size + H * 6] != 0.;
@@ -604,7 +584,7 @@ namespace FourierSSI
                 motion[1] +=
                   state.held_fraction * controlled_motion(h, held_solution[h]);
             }
-          sum_over_ranks(motion);
+          set.sum_over_ranks(motion);
           const double by_pattern = motion[0], now = motion[1];
           AssertThrow(by_pattern != 0.,
                       ExcMessage("Nonlinear interfaces/Controlled motion: "
@@ -1027,11 +1007,11 @@ namespace FourierSSI
       }
     run_stage(false, settings.load_steps, log);
     if (set.n_owning_ranks() > 1)
-      log << "  MPI: " << n_exchanges
+      log << "  MPI: " << set.n_rank_sums()
           << " sums over the ranks (strain amplitudes and theta integrals "
              "every iteration, the controlled motion under displacement "
              "control, a few per step), "
-          << exchange_time
+          << set.rank_sum_time()
           << " s in them on rank 0 (computing or waiting for the others)\n";
   }
 

@@ -1,4 +1,5 @@
 #include <atomic>
+#include <chrono>
 #include <deal.II/base/multithread_info.h>
 #include <dlfcn.h>
 #include <exception>
@@ -148,6 +149,21 @@ namespace FourierSSI
         }
     message = Utilities::MPI::broadcast(ranks, message, sender);
     AssertThrow(false, ExcMessage(harmonics[failed].name() + ": " + message));
+  }
+
+  void
+  HarmonicSet::sum_over_ranks(std::vector<double> &values) const
+  {
+    if (n_ranks == 1)
+      return;
+    const auto start = std::chrono::steady_clock::now();
+    const int  ierr  = MPI_Allreduce(
+      MPI_IN_PLACE, values.data(), values.size(), MPI_DOUBLE, MPI_SUM, ranks);
+    AssertThrowMPI(ierr);
+    ++rank_sums;
+    rank_sum_seconds +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+        .count();
   }
 
   void

@@ -260,10 +260,6 @@ namespace FourierSSI
     std::vector<LocalVector>
     relative_displacements(const std::vector<Vector<double>> &fields) const;
 
-    /** values := their sum over the ranks (in place; one rank: as is). */
-    void
-    sum_over_ranks(std::vector<double> &values) const;
-
     /** The owner's copy of values of harmonic h on every rank. */
     void
     from_owner(const unsigned int h, std::vector<double> &values) const;
@@ -372,13 +368,6 @@ namespace FourierSSI
     StepState                      committed;
     std::vector<LoadStepResult>    steps;
     std::vector<InterfaceSnapshot> snapshots;
-    /**
-     * Collectives of sum_over_ranks (one per iteration, a few per step) and
-     * the wall time spent in them on this rank [s]: the cost of keeping the
-     * ranks in step, logged at the end of run().
-     */
-    mutable unsigned int n_exchanges   = 0;
-    mutable double       exchange_time = 0.;
   };
 } // namespace FourierSSI
 

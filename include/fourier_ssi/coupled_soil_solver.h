@@ -324,10 +324,6 @@ namespace FourierSSI
     void
     count_over_ranks(SoilStepResult &result) const;
 
-    /** values := their sum over the ranks (in place; one rank: as is). */
-    void
-    sum_over_ranks(std::vector<double> &values) const;
-
     /**
      * sum_h values[h * n + c] for c < n, summed over the ranks first: per
      * harmonic quantities, each non-zero on its owner only, added in the
@@ -359,14 +355,8 @@ namespace FourierSSI
     /** Stiffness = tangent: the coupled tangent and K_t^-1 F. */
     std::unique_ptr<CoupledTangent> tangent;
     std::vector<Vector<double>>     tangent_pattern;
-    /**
-     * Sums over the ranks made (about one per iteration) and the wall time
-     * spent in them on this rank [s], logged at the end of run().
-     */
     /** owns_point(): the ranks and this rank (1, 0: every point). */
-    unsigned int         point_stride = 1, point_rank = 0;
-    mutable unsigned int n_exchanges   = 0;
-    mutable double       exchange_time = 0.;
+    unsigned int point_stride = 1, point_rank = 0;
   };
 } // namespace FourierSSI
 

@@ -183,7 +183,29 @@ namespace FourierSSI
       return n_ranks;
     }
 
+    /**
+     * values := their sum over the owning ranks, in place (one
+     * MPI_Allreduce; on one rank nothing). The coupled solvers make about
+     * one per iteration: what keeps the ranks in step.
+     */
+    void
+    sum_over_ranks(std::vector<double> &values) const;
+
+    /** Sums made by sum_over_ranks() and the wall time in them [s]. */
+    unsigned int
+    n_rank_sums() const
+    {
+      return rank_sums;
+    }
+    double
+    rank_sum_time() const
+    {
+      return rank_sum_seconds;
+    }
+
   private:
+    mutable unsigned int rank_sums        = 0;
+    mutable double       rank_sum_seconds = 0.;
     /** What a harmonic added later is built from (the constructor's). */
     const AllParameters     &parameters;
     const Triangulation<2>  &triangulation;
