@@ -75,7 +75,8 @@ namespace FourierSSI
                       "Halvings of a step that does not converge before "
                       "the run stops with an error (plastic soil: of each "
                       "step, and a cut step size doubles back after two "
-                      "converged steps; interfaces: over the run).");
+                      "converged steps, twice as many after a doubling "
+                      "that failed; interfaces: over the run).");
     prm.declare_entry("Maximum harmonic",
                       "0",
                       Patterns::Integer(0),
