@@ -23,29 +23,12 @@ doc/nonlinear-interfaces.md section 5 "Under MPI") with Write 3D vtu on:
 Usage: coupled_output_same.py "MPIEXEC;-np;2;..." FOURIER_SSI_EXE SOURCE_DIR
        WORK_DIR
 """
-import csv
 import os
-import shutil
-import subprocess
 import sys
 
+import rank_runs
+
 TOLERANCE = 1e-7
-
-
-def run(command, directory, log):
-    result = subprocess.run(command, cwd=directory, capture_output=True,
-                            text=True, timeout=50)
-    with open(log, "w") as out:
-        out.write(result.stdout + result.stderr)
-    if result.returncode != 0:
-        sys.exit(f"FAIL {' '.join(command)}: exit {result.returncode}\n"
-                 f"{result.stdout}{result.stderr}")
-    return result.stdout
-
-
-def table(path):
-    with open(path) as f:
-        return list(csv.DictReader(f))
 
 
 def compare(name, one, two, exact, skip, kinds):
@@ -85,38 +68,16 @@ def compare(name, one, two, exact, skip, kinds):
 
 
 def main():
-    mpiexec, exe, source, work = sys.argv[1].split(";"), *sys.argv[2:5]
-    shutil.rmtree(work, ignore_errors=True)
-    os.makedirs(work)
-    with open(os.path.join(source, "prm", "disc-gap.prm")) as f:
-        text = f.read()
-    outputs = {}
-    for ranks in (1, 2):
-        directory = os.path.join(work, f"ranks{ranks}")
-        os.makedirs(directory)
-        prm = os.path.join(directory, "disc-gap.prm")
-        with open(prm, "w") as f:
-            # A later subsection wins in deal.II's ParameterHandler.
-            f.write(text + "\nsubsection Output\n  set Directory = out\n"
-                    "  set Write 3D vtu = true\nend\n")
-        launcher = [] if ranks == 1 else mpiexec
-        log = run(launcher + [exe, prm], directory,
-                  os.path.join(directory, "log.txt"))
-        outputs[ranks] = os.path.join(directory, "out")
-        if ranks == 2 and "harmonics distributed over 2 MPI ranks" not in log:
-            sys.exit("FAIL the 2-rank log does not name the distribution")
-    failures = 0
-    expected = {"load-displacement.csv", "interface-state.csv",
-                "results.csv", "solution-3d.vtu", "interface-state-3d.vtu"}
-    for ranks, directory in outputs.items():
-        files = set(os.listdir(directory))
-        ok = files == expected
-        print(f"  {'ok  ' if ok else 'FAIL'} {ranks} rank(s) wrote "
-              f"{sorted(files)}")
-        failures += not ok
+    outputs = rank_runs.on_one_and_two_ranks(
+        sys.argv, "prm/disc-gap.prm", ("\nsubsection Output\n  set Directory = out\n"
+         "  set Write 3D vtu = true\nend\n"),
+        "harmonics distributed over 2 MPI ranks")
+    failures = rank_runs.wrote_exactly(
+        outputs, {"load-displacement.csv", "interface-state.csv",
+                "results.csv", "solution-3d.vtu", "interface-state-3d.vtu"})
     failures += compare("load-displacement.csv",
-                        table(os.path.join(outputs[1], "load-displacement.csv")),
-                        table(os.path.join(outputs[2], "load-displacement.csv")),
+                        rank_runs.table(os.path.join(outputs[1], "load-displacement.csv")),
+                        rank_runs.table(os.path.join(outputs[2], "load-displacement.csv")),
                         exact={"step", "stick", "slip", "open", "harmonics",
                                "converged"},
                         skip={"iterations", "residual", "time_s"},
@@ -127,8 +88,8 @@ def main():
                                "rotation_rad": "motion",
                                "twist_rad": "motion"})
     failures += compare("interface-state.csv",
-                        table(os.path.join(outputs[1], "interface-state.csv")),
-                        table(os.path.join(outputs[2], "interface-state.csv")),
+                        rank_runs.table(os.path.join(outputs[1], "interface-state.csv")),
+                        rank_runs.table(os.path.join(outputs[2], "interface-state.csv")),
                         exact={"step", "point", "state"}, skip=set(),
                         kinds={"r_m": "position", "z_m": "position",
                                "normal_r": "normal", "normal_z": "normal",

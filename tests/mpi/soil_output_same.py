@@ -28,11 +28,10 @@ and controlled harmonic). Checks:
 Usage: soil_output_same.py "MPIEXEC;-np;2;..." FOURIER_SSI_EXE SOURCE_DIR
        WORK_DIR
 """
-import csv
 import os
-import shutil
-import subprocess
 import sys
+
+import rank_runs
 
 OVERRIDES = """
 subsection Discretization
@@ -49,22 +48,6 @@ subsection Output
   set Directory = out
 end
 """
-
-
-def run(command, directory):
-    result = subprocess.run(command, cwd=directory, capture_output=True,
-                            text=True, timeout=50)
-    with open(os.path.join(directory, "log.txt"), "w") as out:
-        out.write(result.stdout + result.stderr)
-    if result.returncode != 0:
-        sys.exit(f"FAIL {' '.join(command)}: exit {result.returncode}\n"
-                 f"{result.stdout}{result.stderr}")
-    return result.stdout
-
-
-def table(path):
-    with open(path) as f:
-        return list(csv.DictReader(f))
 
 
 def same_text(name, one, two, skip_row, skip_columns):
@@ -91,35 +74,13 @@ def same_text(name, one, two, skip_row, skip_columns):
 
 
 def main():
-    mpiexec, exe, source, work = sys.argv[1].split(";"), *sys.argv[2:5]
-    shutil.rmtree(work, ignore_errors=True)
-    os.makedirs(work)
-    with open(os.path.join(source, "prm", "pile-capacity.prm")) as f:
-        text = f.read()
-    outputs = {}
-    for ranks in (1, 2):
-        directory = os.path.join(work, f"ranks{ranks}")
-        os.makedirs(directory)
-        prm = os.path.join(directory, "pile.prm")
-        with open(prm, "w") as f:
-            # A later subsection wins in deal.II's ParameterHandler.
-            f.write(text + OVERRIDES)
-        launcher = [] if ranks == 1 else mpiexec
-        log = run(launcher + [exe, prm], directory)
-        outputs[ranks] = os.path.join(directory, "out")
-        if ranks == 2 and ("harmonics distributed over 2 MPI ranks: rank 0 "
-                           "n=0 symmetric n=2 symmetric; rank 1 n=1 symmetric"
-                           not in log):
-            sys.exit("FAIL the 2-rank log does not name the distribution")
-    failures = 0
-    expected = {"load-displacement.csv", "results.csv"}
-    for ranks, directory in outputs.items():
-        files = set(os.listdir(directory))
-        ok = files == expected
-        print(f"  {'ok  ' if ok else 'FAIL'} {ranks} rank(s) wrote "
-              f"{sorted(files)}")
-        failures += not ok
-    curve = {r: table(os.path.join(outputs[r], "load-displacement.csv"))
+    outputs = rank_runs.on_one_and_two_ranks(
+        sys.argv, "prm/pile-capacity.prm", OVERRIDES,
+        ("harmonics distributed over 2 MPI ranks: rank 0 "
+         "n=0 symmetric n=2 symmetric; rank 1 n=1 symmetric"))
+    failures = rank_runs.wrote_exactly(
+        outputs, {"load-displacement.csv", "results.csv"})
+    curve = {r: rank_runs.table(os.path.join(outputs[r], "load-displacement.csv"))
              for r in (1, 2)}
     iterations = [int(row["iterations"]) for row in curve[1]]
     plastic = int(curve[1][-1]["plastic"])
@@ -131,8 +92,8 @@ def main():
                           lambda row: False, {"time_s"})
     failures += same_text(
         "results.csv",
-        table(os.path.join(outputs[1], "results.csv")),
-        table(os.path.join(outputs[2], "results.csv")),
+        rank_runs.table(os.path.join(outputs[1], "results.csv")),
+        rank_runs.table(os.path.join(outputs[2], "results.csv")),
         lambda row: row["unit"] == "s", set())
     print(f"{'FAILED' if failures else 'passed'}: {failures} failure(s)")
     sys.exit(1 if failures else 0)
