@@ -8,6 +8,8 @@
 #include <fourier_ssi/stress_postprocessor.h>
 #include <fstream>
 #include <iomanip>
+#include <iterator>
+#include <sstream>
 
 namespace FourierSSI
 {
@@ -108,6 +110,7 @@ namespace FourierSSI
                                    "block matrix over all harmonics); use "
                                    "Stiffness = elastic or one rank"));
     make_points();
+    check_initial_stress();
     if (set.n_owning_ranks() > 1)
       {
         point_stride = set.n_owning_ranks();
@@ -122,6 +125,36 @@ namespace FourierSSI
     committed.correction_load = committed.correction_solution;
     committed.plastic.assign(points.size() * sampling.n_samples(),
                              {{0., 0., 0., 0., 0., 0.}});
+  }
+
+  void
+  CoupledSoilSolver::check_initial_stress() const
+  {
+    // The geostatic state must be admissible: K0 between the active and
+    // passive ratios of Mohr-Coulomb soil, (1 - K0) sigma'_v <= 2 s_u for
+    // Tresca. Tolerance: round-off of the stress.
+    for (const SoilPoint &point : points)
+      {
+        double size = 0.;
+        for (const double s : point.initial_stress)
+          size = std::max(size, std::abs(s));
+        const double f =
+          laws[point.law].yield_function(point.initial_stress, point.depth);
+        if (f <= 1e-12 * std::max(size, 1.))
+          continue;
+        const auto law =
+          std::next(parameters.soil_plasticity.laws.begin(), point.law);
+        std::ostringstream message;
+        message << std::setprecision(4)
+                << "Initial stress/K0: the geostatic stress at depth "
+                << point.depth << " m violates the yield condition of "
+                << "material " << static_cast<unsigned int>(law->first)
+                << " (Soil plasticity/Laws; f = " << f << " kPa > 0): K0 = "
+                << parameters.initial_stress.earth_pressure_coefficient
+                << " must lie between the active and passive ratios "
+                   "(Mohr-Coulomb), (1 - K0) sigma'_v within 2 s_u (Tresca)";
+        AssertThrow(false, ExcMessage(message.str()));
+      }
   }
 
   void
@@ -187,6 +220,8 @@ namespace FourierSSI
                 point.shear_modulus = material.shear_modulus(point.depth);
                 point.lambda        = material.lambda(point.depth);
                 point.law           = law->second;
+                point.initial_stress =
+                  parameters.initial_stress.soil_stress(point.depth);
                 points.push_back(point);
               }
             cells.push_back(std::move(cell));
@@ -393,9 +428,13 @@ namespace FourierSSI
         for (unsigned int j = 0; j < N; ++j)
           {
             const unsigned int k = p * N + j;
-            // Trial: D (eps - eps_p,committed) = D eps - s_p,committed.
-            const StrainVector elastic = hooke_stress(strain[k], lambda, G);
-            StrainVector       trial   = elastic;
+            // Trial: sigma_0 + D (eps - eps_p,committed) = sigma_0 + D eps -
+            // s_p,committed; s_p = sigma_0 + D eps - sigma keeps the internal
+            // force int Bbar^T (sigma - sigma_0) = K u - c.
+            StrainVector elastic = hooke_stress(strain[k], lambda, G);
+            for (unsigned int c = 0; c < 6; ++c)
+              elastic[c] += point.initial_stress[c];
+            StrainVector trial = elastic;
             for (unsigned int c = 0; c < 6; ++c)
               trial[c] -= committed.plastic[k][c];
             const SoilReturn r = laws[point.law].return_map(
@@ -609,7 +648,7 @@ namespace FourierSSI
     const auto       stress = [&](const StrainVector &eps) {
       StrainVector trial = hooke_stress(eps, lambda, G);
       for (unsigned int c = 0; c < 6; ++c)
-        trial[c] -= committed.plastic[k][c];
+        trial[c] += point.initial_stress[c] - committed.plastic[k][c];
       return laws[point.law].return_map(trial,
                                         G,
                                         lambda + 2. * G / 3.,

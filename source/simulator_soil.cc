@@ -42,10 +42,6 @@ namespace FourierSSI
                   ExcMessage(entry + ": Rigid foundation/Stiffness "
                                      "coefficients are linear quantities; "
                                      "set it false with plastic soil"));
-      AssertThrow(!parameters.initial_stress.enabled(),
-                  ExcMessage(entry + ": not yet: Initial stress with plastic "
-                                     "soil (Tresca needs none; Mohr-Coulomb "
-                                     "soil has its strength from c' only)"));
     }
 
     /** The plastic state of every converged step, after the common rows. */

@@ -154,6 +154,8 @@ namespace FourierSSI
       unsigned int q;
       double       r, dV, depth, shear_modulus, lambda;
       unsigned int law;
+      /** The geostatic stress sigma_0 (Initial stress; zero without). */
+      StrainVector initial_stress;
     };
 
     /** A cell of plastic soil: shape data at its quadrature points. */
@@ -182,6 +184,9 @@ namespace FourierSSI
 
     void
     make_points();
+    /** One line if the geostatic stress lies outside a soil law. */
+    void
+    check_initial_stress() const;
     void
     solve_load_pattern();
     /** K^-1 F_held and its strains (Rigid foundation/Held ...). */
