@@ -683,19 +683,33 @@ namespace FourierSSI
     const unsigned int N = sampling.n_samples(), H = set.size();
     // 1. S_hg = theta integral of factor_h (D_e - D_ep) factor_g per point,
     //    over the samples that yield; empty: a point elastic at every theta.
-    std::vector<std::vector<double>> factor(2 * H, std::vector<double>(N));
-    for (unsigned int h = 0; h < H; ++h)
+    //    Every factor is cos(n theta) or sin(n theta), so factor_h factor_g
+    //    = (1/2)[trig((n_h - n_g) theta) +- trig((n_h + n_g) theta)] sample
+    //    by sample, and S_hg follows from the cosine and sine transforms of
+    //    D_e - D_ep at the frequencies 0..2 n_max: O(n_max) per sample
+    //    instead of O(H^2) (the same sums, in another order).
+    unsigned int n_max = 0;
+    for (const Harmonic &harmonic : harmonics)
+      n_max = std::max(n_max, harmonic.n);
+    const unsigned int  M = 2 * n_max + 1;
+    std::vector<double> cosine(M * N), sine(M * N);
+    for (unsigned int m = 0; m < M; ++m)
       for (unsigned int j = 0; j < N; ++j)
-        for (unsigned int kind = 0; kind < 2; ++kind)
-          factor[2 * h + kind][j] =
-            theta_factor(harmonics[h],
-                         kind == 0 ? ThetaFactor::in_plane :
-                                     ThetaFactor::circumferential,
-                         sampling.angle(j));
+        {
+          cosine[m * N + j] = std::cos(m * sampling.angle(j));
+          sine[m * N + j]   = std::sin(m * sampling.angle(j));
+        }
+    // is_cosine[2 h + kind]: the factor of harmonic h for in-plane (kind 0)
+    // or circumferential (kind 1) components (theta_sampling.h).
+    std::vector<char> is_cosine(2 * H);
+    for (unsigned int h = 0; h < H; ++h)
+      for (unsigned int kind = 0; kind < 2; ++kind)
+        is_cosine[2 * h + kind] =
+          (kind == 0) == (harmonics[h].family == Family::symmetric);
     const auto   kind_of = [](const unsigned int a) { return a < 4 ? 0u : 1u; };
     const double weight  = 2. * numbers::PI / N;
     // softening[p][(a * 6 + b) * H^2 + h * H + g], the harmonic pair
-    // innermost (contiguous in the accumulation).
+    // innermost (contiguous in the assembly).
     const unsigned int               HH = H * H;
     std::vector<std::vector<double>> softening(points.size());
     parallel::apply_to_subranges(
@@ -703,31 +717,64 @@ namespace FourierSSI
       static_cast<unsigned int>(points.size()),
       [&](const unsigned int first, const unsigned int last) {
         std::array<double, 36> c;
-        std::vector<double>    f(6 * H);
+        // [ab][m]: sum_j w c_ab(theta_j) cos(m theta_j), resp. sin.
+        std::vector<double> c_cos(36 * M), c_sin(36 * M);
         for (unsigned int p = first; p < last; ++p)
-          for (unsigned int j = 0; j < N; ++j)
-            {
-              if (!softening_at(p, p * N + j, strain[p * N + j], c))
-                continue;
-              if (softening[p].empty())
-                softening[p].assign(36 * HH, 0.);
-              for (unsigned int a = 0; a < 6; ++a)
-                for (unsigned int h = 0; h < H; ++h)
-                  f[a * H + h] = factor[2 * h + kind_of(a)][j];
-              for (unsigned int a = 0; a < 6; ++a)
-                for (unsigned int b = 0; b < 6; ++b)
+          {
+            bool yields = false;
+            for (unsigned int j = 0; j < N; ++j)
+              {
+                if (!softening_at(p, p * N + j, strain[p * N + j], c))
+                  continue;
+                if (!yields)
                   {
-                    if (c[a * 6 + b] == 0.)
+                    std::fill(c_cos.begin(), c_cos.end(), 0.);
+                    std::fill(c_sin.begin(), c_sin.end(), 0.);
+                    yields = true;
+                  }
+                for (unsigned int ab = 0; ab < 36; ++ab)
+                  {
+                    if (c[ab] == 0.)
                       continue;
-                    double *s = &softening[p][(a * 6 + b) * HH];
-                    for (unsigned int h = 0; h < H; ++h)
+                    const double x = weight * c[ab];
+                    for (unsigned int m = 0; m < M; ++m)
                       {
-                        const double x = weight * f[a * H + h] * c[a * 6 + b];
-                        for (unsigned int g = 0; g < H; ++g)
-                          s[h * H + g] += x * f[b * H + g];
+                        c_cos[ab * M + m] += x * cosine[m * N + j];
+                        c_sin[ab * M + m] += x * sine[m * N + j];
                       }
                   }
-            }
+              }
+            if (!yields)
+              continue;
+            softening[p].resize(36 * HH);
+            for (unsigned int a = 0; a < 6; ++a)
+              for (unsigned int b = 0; b < 6; ++b)
+                {
+                  const double *cc = &c_cos[(a * 6 + b) * M];
+                  const double *cs = &c_sin[(a * 6 + b) * M];
+                  double       *S  = &softening[p][(a * 6 + b) * HH];
+                  for (unsigned int h = 0; h < H; ++h)
+                    for (unsigned int g = 0; g < H; ++g)
+                      {
+                        const int n_h = harmonics[h].n, n_g = harmonics[g].n;
+                        const unsigned int sum        = n_h + n_g,
+                                           difference = std::abs(n_h - n_g);
+                        const double sign             = n_h >= n_g ? 1. : -1.;
+                        const bool   cos_h = is_cosine[2 * h + kind_of(a)],
+                                   cos_g   = is_cosine[2 * g + kind_of(b)];
+                        double value;
+                        if (cos_h && cos_g) // cos a cos b
+                          value = cc[difference] + cc[sum];
+                        else if (!cos_h && !cos_g) // sin a sin b
+                          value = cc[difference] - cc[sum];
+                        else if (cos_h) // cos a sin b
+                          value = cs[sum] - sign * cs[difference];
+                        else // sin a cos b
+                          value = cs[sum] + sign * cs[difference];
+                        S[h * H + g] = 0.5 * value;
+                      }
+                }
+          }
       },
       16);
     // 2. K_t = diag(K_h) - the softening of the yielding cells, block row h

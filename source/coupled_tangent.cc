@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <deal.II/lac/affine_constraints.templates.h>
 #include <deal.II/lac/block_vector.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
@@ -10,6 +11,7 @@ namespace FourierSSI
     const std::vector<std::vector<std::vector<types::global_dof_index>>>
       &cell_dofs)
     : set(set)
+    , lu("Soil plasticity: the coupled Newton tangent")
   {
     const unsigned int          H = set.size();
     BlockDynamicSparsityPattern dsp(H, H);
@@ -40,6 +42,59 @@ namespace FourierSSI
       }
     pattern.copy_from(dsp);
     matrix.reinit(pattern);
+    make_lu_pattern();
+  }
+
+  void
+  CoupledTangent::make_lu_pattern()
+  {
+    const unsigned int H = set.size();
+    offset.assign(H + 1, 0);
+    for (unsigned int h = 0; h < H; ++h)
+      offset[h + 1] = offset[h] + pattern.block(h, h).n_rows();
+    // Each row of the whole matrix: (column, sweep index) over its blocks,
+    // sorted by column (UMFPACK wants sorted indices).
+    std::vector<std::vector<std::pair<long, unsigned int>>> rows(offset[H]);
+    unsigned int                                            sweep = 0;
+    for (unsigned int h = 0; h < H; ++h)
+      for (unsigned int g = 0; g < H; ++g)
+        {
+          const SparsityPattern &block = pattern.block(h, g);
+          for (unsigned int row = 0; row < block.n_rows(); ++row)
+            for (auto entry = block.begin(row); entry != block.end(row);
+                 ++entry)
+              rows[offset[h] + row].emplace_back(offset[g] + entry->column(),
+                                                 sweep++);
+        }
+    std::vector<long> row_start(1, 0), columns;
+    position.resize(sweep);
+    for (auto &row : rows)
+      {
+        std::sort(row.begin(), row.end());
+        for (const auto &[column, index] : row)
+          {
+            position[index] = columns.size();
+            columns.push_back(column);
+          }
+        row_start.push_back(columns.size());
+      }
+    lu.set_pattern(std::move(row_start), std::move(columns));
+  }
+
+  void
+  CoupledTangent::copy_to_lu()
+  {
+    std::vector<double> &values = lu.values();
+    unsigned int         sweep  = 0;
+    for (unsigned int h = 0; h < set.size(); ++h)
+      for (unsigned int g = 0; g < set.size(); ++g)
+        {
+          const SparseMatrix<double> &block = matrix.block(h, g);
+          for (unsigned int row = 0; row < block.m(); ++row)
+            for (auto entry = block.begin(row); entry != block.end(row);
+                 ++entry)
+              values[position[sweep++]] = entry->value();
+        }
   }
 
   void
@@ -74,7 +129,8 @@ namespace FourierSSI
   void
   CoupledTangent::factorize()
   {
-    direct.factorize(matrix);
+    copy_to_lu();
+    lu.factorize();
     ++factorizations;
   }
 
@@ -95,13 +151,15 @@ namespace FourierSSI
   void
   CoupledTangent::solve(std::vector<Vector<double>> &b_to_x) const
   {
-    BlockVector<double> x(pattern.get_row_indices());
+    std::vector<double> b(offset.back()), x;
     for (unsigned int h = 0; h < b_to_x.size(); ++h)
-      x.block(h) = b_to_x[h];
-    direct.solve(x);
+      std::copy(b_to_x[h].begin(), b_to_x[h].end(), b.begin() + offset[h]);
+    lu.solve(b, x);
     for (unsigned int h = 0; h < b_to_x.size(); ++h)
       {
-        b_to_x[h] = x.block(h);
+        std::copy(x.begin() + offset[h],
+                  x.begin() + offset[h + 1],
+                  b_to_x[h].begin());
         set.problem(h).get_homogeneous_constraints().distribute(b_to_x[h]);
       }
   }

@@ -9,7 +9,8 @@
  * and of its column harmonic (columns), so the block system is the
  * condensed Newton system of all harmonics together; it is factorized with
  * UMFPACK (the softened part of D_ep need not be symmetric: Mohr-Coulomb
- * with psi < phi).
+ * with psi < phi) as one matrix whose pattern is analysed once
+ * (umfpack_lu.h).
  */
 #ifndef fourier_ssi_coupled_tangent_h
 #define fourier_ssi_coupled_tangent_h
@@ -17,9 +18,9 @@
 #include <deal.II/lac/block_sparse_matrix.h>
 #include <deal.II/lac/block_sparsity_pattern.h>
 #include <deal.II/lac/full_matrix.h>
-#include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/harmonic_set.h>
+#include <fourier_ssi/umfpack_lu.h>
 #include <vector>
 
 namespace FourierSSI
@@ -76,11 +77,24 @@ namespace FourierSSI
     }
 
   private:
-    const HarmonicSet          &set;
-    BlockSparsityPattern        pattern;
-    BlockSparseMatrix<double>   matrix;
-    mutable SparseDirectUMFPACK direct;
-    unsigned int                factorizations = 0;
+    const HarmonicSet        &set;
+    BlockSparsityPattern      pattern;
+    BlockSparseMatrix<double> matrix;
+    /** The whole matrix by rows (harmonic h's rows at offset[h]). */
+    UmfpackLU                 lu;
+    std::vector<unsigned int> offset;
+    /**
+     * Where each entry of the blocks goes among lu.values(), in the order
+     * of copy_to_lu()'s sweep (block row, block column, row, entry).
+     */
+    std::vector<unsigned int> position;
+    unsigned int              factorizations = 0;
+
+    /** The rows of the whole matrix and position[], from the pattern. */
+    void
+    make_lu_pattern();
+    void
+    copy_to_lu();
   };
 } // namespace FourierSSI
 
