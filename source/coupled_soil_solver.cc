@@ -1,14 +1,15 @@
 #include <chrono>
 #include <cmath>
-#include <deal.II/base/parallel.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 #include <fourier_ssi/coupled_iteration.h>
 #include <fourier_ssi/coupled_soil_solver.h>
 #include <fourier_ssi/stress_postprocessor.h>
+#include <fourier_ssi/thread_ranges.h>
 #include <fstream>
 #include <iomanip>
 #include <iterator>
+#include <mutex>
 #include <sstream>
 
 namespace FourierSSI
@@ -419,37 +420,54 @@ namespace FourierSSI
     result.n_elastic           = 0;
     result.n_plastic           = 0;
     result.largest_yield_value = -std::numeric_limits<double>::max();
-    for (unsigned int p = 0; p < points.size(); ++p)
-      {
-        if (!owns_point(p))
-          continue;
-        const SoilPoint &point = points[p];
-        const double     G = point.shear_modulus, lambda = point.lambda;
-        for (unsigned int j = 0; j < N; ++j)
+    // The points on the harmonic set's threads (every (point, theta) is
+    // independent; the counts and the largest f do not depend on the order:
+    // the same bits on any number of threads).
+    std::mutex merge;
+    for_each_range(
+      points.size(),
+      16,
+      set.n_threads(),
+      [&](const unsigned int first, const unsigned int last) {
+        unsigned int n_elastic = 0, n_plastic = 0;
+        double       largest = -std::numeric_limits<double>::max();
+        for (unsigned int p = first; p < last; ++p)
           {
-            const unsigned int k = p * N + j;
-            // Trial: sigma_0 + D (eps - eps_p,committed) = sigma_0 + D eps -
-            // s_p,committed; s_p = sigma_0 + D eps - sigma keeps the internal
-            // force int Bbar^T (sigma - sigma_0) = K u - c.
-            StrainVector elastic = hooke_stress(strain[k], lambda, G);
-            for (unsigned int c = 0; c < 6; ++c)
-              elastic[c] += point.initial_stress[c];
-            StrainVector trial = elastic;
-            for (unsigned int c = 0; c < 6; ++c)
-              trial[c] -= committed.plastic[k][c];
-            const SoilReturn r = laws[point.law].return_map(
-              trial, G, lambda + 2. * G / 3., point.depth);
-            for (unsigned int c = 0; c < 6; ++c)
-              plastic[k][c] = elastic[c] - r.stress[c];
-            if (r.state == SoilState::elastic)
-              ++result.n_elastic;
-            else
-              ++result.n_plastic;
-            result.largest_yield_value =
-              std::max(result.largest_yield_value,
-                       laws[point.law].yield_function(r.stress, point.depth));
+            if (!owns_point(p))
+              continue;
+            const SoilPoint &point = points[p];
+            const double     G = point.shear_modulus, lambda = point.lambda;
+            for (unsigned int j = 0; j < N; ++j)
+              {
+                const unsigned int k = p * N + j;
+                // Trial: sigma_0 + D (eps - eps_p,committed) = sigma_0 + D
+                // eps - s_p,committed; s_p = sigma_0 + D eps - sigma keeps
+                // the internal force int Bbar^T (sigma - sigma_0) = K u - c.
+                StrainVector elastic = hooke_stress(strain[k], lambda, G);
+                for (unsigned int c = 0; c < 6; ++c)
+                  elastic[c] += point.initial_stress[c];
+                StrainVector trial = elastic;
+                for (unsigned int c = 0; c < 6; ++c)
+                  trial[c] -= committed.plastic[k][c];
+                const SoilReturn r = laws[point.law].return_map(
+                  trial, G, lambda + 2. * G / 3., point.depth);
+                for (unsigned int c = 0; c < 6; ++c)
+                  plastic[k][c] = elastic[c] - r.stress[c];
+                if (r.state == SoilState::elastic)
+                  ++n_elastic;
+                else
+                  ++n_plastic;
+                largest = std::max(largest,
+                                   laws[point.law].yield_function(r.stress,
+                                                                  point.depth));
+              }
           }
-      }
+        std::lock_guard<std::mutex> lock(merge);
+        result.n_elastic += n_elastic;
+        result.n_plastic += n_plastic;
+        result.largest_yield_value =
+          std::max(result.largest_yield_value, largest);
+      });
   }
 
   std::vector<Vector<double>>
@@ -712,9 +730,10 @@ namespace FourierSSI
     // innermost (contiguous in the assembly).
     const unsigned int               HH = H * H;
     std::vector<std::vector<double>> softening(points.size());
-    parallel::apply_to_subranges(
-      0u,
-      static_cast<unsigned int>(points.size()),
+    for_each_range(
+      points.size(),
+      16,
+      set.n_threads(),
       [&](const unsigned int first, const unsigned int last) {
         std::array<double, 36> c;
         // [ab][m]: sum_j w c_ab(theta_j) cos(m theta_j), resp. sin.
@@ -775,8 +794,7 @@ namespace FourierSSI
                       }
                 }
           }
-      },
-      16);
+      });
     // 2. K_t = diag(K_h) - the softening of the yielding cells, block row h
     //    by harmonic h's thread.
     if (!tangent)
