@@ -8,9 +8,10 @@ s_u = 10 kPa), traced by probe paths (doc/soil-plasticity.md section 5c):
     (Rigid foundation/Held vertical force), then the footing pushed sideways
     (horizontal displacement control) or rotated (rotation control) to the
     plateau: H_ult(V) and M_ult(V);
-  - radial H-M paths at V = 0: H and M = m H D applied together in fixed
-    proportion for every m in RADIAL_RATIOS, driven by the motion the
-    mechanism is dominated by (sideways for |m| < 1, rotation otherwise).
+  - radial H-M paths at each v in RADIAL_FRACTIONS (V held as above): H
+    and M = m H D applied together in fixed proportion for every m in
+    RADIAL_RATIOS, driven by the motion the mechanism is dominated by
+    (sideways for |m| < 1, rotation otherwise).
 
 Every probe runs on the shipped mesh with harmonics n = 0 and 1 and 8 theta
 samples; --check-harmonics repeats the v = 0 and v = 0.5 probes with n <= 3
@@ -40,9 +41,10 @@ SU, A, D = 10.0, math.pi, 2.0  # s_u [kPa], plan area [m^2], diameter [m]
 # V = 0 is the uniaxial H and M. (Before the secant predictor of section
 # 3b the sideways probe stalled there, and v = 0.05 stood in for it.)
 VERTICAL_FRACTIONS = (0.0, 0.25, 0.5, 0.65, 0.8, 0.9)
-# Radial H-M paths at V = 0: M / (H D) (M about the footing's base centre,
-# positive when it turns the footing the way H pushes it).
+# Radial H-M paths: M / (H D) (M about the footing's base centre, positive
+# when it turns the footing the way H pushes it), at these V / V_ult.
 RADIAL_RATIOS = (-2.0, -1.0, -0.5, -0.25, 0.25, 0.5, 1.0, 2.0)
+RADIAL_FRACTIONS = (0.0, 0.5)
 # Probe targets: 3 and 11 times the elastic motion at the uniaxial capacity;
 # twice as far sideways from v = 0.75 on, where the plateau comes later (the
 # footing settles as it slides).
@@ -131,6 +133,10 @@ def main():
     parser.add_argument("--fractions", default=",".join(
         str(v) for v in VERTICAL_FRACTIONS),
         help="the held V / V_ult of the H and M probes")
+    parser.add_argument("--radial-fractions", default=",".join(
+        str(v) for v in RADIAL_FRACTIONS),
+        help="the held V / V_ult of the radial H-M probes (each must be "
+        "among --fractions: its uniaxial H and M close the section)")
     parser.add_argument("--work", help="probe directory (kept; probes "
                         "already run there with the same prm are reused)")
     args = parser.parse_args()
@@ -150,6 +156,8 @@ def main():
         name = "%s-v%.2f%s" % (kind, fraction, tag)
         if kind == "R":
             name = "R-m%+.2f%s" % (ratio, tag)
+            if fraction > 0.0:
+                name = "R-v%.2f-m%+.2f%s" % (fraction, ratio, tag)
         rows, wall = run(args.exe, work, name,
                          probe_changes(kind, held, fraction, harmonics,
                                        samples, ratio))
@@ -167,8 +175,13 @@ def main():
     for fraction in [float(v) for v in args.fractions.split(",")]:
         probe("H", fraction)
         probe("M", fraction)
-    for ratio in RADIAL_RATIOS:
-        probe("R", 0.0, ratio=ratio)
+    fractions = [float(v) for v in args.fractions.split(",")]
+    for fraction in [float(v) for v in args.radial_fractions.split(",")]:
+        if fraction not in fractions:
+            sys.exit("capacity_envelope.py: --radial-fractions %g is not "
+                     "among --fractions" % fraction)
+        for ratio in RADIAL_RATIOS:
+            probe("R", fraction, ratio=ratio)
     if args.check_harmonics:
         for fraction in (0.0, 0.5):
             probe("H", fraction, "0, 1, 2, 3", 16, "-n3")
@@ -235,18 +248,23 @@ def plot(records, out):
         axis.set_ylim(bottom=0)
         axis.grid(True, alpha=0.3)
         axis.legend(fontsize=7, loc="lower left")
-    # H-M at V = 0: the radial probes and the uniaxial H and M, each with
-    # its mirror image (the envelope is point-symmetric: (H, M) -> (-H, -M)).
-    at_zero = [r for r in base if r["v"] == 0.0 and r["path"] in "HMR"]
-    hm = [(r["H_kN"] / (A * SU), r["M_kNm"] / (A * D * SU),
-           r["plateau_change"] < 0.01) for r in at_zero]
-    hm += [(-h, -m, flat) for h, m, flat in hm]
-    hm.sort(key=lambda p: math.atan2(p[1], p[0]))
-    right.plot([p[0] for p in hm] + [hm[0][0]],
-               [p[1] for p in hm] + [hm[0][1]], "-", color="C0",
-               label="fourier-ssi, n <= 1, V = 0")
-    for h, m, flat in hm:
-        right.plot(h, m, "o", ms=5, color="C0", mfc="C0" if flat else "white")
+    # H-M at each V level with radial probes: the radial probes and the
+    # uniaxial H and M there, each with its mirror image (the envelope is
+    # point-symmetric: (H, M) -> (-H, -M)).
+    levels = sorted({r["v"] for r in base if r["path"] == "R"})
+    for colour, level in zip(("C0", "C2", "C3", "C4"), levels):
+        section = [r for r in base
+                   if r["v"] == level and r["path"] in "HMR"]
+        hm = [(r["H_kN"] / (A * SU), r["M_kNm"] / (A * D * SU),
+               r["plateau_change"] < 0.01) for r in section]
+        hm += [(-h, -m, flat) for h, m, flat in hm]
+        hm.sort(key=lambda p: math.atan2(p[1], p[0]))
+        right.plot([p[0] for p in hm] + [hm[0][0]],
+                   [p[1] for p in hm] + [hm[0][1]], "-", color=colour,
+                   label="fourier-ssi, n <= 1, V = %g V_ult" % level)
+        for h, m, flat in hm:
+            right.plot(h, m, "o", ms=5, color=colour,
+                       mfc=colour if flat else "white")
     right.axhline(0.0, color="grey", lw=0.6)
     right.axvline(0.0, color="grey", lw=0.6)
     right.set_xlabel("H / (A s_u)")
@@ -254,7 +272,7 @@ def plot(records, out):
     right.grid(True, alpha=0.3)
     right.legend(fontsize=7, loc="lower left")
     fig.suptitle("Rough circular surface footing, Tresca soil: V-H, V-M and "
-                 "H-M (V = 0) capacity (shipped mesh: about +7 % high)\nopen "
+                 "H-M capacity (shipped mesh: about +7 % high)\nopen "
                  "markers: still rising > 1 % at the end of the probe, a "
                  "lower bound (doc/soil-plasticity.md 5c)", fontsize=8)
     fig.tight_layout()

@@ -36,6 +36,8 @@ import subprocess
 import sys
 import time
 
+from capacity import prm_block  # tools/capacity.py: the same .prm text
+
 SOURCE = os.path.normpath(os.path.join(os.path.dirname(
     os.path.abspath(__file__)), ".."))
 FIGURES = os.path.join(SOURCE, "doc", "figures")
@@ -55,18 +57,6 @@ def fail(message):
 
 
 # ------------------------------------------------------------------ helpers
-def entries_block(entries):
-    """Parameter-file text setting {"Sub/Entry": value} (appended to a
-    scene, these win over the scene's own lines)."""
-    text = ""
-    for key, value in entries.items():
-        *subsections, name = key.split("/")
-        text += "".join("subsection %s\n" % s for s in subsections)
-        text += "  set %s = %s\n" % (name, value)
-        text += "end\n" * len(subsections)
-    return text
-
-
 def run_scene(context, name, prm, entries=None, appended_file=None):
     """Run prm (relative to the source) with `appended_file` (a committed
     prm fragment) and then `entries` appended; returns its output folder."""
@@ -85,7 +75,7 @@ def run_scene(context, name, prm, entries=None, appended_file=None):
     overrides["Output/Directory"] = relative_output
     scene = os.path.join(directory, "scene.prm")
     with open(scene, "w") as f:
-        f.write(text + "\n" + entries_block(overrides))
+        f.write(text + "\n" + prm_block(overrides))
     start = time.monotonic()
     with open(os.path.join(directory, "log.txt"), "w") as log:
         p = subprocess.run([context.exe, scene], cwd=directory, stdout=log,
