@@ -270,7 +270,7 @@ def plot(records, out):
     right.set_xlabel("H / (A s_u)")
     right.set_ylabel("M / (A D s_u)  (M_y about the base centre)")
     right.grid(True, alpha=0.3)
-    right.legend(fontsize=7, loc="lower left")
+    right.legend(fontsize=7, loc="center")
     fig.suptitle("Rough circular surface footing, Tresca soil: V-H, V-M and "
                  "H-M capacity (shipped mesh: about +7 % high)\nopen "
                  "markers: still rising > 1 % at the end of the probe, a "
