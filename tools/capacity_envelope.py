@@ -44,7 +44,7 @@ VERTICAL_FRACTIONS = (0.0, 0.25, 0.5, 0.65, 0.8, 0.9)
 # Radial H-M paths: M / (H D) (M about the footing's base centre, positive
 # when it turns the footing the way H pushes it), at these V / V_ult.
 RADIAL_RATIOS = (-2.0, -1.0, -0.5, -0.25, 0.25, 0.5, 1.0, 2.0)
-RADIAL_FRACTIONS = (0.0, 0.5)
+RADIAL_FRACTIONS = (0.0, 0.5, 0.8)
 # Probe targets: 3 and 11 times the elastic motion at the uniaxial capacity;
 # twice as far sideways from v = 0.75 on, where the plateau comes later (the
 # footing settles as it slides).
