@@ -1,10 +1,15 @@
 // The driver's path for scenes with plastic soil: the harmonics are coupled
 // through theta at the soil's quadrature points, so they are solved together
 // by CoupledSoilSolver on one HarmonicSet (doc/soil-plasticity.md).
+#include <array>
+#include <cmath>
 #include <deal.II/base/timer.h>
+#include <fourier_ssi/capacity_plateau.h>
 #include <fourier_ssi/coupled_iteration.h>
 #include <fourier_ssi/coupled_soil_solver.h>
 #include <fourier_ssi/simulator.h>
+#include <limits>
+#include <sstream>
 
 namespace FourierSSI
 {
@@ -106,6 +111,14 @@ namespace FourierSSI
           earlier = load_at(s).value;
       const double rise =
         last.value != 0. ? (last.value - earlier) / last.value : 0.;
+      std::vector<double> motion, load;
+      for (const SoilStepResult &s : steps)
+        if (s.load_factor != 0.)
+          {
+            motion.push_back(motion_at(s) - start);
+            load.push_back(load_at(s).value);
+          }
+      const double   error = plateau_error(motion, load);
       const Harmonic any{0, Family::symmetric};
       results.add(
         "capacity_" + last.name, any, steps.size(), last.value, last.unit);
@@ -114,11 +127,24 @@ namespace FourierSSI
                   steps.size(),
                   rise,
                   "-");
+      results.add("capacity_" + last.name + "_plateau_error",
+                  any,
+                  steps.size(),
+                  error,
+                  last.unit);
       log << "capacity (the load at the end of the controlled path): "
           << last.name << " = " << last.value << " " << last.unit
           << "; it rose " << 100. * rise << " % over the last tenth of the path"
           << (std::abs(rise) < 0.01 ? " (a plateau)" :
                                       " (not a plateau yet: go further)")
+          << (std::isfinite(error) ?
+                "; the asymptote of the last three steps lies " +
+                  (std::ostringstream() << error).str() + " " + last.unit +
+                  " beyond it (the plateau's error; the mesh and harmonic "
+                  "errors: tools/capacity.py)" :
+                std::string("; the plateau's error is unbounded (the last "
+                            "three steps do not bend over, or there are "
+                            "fewer than three)"))
           << std::endl;
     }
   } // namespace
