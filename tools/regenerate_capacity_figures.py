@@ -144,45 +144,51 @@ def plot_soil_capacity(context, png, title, x, y, x_scale, y_scale,
                 + ["%s:%s" % (figure(c), label) for c, label in curves], png)
 
 
+def curve_family(context, prm, runs, png, title, x, y, y_scale, references):
+    """Run prm once per (csv name in doc/figures, run name, entries, label)
+    of `runs`, install the curves, then plot them into png with
+    tools/plot_soil_capacity.py."""
+    outputs = {csv_name: curve(run_scene(context, name, prm, entries))
+               for csv_name, name, entries, _ in runs}
+    install(outputs)
+    install({png: plot_soil_capacity(
+        context, png, title, x, y, "1", y_scale, references,
+        [(csv_name, label) for csv_name, _, _, label in runs])})
+
+
 # ------------------------------------------------------------------ families
 def footing_capacity(context):
     """doc/soil-plasticity.md section 5: prm/footing-capacity.prm as shipped
     (rough, to w = 0.1 a in 20 steps) and smooth (Tied components =
     normal) to w = 0.04 a in 8 steps."""
-    rough = run_scene(context, "footing-rough", "prm/footing-capacity.prm")
-    smooth = run_scene(context, "footing-smooth", "prm/footing-capacity.prm", {
-        "Rigid foundation/Tied components": "normal",
-        "Nonlinear interfaces/Target": "-0.04",
-        "Nonlinear interfaces/Load steps": "8"})
-    install({"footing-capacity-rough.csv": curve(rough),
-             "footing-capacity-smooth.csv": curve(smooth)})
-    install({"footing-capacity.png": plot_soil_capacity(
-        context, "footing-capacity.png",
+    curve_family(
+        context, "prm/footing-capacity.prm",
+        [("footing-capacity-rough.csv", "footing-rough", None, "rough"),
+         ("footing-capacity-smooth.csv", "footing-smooth",
+          {"Rigid foundation/Tied components": "normal",
+           "Nonlinear interfaces/Target": "-0.04",
+           "Nonlinear interfaces/Load steps": "8"}, "smooth")],
+        "footing-capacity.png",
         "rigid circular footing on Tresca soil, n = 0 (a = 1 m, s_u = 10 kPa)",
-        "vertical_m", "V_kN", "1", FOOTING_SCALE, "6.05,5.69",
-        [("footing-capacity-rough.csv", "rough"),
-         ("footing-capacity-smooth.csv", "smooth")])})
+        "vertical_m", "V_kN", FOOTING_SCALE, "6.05,5.69")
 
 
 def pile_capacity(context):
     """doc/soil-plasticity.md section 7: prm/pile-capacity.prm (smooth
     shaft, to u = 0.03 d in 6 steps) with n <= 4, as shipped (n <= 8), and
     with 36 radial cells (growth 1.075)."""
-    n4 = run_scene(context, "pile-n4", "prm/pile-capacity.prm", {
-        "Discretization/Harmonics": "0, 1, 2, 3, 4"})
-    n8 = run_scene(context, "pile-n8", "prm/pile-capacity.prm")
-    n8_36 = run_scene(context, "pile-n8-36cells", "prm/pile-capacity.prm", {
-        "Mesh/R cells": "2, 36", "Mesh/R growth": "1, 1.075"})
-    install({"pile-capacity-n4.csv": curve(n4),
-             "pile-capacity-n8.csv": curve(n8),
-             "pile-capacity-n8-36cells.csv": curve(n8_36)})
-    install({"pile-capacity.png": plot_soil_capacity(
-        context, "pile-capacity.png",
+    curve_family(
+        context, "prm/pile-capacity.prm",
+        [("pile-capacity-n4.csv", "pile-n4",
+          {"Discretization/Harmonics": "0, 1, 2, 3, 4"}, "n<=4, 24 cells"),
+         ("pile-capacity-n8.csv", "pile-n8", None,
+          "n<=8, 24 cells (shipped)"),
+         ("pile-capacity-n8-36cells.csv", "pile-n8-36cells",
+          {"Mesh/R cells": "2, 36", "Mesh/R growth": "1, 1.075"},
+          "n<=8, 36 cells")],
+        "pile-capacity.png",
         "rigid pile d = 1 m, L = 10 m, Tresca layer, smooth (plane-strain limit)",
-        "horizontal_m", "H_kN", "1", PILE_SCALE, "9.14,9.20",
-        [("pile-capacity-n4.csv", "n<=4, 24 cells"),
-         ("pile-capacity-n8.csv", "n<=8, 24 cells (shipped)"),
-         ("pile-capacity-n8-36cells.csv", "n<=8, 36 cells")])})
+        "horizontal_m", "H_kN", PILE_SCALE, "9.14,9.20")
 
 
 def rough_disc_mesh(context):
@@ -191,42 +197,35 @@ def rough_disc_mesh(context):
     L), n <= 8, to u = 0.03 d in 6 steps, on 24 (shipped), 36 (growth
     1.075) and 48 (growth 1.06) radial cells."""
     rough = {"Interfaces/Interfaces": "5: rough"}
-    r24 = run_scene(context, "pile-rough-n8", "prm/pile-capacity.prm", rough)
-    r36 = run_scene(context, "pile-rough-n8-36cells", "prm/pile-capacity.prm",
-                    dict(rough, **{"Mesh/R cells": "2, 36",
-                                   "Mesh/R growth": "1, 1.075"}))
-    r48 = run_scene(context, "pile-rough-n8-48cells", "prm/pile-capacity.prm",
-                    dict(rough, **{"Mesh/R cells": "2, 48",
-                                   "Mesh/R growth": "1, 1.06"}))
-    install({"pile-capacity-rough-n8.csv": curve(r24),
-             "pile-capacity-rough-n8-36cells.csv": curve(r36),
-             "pile-capacity-rough-n8-48cells.csv": curve(r48)})
-    install({"disc-tresca-rough-mesh.png": plot_soil_capacity(
-        context, "disc-tresca-rough-mesh.png",
+    curve_family(
+        context, "prm/pile-capacity.prm",
+        [("pile-capacity-rough-n8.csv", "pile-rough-n8", rough,
+          "24 cells, h=0.038 m"),
+         ("pile-capacity-rough-n8-36cells.csv", "pile-rough-n8-36cells",
+          dict(rough, **{"Mesh/R cells": "2, 36",
+                         "Mesh/R growth": "1, 1.075"}), "36 cells, h=0.027 m"),
+         ("pile-capacity-rough-n8-48cells.csv", "pile-rough-n8-48cells",
+          dict(rough, **{"Mesh/R cells": "2, 48",
+                         "Mesh/R growth": "1, 1.06"}), "48 cells, h=0.018 m")],
+        "disc-tresca-rough-mesh.png",
         "rough disc (pile scene / L), n<=8: radial mesh refinement",
-        "horizontal_m", "H_kN", "1", PILE_SCALE, "11.94",
-        [("pile-capacity-rough-n8.csv", "24 cells, h=0.038 m"),
-         ("pile-capacity-rough-n8-36cells.csv", "36 cells, h=0.027 m"),
-         ("pile-capacity-rough-n8-48cells.csv", "48 cells, h=0.018 m")])})
+        "horizontal_m", "H_kN", PILE_SCALE, "11.94")
 
 
 def disc_tresca(context):
     """doc/soil-plasticity.md section 6: prm/disc-tresca.prm as shipped
     (rough, n <= 16, to 0.05 D in 10 steps) and smooth to 0.03 D in 6
     steps."""
-    rough = run_scene(context, "disc-tresca-rough", "prm/disc-tresca.prm")
-    smooth = run_scene(context, "disc-tresca-smooth", "prm/disc-tresca.prm", {
-        "Interfaces/Interfaces": "5: smooth",
-        "Nonlinear interfaces/Target": "0.03",
-        "Nonlinear interfaces/Load steps": "6"})
-    install({"disc-tresca-rough.csv": curve(rough),
-             "disc-tresca-smooth.csv": curve(smooth)})
-    install({"disc-tresca.png": plot_soil_capacity(
-        context, "disc-tresca.png",
+    curve_family(
+        context, "prm/disc-tresca.prm",
+        [("disc-tresca-rough.csv", "disc-tresca-rough", None, "rough"),
+         ("disc-tresca-smooth.csv", "disc-tresca-smooth",
+          {"Interfaces/Interfaces": "5: smooth",
+           "Nonlinear interfaces/Target": "0.03",
+           "Nonlinear interfaces/Load steps": "6"}, "smooth")],
+        "disc-tresca.png",
         "rigid disc in a Tresca ring, harmonics 0..16 (D = 1 m, s_u = 10 kPa)",
-        "horizontal_m", "H_kN", "1", DISC_SCALE, "11.94,9.14",
-        [("disc-tresca-rough.csv", "rough"),
-         ("disc-tresca-smooth.csv", "smooth")])})
+        "horizontal_m", "H_kN", DISC_SCALE, "11.94,9.14")
 
 
 def capacity_error_bars(context):
