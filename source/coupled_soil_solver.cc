@@ -436,21 +436,13 @@ namespace FourierSSI
             if (!owns_point(p))
               continue;
             const SoilPoint &point = points[p];
-            const double     G = point.shear_modulus, lambda = point.lambda;
             for (unsigned int j = 0; j < N; ++j)
               {
                 const unsigned int k = p * N + j;
-                // Trial: sigma_0 + D (eps - eps_p,committed) = sigma_0 + D
-                // eps - s_p,committed; s_p = sigma_0 + D eps - sigma keeps
-                // the internal force int Bbar^T (sigma - sigma_0) = K u - c.
-                StrainVector elastic = hooke_stress(strain[k], lambda, G);
-                for (unsigned int c = 0; c < 6; ++c)
-                  elastic[c] += point.initial_stress[c];
-                StrainVector trial = elastic;
-                for (unsigned int c = 0; c < 6; ++c)
-                  trial[c] -= committed.plastic[k][c];
-                const SoilReturn r = laws[point.law].return_map(
-                  trial, G, lambda + 2. * G / 3., point.depth);
+                // s_p = sigma_0 + D eps - sigma keeps the internal force
+                // int Bbar^T (sigma - sigma_0) = K u - c.
+                const StrainVector elastic = elastic_stress(point, strain[k]);
+                const SoilReturn   r = return_from_committed(point, k, elastic);
                 for (unsigned int c = 0; c < 6; ++c)
                   plastic[k][c] = elastic[c] - r.stress[c];
                 if (r.state == SoilState::elastic)
@@ -655,6 +647,32 @@ namespace FourierSSI
     return 0.;
   }
 
+  StrainVector
+  CoupledSoilSolver::elastic_stress(const SoilPoint    &point,
+                                    const StrainVector &eps) const
+  {
+    StrainVector stress = hooke_stress(eps, point.lambda, point.shear_modulus);
+    for (unsigned int c = 0; c < 6; ++c)
+      stress[c] += point.initial_stress[c];
+    return stress;
+  }
+
+  SoilReturn
+  CoupledSoilSolver::return_from_committed(const SoilPoint    &point,
+                                           const unsigned int  k,
+                                           const StrainVector &elastic) const
+  {
+    // Trial: sigma_0 + D (eps - eps_p,committed) = elastic - s_p,committed.
+    StrainVector trial = elastic;
+    for (unsigned int c = 0; c < 6; ++c)
+      trial[c] -= committed.plastic[k][c];
+    const double G = point.shear_modulus;
+    return laws[point.law].return_map(trial,
+                                      G,
+                                      point.lambda + 2. * G / 3.,
+                                      point.depth);
+  }
+
   bool
   CoupledSoilSolver::softening_at(const unsigned int      p,
                                   const unsigned int      k,
@@ -664,13 +682,7 @@ namespace FourierSSI
     const SoilPoint &point = points[p];
     const double     G = point.shear_modulus, lambda = point.lambda;
     const auto       stress = [&](const StrainVector &eps) {
-      StrainVector trial = hooke_stress(eps, lambda, G);
-      for (unsigned int c = 0; c < 6; ++c)
-        trial[c] += point.initial_stress[c] - committed.plastic[k][c];
-      return laws[point.law].return_map(trial,
-                                        G,
-                                        lambda + 2. * G / 3.,
-                                        point.depth);
+      return return_from_committed(point, k, elastic_stress(point, eps));
     };
     const SoilReturn at = stress(strain);
     if (at.state == SoilState::elastic)

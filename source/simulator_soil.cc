@@ -1,14 +1,12 @@
 // The driver's path for scenes with plastic soil: the harmonics are coupled
 // through theta at the soil's quadrature points, so they are solved together
 // by CoupledSoilSolver on one HarmonicSet (doc/soil-plasticity.md).
-#include <array>
 #include <cmath>
 #include <deal.II/base/timer.h>
 #include <fourier_ssi/capacity_plateau.h>
 #include <fourier_ssi/coupled_iteration.h>
 #include <fourier_ssi/coupled_soil_solver.h>
 #include <fourier_ssi/simulator.h>
-#include <limits>
 #include <sstream>
 
 namespace FourierSSI

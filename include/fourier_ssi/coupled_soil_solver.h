@@ -269,7 +269,23 @@ namespace FourierSSI
     motion_of(const StepState &state) const;
 
     /**
-     * D_e - D_ep at sample k of point p (row-major 6 x 6, central
+     * sigma_0 + D eps at a point: its stress if it had stayed elastic from
+     * the initial (geostatic) state.
+     */
+    StrainVector
+    elastic_stress(const SoilPoint &point, const StrainVector &eps) const;
+
+    /**
+     * The return mapping at sample k of a point from the committed state:
+     * trial = elastic - s_p,committed (elastic from elastic_stress()).
+     */
+    SoilReturn
+    return_from_committed(const SoilPoint    &point,
+                          const unsigned int  k,
+                          const StrainVector &elastic) const;
+
+    /**
+     * D_e - D_ep at sample k of point p (row-major 6 x 6, forward
      * differences of the return mapping from the committed state); false
      * where the return is elastic (no softening).
      */
