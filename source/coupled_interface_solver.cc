@@ -28,18 +28,6 @@ namespace FourierSSI
                                            settings.theta_samples);
     }
 
-    /** Lagrange basis of the equidistant nodes k / p at xi. */
-    std::vector<double>
-    lagrange_values(const unsigned int p, const double xi)
-    {
-      std::vector<double> values(p + 1, 1.);
-      for (unsigned int k = 0; k <= p; ++k)
-        for (unsigned int m = 0; m <= p; ++m)
-          if (m != k)
-            values[k] *= (xi - double(m) / p) / (double(k) - double(m)) * p;
-      return values;
-    }
-
     std::string
     name_of(const NonlinearInterfaceParameters &settings)
     {
@@ -97,6 +85,8 @@ namespace FourierSSI
     , sampling(harmonics, theta_samples_for(harmonics, settings))
     , candidates(candidate_harmonics(harmonics, settings.maximum_harmonic))
     , spectrum(candidates, sampling.n_samples())
+    , interface(set, parameters)
+    , points(interface.get_points())
   {
     for (unsigned int h = 0; h < set.size(); ++h)
       AssertThrow(!set.problem(h).get_constraints().has_inhomogeneities(),
@@ -104,7 +94,6 @@ namespace FourierSSI
                              ": not yet: prescribed (non-zero) Dirichlet "
                              "values with nonlinear interfaces; load the "
                              "scene through the Rigid foundation"));
-    make_points(parameters);
     solve_load_pattern();
     committed.correction_solution = pattern_solution;
     committed.correction_load     = pattern_solution;
@@ -117,52 +106,6 @@ namespace FourierSSI
     condense(0);
     committed.plastic.assign(points.size() * sampling.n_samples(),
                              {{0., 0., 0.}});
-  }
-
-  void
-  CoupledInterfaceSolver::make_points(const AllParameters &parameters)
-  {
-    const std::vector<InterfacePair> &pairs =
-      interfaces_of(set.problem(0)).get_pairs();
-    std::map<types::boundary_id, unsigned int> law_index;
-    for (const auto &[id, law] : parameters.interfaces.laws)
-      if (law.is_nonlinear())
-        {
-          law_index[id] = laws.size();
-          laws.emplace_back(law);
-          if (law.cohesion == 0. && !parameters.initial_stress.enabled())
-            without_strength = true;
-        }
-    for (unsigned int i = 0; i < pairs.size(); ++i)
-      {
-        const auto law = law_index.find(pairs[i].boundary_id);
-        if (law == law_index.end())
-          continue;
-        const unsigned int p = pairs[i].nodes.size() - 1;
-        // Gauss p + 1 points: exact for the elastic part N_i N_j r (degree
-        // 2p + 1), so a sticking interface gives exactly no correction.
-        const QGauss<1> gauss(p + 1);
-        for (unsigned int q = 0; q < gauss.size(); ++q)
-          {
-            InterfacePoint point;
-            point.pair  = i;
-            point.law   = law->second;
-            point.shape = lagrange_values(p, gauss.point(q)[0]);
-            for (unsigned int k = 0; k <= p; ++k)
-              for (unsigned int d = 0; d < 2; ++d)
-                point.position[d] += point.shape[k] * pairs[i].nodes[k][d];
-            point.area_per_radian =
-              gauss.weight(q) * pairs[i].length * point.position[0];
-            point.initial_traction =
-              parameters.initial_stress.interface_traction(
-                pairs[i].tangent,
-                pairs[i].normal,
-                parameters.materials.depth(point.position[1]));
-            points.push_back(point);
-          }
-      }
-    AssertThrow(!points.empty(),
-                ExcMessage(entry + ": no face of a coulomb interface"));
   }
 
   void
@@ -187,7 +130,8 @@ namespace FourierSSI
         set.owns(h) ?
           b[h][0] :
           Vector<double>(set.problem(h).get_dof_handler().n_dofs()));
-    pattern_relative = relative_displacements(pattern_solution);
+    pattern_relative =
+      interface.relative_displacements(pattern_solution, sampling);
     if (settings.control == NonlinearInterfaceParameters::Control::displacement)
       {
         const unsigned int h = controlled_harmonic();
@@ -199,66 +143,6 @@ namespace FourierSSI
                                "loads do not drive this motion (give the "
                                "load that does, e.g. V for vertical)"));
       }
-  }
-
-  std::vector<LocalVector>
-  CoupledInterfaceSolver::relative_displacements(
-    const std::vector<Vector<double>> &fields) const
-  {
-    const unsigned int N = sampling.n_samples(), H = set.size();
-    // 1. The amplitudes of (d_s, d_n, d_theta) at every point, index
-    //    (i * 3 + c) * H + h, of the harmonics this rank owns (zero for the
-    //    others).
-    std::vector<double> amplitudes(points.size() * 3 * H, 0.);
-    for (unsigned int i = 0; i < points.size(); ++i)
-      {
-        const InterfacePoint &point        = points[i];
-        double *const         amplitude[3] = {&amplitudes[(i * 3 + 0) * H],
-                                              &amplitudes[(i * 3 + 1) * H],
-                                              &amplitudes[(i * 3 + 2) * H]};
-        for (unsigned int h = 0; h < H; ++h)
-          {
-            if (!set.owns(h))
-              continue;
-            const InterfacePair &pair =
-              interfaces_of(set.problem(h)).get_pairs()[point.pair];
-            const unsigned int n_nodes = pair.nodes.size();
-            for (unsigned int k = 0; k < n_nodes; ++k)
-              {
-                double jump[3];
-                for (unsigned int c = 0; c < 3; ++c)
-                  jump[c] = fields[h](pair.dof_indices[3 * (n_nodes + k) + c]) -
-                            fields[h](pair.dof_indices[3 * k + c]);
-                const double N_k = point.shape[k];
-                amplitude[0][h] +=
-                  N_k * (jump[0] * pair.tangent[0] + jump[1] * pair.tangent[1]);
-                amplitude[1][h] +=
-                  N_k * (jump[0] * pair.normal[0] + jump[1] * pair.normal[1]);
-                amplitude[2][h] += N_k * jump[2];
-              }
-          }
-      }
-    // 2. Every harmonic's amplitudes on every rank: the one collective of an
-    //    iteration. Each entry is non-zero on its owner only, so the sum is
-    //    exact and the same bits on every rank, whatever the reduction order.
-    set.sum_over_ranks(amplitudes);
-    // 3. The samples at every theta_j, summed over the harmonics.
-    std::vector<LocalVector> result(points.size() * N, {{0., 0., 0.}});
-    std::vector<double>      amplitude(H), samples;
-    for (unsigned int i = 0; i < points.size(); ++i)
-      for (unsigned int c = 0; c < 3; ++c)
-        {
-          std::copy(amplitudes.begin() + (i * 3 + c) * H,
-                    amplitudes.begin() + (i * 3 + c + 1) * H,
-                    amplitude.begin());
-          sampling.evaluate(amplitude,
-                            c == 2 ? ThetaFactor::circumferential :
-                                     ThetaFactor::in_plane,
-                            samples);
-          for (unsigned int j = 0; j < N; ++j)
-            result[i * N + j][c] = samples[j];
-        }
-    return result;
   }
 
   void
@@ -285,102 +169,12 @@ namespace FourierSSI
     return values[0];
   }
 
-  std::array<unsigned int, 3>
-  CoupledInterfaceSolver::return_map(const std::vector<LocalVector> &relative,
-                                     std::vector<LocalVector>       &plastic,
-                                     std::vector<LocalVector>       &traction,
-                                     std::vector<ContactState> &state) const
-  {
-    const unsigned int          N      = sampling.n_samples();
-    std::array<unsigned int, 3> counts = {{0, 0, 0}};
-    plastic.resize(relative.size());
-    traction.resize(relative.size());
-    state.resize(relative.size());
-    for (unsigned int i = 0; i < points.size(); ++i)
-      for (unsigned int j = 0; j < N; ++j)
-        {
-          const unsigned int        k = i * N + j;
-          const ReturnMappingResult r =
-            laws[points[i].law].return_map(relative[k],
-                                           points[i].initial_traction,
-                                           committed.plastic[k]);
-          plastic[k]  = r.plastic;
-          traction[k] = r.traction;
-          state[k]    = r.state;
-          ++counts[static_cast<int>(r.state)];
-        }
-    return counts;
-  }
-
-  std::vector<Vector<double>>
-  CoupledInterfaceSolver::out_of_balance_load(
-    const std::vector<LocalVector> &plastic) const
-  {
-    const unsigned int          N = sampling.n_samples(), H = set.size();
-    std::vector<Vector<double>> load(H);
-    for (unsigned int h = 0; h < H; ++h)
-      load[h].reinit(set.problem(h).get_dof_handler().n_dofs());
-    std::vector<double> samples(N), coefficient[3];
-    for (unsigned int i = 0; i < points.size(); ++i)
-      {
-        const InterfacePoint &point = points[i];
-        const InterfaceLaw   &law   = parameters.interfaces.laws.at(
-          interfaces_of(set.problem(0)).get_pairs()[point.pair].boundary_id);
-        const double stiffness[3] = {law.shear, law.normal, law.shear};
-        bool         any          = false;
-        for (unsigned int c = 0; c < 3; ++c)
-          {
-            for (unsigned int j = 0; j < N; ++j)
-              {
-                samples[j] = stiffness[c] * plastic[i * N + j][c];
-                any        = any || samples[j] != 0.;
-              }
-            // The theta part of the virtual work against each harmonic.
-            sampling.integrate(samples,
-                               c == 2 ? ThetaFactor::circumferential :
-                                        ThetaFactor::in_plane,
-                               coefficient[c]);
-          }
-        if (!any)
-          continue;
-        for (unsigned int h = 0; h < H; ++h)
-          {
-            const InterfacePair &pair =
-              interfaces_of(set.problem(h)).get_pairs()[point.pair];
-            const unsigned int n_nodes = pair.nodes.size();
-            Vector<double>     local(pair.dof_indices.size());
-            for (unsigned int k = 0; k < n_nodes; ++k)
-              {
-                // B^T: local (s, n, theta) forces rotated back to (r, z,
-                // theta) (eq. 3.13, T^T), + on face B and - on face A.
-                const double w    = point.area_per_radian * point.shape[k];
-                const double f_s  = w * coefficient[0][h],
-                             f_n  = w * coefficient[1][h],
-                             f_t  = w * coefficient[2][h];
-                const double f[3] = {f_s * pair.tangent[0] +
-                                       f_n * pair.normal[0],
-                                     f_s * pair.tangent[1] +
-                                       f_n * pair.normal[1],
-                                     f_t};
-                for (unsigned int c = 0; c < 3; ++c)
-                  {
-                    local(3 * (n_nodes + k) + c) += f[c];
-                    local(3 * k + c) -= f[c];
-                  }
-              }
-            set.problem(h)
-              .get_homogeneous_constraints()
-              .distribute_local_to_global(local, pair.dof_indices, load[h]);
-          }
-      }
-    return load;
-  }
-
   std::vector<Vector<double>>
   CoupledInterfaceSolver::interface_force(
     const std::vector<Vector<double>> &fields) const
   {
-    return out_of_balance_load(relative_displacements(fields));
+    return interface.load_of(interface.relative_displacements(fields, sampling),
+                             sampling);
   }
 
   unsigned int
@@ -598,14 +392,16 @@ namespace FourierSSI
             target;
         // 1-2: relative displacements at every (point, theta), the law.
         std::vector<LocalVector> relative =
-          relative_displacements(state.interface_solution);
+          interface.relative_displacements(state.interface_solution, sampling);
         for (unsigned int k = 0; k < relative.size(); ++k)
           for (unsigned int c = 0; c < 3; ++c)
             relative[k][c] += state.load_factor * pattern_relative[k][c];
-        const auto counts = return_map(relative, plastic, traction, contact);
+        const auto counts = interface.return_map(
+          relative, committed.plastic, plastic, traction, contact);
         // 3-4: out-of-balance load and force residual R = G - c.
-        std::vector<Vector<double>> residual  = out_of_balance_load(plastic);
-        const double                load_norm = norm_over_harmonics(residual);
+        std::vector<Vector<double>> residual =
+          interface.load_of(plastic, sampling);
+        const double load_norm = norm_over_harmonics(residual);
         for (unsigned int h = 0; h < set.size(); ++h)
           residual[h] -= state.correction_load[h];
         const double residual_norm = norm_over_harmonics(residual);
@@ -831,7 +627,7 @@ namespace FourierSSI
           << " where the interface traction calls for them (tolerance "
           << settings.harmonic_tolerance << ")";
     log << '\n';
-    if (without_strength)
+    if (interface.without_strength())
       log << "warning: " << entry
           << ": a coulomb interface has c = 0 and no Initial stress: it has "
              "no strength\n";

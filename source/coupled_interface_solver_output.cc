@@ -13,13 +13,6 @@ namespace FourierSSI
   {
     const std::string entry_name = "Nonlinear interfaces";
 
-    const char *
-    state_name(const ContactState state)
-    {
-      return state == ContactState::stick ? "stick" :
-             state == ContactState::slip  ? "slip" :
-                                            "open";
-    }
   } // namespace
 
   void
@@ -40,35 +33,7 @@ namespace FourierSSI
   CoupledInterfaceSolver::write_interface_state_csv(
     const std::string &filename) const
   {
-    std::ofstream out(filename);
-    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
-    // t_n > 0 is tension, d_n > 0 opening (section 1 of the doc); the
-    // traction is the total one, initial (geostatic) stress included.
-    out << "step,interface_id,point,r_m,z_m,normal_r,normal_z,theta_deg,"
-           "state,t_s_kPa,t_n_kPa,t_theta_kPa,d_s_m,d_n_m,d_theta_m\n"
-        << std::setprecision(10);
-    const std::vector<InterfacePair> &pairs =
-      set.problem(0).get_interfaces()->get_pairs();
-    const unsigned int N = sampling.n_samples();
-    for (unsigned int s = 0; s < snapshots.size(); ++s)
-      for (unsigned int i = 0; i < points.size(); ++i)
-        {
-          const InterfacePair &pair = pairs[points[i].pair];
-          for (unsigned int j = 0; j < N; ++j)
-            {
-              const unsigned int k = i * N + j;
-              const LocalVector &t = snapshots[s].traction[k];
-              const LocalVector &d = snapshots[s].relative[k];
-              out << s + 1 << ',' << pair.boundary_id << ',' << i << ','
-                  << points[i].position[0] << ',' << points[i].position[1]
-                  << ',' << pair.normal[0] << ',' << pair.normal[1] << ','
-                  << sampling.angle(j) * 180. / numbers::PI << ','
-                  << state_name(snapshots[s].state[k]) << ',' << t[0] << ','
-                  << t[1] << ',' << t[2] << ',' << d[0] << ',' << d[1] << ','
-                  << d[2] << '\n';
-            }
-        }
-    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+    interface.write_state_csv(filename, snapshots, sampling);
   }
 
   void

@@ -4,6 +4,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <fourier_ssi/coupled_iteration.h>
 #include <fourier_ssi/coupled_soil_solver.h>
+#include <fourier_ssi/harmonic_pair_integral.h>
 #include <fourier_ssi/stress_postprocessor.h>
 #include <fourier_ssi/thread_ranges.h>
 #include <fstream>
@@ -112,6 +113,8 @@ namespace FourierSSI
                                    "Stiffness = elastic or one rank"));
     make_points();
     check_initial_stress();
+    if (parameters.interfaces.any_nonlinear())
+      interface = std::make_unique<NonlinearInterfacePoints>(set, parameters);
     if (set.n_owning_ranks() > 1)
       {
         point_stride = set.n_owning_ranks();
@@ -126,6 +129,10 @@ namespace FourierSSI
     committed.correction_load = committed.correction_solution;
     committed.plastic.assign(points.size() * sampling.n_samples(),
                              {{0., 0., 0., 0., 0., 0.}});
+    if (interface)
+      committed.interface_plastic.assign(interface->size() *
+                                           sampling.n_samples(),
+                                         {{0., 0., 0.}});
   }
 
   void
@@ -256,6 +263,9 @@ namespace FourierSSI
           b[h][0] :
           Vector<double>(set.problem(h).get_dof_handler().n_dofs()));
     pattern_strain = strain_amplitudes(pattern_solution);
+    if (interface)
+      pattern_relative =
+        interface->relative_displacements(pattern_solution, sampling);
   }
 
   void
@@ -286,6 +296,9 @@ namespace FourierSSI
           b[h][0] :
           Vector<double>(set.problem(h).get_dof_handler().n_dofs()));
     held_strain = strain_amplitudes(held_solution);
+    if (interface)
+      held_relative =
+        interface->relative_displacements(held_solution, sampling);
   }
 
   double
@@ -408,6 +421,22 @@ namespace FourierSSI
           }
       }
     return samples;
+  }
+
+  std::vector<LocalVector>
+  CoupledSoilSolver::relative_samples(
+    const std::vector<Vector<double>> &correction,
+    const double                       load_factor,
+    const double                       held_fraction) const
+  {
+    std::vector<LocalVector> relative =
+      interface->relative_displacements(correction, sampling);
+    for (unsigned int k = 0; k < relative.size(); ++k)
+      for (unsigned int c = 0; c < 3; ++c)
+        relative[k][c] +=
+          load_factor * pattern_relative[k][c] +
+          (held_relative.empty() ? 0. : held_fraction * held_relative[k][c]);
+    return relative;
   }
 
   void
@@ -590,14 +619,31 @@ namespace FourierSSI
     std::vector<StrainVector> plastic;
     SoilStepResult            result;
     return_map(strain_samples(fields, 0., 0.), plastic, result);
-    return load_of(plastic);
+    std::vector<Vector<double>> load = load_of(plastic);
+    if (interface)
+      {
+        std::vector<LocalVector>  interface_plastic, traction;
+        std::vector<ContactState> contact;
+        interface->return_map(relative_samples(fields, 0., 0.),
+                              committed.interface_plastic,
+                              interface_plastic,
+                              traction,
+                              contact);
+        const auto interface_load =
+          interface->load_of(interface_plastic, sampling);
+        for (unsigned int h = 0; h < set.size(); ++h)
+          load[h] += interface_load[h];
+      }
+    return load;
   }
 
   std::vector<Vector<double>>
   CoupledSoilSolver::tangent_product(const std::vector<Vector<double>> &fields,
                                      const std::vector<Vector<double>> &x)
   {
-    update_tangent(strain_samples(fields, 0., 0.));
+    update_tangent(strain_samples(fields, 0., 0.),
+                   interface ? relative_samples(fields, 0., 0.) :
+                               std::vector<LocalVector>());
     std::vector<Vector<double>> y;
     tangent->vmult(y, x);
     return y;
@@ -708,38 +754,14 @@ namespace FourierSSI
   }
 
   void
-  CoupledSoilSolver::update_tangent(const std::vector<StrainVector> &strain)
+  CoupledSoilSolver::update_tangent(const std::vector<StrainVector> &strain,
+                                    const std::vector<LocalVector>  &relative)
   {
     const unsigned int N = sampling.n_samples(), H = set.size();
     // 1. S_hg = theta integral of factor_h (D_e - D_ep) factor_g per point,
-    //    over the samples that yield; empty: a point elastic at every theta.
-    //    Every factor is cos(n theta) or sin(n theta), so factor_h factor_g
-    //    = (1/2)[trig((n_h - n_g) theta) +- trig((n_h + n_g) theta)] sample
-    //    by sample, and S_hg follows from the cosine and sine transforms of
-    //    D_e - D_ep at the frequencies 0..2 n_max: O(n_max) per sample
-    //    instead of O(H^2) (the same sums, in another order).
-    unsigned int n_max = 0;
-    for (const Harmonic &harmonic : harmonics)
-      n_max = std::max(n_max, harmonic.n);
-    const unsigned int  M = 2 * n_max + 1;
-    std::vector<double> cosine(M * N), sine(M * N);
-    for (unsigned int m = 0; m < M; ++m)
-      for (unsigned int j = 0; j < N; ++j)
-        {
-          cosine[m * N + j] = std::cos(m * sampling.angle(j));
-          sine[m * N + j]   = std::sin(m * sampling.angle(j));
-        }
-    // is_cosine[2 h + kind]: the factor of harmonic h for in-plane (kind 0)
-    // or circumferential (kind 1) components (theta_sampling.h).
-    std::vector<char> is_cosine(2 * H);
-    for (unsigned int h = 0; h < H; ++h)
-      for (unsigned int kind = 0; kind < 2; ++kind)
-        is_cosine[2 * h + kind] =
-          (kind == 0) == (harmonics[h].family == Family::symmetric);
-    const auto   kind_of = [](const unsigned int a) { return a < 4 ? 0u : 1u; };
-    const double weight  = 2. * numbers::PI / N;
-    // softening[p][(a * 6 + b) * H^2 + h * H + g], the harmonic pair
-    // innermost (contiguous in the assembly).
+    //    over the samples that yield (harmonic_pair_integral.h); empty: a
+    //    point elastic at every theta. softening[p][(a * 6 + b) * H^2 + h *
+    //    H + g], the harmonic pair innermost (contiguous in the assembly).
     const unsigned int               HH = H * H;
     std::vector<std::vector<double>> softening(points.size());
     for_each_range(
@@ -748,8 +770,7 @@ namespace FourierSSI
       set.n_threads(),
       [&](const unsigned int first, const unsigned int last) {
         std::array<double, 36> c;
-        // [ab][m]: sum_j w c_ab(theta_j) cos(m theta_j), resp. sin.
-        std::vector<double> c_cos(36 * M), c_sin(36 * M);
+        HarmonicPairIntegral   integral(harmonics, sampling, 6, 4);
         for (unsigned int p = first; p < last; ++p)
           {
             bool yields = false;
@@ -759,52 +780,13 @@ namespace FourierSSI
                   continue;
                 if (!yields)
                   {
-                    std::fill(c_cos.begin(), c_cos.end(), 0.);
-                    std::fill(c_sin.begin(), c_sin.end(), 0.);
+                    integral.clear();
                     yields = true;
                   }
-                for (unsigned int ab = 0; ab < 36; ++ab)
-                  {
-                    if (c[ab] == 0.)
-                      continue;
-                    const double x = weight * c[ab];
-                    for (unsigned int m = 0; m < M; ++m)
-                      {
-                        c_cos[ab * M + m] += x * cosine[m * N + j];
-                        c_sin[ab * M + m] += x * sine[m * N + j];
-                      }
-                  }
+                integral.add_sample(j, c.data());
               }
-            if (!yields)
-              continue;
-            softening[p].resize(36 * HH);
-            for (unsigned int a = 0; a < 6; ++a)
-              for (unsigned int b = 0; b < 6; ++b)
-                {
-                  const double *cc = &c_cos[(a * 6 + b) * M];
-                  const double *cs = &c_sin[(a * 6 + b) * M];
-                  double       *S  = &softening[p][(a * 6 + b) * HH];
-                  for (unsigned int h = 0; h < H; ++h)
-                    for (unsigned int g = 0; g < H; ++g)
-                      {
-                        const int n_h = harmonics[h].n, n_g = harmonics[g].n;
-                        const unsigned int sum        = n_h + n_g,
-                                           difference = std::abs(n_h - n_g);
-                        const double sign             = n_h >= n_g ? 1. : -1.;
-                        const bool   cos_h = is_cosine[2 * h + kind_of(a)],
-                                   cos_g   = is_cosine[2 * g + kind_of(b)];
-                        double value;
-                        if (cos_h && cos_g) // cos a cos b
-                          value = cc[difference] + cc[sum];
-                        else if (!cos_h && !cos_g) // sin a sin b
-                          value = cc[difference] - cc[sum];
-                        else if (cos_h) // cos a sin b
-                          value = cs[sum] - sign * cs[difference];
-                        else // sin a cos b
-                          value = cs[sum] + sign * cs[difference];
-                        S[h * H + g] = 0.5 * value;
-                      }
-                }
+            if (yields)
+              integral.integrals(softening[p]);
           }
       });
     // 2. K_t = diag(K_h) - the softening of the yielding cells, block row h
@@ -814,6 +796,10 @@ namespace FourierSSI
         std::vector<std::vector<std::vector<types::global_dof_index>>> dofs;
         for (const SoilCell &cell : cells)
           dofs.push_back(cell.dof_indices);
+        // The coulomb interfaces' pairs couple the harmonics too.
+        if (interface)
+          for (auto &pair : interface->pair_dofs())
+            dofs.push_back(std::move(pair));
         tangent = std::make_unique<CoupledTangent>(set, dofs);
       }
     tangent->reset_to_elastic();
@@ -890,6 +876,13 @@ namespace FourierSSI
             }
         }
     });
+    // 3. The interfaces' part: -int B_h^T (D - D_t) B_g at the samples
+    //    that slip or open.
+    if (interface)
+      interface->add_softening(relative,
+                               committed.interface_plastic,
+                               sampling,
+                               *tangent);
     tangent->factorize();
     tangent_pattern.resize(H);
     for (unsigned int h = 0; h < H; ++h)
@@ -943,6 +936,7 @@ namespace FourierSSI
       state.held_fraction = target;
     const bool tangent_stiffness = parameters.soil_plasticity.tangent;
     std::vector<StrainVector> plastic;
+    std::vector<LocalVector>  interface_plastic;
     FixedPointAcceleration    acceleration(acceleration_of(settings,
                                                         tangent_stiffness),
                                         settings.anderson_depth);
@@ -966,9 +960,30 @@ namespace FourierSSI
                          state.load_factor,
                          state.held_fraction);
         return_map(strain, plastic, result);
-        // 3-4: out-of-balance load and force residual R = G - c.
-        std::vector<Vector<double>> residual  = load_of(plastic);
-        const double                load_norm = norm_over_harmonics(residual);
+        // 3-4: out-of-balance load and force residual R = G - c; the
+        //    coulomb interfaces add theirs (one c for both sources).
+        std::vector<Vector<double>> residual = load_of(plastic);
+        std::vector<LocalVector>    relative;
+        if (interface)
+          {
+            relative = relative_samples(state.correction_solution,
+                                        state.load_factor,
+                                        state.held_fraction);
+            InterfaceSnapshot &snapshot = result.interface_state;
+            snapshot.relative           = relative;
+            result.contact              = interface->return_map(relative,
+                                                   committed.interface_plastic,
+                                                   interface_plastic,
+                                                   snapshot.traction,
+                                                   snapshot.state);
+            result.largest_interface_yield_value =
+              interface->largest_yield_value(snapshot.traction);
+            const std::vector<Vector<double>> interface_load =
+              interface->load_of(interface_plastic, sampling);
+            for (unsigned int h = 0; h < set.size(); ++h)
+              residual[h] += interface_load[h];
+          }
+        const double load_norm = norm_over_harmonics(residual);
         for (unsigned int h = 0; h < set.size(); ++h)
           residual[h] -= state.correction_load[h];
         const double residual_norm = norm_over_harmonics(residual);
@@ -979,9 +994,10 @@ namespace FourierSSI
         if (residual_norm <= settings.tolerance * scale)
           {
             count_over_ranks(result);
-            state.plastic     = plastic;
-            result.iterations = iteration;
-            result.residual   = scale > 0. ? residual_norm / scale : 0.;
+            state.plastic           = plastic;
+            state.interface_plastic = interface_plastic;
+            result.iterations       = iteration;
+            result.residual         = scale > 0. ? residual_norm / scale : 0.;
             return true;
           }
         if (tangent_stiffness)
@@ -1018,7 +1034,7 @@ namespace FourierSSI
             step_length   = 1.;
             // Rebuilt at every update: keeping it for 3-10 updates (modified
             // Newton) was measured slower (doc/soil-plasticity.md 3b).
-            update_tangent(strain);
+            update_tangent(strain, relative);
             residual = tangent_correction(residual, displacement_control);
             ++updates;
           }
@@ -1237,8 +1253,11 @@ namespace FourierSSI
         write_foundation_state(log, result);
         log << "; " << result.iterations << " iterations; plastic samples "
             << result.n_plastic << " of " << result.n_plastic + result.n_elastic
-            << "; max f " << result.largest_yield_value << " kPa; "
-            << result.time << " s" << std::endl;
+            << "; max f " << result.largest_yield_value << " kPa; ";
+        if (interface)
+          log << "interface stick/slip/open " << result.contact[0] << '/'
+              << result.contact[1] << '/' << result.contact[2] << "; ";
+        log << result.time << " s" << std::endl;
       }
   }
 
@@ -1267,16 +1286,30 @@ namespace FourierSSI
   }
 
   void
+  CoupledSoilSolver::write_interface_state_csv(
+    const std::string &filename) const
+  {
+    AssertThrow(interface != nullptr,
+                ExcMessage(entry + ": the scene has no coulomb interface"));
+    std::vector<InterfaceSnapshot> snapshots;
+    for (const SoilStepResult &step : steps)
+      snapshots.push_back(step.interface_state);
+    interface->write_state_csv(filename, snapshots, sampling);
+  }
+
+  void
   CoupledSoilSolver::write_csv(const std::string &filename) const
   {
     write_load_step_csv(filename,
                         steps,
                         parameters.rigid_foundation,
-                        "elastic,plastic,max_yield_kPa,time_s,held_fraction",
+                        "elastic,plastic,max_yield_kPa,time_s,held_fraction,"
+                        "stick,slip,open",
                         [](std::ostream &out, const SoilStepResult &r) {
                           out << r.n_elastic << ',' << r.n_plastic << ','
                               << r.largest_yield_value << ',' << r.time << ','
-                              << r.held_fraction;
+                              << r.held_fraction << ',' << r.contact[0] << ','
+                              << r.contact[1] << ',' << r.contact[2];
                         });
   }
 } // namespace FourierSSI

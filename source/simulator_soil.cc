@@ -19,10 +19,16 @@ namespace FourierSSI
     void
     check_supported(const AllParameters &parameters, const MPI_Comm comm)
     {
-      AssertThrow(!parameters.interfaces.any_nonlinear(),
-                  ExcMessage(entry + ": not yet: plastic soil together with "
-                                     "a coulomb interface (use a linear "
-                                     "interface: rough, smooth, kn/ks)"));
+      // Coulomb interfaces iterate with the soil (one correction load for
+      // both), on the harmonics given: no growth.
+      const NonlinearInterfaceParameters &settings =
+        parameters.nonlinear_interfaces;
+      AssertThrow(!parameters.interfaces.any_nonlinear() ||
+                    settings.maximum_harmonic <=
+                      highest_harmonic(parameters.discretization.harmonics),
+                  ExcMessage("Nonlinear interfaces/Maximum harmonic: not "
+                             "yet with plastic soil (the harmonics do not "
+                             "grow); list them in Discretization/Harmonics"));
       AssertThrow(parameters.discretization.refinement_cycles == 1,
                   ExcMessage(entry + ": not yet: Discretization/Refinement "
                                      "cycles > 1 with plastic soil"));
@@ -50,6 +56,7 @@ namespace FourierSSI
     /** The plastic state of every converged step, after the common rows. */
     void
     add_plastic_state_rows(const CoupledSoilSolver &solver,
+                           const AllParameters     &parameters,
                            ResultsTable            &results)
     {
       const Harmonic any{0, Family::symmetric};
@@ -62,6 +69,20 @@ namespace FourierSSI
                       any,
                       s + 1,
                       steps[s].largest_yield_value,
+                      "kPa");
+          if (!parameters.interfaces.any_nonlinear())
+            continue;
+          const ContactCounts &contact = steps[s].contact;
+          results.add(
+            "step_interface_stick_samples", any, s + 1, contact[0], "-");
+          results.add(
+            "step_interface_slip_samples", any, s + 1, contact[1], "-");
+          results.add(
+            "step_interface_open_samples", any, s + 1, contact[2], "-");
+          results.add("step_interface_largest_yield_value",
+                      any,
+                      s + 1,
+                      steps[s].largest_interface_yield_value,
                       "kPa");
         }
     }
@@ -167,7 +188,7 @@ namespace FourierSSI
     log << "coupled solve: " << solver.get_steps().size() << " steps in "
         << timer.wall_time() << " s" << std::endl;
     add_load_step_rows(solver, results);
-    add_plastic_state_rows(solver, results);
+    add_plastic_state_rows(solver, parameters, results);
     report_capacity(solver, parameters, log, results);
     if (!writes_csv())
       return;
@@ -175,6 +196,14 @@ namespace FourierSSI
     written.push_back(curve);
     solver.write_csv(curve);
     log << "load-displacement curve written to " << curve << std::endl;
+    if (solver.has_coulomb_interfaces())
+      {
+        const std::string state = directory + "/interface-state.csv";
+        written.push_back(state);
+        solver.write_interface_state_csv(state);
+        log << "interface state around the circumference written to " << state
+            << std::endl;
+      }
     const std::string name = directory + "/" + parameters.output.results_file;
     written.push_back(name);
     results.write_csv(name);

@@ -52,6 +52,7 @@
 #include <fourier_ssi/initial_stress.h>
 #include <fourier_ssi/interface_law.h>
 #include <fourier_ssi/nonlinear_interface_parameters.h>
+#include <fourier_ssi/nonlinear_interface_points.h>
 #include <fourier_ssi/parameters.h>
 #include <fourier_ssi/theta_sampling.h>
 #include <memory>
@@ -87,19 +88,6 @@ namespace FourierSSI
     double time = 0.;
     /** Harmonics solved in this step (grows with Maximum harmonic). */
     unsigned int n_harmonics = 0;
-  };
-
-  /**
-   * The interface at every (point, theta sample) of one converged step,
-   * index i * N + j for point i and angle theta_j.
-   */
-  struct InterfaceSnapshot
-  {
-    /** Relative displacement d = u_B - u_A, local (s, n, theta) [m]. */
-    std::vector<LocalVector> relative;
-    /** Traction t (total, initial stress included), (s, n, theta) [kPa]. */
-    std::vector<LocalVector>  traction;
-    std::vector<ContactState> state;
   };
 
   class CoupledInterfaceSolver
@@ -201,19 +189,6 @@ namespace FourierSSI
     write_csv(const std::string &filename) const;
 
   private:
-    /** One Gauss point of a nonlinear interface pair. */
-    struct InterfacePoint
-    {
-      unsigned int pair;
-      /** w_q l r(xi_q): area per radian of theta [m^2]. */
-      double              area_per_radian;
-      std::vector<double> shape;
-      Point<2>            position;
-      LocalVector         initial_traction;
-      /** Index into laws. */
-      unsigned int law;
-    };
-
     /**
      * The iteration condensed onto the interface (section 5 of the doc): c
      * is non-zero only at the DoFs its assembly reaches ("write": the
@@ -248,17 +223,7 @@ namespace FourierSSI
     };
 
     void
-    make_points(const AllParameters &parameters);
-    void
     solve_load_pattern();
-
-    /**
-     * Relative displacement samples (points x N) of fields per harmonic:
-     * the amplitudes of the harmonics this rank owns, summed over the
-     * ranks (the one collective of an iteration), then sampled in theta.
-     */
-    std::vector<LocalVector>
-    relative_displacements(const std::vector<Vector<double>> &fields) const;
 
     /** The owner's copy of values of harmonic h on every rank. */
     void
@@ -266,20 +231,6 @@ namespace FourierSSI
 
     double
     from_owner(const unsigned int h, const double value) const;
-
-    /**
-     * Return mapping everywhere from the committed state; fills plastic,
-     * traction and states of `trial` samples, returns their counts.
-     */
-    std::array<unsigned int, 3>
-    return_map(const std::vector<LocalVector> &relative,
-               std::vector<LocalVector>       &plastic,
-               std::vector<LocalVector>       &traction,
-               std::vector<ContactState>      &state) const;
-
-    /** G_h = int B_h^T D d_p, condensed, every harmonic. */
-    std::vector<Vector<double>>
-    out_of_balance_load(const std::vector<LocalVector> &plastic) const;
 
     /** Condensation of the harmonics first, first + 1, ... */
     void
@@ -352,14 +303,13 @@ namespace FourierSSI
     std::vector<Harmonic>        harmonics;
     ThetaSampling                sampling;
     /** Every candidate harmonic n <= Maximum harmonic (growth only). */
-    std::vector<Harmonic>             candidates;
-    ThetaSampling                     spectrum;
-    std::vector<MohrCoulombInterface> laws;
-    /** Some nonlinear law has neither cohesion nor initial stress. */
-    bool                        without_strength = false;
-    std::vector<InterfacePoint> points;
-    std::vector<Condensation>   condensed;
-    std::vector<Vector<double>> pattern_solution;
+    std::vector<Harmonic> candidates;
+    ThetaSampling         spectrum;
+    /** The Gauss points of the coulomb interfaces and their laws. */
+    NonlinearInterfacePoints           interface;
+    const std::vector<InterfacePoint> &points;
+    std::vector<Condensation>          condensed;
+    std::vector<Vector<double>>        pattern_solution;
     /** Controlled motion of the pattern solution u_F (load factor 1). */
     double pattern_motion = 0.;
     /** sqrt(sum_h |F_h|^2) of the scene's (condensed) loads. */

@@ -43,6 +43,7 @@
 #include <fourier_ssi/coupled_tangent.h>
 #include <fourier_ssi/harmonic_set.h>
 #include <fourier_ssi/nonlinear_interface_parameters.h>
+#include <fourier_ssi/nonlinear_interface_points.h>
 #include <fourier_ssi/parameters.h>
 #include <fourier_ssi/soil_law.h>
 #include <fourier_ssi/theta_sampling.h>
@@ -69,7 +70,16 @@ namespace FourierSSI
     unsigned int n_elastic = 0, n_plastic = 0;
     /** Largest f(sigma) over every (point, theta) [kPa] (<= 0 admissible). */
     double largest_yield_value = 0.;
-    double time                = 0.;
+    /**
+     * Coulomb interfaces: (point, theta) samples sticking, slipping, open
+     * (all zero without).
+     */
+    ContactCounts contact = {{0, 0, 0}};
+    /** Largest f(t) of the coulomb interfaces [kPa] (<= 0 admissible). */
+    double largest_interface_yield_value = 0.;
+    /** The coulomb interfaces at every (point, theta) (empty without). */
+    InterfaceSnapshot interface_state;
+    double            time = 0.;
   };
 
   class CoupledSoilSolver
@@ -142,6 +152,20 @@ namespace FourierSSI
       return sampling.n_samples();
     }
 
+    /** True if the scene has coulomb interfaces (iterated with the soil). */
+    bool
+    has_coulomb_interfaces() const
+    {
+      return interface != nullptr;
+    }
+
+    /**
+     * CSV of the coulomb interfaces' state at every (point, theta) of every
+     * converged step (NonlinearInterfacePoints::write_state_csv).
+     */
+    void
+    write_interface_state_csv(const std::string &filename) const;
+
     /** CSV: step, load factor, loads, motion, iterations, residual, ... */
     void
     write_csv(const std::string &filename) const;
@@ -180,6 +204,8 @@ namespace FourierSSI
       std::vector<Vector<double>> correction_solution, correction_load;
       /** s_p = D eps_p per (point, theta). */
       std::vector<StrainVector> plastic;
+      /** Coulomb interfaces: d_p per (interface point, theta). */
+      std::vector<LocalVector> interface_plastic;
     };
 
     void
@@ -233,6 +259,16 @@ namespace FourierSSI
     strain_samples(const std::vector<Vector<double>> &correction,
                    const double                       load_factor,
                    const double                       held_fraction) const;
+
+    /**
+     * Coulomb interfaces: the relative displacement at every (interface
+     * point, theta) at lambda and rho (correction + lambda u_F + rho
+     * u_held).
+     */
+    std::vector<LocalVector>
+    relative_samples(const std::vector<Vector<double>> &correction,
+                     const double                       load_factor,
+                     const double                       held_fraction) const;
 
     /**
      * Return mapping from the committed state at every (point, theta) of
@@ -302,7 +338,8 @@ namespace FourierSSI
      * K_t^-1 F.
      */
     void
-    update_tangent(const std::vector<StrainVector> &strain);
+    update_tangent(const std::vector<StrainVector> &strain,
+                   const std::vector<LocalVector>  &relative);
 
     /**
      * The out-of-balance load correction of one tangent (Newton) step:
@@ -376,6 +413,12 @@ namespace FourierSSI
     /** Stiffness = tangent: the coupled tangent and K_t^-1 F. */
     std::unique_ptr<CoupledTangent> tangent;
     std::vector<Vector<double>>     tangent_pattern;
+    /**
+     * Coulomb interfaces (null: none): their points, the relative
+     * displacements of the load pattern and of the held loads.
+     */
+    std::unique_ptr<NonlinearInterfacePoints> interface;
+    std::vector<LocalVector>                  pattern_relative, held_relative;
     /** owns_point(): the ranks and this rank (1, 0: every point). */
     unsigned int point_stride = 1, point_rank = 0;
   };

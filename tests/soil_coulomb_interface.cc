@@ -1,0 +1,201 @@
+// Plastic soil and coulomb interfaces in one coupled iteration
+// (doc/soil-plasticity.md section 6b): the plane-strain pile slice of
+// prm/pile-capacity.prm with its shaft a coulomb interface.
+//  (0) derivative: with the soil kept elastic (s_u = 1e6 kPa) and an
+//      interface that slips, opens (tensionless) and rubs (phi = 20 deg),
+//      harmonics 0..2 of both families, random fields with jumps of ~1e-2
+//      m (tractions ~100 kPa against c = 5 kPa): the interface part of the
+//      coupled tangent, K x - K_t x, equals the central difference of the
+//      out-of-balance load (G(u + e x) - G(u - e x)) / 2e, whose only
+//      shared pieces are the return mapping and the projection. Tolerance
+//      1e-6 of the largest entry (measured 2.3e-9): the tangent
+//      differentiates the return by forward differences of relative step
+//      1e-6, whose error on the curved part of the radial return is of
+//      that order at most, and e = 1e-9 moves about that fraction of the
+//      samples across a state change.
+//  (1) a coulomb interface that never reaches its strength (c = 100 kPa
+//      against the soil's s_u = 10 kPa) is the linear interface with the
+//      same kn, ks: the same curve to 1e-12 (the only difference is a zero
+//      out-of-balance load added).
+//  (2) Newton on the coupled tangent and the initial-stiffness iteration
+//      give the same curve for an interface that slips (c = 5 kPa = 0.5
+//      s_u), to 1e-7 (both stop at |R| <= 1e-8 |lambda F|); Newton within
+//      25 iterations a step. 8 steps to u = 0.01 d: Newton's first step
+//      from the elastic state to 0.005 d fails (its first update raises
+//      |R| fourfold) and is cut, which would make the two step sequences
+//      differ. kn = ks = 1e5 kPa/m (about G / h of the first
+//      soil cell): the initial-stiffness iteration contracts by about
+//      1 - (slipping stiffness) / ks per iteration, and with the scene's
+//      1e7 it needs thousands (measured: step cuts, then no convergence
+//      in 3000), which is why Newton is the default.
+//  (3) at every converged step the interface tractions stay on or inside
+//      the slip surface (f <= 1e-9 c) and the soil's on or inside Tresca.
+#include "soil_test_support.h"
+
+#include <random>
+
+using namespace FourierSSI;
+using namespace soil_test;
+
+namespace
+{
+  std::string
+  pile_scene(const std::vector<std::pair<std::string, std::string>> &changes,
+             const std::string &interface_law,
+             const std::string &more = "")
+  {
+    std::string text = test_support::bundled_prm("prm/pile-capacity.prm");
+    for (const auto &[entry, value] : changes)
+      text = std::regex_replace(text,
+                                std::regex("set " + entry + " *= [^\n]*"),
+                                "set " + entry + " = " + value);
+    return text +
+           "subsection Interfaces\n  set Interfaces = 5: " + interface_law +
+           "\nend\n" + more;
+  }
+
+  std::vector<Vector<double>>
+  random_fields(const HarmonicSet &set, std::mt19937 &rng, const double size)
+  {
+    std::uniform_real_distribution<double> u(-size, size);
+    std::vector<Vector<double>>            fields;
+    for (unsigned int h = 0; h < set.size(); ++h)
+      {
+        Vector<double> x(set.problem(h).get_dof_handler().n_dofs());
+        for (double &v : x)
+          v = u(rng);
+        set.problem(h).get_homogeneous_constraints().distribute(x);
+        fields.push_back(x);
+      }
+    return fields;
+  }
+
+  void
+  check_derivative()
+  {
+    std::cout << "(0) interface part of K_t x = K x - dG/du x" << std::endl;
+    Run          run(pile_scene({{"Harmonics", "0, 1, 2"},
+                                 {"Family", "both"},
+                                 {"Laws", "0: tresca, su=1e6"}},
+                       "coulomb, kn=1e4, ks=1e4, c=5, phi=20, sigma_t=0"));
+    std::mt19937 rng(11);
+    const auto   u    = random_fields(*run.set, rng, 1e-2);
+    const auto   x    = random_fields(*run.set, rng, 1.);
+    const double e    = 1e-9;
+    auto         plus = u, minus = u;
+    for (unsigned int h = 0; h < u.size(); ++h)
+      {
+        plus[h].add(e, x[h]);
+        minus[h].add(-e, x[h]);
+      }
+    const auto g_plus  = run.solver->out_of_balance_load(plus);
+    const auto g_minus = run.solver->out_of_balance_load(minus);
+    const auto tangent = run.solver->tangent_product(u, x);
+    double     error = 0., softened = 0.;
+    for (unsigned int h = 0; h < u.size(); ++h)
+      {
+        Vector<double> Kx(x[h].size());
+        run.set->problem(h).get_system_matrix().vmult(Kx, x[h]);
+        const auto &constraints = run.set->problem(h).get_constraints();
+        for (unsigned int i = 0; i < Kx.size(); ++i)
+          if (!constraints.is_constrained(i))
+            {
+              const double dG = (g_plus[h][i] - g_minus[h][i]) / (2. * e);
+              error    = std::max(error, std::abs(Kx[i] - dG - tangent[h][i]));
+              softened = std::max(softened, std::abs(dG));
+            }
+      }
+    // Only meaningful if the interface softens: dG/du is of the order of
+    // the interface stiffness times the shape functions' area.
+    check::in_range("max |dG/du x| (the interface softens) [kN/m]",
+                    softened,
+                    1.,
+                    1e300);
+    check::small("max |K_t x - (K x - dG/du x)| / max |dG/du x|",
+                 error / softened,
+                 1e-6);
+  }
+
+  std::vector<SoilStepResult>
+  curve(const std::string &interface_law,
+        const std::string &stiffness,
+        const std::string &load_steps)
+  {
+    Run run(pile_scene({{"Harmonics", "0, 1, 2, 3, 4"},
+                        {"Target", "0.01"},
+                        {"Load steps", load_steps}},
+                       interface_law,
+                       "subsection Soil plasticity\n  set Stiffness = " +
+                         stiffness + "\nend\n"));
+    run.solver->run(std::cout);
+    return run.solver->get_steps();
+  }
+
+  void
+  check_same_curve(const std::string                 &name,
+                   const std::vector<SoilStepResult> &a,
+                   const std::vector<SoilStepResult> &b,
+                   const double                       tolerance)
+  {
+    check::equal(name + ": steps", a.size(), b.size());
+    for (unsigned int s = 0; s < a.size() && s < b.size(); ++s)
+      check::relative(name + ": step " + std::to_string(s + 1) + " load factor",
+                      a[s].load_factor,
+                      b[s].load_factor,
+                      tolerance);
+  }
+
+  void
+  check_admissible(const std::string                 &name,
+                   const std::vector<SoilStepResult> &steps,
+                   const double                       c)
+  {
+    check_equilibrium_and_yield(name + ": ", steps, 10.);
+    double worst = -1e300;
+    for (const SoilStepResult &s : steps)
+      worst = std::max(worst, s.largest_interface_yield_value);
+    check::in_range(name + ": max f(t) over the interface [kPa]",
+                    worst,
+                    -1e300,
+                    1e-9 * c);
+  }
+} // namespace
+
+int
+main()
+{
+  check_derivative();
+
+  std::cout << "(1) a coulomb interface that does not slip is linear"
+            << std::endl;
+  const auto strong =
+    curve("coulomb, kn=1e7, ks=1e7, c=100, phi=0, sigma_t=none",
+          "tangent",
+          "2");
+  const auto linear = curve("kn=1e7, ks=1e7", "tangent", "2");
+  check_same_curve("c = 100 kPa vs linear", strong, linear, 1e-12);
+  check::equal("c = 100 kPa: slipping samples at the last step",
+               strong.back().contact[1],
+               0u);
+
+  std::cout << "(2) slipping interface: Newton vs initial stiffness"
+            << std::endl;
+  const std::string adhesive =
+    "coulomb, kn=1e5, ks=1e5, c=5, phi=0, sigma_t=none";
+  const auto newton  = curve(adhesive, "tangent", "8");
+  const auto elastic = curve(adhesive, "elastic", "8");
+  check_same_curve("c = 5 kPa", newton, elastic, 1e-7);
+  unsigned int most = 0;
+  for (const SoilStepResult &s : newton)
+    most = std::max(most, s.iterations);
+  check::in_range("Newton iterations per step (most)", most, 1, 25);
+  check::in_range("c = 5 kPa: slipping samples at the last step",
+                  newton.back().contact[1],
+                  1u,
+                  1000000u);
+
+  std::cout << "(3) admissible tractions and stresses" << std::endl;
+  check_admissible("Newton", newton, 5.);
+  check_admissible("initial stiffness", elastic, 5.);
+  return check::summary();
+}
