@@ -16,6 +16,9 @@ Families (each a function below; --only may be repeated):
   disc-tresca      disc-tresca-{rough,smooth}.csv, disc-tresca.png
   capacity         capacity-{footing,torsion,pile,disc}{,-runs}.csv,
                    capacity-error-bars.png (tools/capacity.py)
+  adhesion         capacity-adhesion-<alpha>{,-runs}.csv, pile-adhesion.png,
+                   pile-adhesion-interface-state.png (tools/capacity.py
+                   per adhesion factor)
   pile-lateral-slip  pile-lateral-slip.csv, .png, -interface-state.png
   disc-gap         disc-gap.csv, disc-gap.png
 
@@ -269,6 +272,41 @@ def capacity_error_bars(context):
         "capacity-error-bars.png")})
 
 
+ADHESION_FACTORS = ["0", "0.25", "0.5", "0.75", "1"]
+
+
+def adhesion(context):
+    """doc/soil-plasticity.md section 6b: prm/pile-adhesion.prm (plastic
+    soil and a coulomb shaft of adhesion c = alpha s_u) through
+    tools/capacity.py (two radial refinements, n_max 2, 4, 8) for each
+    alpha; the capacities against alpha; the interface state of the
+    shipped scene (alpha = 0.5)."""
+    produced, plotted = {}, []
+    for alpha in ADHESION_FACTORS:
+        name = "capacity-adhesion-" + alpha
+        work = os.path.join(context.work, name)
+        out = os.path.join(work, "capacity.csv")
+        law = ("5: coulomb, kn=1e6, ks=1e6, c=%g, phi=0, sigma_t=none"
+               % (10.0 * float(alpha)))
+        run_tool(context, name,
+                 ["capacity.py", "prm/pile-adhesion.prm", "--refine", "r",
+                  "--harmonics", "2,4", "--set", "Interfaces/Interfaces=" + law,
+                  "--exe", context.exe, "--work", work, "--csv", out])
+        produced[name + ".csv"] = out
+        produced[name + "-runs.csv"] = os.path.join(work, "capacity-runs.csv")
+        plotted.append("%s:%s" % (alpha, figure(name + ".csv")))
+    install(produced)
+    output = run_scene(context, "pile-adhesion", "prm/pile-adhesion.prm")
+    install({
+        "pile-adhesion.png": plot(context, "plot_adhesion.py",
+                                  ["OUT"] + plotted, "pile-adhesion.png"),
+        "pile-adhesion-interface-state.png": plot(
+            context, "plot_interface_state.py",
+            ["output/pile-adhesion/interface-state.csv", "OUT"],
+            "pile-adhesion-interface-state.png",
+            cwd=os.path.dirname(os.path.dirname(output)))})
+
+
 def pile_lateral_slip(context):
     """doc/nonlinear-interfaces.md section 9: prm/pile-lateral-slip.prm as
     shipped; the curve and the interface state of the last step."""
@@ -301,6 +339,7 @@ FAMILIES = {"footing": footing_capacity,
             "rough-disc-mesh": rough_disc_mesh,
             "disc-tresca": disc_tresca,
             "capacity": capacity_error_bars,
+            "adhesion": adhesion,
             "pile-lateral-slip": pile_lateral_slip,
             "disc-gap": disc_gap}
 
