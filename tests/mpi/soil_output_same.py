@@ -25,8 +25,12 @@ and controlled harmonic). Checks:
     sparse direct solve on its owner (one BLAS thread per process in both
     runs: OPENBLAS_NUM_THREADS=1, set by the ctest). A reduction in another
     order would show here in the last of the 12 digits written.
+With a fifth argument, the scene is prm/pile-adhesion.prm (plastic soil
+and a coulomb shaft, doc/soil-plasticity.md section 6b) with that interface
+law: the relative displacements are summed over the ranks too, and
+interface-state.csv must also be written once and be the same text.
 Usage: soil_output_same.py "MPIEXEC;-np;2;..." FOURIER_SSI_EXE SOURCE_DIR
-       WORK_DIR
+       WORK_DIR [INTERFACE_LAW]
 """
 import os
 import sys
@@ -74,12 +78,18 @@ def same_text(name, one, two, skip_row, skip_columns):
 
 
 def main():
+    scene, overrides, files = ("prm/pile-capacity.prm", OVERRIDES,
+                               {"load-displacement.csv", "results.csv"})
+    if len(sys.argv) > 5:
+        scene = "prm/pile-adhesion.prm"
+        overrides += ("subsection Interfaces\n  set Interfaces = %s\nend\n"
+                      % sys.argv[5])
+        files.add("interface-state.csv")
     outputs = rank_runs.on_one_and_two_ranks(
-        sys.argv, "prm/pile-capacity.prm", OVERRIDES,
+        sys.argv[:5], scene, overrides,
         ("harmonics distributed over 2 MPI ranks: rank 0 "
          "n=0 symmetric n=2 symmetric; rank 1 n=1 symmetric"))
-    failures = rank_runs.wrote_exactly(
-        outputs, {"load-displacement.csv", "results.csv"})
+    failures = rank_runs.wrote_exactly(outputs, files)
     curve = {r: rank_runs.table(os.path.join(outputs[r], "load-displacement.csv"))
              for r in (1, 2)}
     iterations = [int(row["iterations"]) for row in curve[1]]
@@ -95,6 +105,12 @@ def main():
         rank_runs.table(os.path.join(outputs[1], "results.csv")),
         rank_runs.table(os.path.join(outputs[2], "results.csv")),
         lambda row: row["unit"] == "s", set())
+    if "interface-state.csv" in files:
+        failures += same_text(
+            "interface-state.csv",
+            rank_runs.table(os.path.join(outputs[1], "interface-state.csv")),
+            rank_runs.table(os.path.join(outputs[2], "interface-state.csv")),
+            lambda row: False, set())
     print(f"{'FAILED' if failures else 'passed'}: {failures} failure(s)")
     sys.exit(1 if failures else 0)
 
