@@ -32,7 +32,6 @@
 //      the slip surface (f <= 1e-9 c) and the soil's on or inside Tresca.
 #include "soil_test_support.h"
 
-#include <random>
 
 using namespace FourierSSI;
 using namespace soil_test;
@@ -54,22 +53,6 @@ namespace
            "\nend\n" + more;
   }
 
-  std::vector<Vector<double>>
-  random_fields(const HarmonicSet &set, std::mt19937 &rng, const double size)
-  {
-    std::uniform_real_distribution<double> u(-size, size);
-    std::vector<Vector<double>>            fields;
-    for (unsigned int h = 0; h < set.size(); ++h)
-      {
-        Vector<double> x(set.problem(h).get_dof_handler().n_dofs());
-        for (double &v : x)
-          v = u(rng);
-        set.problem(h).get_homogeneous_constraints().distribute(x);
-        fields.push_back(x);
-      }
-    return fields;
-  }
-
   void
   check_derivative()
   {
@@ -79,40 +62,17 @@ namespace
                                  {"Laws", "0: tresca, su=1e6"}},
                        "coulomb, kn=1e4, ks=1e4, c=5, phi=20, sigma_t=0"));
     std::mt19937 rng(11);
-    const auto   u    = random_fields(*run.set, rng, 1e-2);
-    const auto   x    = random_fields(*run.set, rng, 1.);
-    const double e    = 1e-9;
-    auto         plus = u, minus = u;
-    for (unsigned int h = 0; h < u.size(); ++h)
-      {
-        plus[h].add(e, x[h]);
-        minus[h].add(-e, x[h]);
-      }
-    const auto g_plus  = run.solver->out_of_balance_load(plus);
-    const auto g_minus = run.solver->out_of_balance_load(minus);
-    const auto tangent = run.solver->tangent_product(u, x);
-    double     error = 0., softened = 0.;
-    for (unsigned int h = 0; h < u.size(); ++h)
-      {
-        Vector<double> Kx(x[h].size());
-        run.set->problem(h).get_system_matrix().vmult(Kx, x[h]);
-        const auto &constraints = run.set->problem(h).get_constraints();
-        for (unsigned int i = 0; i < Kx.size(); ++i)
-          if (!constraints.is_constrained(i))
-            {
-              const double dG = (g_plus[h][i] - g_minus[h][i]) / (2. * e);
-              error    = std::max(error, std::abs(Kx[i] - dG - tangent[h][i]));
-              softened = std::max(softened, std::abs(dG));
-            }
-      }
+    const auto   u = random_fields(*run.set, rng, 1e-2);
+    const auto   x = random_fields(*run.set, rng, 1.);
+    const auto   m = tangent_mismatch(run, u, x, 1e-9);
     // Only meaningful if the interface softens: dG/du is of the order of
     // the interface stiffness times the shape functions' area.
     check::in_range("max |dG/du x| (the interface softens) [kN/m]",
-                    softened,
+                    m.softened,
                     1.,
                     1e300);
     check::small("max |K_t x - (K x - dG/du x)| / max |dG/du x|",
-                 error / softened,
+                 m.error / m.softened,
                  1e-6);
   }
 

@@ -20,29 +20,12 @@
 //      with backtracking; the initial-stiffness iteration takes 60-170).
 #include "soil_test_support.h"
 
-#include <random>
 
 using namespace FourierSSI;
 using namespace soil_test;
 
 namespace
 {
-  std::vector<Vector<double>>
-  random_fields(const HarmonicSet &set, std::mt19937 &rng, const double size)
-  {
-    std::uniform_real_distribution<double> u(-size, size);
-    std::vector<Vector<double>>            fields;
-    for (unsigned int h = 0; h < set.size(); ++h)
-      {
-        Vector<double> x(set.problem(h).get_dof_handler().n_dofs());
-        for (double &v : x)
-          v = u(rng);
-        set.problem(h).get_homogeneous_constraints().distribute(x);
-        fields.push_back(x);
-      }
-    return fields;
-  }
-
   void
   check_derivative()
   {
@@ -55,39 +38,14 @@ namespace
     std::mt19937 rng(7);
     // Cells of 0.1-0.5 m: DoF values of 5e-3 m give strains of about
     // 1e-2 - 5e-2, 3-15 times s_u / G = 1/300.
-    const auto   u    = random_fields(*run.set, rng, 5e-3);
-    const auto   x    = random_fields(*run.set, rng, 1.);
-    const double e    = 1e-9;
-    auto         plus = u, minus = u;
-    for (unsigned int h = 0; h < u.size(); ++h)
-      {
-        plus[h].add(e, x[h]);
-        minus[h].add(-e, x[h]);
-      }
-    const auto g_plus  = run.solver->out_of_balance_load(plus);
-    const auto g_minus = run.solver->out_of_balance_load(minus);
-    const auto tangent = run.solver->tangent_product(u, x);
-    double     error = 0., norm = 0.;
-    double     softened = 0.;
-    for (unsigned int h = 0; h < u.size(); ++h)
-      {
-        Vector<double> Kx(x[h].size());
-        run.set->problem(h).get_system_matrix().vmult(Kx, x[h]);
-        const auto &constraints = run.set->problem(h).get_constraints();
-        for (unsigned int i = 0; i < Kx.size(); ++i)
-          if (!constraints.is_constrained(i))
-            {
-              const double dG = (g_plus[h][i] - g_minus[h][i]) / (2. * e);
-              error    = std::max(error, std::abs(Kx[i] - dG - tangent[h][i]));
-              norm     = std::max(norm, std::abs(tangent[h][i]));
-              softened = std::max(softened, std::abs(dG));
-            }
-      }
+    const auto u = random_fields(*run.set, rng, 5e-3);
+    const auto x = random_fields(*run.set, rng, 1.);
+    const auto m = tangent_mismatch(run, u, x, 1e-9);
     // The check means something only if the plastic part is large.
-    std::cout << "  max |dG/du x| / max |K_t x| = " << softened / norm
+    std::cout << "  max |dG/du x| / max |K_t x| = " << m.softened / m.tangent
               << std::endl;
     check::small("max |K_t x - (K x - dG/du x)| / max |dG/du x|",
-                 error / softened,
+                 m.error / m.softened,
                  1e-6);
   }
 

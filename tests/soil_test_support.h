@@ -11,6 +11,7 @@
 #include <fourier_ssi/coupled_soil_solver.h>
 #include <fourier_ssi/harmonic_set.h>
 #include <fourier_ssi/scene_plan.h>
+#include <random>
 #include <regex>
 
 namespace soil_test
@@ -133,6 +134,72 @@ namespace soil_test
               << " %" << std::endl;
     check::relative(name + " N_c vs the published limit", Nc, reference, 0.02);
     check_equilibrium_and_yield(name + " ", steps, su);
+  }
+
+  /** Random fields of every harmonic in [-size, size], constraints kept. */
+  inline std::vector<Vector<double>>
+  random_fields(const HarmonicSet &set, std::mt19937 &rng, const double size)
+  {
+    std::uniform_real_distribution<double> u(-size, size);
+    std::vector<Vector<double>>            fields;
+    for (unsigned int h = 0; h < set.size(); ++h)
+      {
+        Vector<double> x(set.problem(h).get_dof_handler().n_dofs());
+        for (double &v : x)
+          v = u(rng);
+        set.problem(h).get_homogeneous_constraints().distribute(x);
+        fields.push_back(x);
+      }
+    return fields;
+  }
+
+  /** How far the coupled tangent is from differences of the load. */
+  struct TangentMismatch
+  {
+    /** max |K_t x - (K x - dG/du x)| over the unconstrained DoFs. */
+    double error = 0.;
+    /** max |dG/du x| and max |K_t x|. */
+    double softened = 0., tangent = 0.;
+  };
+
+  /**
+   * The coupled tangent at u applied to x against K x minus the central
+   * difference (G(u + e x) - G(u - e x)) / 2e of the out-of-balance load:
+   * only the return mapping and the projection are shared.
+   */
+  inline TangentMismatch
+  tangent_mismatch(Run                               &run,
+                   const std::vector<Vector<double>> &u,
+                   const std::vector<Vector<double>> &x,
+                   const double                       e)
+  {
+    auto plus = u, minus = u;
+    for (unsigned int h = 0; h < u.size(); ++h)
+      {
+        plus[h].add(e, x[h]);
+        minus[h].add(-e, x[h]);
+      }
+    const auto      g_plus  = run.solver->out_of_balance_load(plus);
+    const auto      g_minus = run.solver->out_of_balance_load(minus);
+    const auto      tangent = run.solver->tangent_product(u, x);
+    TangentMismatch result;
+    for (unsigned int h = 0; h < u.size(); ++h)
+      {
+        Vector<double> Kx(x[h].size());
+        run.set->problem(h).get_system_matrix().vmult(Kx, x[h]);
+        const auto &constraints = run.set->problem(h).get_constraints();
+        for (unsigned int i = 0; i < Kx.size(); ++i)
+          if (!constraints.is_constrained(i))
+            {
+              const double dG = (g_plus[h][i] - g_minus[h][i]) / (2. * e);
+              result.error =
+                std::max(result.error, std::abs(Kx[i] - dG - tangent[h][i]));
+              result.tangent =
+                std::max(result.tangent, std::abs(tangent[h][i]));
+              result.softened = std::max(result.softened, std::abs(dG));
+            }
+      }
+    return result;
   }
 } // namespace soil_test
 
