@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cmath>
 #include <deal.II/grid/grid_tools.h>
 #include <fourier_ssi/discretization_design.h>
 
@@ -109,6 +110,37 @@ namespace FourierSSI
       refine_a_priori(triangulation,
                       refinements(parameters, member),
                       interface_ids);
+    }
+
+    void
+    build_plastic_member(const AllParameters                &parameters,
+                         const unsigned int                  member,
+                         const std::set<types::boundary_id> &interface_ids,
+                         Triangulation<2>                   &triangulation)
+    {
+      MeshBuilder        mesh   = parameters.mesh;
+      const unsigned int split  = 1u << member;
+      const auto         refine = [&](std::vector<unsigned int> &cells,
+                              std::vector<double>       &growth) {
+        for (unsigned int &c : cells)
+          c *= split;
+        for (double &g : growth)
+          g = std::pow(g, 1. / split);
+      };
+      if (mesh.type == "rectangle")
+        {
+          refine(mesh.r_cells, mesh.r_growth);
+          unsigned int z_cells = 0;
+          for (const unsigned int c : mesh.z_cells)
+            z_cells += c;
+          if (z_cells > 1 || mesh.global_refinements > 0)
+            refine(mesh.z_cells, mesh.z_growth);
+        }
+      else
+        mesh.global_refinements += member;
+      triangulation.clear();
+      mesh.build(triangulation);
+      refine_a_priori(triangulation, parameters.adaptivity, interface_ids);
     }
 
     bool

@@ -75,8 +75,13 @@ namespace FourierSSI
                       "unconverged). Replaces Polynomial degree, "
                       "Refinement cycles and Mesh/Global refinements; Point, "
                       "Box and Layer refinement "
-                      "are applied in addition. Empty: the mesh as given "
-                      "(doc/accuracy-vs-time.md).");
+                      "are applied in addition. With plastic soil "
+                      "(displacement control) the goal is the capacity: the "
+                      "scene's mesh and element refined globally until the "
+                      "mesh, harmonic-truncation and plateau errors together "
+                      "are below the target "
+                      "(doc/soil-plasticity.md section 8c). Empty: the mesh "
+                      "as given (doc/accuracy-vs-time.md).");
     prm.leave_subsection();
   }
 
@@ -116,8 +121,9 @@ namespace FourierSSI
     AssertThrow(automatic || !harmonics.empty(),
                 ExcMessage("Discretization/Harmonics: empty; write 'auto' or "
                            "a list such as '0, 1'"));
-    degree     = prm.get_integer("Polynomial degree");
-    volumetric = prm.get("Volumetric strain");
+    degree           = prm.get_integer("Polynomial degree");
+    requested_degree = degree;
+    volumetric       = prm.get("Volumetric strain");
     AssertThrow(volumetric != "bbar" || degree == 2,
                 ExcMessage("Discretization/Volumetric strain = bbar needs "
                            "Polynomial degree = 2"));
@@ -141,7 +147,8 @@ namespace FourierSSI
         AssertThrow(target_accuracy > 0. && target_accuracy < 1.,
                     ExcMessage(error));
         // The designed discretization is FE_Q(4) (its grading pairs with
-        // the 10-node interface element; FE_Q(4) does not lock).
+        // the 10-node interface element; FE_Q(4) does not lock); plastic
+        // soil keeps the scene's element (AllParameters::parse_parameters).
         AssertThrow(volumetric != "bbar",
                     ExcMessage("Discretization/Target accuracy: designs "
                                "FE_Q(4) meshes, and Volumetric strain = bbar "
@@ -327,6 +334,12 @@ namespace FourierSSI
     rigid_foundation.parse_parameters(prm);
     adaptivity.parse_parameters(prm);
     loads.parse_parameters(prm);
+    // Plastic soil with a target: the scene's element on the scene's mesh
+    // refined globally (FE_Q(2) with B-bar for undrained soil, section 4 of
+    // doc/soil-plasticity.md), not the FE_Q(4) design.
+    soil_plasticity.parse_parameters(prm);
+    if (discretization.target_accuracy > 0. && soil_plasticity.any())
+      discretization.degree = discretization.requested_degree;
     mesh.degree                         = discretization.degree;
     discretization.volumetric_automatic = discretization.volumetric == "auto";
     if (discretization.volumetric_automatic)
@@ -337,7 +350,6 @@ namespace FourierSSI
           "standard";
     initial_stress.parse_parameters(prm);
     nonlinear_interfaces.parse_parameters(prm);
-    soil_plasticity.parse_parameters(prm);
     for (const auto &law : soil_plasticity.laws)
       AssertThrow(materials.has(law.first),
                   ExcMessage("Soil plasticity/Laws: material " +
@@ -354,13 +366,16 @@ namespace FourierSSI
                     ExcMessage("Discretization/Target accuracy: refines by "
                                "its own design; leave Adaptivity/Strategy = "
                                "global"));
-        AssertThrow(!interfaces.any_nonlinear(),
+        AssertThrow(!interfaces.any_nonlinear() || soil_plasticity.any(),
                     ExcMessage("Discretization/Target accuracy: not yet "
-                               "available with coulomb interfaces"));
-        AssertThrow(soil_plasticity.laws.empty(),
-                    ExcMessage("Discretization/Target accuracy: not yet "
-                               "available with plastic soil (Soil "
-                               "plasticity/Laws)"));
+                               "available with coulomb interfaces on "
+                               "elastic soil"));
+        AssertThrow(!soil_plasticity.any() ||
+                      nonlinear_interfaces.control ==
+                        NonlinearInterfaceParameters::Control::displacement,
+                    ExcMessage("Discretization/Target accuracy: with plastic "
+                               "soil the goal is the capacity, which needs "
+                               "Nonlinear interfaces/Control = displacement"));
       }
     for (const auto &[id, e] : loads.displacement)
       AssertThrow(boundary_conditions.dirichlet.count(id) == 0,

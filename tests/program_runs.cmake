@@ -84,6 +84,27 @@ add_test(NAME program_target_accuracy_unreachable
           -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/target_unreachable
           -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_unconverged.cmake)
 
+# Plastic soil: the capacity of prm/pile-capacity.prm asked to 1e-2, below
+# what its n <= 8 truncation allows (2.2e-2 measured): one line naming the
+# parts the mesh cannot lower, non-zero exit, results marked (about 10 s);
+# and the same with a work bound that stops the meshes first.
+add_test(NAME program_capacity_target_harmonics_unreachable
+  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi>
+          -DPRM=${CMAKE_SOURCE_DIR}/prm/pile-capacity.prm
+          -DAPPEND=${CMAKE_CURRENT_SOURCE_DIR}/accuracy/capacity_target_1e-2.prm
+          -DGOAL=capacity_H
+          "-DEXPECTED=Discretization/Target accuracy 0.01 not reached: estimated relative error of the capacity [0-9.e+-]+, of which the harmonic truncation \\(n <= 8\\) [0-9.e+-]+ and the plateau [0-9.e+-]+ do not fall with the mesh"
+          -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/capacity_target_harmonics
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_unconverged.cmake)
+add_test(NAME program_capacity_target_dofs_unreachable
+  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi>
+          -DPRM=${CMAKE_SOURCE_DIR}/prm/pile-capacity.prm
+          -DAPPEND=${CMAKE_CURRENT_SOURCE_DIR}/accuracy/capacity_target_dofs.prm
+          -DGOAL=capacity_H
+          "-DEXPECTED=Discretization/Target accuracy 0.01 not reached: estimated relative error of the capacity unknown \\(one mesh solved\\) with [0-9]+ DoFs \\(all harmonics\\); the next mesh \\(about [0-9]+\\) exceeds Adaptivity/Maximum DoFs = 5000"
+          -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/capacity_target_dofs
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_unconverged.cmake)
+
 # Plastic soil: a load step that does not converge stops with one line
 # naming Soil plasticity, non-zero exit, no result file (serial only, as
 # the interface case above).

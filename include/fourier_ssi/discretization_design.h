@@ -75,6 +75,21 @@ namespace FourierSSI
     bool
     coarsen_once(Triangulation<2>                   &triangulation,
                  const std::set<types::boundary_id> &interface_ids);
+    /**
+     * Member `member` of a plastic scene with a target
+     * (doc/soil-plasticity.md section 8c): the scene's own mesh and element
+     * with 2^member times the cells of each segment of a rectangle mesh,
+     * each growth ratio raised to 2^-member (two fine cells fill one
+     * coarse cell: nested, tools/capacity.py's family), in r, and in z
+     * only where the scene has more than one cell in z (a one-cell slice
+     * between smooth planes is exact in z). A gmsh mesh is refined
+     * globally. Then the scene's a priori refinements.
+     */
+    void
+    build_plastic_member(const AllParameters                &parameters,
+                         const unsigned int                  member,
+                         const std::set<types::boundary_id> &interface_ids,
+                         Triangulation<2>                   &triangulation);
   } // namespace DiscretizationDesign
 } // namespace FourierSSI
 

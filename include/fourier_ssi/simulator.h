@@ -31,6 +31,7 @@
 namespace FourierSSI
 {
   class CoupledInterfaceSolver;
+  class CoupledSoilSolver;
 
   class Simulator
   {
@@ -158,6 +159,38 @@ namespace FourierSSI
      */
     void
     solve_plastic_soil(std::ostream &log);
+
+    /**
+     * The HarmonicSet of plan.harmonics on the current mesh and the plastic
+     * curve on it; with keep_incomplete, the converged steps of a curve
+     * that fails are written to load-displacement-incomplete.csv.
+     */
+    std::unique_ptr<CoupledSoilSolver>
+    solve_plastic_curve(std::ostream &log, const bool keep_incomplete);
+
+    /** A plastic curve's rows (steps, plastic state, capacity). */
+    void
+    add_plastic_rows(const CoupledSoilSolver &solver, std::ostream &log);
+
+    /** Its CSV files and results.csv. */
+    void
+    write_plastic_files(const CoupledSoilSolver &solver, std::ostream &log);
+
+    /**
+     * Target accuracy with plastic soil: the capacity on the scene's mesh
+     * refined globally until its estimated error (mesh + harmonic
+     * truncation + plateau) is below the target (doc/soil-plasticity.md
+     * section 8c).
+     */
+    void
+    solve_plastic_soil_to_target(std::ostream &log);
+
+    /**
+     * The capacities on the current mesh with the harmonics n <= n_max / 4
+     * and n_max / 2 (those that keep n = 1 and differ), ascending n.
+     */
+    std::vector<double>
+    capacities_with_fewer_harmonics(std::ostream &log);
 
     /** Set up, assemble, solve and post-process every harmonic. */
     void
