@@ -75,13 +75,15 @@ namespace FourierSSI
                       "unconverged). Replaces Polynomial degree, "
                       "Refinement cycles and Mesh/Global refinements; Point, "
                       "Box and Layer refinement "
-                      "are applied in addition. With plastic soil "
-                      "(displacement control) the goal is the capacity: the "
-                      "scene's mesh and element refined globally until the "
-                      "mesh, harmonic-truncation and plateau errors together "
-                      "are below the target "
-                      "(doc/soil-plasticity.md section 8c). Empty: the mesh "
-                      "as given (doc/accuracy-vs-time.md).");
+                      "are applied in addition. With plastic soil or a "
+                      "coulomb interface (displacement control) the goal is "
+                      "the load at the end of the path (with plastic soil "
+                      "the capacity): the scene's own mesh and element with "
+                      "the cells doubled per member, until the mesh, "
+                      "harmonic-truncation and plateau errors together are "
+                      "below the target (doc/soil-plasticity.md section "
+                      "8c). Empty: the mesh as given "
+                      "(doc/accuracy-vs-time.md).");
     prm.leave_subsection();
   }
 
@@ -334,11 +336,12 @@ namespace FourierSSI
     rigid_foundation.parse_parameters(prm);
     adaptivity.parse_parameters(prm);
     loads.parse_parameters(prm);
-    // Plastic soil with a target: the scene's element on the scene's mesh
-    // refined globally (FE_Q(2) with B-bar for undrained soil, section 4 of
-    // doc/soil-plasticity.md), not the FE_Q(4) design.
+    // A coupled scene (plastic soil, coulomb interfaces) with a target: the
+    // scene's element on the scene's mesh refined (FE_Q(2) with B-bar for
+    // undrained soil, section 4 of doc/soil-plasticity.md), not the FE_Q(4)
+    // design.
     soil_plasticity.parse_parameters(prm);
-    if (discretization.target_accuracy > 0. && soil_plasticity.any())
+    if (discretization.target_accuracy > 0. && coupled())
       discretization.degree = discretization.requested_degree;
     mesh.degree                         = discretization.degree;
     discretization.volumetric_automatic = discretization.volumetric == "auto";
@@ -366,16 +369,14 @@ namespace FourierSSI
                     ExcMessage("Discretization/Target accuracy: refines by "
                                "its own design; leave Adaptivity/Strategy = "
                                "global"));
-        AssertThrow(!interfaces.any_nonlinear() || soil_plasticity.any(),
-                    ExcMessage("Discretization/Target accuracy: not yet "
-                               "available with coulomb interfaces on "
-                               "elastic soil"));
-        AssertThrow(!soil_plasticity.any() ||
+        AssertThrow(!coupled() ||
                       nonlinear_interfaces.control ==
                         NonlinearInterfaceParameters::Control::displacement,
                     ExcMessage("Discretization/Target accuracy: with plastic "
-                               "soil the goal is the capacity, which needs "
-                               "Nonlinear interfaces/Control = displacement"));
+                               "soil or a coulomb interface the goal is the "
+                               "load at the end of the controlled path, "
+                               "which needs Nonlinear interfaces/Control = "
+                               "displacement"));
       }
     for (const auto &[id, e] : loads.displacement)
       AssertThrow(boundary_conditions.dirichlet.count(id) == 0,

@@ -145,11 +145,10 @@ namespace FourierSSI
     interface_ids.clear();
     for (const auto &[id, law] : parameters.interfaces.laws)
       interface_ids.insert(id);
-    // Plastic soil with a target refines the scene's own mesh
-    // (solve_plastic_soil_to_target); the FE_Q(4) design is for the
-    // linear scenes.
-    if (parameters.discretization.target_accuracy > 0. &&
-        !parameters.soil_plasticity.any())
+    // A coupled scene with a target refines its own mesh
+    // (solve_coupled_to_target); the FE_Q(4) design is for the linear
+    // scenes.
+    if (parameters.discretization.target_accuracy > 0. && !parameters.coupled())
       DiscretizationDesign::build_member(parameters,
                                          0,
                                          interface_ids,

@@ -44,42 +44,98 @@ namespace FourierSSI
   Simulator::solve_nonlinear_interfaces(std::ostream &log)
   {
     check_supported(parameters, communicator);
+    std::unique_ptr<CoupledInterfaceSolver> solver;
+    CoupledCurveRun                         run;
+    run.goal_prefix = "end_load_";
+    run.solve       = [&](std::ostream &out) {
+      solver.reset();
+      solver            = solve_interface_curve(out, false);
+      const auto &steps = solver->get_steps();
+      AssertThrow(!steps.empty(),
+                  ExcMessage("Discretization/Target accuracy: no converged "
+                                   "step"));
+      const NamedLoad load =
+        conjugate_load(solver->applied_loads(steps.back().load_factor),
+                       parameters.rigid_foundation,
+                       parameters.nonlinear_interfaces.motion);
+      return CoupledGoal{load.name,
+                         load.unit,
+                         load.value,
+                         0.,
+                         static_cast<unsigned int>(steps.size())};
+    };
+    run.release     = [&]() { solver.reset(); };
+    run.add_rows    = [&](std::ostream &) { add_interface_rows(*solver); };
+    run.write_files = [&](std::ostream &out) {
+      write_interface_files(*solver, out);
+    };
+    if (parameters.discretization.target_accuracy > 0.)
+      {
+        solve_coupled_to_target(log, run);
+        return;
+      }
+    solver = solve_interface_curve(log, true);
+    run.add_rows(log);
+    run.write_files(log);
+  }
+
+  std::unique_ptr<CoupledInterfaceSolver>
+  Simulator::solve_interface_curve(std::ostream &log,
+                                   const bool    keep_incomplete)
+  {
     Timer timer;
     make_distributed_harmonic_set();
     log << "assembled and factorized " << harmonic_set->size()
         << " harmonics in " << timer.wall_time() << " s" << std::endl;
     log_harmonic_distribution(log);
-    CoupledInterfaceSolver solver(*harmonic_set, parameters);
-    const std::string      directory = parameters.output.directory;
+    auto solver =
+      std::make_unique<CoupledInterfaceSolver>(*harmonic_set, parameters);
     // Keep the converged steps, marked as such by the file name (not in
     // `written`: a failed run removes its results, not this record).
-    run_keeping_converged_steps(
-      solver,
-      log,
-      writes_csv() ? directory + "/load-displacement-incomplete.csv" : "");
-    log << "coupled solve: " << solver.get_steps().size() << " steps in "
+    run_keeping_converged_steps(*solver,
+                                log,
+                                keep_incomplete && writes_csv() ?
+                                  parameters.output.directory +
+                                    "/load-displacement-incomplete.csv" :
+                                  "");
+    log << "coupled solve: " << solver->get_steps().size() << " steps in "
         << timer.wall_time() << " s" << std::endl;
+    return solver;
+  }
+
+  void
+  Simulator::add_interface_rows(const CoupledInterfaceSolver &solver)
+  {
     add_load_step_rows(solver, results);
     keep_last_step(solver);
+  }
+
+  void
+  Simulator::write_interface_files(const CoupledInterfaceSolver &solver,
+                                   std::ostream                 &log)
+  {
     if (!writes_csv())
       return;
-    const std::string curve = directory + "/load-displacement.csv";
-    written.push_back(curve);
-    solver.write_csv(curve);
-    log << "load-displacement curve written to " << curve << std::endl;
-    const std::string state = directory + "/interface-state.csv";
-    written.push_back(state);
-    solver.write_interface_state_csv(state);
-    log << "interface state (point x theta x step) written to " << state
-        << std::endl;
-    if (parameters.output.write_3d_vtu)
-      {
-        const std::string vtu = directory + "/interface-state-3d.vtu";
-        written.push_back(vtu);
-        solver.write_interface_state_vtu(vtu);
-        log << "interface state of the last step (3D points) written to " << vtu
-            << std::endl;
-      }
+    {
+      const std::string directory = parameters.output.directory;
+      const std::string curve     = directory + "/load-displacement.csv";
+      written.push_back(curve);
+      solver.write_csv(curve);
+      log << "load-displacement curve written to " << curve << std::endl;
+      const std::string state = directory + "/interface-state.csv";
+      written.push_back(state);
+      solver.write_interface_state_csv(state);
+      log << "interface state (point x theta x step) written to " << state
+          << std::endl;
+      if (parameters.output.write_3d_vtu)
+        {
+          const std::string vtu = directory + "/interface-state-3d.vtu";
+          written.push_back(vtu);
+          solver.write_interface_state_vtu(vtu);
+          log << "interface state of the last step (3D points) written to "
+              << vtu << std::endl;
+        }
+    }
     // Lines 3D, the revolved 3D VTU and the results, as a linear run.
     write_output(log);
   }

@@ -18,13 +18,6 @@ namespace FourierSSI
   {
     const std::string entry = "Soil plasticity";
 
-    /**
-     * Target accuracy: the ratio of the capacity's changes per doubling of
-     * n_max where fewer than three values cannot show it; the capacity
-     * studies measured 0.27-0.46 (doc/soil-plasticity.md 8b).
-     */
-    constexpr double harmonic_doubling_ratio = 0.5;
-
     /** What the plastic-soil path does not do yet: one line each. */
     void
     check_supported(const AllParameters &parameters, const MPI_Comm comm)
@@ -203,22 +196,6 @@ namespace FourierSSI
           << std::endl;
     }
 
-    /**
-     * Target accuracy: the harmonic sets n <= n_max / 4 and n_max / 2
-     * whose capacities, with the scene's, give the truncation error (only
-     * those that keep the loaded harmonics, n <= 1, and differ from the
-     * scene's).
-     */
-    std::vector<unsigned int>
-    truncations(const std::vector<Harmonic> &harmonics)
-    {
-      const unsigned int        n_max = highest_harmonic(harmonics);
-      std::vector<unsigned int> result;
-      for (const unsigned int n : {n_max / 4, n_max / 2})
-        if (n >= 1 && n < n_max && (result.empty() || result.back() != n))
-          result.push_back(n);
-      return result;
-    }
   } // namespace
 
   void
@@ -293,213 +270,33 @@ namespace FourierSSI
     log << "results written to " << name << std::endl;
   }
 
-  std::vector<double>
-  Simulator::capacities_with_fewer_harmonics(std::ostream &log)
-  {
-    const std::vector<Harmonic> all = plan.harmonics;
-    std::vector<double>         values;
-    for (const unsigned int n_max : truncations(all))
-      {
-        plan.harmonics.clear();
-        for (const Harmonic &h : all)
-          if (h.n <= n_max)
-            plan.harmonics.push_back(h);
-        // Its own log: the study's curves are not the answer's.
-        std::ostringstream study_log;
-        try
-          {
-            const auto solver = solve_plastic_curve(study_log, false);
-            values.push_back(capacity_of(*solver, parameters).load.value);
-          }
-        catch (...)
-          {
-            plan.harmonics = all;
-            throw;
-          }
-        plan.harmonics = all;
-        harmonic_set.reset();
-        log << "  harmonics n <= " << n_max << ": capacity " << values.back()
-            << std::endl;
-      }
-    return values;
-  }
-
   void
   Simulator::solve_plastic_soil_to_target(std::ostream &log)
   {
-    // Members: the scene's mesh and element refined globally k times (the
-    // error at bonded corners and shear bands falls by about one halving
-    // per member); on member 0 the harmonic truncation (n_max / 4, n_max /
-    // 2, n_max); on every member the plateau's error. The answer is the
-    // last member's capacity (doc/soil-plasticity.md section 8c).
-    const double        target = parameters.discretization.target_accuracy;
-    Timer               run_timer;
-    double              last_member_time = 0.;
-    std::vector<double> mesh_values, harmonic_values;
     std::unique_ptr<CoupledSoilSolver> solver;
-    Capacity                           capacity;
-    double                             harmonic_error = 0., mesh_error = 0.;
-    bool                               harmonics_estimated = false;
-    for (unsigned int member = 0;; ++member)
-      {
-        if (member > 0)
-          {
-            // The coupled tangent is one LU over all harmonics: their DoFs
-            // together are what Maximum DoFs bounds here.
-            double dofs = 0.;
-            for (unsigned int h = 0; h < harmonic_set->size(); ++h)
-              dofs += harmonic_set->problem(h).get_dof_handler().n_dofs();
-            Triangulation<2> next;
-            DiscretizationDesign::build_plastic_member(parameters,
-                                                       member,
-                                                       interface_ids,
-                                                       next);
-            const double growth = static_cast<double>(next.n_active_cells()) /
-                                  triangulation.n_active_cells();
-            if (growth * dofs > parameters.adaptivity.maximum_dofs)
-              {
-                std::ostringstream line;
-                line << "Discretization/Target accuracy " << target
-                     << " not reached: estimated relative error of the "
-                        "capacity ";
-                if (mesh_values.size() >= 2)
-                  line << std::setprecision(2)
-                       << (mesh_error + harmonic_error +
-                           capacity.plateau_error) /
-                            std::abs(capacity.load.value);
-                else
-                  line << "unknown (one mesh solved)";
-                line << " with " << static_cast<long long>(dofs)
-                     << " DoFs (all harmonics); the next mesh (about "
-                     << static_cast<long long>(growth * dofs)
-                     << ") exceeds Adaptivity/Maximum DoFs = "
-                     << std::setprecision(6)
-                     << parameters.adaptivity.maximum_dofs;
-                target_not_reached = line.str();
-                log << target_not_reached << std::endl;
-                break;
-              }
-            solver.reset();
-            reconstruction = FieldReconstruction();
-            harmonic_set.reset();
-            outcomes.clear();
-            DiscretizationDesign::build_plastic_member(parameters,
-                                                       member,
-                                                       interface_ids,
-                                                       triangulation);
-          }
-        Timer member_timer;
-        log << "target accuracy " << target << ": mesh " << member << ", "
-            << triangulation.n_active_cells() << " cells" << std::endl;
-        if (member == 0)
-          {
-            // The truncation on the coarsest mesh: cheap, and the
-            // harmonics' share of the error changes little with the mesh
-            // (doc/soil-plasticity.md 8b).
-            harmonic_values = capacities_with_fewer_harmonics(log);
-          }
-        solver = solve_plastic_curve(log, false);
-        AssertThrow(has_capacity(*solver, parameters),
-                    ExcMessage("Discretization/Target accuracy: the curve "
-                               "has fewer than two steps (Nonlinear "
-                               "interfaces/Load steps)"));
-        capacity = capacity_of(*solver, parameters);
-        mesh_values.push_back(capacity.load.value);
-        last_member_time = member_timer.wall_time();
-        if (!std::isfinite(capacity.plateau_error))
-          {
-            target_not_reached =
-              "Discretization/Target accuracy " +
-              (std::ostringstream() << target).str() +
-              " not reached: the curve does not bend over by its end "
-              "(no plateau: raise Nonlinear interfaces/Target)";
-            log << target_not_reached << std::endl;
-            break;
-          }
-        if (member == 0)
-          {
-            harmonic_values.push_back(capacity.load.value);
-            harmonics_estimated = harmonic_values.size() >= 2;
-            if (harmonics_estimated)
-              harmonic_error = estimate_sequence_error(harmonic_values,
-                                                       harmonic_doubling_ratio)
-                                 .absolute;
-            continue; // two meshes are needed for the mesh error
-          }
-        mesh_error =
-          estimate_sequence_error(mesh_values, one_halving_ratio).absolute;
-        const double total =
-          (mesh_error + harmonic_error + capacity.plateau_error) /
-          std::abs(capacity.load.value);
-        log << "target accuracy " << target << ": mesh " << member
-            << ", estimated relative error of the capacity "
-            << std::setprecision(2) << total << std::setprecision(6)
-            << std::endl;
-        if (total <= target)
-          break;
-        // What a finer mesh cannot lower: stop, saying which.
-        const double fixed = (harmonic_error + capacity.plateau_error) /
-                             std::abs(capacity.load.value);
-        if (fixed > target)
-          {
-            std::ostringstream line;
-            line << "Discretization/Target accuracy " << target
-                 << " not reached: estimated relative error of the capacity "
-                 << std::setprecision(2) << total
-                 << ", of which the harmonic truncation (n <= "
-                 << highest_harmonic(plan.harmonics) << ") "
-                 << harmonic_error / std::abs(capacity.load.value)
-                 << " and the plateau "
-                 << capacity.plateau_error / std::abs(capacity.load.value)
-                 << " do not fall with the mesh: list more harmonics "
-                    "(Discretization/Harmonics) or take the path further "
-                    "(Nonlinear interfaces/Target)";
-            target_not_reached = line.str();
-            log << target_not_reached << std::endl;
-            break;
-          }
-      }
-    estimate_wall_time = run_timer.wall_time() - last_member_time;
-    // The answer (the last member's curve), its error bar, the files.
-    add_plastic_rows(*solver, log);
-    const NamedLoad &load  = capacity.load;
-    const double     scale = std::abs(load.value);
-    const bool       two   = mesh_values.size() >= 2;
-    const double     total =
-      two ? (mesh_error + harmonic_error + capacity.plateau_error) / scale :
-                std::numeric_limits<double>::quiet_NaN();
-    const bool         reached = target_not_reached.empty() && total <= target;
-    const Harmonic     any{0, Family::symmetric};
-    const unsigned int step = solver->get_steps().size();
-    const std::string  name = "capacity_" + load.name;
-    log << "error estimate of the capacity (relative; the mesh from "
-        << mesh_values.size() << " nested meshes, geometric tail; the "
-        << "harmonics "
-        << (harmonics_estimated ? "from n_max halved on the coarsest mesh" :
-            highest_harmonic(plan.harmonics) == 0 ?
-                                  "none (n = 0 only: an axisymmetric problem)" :
-                                  "NOT estimated (n_max = 1 cannot be halved)")
-        << "; the plateau):\n    " << load.name << " = " << std::setprecision(7)
-        << load.value << " " << load.unit << " \u00b1 " << std::setprecision(2)
-        << total << " (rel): mesh "
-        << (two ? mesh_error / scale : std::numeric_limits<double>::quiet_NaN())
-        << ", harmonics " << harmonic_error / scale << ", plateau "
-        << capacity.plateau_error / scale << std::setprecision(6) << std::endl;
-    results.add(name + "_error", any, step, total, "-");
-    results.add(name + "_error_mesh",
-                any,
-                step,
-                two ? mesh_error / scale :
-                      std::numeric_limits<double>::quiet_NaN(),
-                "-");
-    results.add(
-      name + "_error_harmonics", any, step, harmonic_error / scale, "-");
-    results.add(
-      name + "_error_plateau", any, step, capacity.plateau_error / scale, "-");
-    results.add(name + "_converged", any, step, reached ? 1. : 0., "-");
-    results.add("target_accuracy", any, step, target, "-");
-    results.add("target_accuracy_reached", any, step, reached ? 1. : 0., "-");
-    results.add("time_error_estimate", any, step, estimate_wall_time, "s");
-    write_plastic_files(*solver, log);
+    CoupledCurveRun                    run;
+    run.goal_prefix = "capacity_";
+    run.plateau     = true;
+    run.solve       = [&](std::ostream &out) {
+      solver.reset();
+      solver = solve_plastic_curve(out, false);
+      AssertThrow(has_capacity(*solver, parameters),
+                  ExcMessage("Discretization/Target accuracy: the curve "
+                                   "has fewer than two steps (Nonlinear "
+                                   "interfaces/Load steps)"));
+      const Capacity c = capacity_of(*solver, parameters);
+      return CoupledGoal{c.load.name,
+                         c.load.unit,
+                         c.load.value,
+                         c.plateau_error,
+                         static_cast<unsigned int>(solver->get_steps().size())};
+    };
+    run.release  = [&]() { solver.reset(); };
+    run.add_rows = [&](std::ostream &out) { add_plastic_rows(*solver, out); };
+    run.write_files = [&](std::ostream &out) {
+      write_plastic_files(*solver, out);
+    };
+    solve_coupled_to_target(log, run);
   }
+
 } // namespace FourierSSI

@@ -112,6 +112,16 @@ namespace FourierSSI
 
   struct AllParameters
   {
+    /**
+     * Plastic soil or a coulomb interface: the harmonics are coupled
+     * through theta and solved together along a load path.
+     */
+    bool
+    coupled() const
+    {
+      return soil_plasticity.any() || interfaces.any_nonlinear();
+    }
+
     AllParameters();
 
     static void

@@ -185,12 +185,73 @@ namespace FourierSSI
     void
     solve_plastic_soil_to_target(std::ostream &log);
 
+    /** The goal value of a coupled load path on one mesh. */
+    struct CoupledGoal
+    {
+      /** The load that works on the controlled motion: H, V, M or T. */
+      std::string name, unit;
+      double      value = 0.;
+      /** The rise to the asymptote (capacity runs; 0 otherwise). */
+      double plateau_error = 0.;
+      /** Converged steps: the row (cycle) of the goal in results.csv. */
+      unsigned int steps = 0;
+    };
+
     /**
-     * The capacities on the current mesh with the harmonics n <= n_max / 4
-     * and n_max / 2 (those that keep n = 1 and differ), ascending n.
+     * What the target loop needs from a coupled solver: solve the curve on
+     * the current mesh and plan.harmonics (the solver kept), release it
+     * (before the mesh or the set change), its rows and files.
+     */
+    struct CoupledCurveRun
+    {
+      std::function<CoupledGoal(std::ostream &)> solve;
+      std::function<void()>                      release;
+      std::function<void(std::ostream &)>        add_rows, write_files;
+      /** Row name of the goal: "capacity_" or "end_load_". */
+      std::string goal_prefix;
+      /** The goal is a capacity: its plateau error counts. */
+      bool plateau = false;
+    };
+
+    /**
+     * Discretization/Target accuracy on a coupled scene
+     * (simulator_coupled_target.cc, doc/soil-plasticity.md section 8c).
+     */
+    void
+    solve_coupled_to_target(std::ostream &log, CoupledCurveRun &run);
+
+    /**
+     * The goal values on the current mesh with the harmonics n <= n_max /
+     * 4 and n_max / 2 (those that keep n = 1 and differ), ascending n.
      */
     std::vector<double>
-    capacities_with_fewer_harmonics(std::ostream &log);
+    goals_with_fewer_harmonics(CoupledCurveRun &run, std::ostream &log);
+
+    /** The goal's error bar: log line and rows (NaN: not estimated). */
+    void
+    report_coupled_error(CoupledCurveRun   &run,
+                         const CoupledGoal &goal,
+                         const unsigned int n_meshes,
+                         const double       mesh_error,
+                         const double       harmonic_error,
+                         const bool         growth,
+                         std::ostream      &log);
+
+    /**
+     * A scene with coulomb interfaces on elastic soil: the interface
+     * solver on the current mesh and plan (simulator_nonlinear.cc).
+     */
+    std::unique_ptr<CoupledInterfaceSolver>
+    solve_interface_curve(std::ostream &log, const bool keep_incomplete);
+
+    /** Its rows and the last step as every harmonic's solution. */
+    void
+    add_interface_rows(const CoupledInterfaceSolver &solver);
+
+    /** Its CSV files, then write_output() (3D lines, VTU, results). */
+    void
+    write_interface_files(const CoupledInterfaceSolver &solver,
+                          std::ostream                 &log);
 
     /** Set up, assemble, solve and post-process every harmonic. */
     void
