@@ -49,7 +49,7 @@ namespace FourierSSI
     run.goal_prefix = "end_load_";
     run.solve       = [&](std::ostream &out) {
       solver.reset();
-      solver            = solve_interface_curve(out, false);
+      solver = solve_coupled_curve<CoupledInterfaceSolver>(out, false);
       const auto &steps = solver->get_steps();
       AssertThrow(!steps.empty(),
                   ExcMessage("Discretization/Target accuracy: no converged "
@@ -74,33 +74,9 @@ namespace FourierSSI
         solve_coupled_to_target(log, run);
         return;
       }
-    solver = solve_interface_curve(log, true);
+    solver = solve_coupled_curve<CoupledInterfaceSolver>(log, true);
     run.add_rows(log);
     run.write_files(log);
-  }
-
-  std::unique_ptr<CoupledInterfaceSolver>
-  Simulator::solve_interface_curve(std::ostream &log,
-                                   const bool    keep_incomplete)
-  {
-    Timer timer;
-    make_distributed_harmonic_set();
-    log << "assembled and factorized " << harmonic_set->size()
-        << " harmonics in " << timer.wall_time() << " s" << std::endl;
-    log_harmonic_distribution(log);
-    auto solver =
-      std::make_unique<CoupledInterfaceSolver>(*harmonic_set, parameters);
-    // Keep the converged steps, marked as such by the file name (not in
-    // `written`: a failed run removes its results, not this record).
-    run_keeping_converged_steps(*solver,
-                                log,
-                                keep_incomplete && writes_csv() ?
-                                  parameters.output.directory +
-                                    "/load-displacement-incomplete.csv" :
-                                  "");
-    log << "coupled solve: " << solver->get_steps().size() << " steps in "
-        << timer.wall_time() << " s" << std::endl;
-    return solver;
   }
 
   void

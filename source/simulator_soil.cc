@@ -208,32 +208,9 @@ namespace FourierSSI
         return;
       }
     const std::unique_ptr<CoupledSoilSolver> solver =
-      solve_plastic_curve(log, true);
+      solve_coupled_curve<CoupledSoilSolver>(log, true);
     add_plastic_rows(*solver, log);
     write_plastic_files(*solver, log);
-  }
-
-  std::unique_ptr<CoupledSoilSolver>
-  Simulator::solve_plastic_curve(std::ostream &log, const bool keep_incomplete)
-  {
-    Timer timer;
-    make_distributed_harmonic_set();
-    log << "assembled and factorized " << harmonic_set->size()
-        << " harmonics in " << timer.wall_time() << " s" << std::endl;
-    log_harmonic_distribution(log);
-    auto solver =
-      std::make_unique<CoupledSoilSolver>(*harmonic_set, parameters);
-    // Keep the converged steps, marked as such by the file name (not in
-    // `written`: a failed run removes its results, not this record).
-    run_keeping_converged_steps(*solver,
-                                log,
-                                keep_incomplete && writes_csv() ?
-                                  parameters.output.directory +
-                                    "/load-displacement-incomplete.csv" :
-                                  "");
-    log << "coupled solve: " << solver->get_steps().size() << " steps in "
-        << timer.wall_time() << " s" << std::endl;
-    return solver;
   }
 
   void
@@ -279,7 +256,7 @@ namespace FourierSSI
     run.plateau     = true;
     run.solve       = [&](std::ostream &out) {
       solver.reset();
-      solver = solve_plastic_curve(out, false);
+      solver = solve_coupled_curve<CoupledSoilSolver>(out, false);
       AssertThrow(has_capacity(*solver, parameters),
                   ExcMessage("Discretization/Target accuracy: the curve "
                                    "has fewer than two steps (Nonlinear "

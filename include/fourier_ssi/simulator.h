@@ -15,6 +15,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/grid/tria.h>
 #include <fourier_ssi/adaptivity.h>
+#include <fourier_ssi/coupled_iteration.h>
 #include <fourier_ssi/field_reconstruction.h>
 #include <fourier_ssi/goal_estimator.h>
 #include <fourier_ssi/harmonic_postprocessors.h>
@@ -161,12 +162,32 @@ namespace FourierSSI
     solve_plastic_soil(std::ostream &log);
 
     /**
-     * The HarmonicSet of plan.harmonics on the current mesh and the plastic
-     * curve on it; with keep_incomplete, the converged steps of a curve
-     * that fails are written to load-displacement-incomplete.csv.
+     * The HarmonicSet of plan.harmonics on the current mesh and the load
+     * path of a coupled Solver (CoupledSoilSolver, CoupledInterfaceSolver)
+     * on it; with keep_incomplete, the converged steps of a path that fails
+     * are written to load-displacement-incomplete.csv (marked by the name;
+     * not in `written`: a failed run removes its results, not this record).
      */
-    std::unique_ptr<CoupledSoilSolver>
-    solve_plastic_curve(std::ostream &log, const bool keep_incomplete);
+    template <class Solver>
+    std::unique_ptr<Solver>
+    solve_coupled_curve(std::ostream &log, const bool keep_incomplete)
+    {
+      Timer timer;
+      make_distributed_harmonic_set();
+      log << "assembled and factorized " << harmonic_set->size()
+          << " harmonics in " << timer.wall_time() << " s" << std::endl;
+      log_harmonic_distribution(log);
+      auto solver = std::make_unique<Solver>(*harmonic_set, parameters);
+      run_keeping_converged_steps(*solver,
+                                  log,
+                                  keep_incomplete && writes_csv() ?
+                                    parameters.output.directory +
+                                      "/load-displacement-incomplete.csv" :
+                                    "");
+      log << "coupled solve: " << solver->get_steps().size() << " steps in "
+          << timer.wall_time() << " s" << std::endl;
+      return solver;
+    }
 
     /** A plastic curve's rows (steps, plastic state, capacity). */
     void
@@ -236,13 +257,6 @@ namespace FourierSSI
                          const double       harmonic_error,
                          const bool         growth,
                          std::ostream      &log);
-
-    /**
-     * A scene with coulomb interfaces on elastic soil: the interface
-     * solver on the current mesh and plan (simulator_nonlinear.cc).
-     */
-    std::unique_ptr<CoupledInterfaceSolver>
-    solve_interface_curve(std::ostream &log, const bool keep_incomplete);
 
     /** Its rows and the last step as every harmonic's solution. */
     void
