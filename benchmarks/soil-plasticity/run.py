@@ -47,6 +47,8 @@ CURVES = [
     ("prm/pile-capacity.prm", "H_kN", 100.0, "N_p (smooth 9.14-9.20)"),
     ("prm/footing-capacity.prm", "V_kN", 31.4159265, "N_c (rough 6.05)"),
     ("prm/disc-tresca.prm", "H_kN", 10.0, "P/(s_u D) (rough 11.94)"),
+    ("prm/pile-adhesion.prm", "H_kN", 100.0,
+     "N_p (adhesion 0.5 s_u: 10.82, coulomb shaft)"),
 ]
 
 
