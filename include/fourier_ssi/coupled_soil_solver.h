@@ -22,6 +22,9 @@
  *      their kept factorizations, omega by Aitken's Delta^2 rule.
  * Loading (load or displacement control of the rigid foundation), step
  * cutting and the settings are those of subsection "Nonlinear interfaces".
+ * Coulomb interfaces in the scene iterate with the soil: their
+ * out-of-balance load (NonlinearInterfacePoints) joins G in step 3, and
+ * their part of the tangent joins K_t (doc/soil-plasticity.md 6b).
  *
  * Under mpirun (Stiffness = elastic) the harmonics are distributed over the
  * ranks (HarmonicSet::distribute_over), as for the interfaces: each rank
