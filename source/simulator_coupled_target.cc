@@ -8,6 +8,7 @@
 #include <cmath>
 #include <deal.II/base/timer.h>
 #include <fourier_ssi/discretization_design.h>
+#include <fourier_ssi/messages.h>
 #include <fourier_ssi/simulator.h>
 #include <fourier_ssi/theta_sampling.h>
 #include <iomanip>
@@ -76,10 +77,16 @@ namespace FourierSSI
           {
             values.push_back(run.solve(study_log).value);
           }
-        catch (...)
+        catch (const std::exception &e)
           {
+            // Say which run failed: the answer's harmonics are not these.
             plan.harmonics = all;
-            throw;
+            AssertThrow(false,
+                        ExcMessage(
+                          one_line_message(e) +
+                          " (in the run with n <= " + std::to_string(n_max) +
+                          " that Discretization/Target accuracy "
+                          "makes for the harmonic truncation)"));
           }
         plan.harmonics = all;
         run.release();
