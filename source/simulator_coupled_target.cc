@@ -13,6 +13,7 @@
 #include <fourier_ssi/theta_sampling.h>
 #include <iomanip>
 #include <limits>
+#include <map>
 #include <sstream>
 
 namespace FourierSSI
@@ -61,12 +62,19 @@ namespace FourierSSI
   } // namespace
 
   std::vector<double>
-  Simulator::goals_with_fewer_harmonics(CoupledCurveRun &run, std::ostream &log)
+  Simulator::goals_with_fewer_harmonics(CoupledCurveRun                &run,
+                                        std::map<unsigned int, double> &known,
+                                        std::ostream                   &log)
   {
     const std::vector<Harmonic> all = plan.harmonics;
     std::vector<double>         values;
     for (const unsigned int n_max : truncations(all))
       {
+        if (const auto k = known.find(n_max); k != known.end())
+          {
+            values.push_back(k->second); // solved before the last doubling
+            continue;
+          }
         plan.harmonics.clear();
         for (const Harmonic &h : all)
           if (h.n <= n_max)
@@ -91,10 +99,54 @@ namespace FourierSSI
         plan.harmonics = all;
         run.release();
         harmonic_set.reset();
+        known[n_max] = values.back();
         log << "  harmonics n <= " << n_max << ": " << values.back()
             << std::endl;
       }
     return values;
+  }
+
+  bool
+  Simulator::double_harmonics(CoupledCurveRun &run,
+                              const double     target,
+                              const double     truncation,
+                              std::ostream    &log)
+  {
+    // The DoFs of all harmonics grow with their number (one coupled LU).
+    double dofs = 0.;
+    for (unsigned int h = 0; h < harmonic_set->size(); ++h)
+      dofs += harmonic_set->problem(h).get_dof_handler().n_dofs();
+    const unsigned int n_max = highest_harmonic(plan.harmonics);
+    const double       more  = (2. * n_max + 1.) / (n_max + 1.);
+    if (more * dofs > parameters.adaptivity.maximum_dofs || 2 * n_max > 1024)
+      {
+        std::ostringstream line;
+        line << "Discretization/Target accuracy " << number(target)
+             << " not reached: the harmonic truncation (n <= " << n_max
+             << ") alone is " << number(truncation)
+             << "; doubling the harmonics (about "
+             << static_cast<long long>(more * dofs)
+             << " DoFs) would exceed Adaptivity/Maximum DoFs = "
+             << parameters.adaptivity.maximum_dofs;
+        target_not_reached = line.str();
+        log << target_not_reached << std::endl;
+        return false;
+      }
+    std::vector<Harmonic> doubled;
+    for (unsigned int n = 0; n <= 2 * n_max; ++n)
+      for (const Family family : {Family::symmetric, Family::antisymmetric})
+        if (std::any_of(plan.harmonics.begin(),
+                        plan.harmonics.end(),
+                        [&](const Harmonic &h) { return h.family == family; }))
+          doubled.push_back({n, family});
+    plan.harmonics = doubled;
+    run.release();
+    harmonic_set.reset();
+    log << "target accuracy " << number(target) << ": the harmonic truncation "
+        << number(truncation)
+        << " is more than half of it: harmonics doubled to n <= " << 2 * n_max
+        << std::endl;
+    return true;
   }
 
   void
@@ -110,12 +162,14 @@ namespace FourierSSI
     Timer               run_timer;
     double              last_member_time = 0.;
     std::vector<double> mesh_values, harmonic_values;
-    CoupledGoal         goal;
-    double              harmonic_error = 0., mesh_error = 0.;
-    const auto          relative = [&](const double error) {
+    // Member 0's goal value for each n_max solved (doubling reuses them).
+    std::map<unsigned int, double> known;
+    CoupledGoal                    goal;
+    double                         harmonic_error = 0., mesh_error = 0.;
+    const auto                     relative = [&](const double error) {
       return error / std::abs(goal.value);
     };
-    for (unsigned int member = 0;; ++member)
+    for (int member = 0;; ++member)
       {
         if (member > 0)
           {
@@ -166,7 +220,7 @@ namespace FourierSSI
         // share of the error changes little with the mesh
         // (doc/soil-plasticity.md 8b).
         if (member == 0 && !growth)
-          harmonic_values = goals_with_fewer_harmonics(run, log);
+          harmonic_values = goals_with_fewer_harmonics(run, known, log);
         goal = run.solve(log);
         mesh_values.push_back(goal.value);
         last_member_time = member_timer.wall_time();
@@ -182,10 +236,23 @@ namespace FourierSSI
         if (member == 0)
           {
             harmonic_values.push_back(goal.value);
+            known[highest_harmonic(plan.harmonics)] = goal.value;
             if (harmonic_values.size() >= 2)
               harmonic_error = estimate_sequence_error(harmonic_values,
                                                        harmonic_doubling_ratio)
                                  .absolute;
+            // The truncation takes more than half the target: double the
+            // harmonics and solve this (the cheapest) mesh again, the
+            // values of fewer harmonics kept.
+            if (harmonic_values.size() >= 2 &&
+                relative(harmonic_error) > 0.5 * target)
+              {
+                if (!double_harmonics(
+                      run, target, relative(harmonic_error), log))
+                  break;
+                mesh_values.clear();
+                --member; // member 0 again (the loop's ++ brings it back)
+              }
             continue; // two meshes are needed for the mesh error
           }
         mesh_error =

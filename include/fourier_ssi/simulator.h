@@ -25,6 +25,7 @@
 #include <fourier_ssi/scene_plan.h>
 #include <fourier_ssi/sequence_error_estimate.h>
 #include <functional>
+#include <map>
 #include <memory>
 #include <ostream>
 #include <set>
@@ -246,7 +247,19 @@ namespace FourierSSI
      * 4 and n_max / 2 (those that keep n = 1 and differ), ascending n.
      */
     std::vector<double>
-    goals_with_fewer_harmonics(CoupledCurveRun &run, std::ostream &log);
+    goals_with_fewer_harmonics(CoupledCurveRun                &run,
+                               std::map<unsigned int, double> &known,
+                               std::ostream                   &log);
+
+    /**
+     * plan.harmonics to n <= 2 n_max in the same families (true), or one
+     * line in target_not_reached when that would exceed Maximum DoFs.
+     */
+    bool
+    double_harmonics(CoupledCurveRun &run,
+                     const double     target,
+                     const double     truncation,
+                     std::ostream    &log);
 
     /** The goal's error bar: log line and rows (NaN: not estimated). */
     void
