@@ -123,9 +123,8 @@ namespace FourierSSI
     AssertThrow(automatic || !harmonics.empty(),
                 ExcMessage("Discretization/Harmonics: empty; write 'auto' or "
                            "a list such as '0, 1'"));
-    degree           = prm.get_integer("Polynomial degree");
-    requested_degree = degree;
-    volumetric       = prm.get("Volumetric strain");
+    degree     = prm.get_integer("Polynomial degree");
+    volumetric = prm.get("Volumetric strain");
     AssertThrow(volumetric != "bbar" || degree == 2,
                 ExcMessage("Discretization/Volumetric strain = bbar needs "
                            "Polynomial degree = 2"));
@@ -148,14 +147,8 @@ namespace FourierSSI
           }
         AssertThrow(target_accuracy > 0. && target_accuracy < 1.,
                     ExcMessage(error));
-        // The designed discretization is FE_Q(4) (its grading pairs with
-        // the 10-node interface element; FE_Q(4) does not lock); plastic
-        // soil keeps the scene's element (AllParameters::parse_parameters).
-        AssertThrow(volumetric != "bbar",
-                    ExcMessage("Discretization/Target accuracy: designs "
-                               "FE_Q(4) meshes, and Volumetric strain = bbar "
-                               "needs degree 2 (write auto or standard)"));
-        degree = 4;
+        // The element the target designs with is chosen with the scene's
+        // laws known (AllParameters::parse_parameters).
       }
     prm.leave_subsection();
   }
@@ -336,13 +329,20 @@ namespace FourierSSI
     rigid_foundation.parse_parameters(prm);
     adaptivity.parse_parameters(prm);
     loads.parse_parameters(prm);
-    // A coupled scene (plastic soil, coulomb interfaces) with a target: the
-    // scene's element on the scene's mesh refined (FE_Q(2) with B-bar for
-    // undrained soil, section 4 of doc/soil-plasticity.md), not the FE_Q(4)
-    // design.
+    // The target's element: the linear scenes' design is FE_Q(4) (its
+    // grading pairs with the 10-node interface element; FE_Q(4) does not
+    // lock); a coupled scene (plastic soil, coulomb interfaces) keeps its
+    // own, on its own mesh refined (FE_Q(2) with B-bar for undrained soil,
+    // section 4 of doc/soil-plasticity.md).
     soil_plasticity.parse_parameters(prm);
-    if (discretization.target_accuracy > 0. && coupled())
-      discretization.degree = discretization.requested_degree;
+    if (discretization.target_accuracy > 0. && !coupled())
+      {
+        AssertThrow(discretization.volumetric != "bbar",
+                    ExcMessage("Discretization/Target accuracy: designs "
+                               "FE_Q(4) meshes, and Volumetric strain = bbar "
+                               "needs degree 2 (write auto or standard)"));
+        discretization.degree = 4;
+      }
     mesh.degree                         = discretization.degree;
     discretization.volumetric_automatic = discretization.volumetric == "auto";
     if (discretization.volumetric_automatic)

@@ -52,6 +52,16 @@ namespace FourierSSI
       return text;
     }
 
+    /** The values of a map in the order of its keys. */
+    std::vector<double>
+    values_of(const std::map<unsigned int, double> &known)
+    {
+      std::vector<double> values;
+      for (const auto &[n_max, value] : known)
+        values.push_back(value);
+      return values;
+    }
+
     std::string
     number(const double value)
     {
@@ -61,20 +71,16 @@ namespace FourierSSI
     }
   } // namespace
 
-  std::vector<double>
-  Simulator::goals_with_fewer_harmonics(CoupledCurveRun                &run,
-                                        std::map<unsigned int, double> &known,
-                                        std::ostream                   &log)
+  void
+  Simulator::solve_fewer_harmonics(CoupledCurveRun                &run,
+                                   std::map<unsigned int, double> &known,
+                                   std::ostream                   &log)
   {
     const std::vector<Harmonic> all = plan.harmonics;
-    std::vector<double>         values;
     for (const unsigned int n_max : truncations(all))
       {
-        if (const auto k = known.find(n_max); k != known.end())
-          {
-            values.push_back(k->second); // solved before the last doubling
-            continue;
-          }
+        if (known.count(n_max) > 0)
+          continue; // solved before the last doubling
         plan.harmonics.clear();
         for (const Harmonic &h : all)
           if (h.n <= n_max)
@@ -83,7 +89,7 @@ namespace FourierSSI
         std::ostringstream study_log;
         try
           {
-            values.push_back(run.solve(study_log).value);
+            known[n_max] = run.solve(study_log).value;
           }
         catch (const std::exception &e)
           {
@@ -99,11 +105,28 @@ namespace FourierSSI
         plan.harmonics = all;
         run.release();
         harmonic_set.reset();
-        known[n_max] = values.back();
-        log << "  harmonics n <= " << n_max << ": " << values.back()
+        log << "  harmonics n <= " << n_max << ": " << known[n_max]
             << std::endl;
       }
-    return values;
+  }
+
+  double
+  Simulator::coupled_dofs() const
+  {
+    double dofs = 0.;
+    for (unsigned int h = 0; h < harmonic_set->size(); ++h)
+      dofs += harmonic_set->problem(h).get_dof_handler().n_dofs();
+    return dofs;
+  }
+
+  void
+  Simulator::target_unmet(const double       target,
+                          const std::string &why,
+                          std::ostream      &log)
+  {
+    target_not_reached = "Discretization/Target accuracy " + number(target) +
+                         " not reached: " + why;
+    log << target_not_reached << std::endl;
   }
 
   bool
@@ -113,23 +136,18 @@ namespace FourierSSI
                               std::ostream    &log)
   {
     // The DoFs of all harmonics grow with their number (one coupled LU).
-    double dofs = 0.;
-    for (unsigned int h = 0; h < harmonic_set->size(); ++h)
-      dofs += harmonic_set->problem(h).get_dof_handler().n_dofs();
+    const double       dofs  = coupled_dofs();
     const unsigned int n_max = highest_harmonic(plan.harmonics);
     const double       more  = (2. * n_max + 1.) / (n_max + 1.);
     if (more * dofs > parameters.adaptivity.maximum_dofs || 2 * n_max > 1024)
       {
-        std::ostringstream line;
-        line << "Discretization/Target accuracy " << number(target)
-             << " not reached: the harmonic truncation (n <= " << n_max
-             << ") alone is " << number(truncation)
-             << "; doubling the harmonics (about "
-             << static_cast<long long>(more * dofs)
-             << " DoFs) would exceed Adaptivity/Maximum DoFs = "
-             << parameters.adaptivity.maximum_dofs;
-        target_not_reached = line.str();
-        log << target_not_reached << std::endl;
+        std::ostringstream why;
+        why << "the harmonic truncation (n <= " << n_max << ") alone is "
+            << number(truncation) << "; doubling the harmonics (about "
+            << static_cast<long long>(more * dofs)
+            << " DoFs) would exceed Adaptivity/Maximum DoFs = "
+            << parameters.adaptivity.maximum_dofs;
+        target_unmet(target, why.str(), log);
         return false;
       }
     std::vector<Harmonic> doubled;
@@ -161,8 +179,9 @@ namespace FourierSSI
                         highest_harmonic(plan.harmonics);
     Timer               run_timer;
     double              last_member_time = 0.;
-    std::vector<double> mesh_values, harmonic_values;
-    // Member 0's goal value for each n_max solved (doubling reuses them).
+    std::vector<double> mesh_values;
+    // Member 0's goal value for each n_max solved, ascending n: the
+    // truncation sequence (doubling adds to it).
     std::map<unsigned int, double> known;
     CoupledGoal                    goal;
     double                         harmonic_error = 0., mesh_error = 0.;
@@ -175,9 +194,7 @@ namespace FourierSSI
           {
             // Newton's coupled tangent is one LU over all harmonics: their
             // DoFs together are what Maximum DoFs bounds here.
-            double dofs = 0.;
-            for (unsigned int h = 0; h < harmonic_set->size(); ++h)
-              dofs += harmonic_set->problem(h).get_dof_handler().n_dofs();
+            const double     dofs = coupled_dofs();
             Triangulation<2> next;
             DiscretizationDesign::build_plastic_member(parameters,
                                                        member,
@@ -187,21 +204,19 @@ namespace FourierSSI
                                 triangulation.n_active_cells();
             if (more * dofs > parameters.adaptivity.maximum_dofs)
               {
-                std::ostringstream line;
-                line << "Discretization/Target accuracy " << target
-                     << " not reached: estimated relative error of the "
-                     << label(run.goal_prefix, goal.name) << " "
-                     << (mesh_values.size() >= 2 ?
-                           number(relative(mesh_error + harmonic_error +
-                                           goal.plateau_error)) :
-                           std::string("unknown (one mesh solved)"))
-                     << " with " << static_cast<long long>(dofs)
-                     << " DoFs (all harmonics); the next mesh (about "
-                     << static_cast<long long>(more * dofs)
-                     << ") exceeds Adaptivity/Maximum DoFs = "
-                     << parameters.adaptivity.maximum_dofs;
-                target_not_reached = line.str();
-                log << target_not_reached << std::endl;
+                std::ostringstream why;
+                why << "estimated relative error of the "
+                    << label(run.goal_prefix, goal.name) << " "
+                    << (mesh_values.size() >= 2 ?
+                          number(relative(mesh_error + harmonic_error +
+                                          goal.plateau_error)) :
+                          std::string("unknown (one mesh solved)"))
+                    << " with " << static_cast<long long>(dofs)
+                    << " DoFs (all harmonics); the next mesh (about "
+                    << static_cast<long long>(more * dofs)
+                    << ") exceeds Adaptivity/Maximum DoFs = "
+                    << parameters.adaptivity.maximum_dofs;
+                target_unmet(target, why.str(), log);
                 break;
               }
             run.release();
@@ -220,32 +235,30 @@ namespace FourierSSI
         // share of the error changes little with the mesh
         // (doc/soil-plasticity.md 8b).
         if (member == 0 && !growth)
-          harmonic_values = goals_with_fewer_harmonics(run, known, log);
+          solve_fewer_harmonics(run, known, log);
         goal = run.solve(log);
         mesh_values.push_back(goal.value);
         last_member_time = member_timer.wall_time();
         if (!std::isfinite(goal.plateau_error))
           {
-            target_not_reached =
-              "Discretization/Target accuracy " + number(target) +
-              " not reached: the curve does not bend over by its end (no "
-              "plateau: raise Nonlinear interfaces/Target)";
-            log << target_not_reached << std::endl;
+            target_unmet(target,
+                         "the curve does not bend over by its end (no "
+                         "plateau: raise Nonlinear interfaces/Target)",
+                         log);
             break;
           }
         if (member == 0)
           {
-            harmonic_values.push_back(goal.value);
-            known[highest_harmonic(plan.harmonics)] = goal.value;
-            if (harmonic_values.size() >= 2)
-              harmonic_error = estimate_sequence_error(harmonic_values,
+            if (!growth)
+              known[highest_harmonic(plan.harmonics)] = goal.value;
+            if (known.size() >= 2)
+              harmonic_error = estimate_sequence_error(values_of(known),
                                                        harmonic_doubling_ratio)
                                  .absolute;
             // The truncation takes more than half the target: double the
             // harmonics and solve this (the cheapest) mesh again, the
             // values of fewer harmonics kept.
-            if (harmonic_values.size() >= 2 &&
-                relative(harmonic_error) > 0.5 * target)
+            if (known.size() >= 2 && relative(harmonic_error) > 0.5 * target)
               {
                 if (!double_harmonics(
                       run, target, relative(harmonic_error), log))
@@ -268,27 +281,27 @@ namespace FourierSSI
         // What a finer mesh cannot lower: stop, saying which.
         if (relative(harmonic_error + goal.plateau_error) > target)
           {
-            target_not_reached =
-              "Discretization/Target accuracy " + number(target) +
-              " not reached: estimated relative error of the " +
-              label(run.goal_prefix, goal.name) + " " + number(total) +
-              ", of which the harmonic truncation (n <= " +
-              std::to_string(highest_harmonic(plan.harmonics)) + ") " +
-              number(relative(harmonic_error)) + " and the plateau " +
-              number(relative(goal.plateau_error)) +
-              " do not fall with the mesh: list more harmonics "
-              "(Discretization/Harmonics) or take the path further "
-              "(Nonlinear interfaces/Target)";
-            log << target_not_reached << std::endl;
+            target_unmet(
+              target,
+              "estimated relative error of the " +
+                label(run.goal_prefix, goal.name) + " " + number(total) +
+                ", of which the harmonic truncation (n <= " +
+                std::to_string(highest_harmonic(plan.harmonics)) + ") " +
+                number(relative(harmonic_error)) + " and the plateau " +
+                number(relative(goal.plateau_error)) +
+                " do not fall with the mesh: list more harmonics "
+                "(Discretization/Harmonics) or take the path further "
+                "(Nonlinear interfaces/Target)",
+              log);
             break;
           }
       }
     estimate_wall_time = run_timer.wall_time() - last_member_time;
     // Not estimated: NaN; n = 0 alone is axisymmetric, no truncation.
-    const double harmonics = harmonic_values.size() >= 2 ? harmonic_error :
+    const double harmonics = known.size() >= 2 ? harmonic_error :
                              highest_harmonic(plan.harmonics) == 0 ?
-                                                           0. :
-                                                           std::nan("");
+                                                 0. :
+                                                 std::nan("");
     report_coupled_error(
       run, goal, mesh_values.size(), mesh_error, harmonics, growth, log);
     run.write_files(log);

@@ -53,12 +53,6 @@ namespace FourierSSI
      * the estimated error is below it (discretization_design.h).
      */
     double target_accuracy = 0.;
-    /**
-     * Polynomial degree as written: a plastic-soil scene with a target
-     * keeps it (its members are the scene's mesh refined globally,
-     * doc/soil-plasticity.md section 8c), the FE_Q(4) design does not.
-     */
-    unsigned int requested_degree = 2;
     /** Harmonics solved at the same time (threads); 0: one per core. */
     unsigned int concurrent_harmonics = 0;
   };

@@ -244,12 +244,23 @@ namespace FourierSSI
 
     /**
      * The goal values on the current mesh with the harmonics n <= n_max /
-     * 4 and n_max / 2 (those that keep n = 1 and differ), ascending n.
+     * 4 and n_max / 2 (those that keep n = 1 and differ), into `known`
+     * (n_max -> value; the ones already there are not solved again).
      */
-    std::vector<double>
-    goals_with_fewer_harmonics(CoupledCurveRun                &run,
-                               std::map<unsigned int, double> &known,
-                               std::ostream                   &log);
+    void
+    solve_fewer_harmonics(CoupledCurveRun                &run,
+                          std::map<unsigned int, double> &known,
+                          std::ostream                   &log);
+
+    /** The DoFs of all harmonics of the set (one coupled LU). */
+    double
+    coupled_dofs() const;
+
+    /** target_not_reached = the one line "... not reached: why"; logged. */
+    void
+    target_unmet(const double       target,
+                 const std::string &why,
+                 std::ostream      &log);
 
     /**
      * plan.harmonics to n <= 2 n_max in the same families (true), or one
