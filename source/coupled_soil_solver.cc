@@ -622,19 +622,35 @@ namespace FourierSSI
     std::vector<Vector<double>> load = load_of(plastic);
     if (interface)
       {
-        std::vector<LocalVector>  interface_plastic, traction;
-        std::vector<ContactState> contact;
-        interface->return_map(relative_samples(fields, 0., 0.),
-                              committed.interface_plastic,
-                              interface_plastic,
-                              traction,
-                              contact);
-        const auto interface_load =
-          interface->load_of(interface_plastic, sampling);
-        for (unsigned int h = 0; h < set.size(); ++h)
-          load[h] += interface_load[h];
+        std::vector<LocalVector> interface_plastic;
+        InterfaceSnapshot        snapshot;
+        add_interface_load(relative_samples(fields, 0., 0.),
+                           interface_plastic,
+                           snapshot,
+                           load);
       }
     return load;
+  }
+
+  ContactCounts
+  CoupledSoilSolver::add_interface_load(
+    const std::vector<LocalVector> &relative,
+    std::vector<LocalVector>       &plastic,
+    InterfaceSnapshot              &snapshot,
+    std::vector<Vector<double>>    &load) const
+  {
+    snapshot.relative = relative;
+    const ContactCounts counts =
+      interface->return_map(relative,
+                            committed.interface_plastic,
+                            plastic,
+                            snapshot.traction,
+                            snapshot.state);
+    const std::vector<Vector<double>> interface_load =
+      interface->load_of(plastic, sampling);
+    for (unsigned int h = 0; h < set.size(); ++h)
+      load[h] += interface_load[h];
+    return counts;
   }
 
   std::vector<Vector<double>>
@@ -966,22 +982,15 @@ namespace FourierSSI
         std::vector<LocalVector>    relative;
         if (interface)
           {
-            relative = relative_samples(state.correction_solution,
+            relative       = relative_samples(state.correction_solution,
                                         state.load_factor,
                                         state.held_fraction);
-            InterfaceSnapshot &snapshot = result.interface_state;
-            snapshot.relative           = relative;
-            result.contact              = interface->return_map(relative,
-                                                   committed.interface_plastic,
-                                                   interface_plastic,
-                                                   snapshot.traction,
-                                                   snapshot.state);
+            result.contact = add_interface_load(relative,
+                                                interface_plastic,
+                                                result.interface_state,
+                                                residual);
             result.largest_interface_yield_value =
-              interface->largest_yield_value(snapshot.traction);
-            const std::vector<Vector<double>> interface_load =
-              interface->load_of(interface_plastic, sampling);
-            for (unsigned int h = 0; h < set.size(); ++h)
-              residual[h] += interface_load[h];
+              interface->largest_yield_value(result.interface_state.traction);
           }
         const double load_norm = norm_over_harmonics(residual);
         for (unsigned int h = 0; h < set.size(); ++h)

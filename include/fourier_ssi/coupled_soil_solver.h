@@ -274,6 +274,17 @@ namespace FourierSSI
                      const double                       held_fraction) const;
 
     /**
+     * Coulomb interfaces at the relative displacements given: the return
+     * mapping from the committed state into `plastic` and `snapshot`, and
+     * their out-of-balance load added to `load`; the sample counts.
+     */
+    ContactCounts
+    add_interface_load(const std::vector<LocalVector> &relative,
+                       std::vector<LocalVector>       &plastic,
+                       InterfaceSnapshot              &snapshot,
+                       std::vector<Vector<double>>    &load) const;
+
+    /**
      * Return mapping from the committed state at every (point, theta) of
      * the points this rank owns; the counts of `result` are this rank's
      * (count_over_ranks: all of them).
