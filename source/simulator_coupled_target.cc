@@ -87,9 +87,10 @@ namespace FourierSSI
             plan.harmonics.push_back(h);
         // Its own log: the study's curves are not the answer's.
         std::ostringstream study_log;
+        CoupledGoal        goal;
         try
           {
-            known[n_max] = run.solve(study_log).value;
+            goal = run.solve(study_log);
           }
         catch (const std::exception &e)
           {
@@ -102,11 +103,12 @@ namespace FourierSSI
                           " that Discretization/Target accuracy "
                           "makes for the harmonic truncation)"));
           }
+        known[n_max]   = goal.value;
         plan.harmonics = all;
         run.release();
         harmonic_set.reset();
-        log << "  harmonics n <= " << n_max << ": " << known[n_max]
-            << std::endl;
+        log << "  harmonics n <= " << n_max << ": " << goal.name << " = "
+            << goal.value << " " << goal.unit << std::endl;
       }
   }
 
