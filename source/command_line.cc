@@ -7,6 +7,7 @@
 #include <deal.II/base/utilities.h>
 #include <fourier_ssi/batch_runner.h>
 #include <fourier_ssi/command_line.h>
+#include <fourier_ssi/huge_page_allocation.h>
 #include <fourier_ssi/interface_element.h>
 #include <fourier_ssi/messages.h>
 #include <fourier_ssi/parameters.h>
@@ -129,6 +130,7 @@ namespace FourierSSI
         mpi = std::make_unique<Utilities::MPI::MPI_InitFinalize>(argc, argv, 1);
     };
     use_serial_blas();
+    keep_freed_memory();
     const bool batch = argc > 1 && std::string(argv[1]) == "--batch";
     if (launched_by_mpi() || batch)
       start_mpi();

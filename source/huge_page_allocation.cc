@@ -1,6 +1,8 @@
 #include <cstdlib>
 #include <cstring>
 #include <fourier_ssi/huge_page_allocation.h>
+#include <limits>
+#include <malloc.h>
 #include <new>
 #include <sys/mman.h>
 
@@ -36,6 +38,15 @@ namespace FourierSSI
     if (block)
       std::memset(block, 0, count * size);
     return block;
+  }
+
+  void
+  keep_freed_memory()
+  {
+    // A block above the mmap threshold (at most 32 MiB in glibc) would be
+    // unmapped on free and its pages faulted in again by the next one.
+    mallopt(M_MMAP_MAX, 0);
+    mallopt(M_TRIM_THRESHOLD, std::numeric_limits<int>::max());
   }
 } // namespace FourierSSI
 
