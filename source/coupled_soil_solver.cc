@@ -1087,11 +1087,7 @@ namespace FourierSSI
         if (!set.owns(h) || foundation == nullptr || harmonics[h].n > 1 ||
             (harmonics[h].n == 1 && harmonics[h].family != Family::symmetric))
           continue;
-        Vector<double> u = pattern_solution[h];
-        u.sadd(state.load_factor, 1., state.correction_solution[h]);
-        if (!held_solution.empty())
-          u.add(state.held_fraction, held_solution[h]);
-        const RigidMotion m = foundation->motion(u);
+        const RigidMotion m = foundation->motion(total_displacement(state, h));
         parts[4 * h]        = m.vertical_displacement;
         parts[4 * h + 1]    = m.twist;
         parts[4 * h + 2]    = m.horizontal_displacement;
@@ -1107,12 +1103,43 @@ namespace FourierSSI
   }
 
   Vector<double>
+  CoupledSoilSolver::total_displacement(const StepState   &state,
+                                        const unsigned int h) const
+  {
+    Vector<double> u = pattern_solution[h];
+    u.sadd(state.load_factor, 1., state.correction_solution[h]);
+    if (!held_solution.empty())
+      u.add(state.held_fraction, held_solution[h]);
+    return u;
+  }
+
+  double
+  CoupledSoilSolver::load_work() const
+  {
+    // Per harmonic on its owner, summed in the harmonics' order.
+    std::vector<double> parts(set.size(), 0.);
+    for (unsigned int h = 0; h < set.size(); ++h)
+      if (set.owns(h))
+        {
+          Vector<double> load = set.problem(h).get_system_rhs();
+          load *= committed.load_factor;
+          if (const RigidFoundation *foundation =
+                set.problem(h).get_foundation();
+              foundation != nullptr && !held_solution.empty())
+            {
+              Vector<double> held(load.size());
+              foundation->add_held_loads(held);
+              load.add(committed.held_fraction, held);
+            }
+          parts[h] = load * total_displacement(committed, h);
+        }
+    return sum_over_harmonics(parts, 1)[0];
+  }
+
+  Vector<double>
   CoupledSoilSolver::solution(const unsigned int i) const
   {
-    Vector<double> u = pattern_solution[i];
-    u.sadd(committed.load_factor, 1., committed.correction_solution[i]);
-    if (!held_solution.empty())
-      u.add(committed.held_fraction, held_solution[i]);
+    Vector<double> u = total_displacement(committed, i);
     if (set.n_owning_ranks() > 1)
       {
         const int ierr = MPI_Bcast(

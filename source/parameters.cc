@@ -78,7 +78,9 @@ namespace FourierSSI
                       "are applied in addition. With plastic soil or a "
                       "coulomb interface (displacement control) the goal is "
                       "the load at the end of the path (with plastic soil "
-                      "the capacity): the scene's own mesh and element with "
+                      "the capacity; with plastic soil under load control "
+                      "the work of the loads): the scene's own mesh and "
+                      "element with "
                       "the cells doubled per member, until the mesh, "
                       "harmonic-truncation and plateau errors together are "
                       "below the target (doc/soil-plasticity.md section "
@@ -369,14 +371,27 @@ namespace FourierSSI
                     ExcMessage("Discretization/Target accuracy: refines by "
                                "its own design; leave Adaptivity/Strategy = "
                                "global"));
-        AssertThrow(!coupled() ||
-                      nonlinear_interfaces.control ==
-                        NonlinearInterfaceParameters::Control::displacement,
-                    ExcMessage("Discretization/Target accuracy: with plastic "
-                               "soil or a coulomb interface the goal is the "
-                               "load at the end of the controlled path, "
-                               "which needs Nonlinear interfaces/Control = "
-                               "displacement"));
+        // Load control's goal is the work of the loads (plastic soil):
+        // the condensed load vector is the work's only with homogeneous
+        // constraints.
+        const bool load_control =
+          coupled() && nonlinear_interfaces.control ==
+                         NonlinearInterfaceParameters::Control::load;
+        AssertThrow(!load_control || soil_plasticity.any(),
+                    ExcMessage("Discretization/Target accuracy: with a "
+                               "coulomb interface on elastic soil the goal "
+                               "is the load at the end of the controlled "
+                               "path, which needs Nonlinear "
+                               "interfaces/Control = displacement"));
+        bool prescribed_motion = !loads.displacement.empty();
+        for (const auto &[id, e] : boundary_conditions.dirichlet)
+          prescribed_motion |= !e.is_zero();
+        AssertThrow(!load_control || !prescribed_motion,
+                    ExcMessage("Discretization/Target accuracy: under load "
+                               "control the goal is the work of the loads, "
+                               "which needs every prescribed displacement "
+                               "(Boundary conditions/Dirichlet, Loads/"
+                               "Prescribed displacement) to be zero"));
       }
     for (const auto &[id, e] : loads.displacement)
       AssertThrow(boundary_conditions.dirichlet.count(id) == 0,

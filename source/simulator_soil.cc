@@ -250,23 +250,28 @@ namespace FourierSSI
   void
   Simulator::solve_plastic_soil_to_target(std::ostream &log)
   {
+    // Displacement control aims at the capacity; load control at the work
+    // of the loads at the end of the path (the scene's loads are reached:
+    // a load step that does not converge stops the run).
+    const bool load_control = parameters.nonlinear_interfaces.control ==
+                              NonlinearInterfaceParameters::Control::load;
     std::unique_ptr<CoupledSoilSolver> solver;
     CoupledCurveRun                    run;
-    run.goal_prefix = "capacity_";
-    run.plateau     = true;
+    run.goal_prefix = load_control ? "end_" : "capacity_";
+    run.plateau     = !load_control;
     run.solve       = [&](std::ostream &out) {
       solver.reset();
-      solver = solve_coupled_curve<CoupledSoilSolver>(out, false);
+      solver           = solve_coupled_curve<CoupledSoilSolver>(out, false);
+      const auto steps = static_cast<unsigned int>(solver->get_steps().size());
+      if (load_control)
+        return CoupledGoal{"work", "kJ", solver->load_work(), 0., steps};
       AssertThrow(has_capacity(*solver, parameters),
                   ExcMessage("Discretization/Target accuracy: the curve "
                                    "has fewer than two steps (Nonlinear "
                                    "interfaces/Load steps)"));
       const Capacity c = capacity_of(*solver, parameters);
-      return CoupledGoal{c.load.name,
-                         c.load.unit,
-                         c.load.value,
-                         c.plateau_error,
-                         static_cast<unsigned int>(solver->get_steps().size())};
+      return CoupledGoal{
+        c.load.name, c.load.unit, c.load.value, c.plateau_error, steps};
     };
     run.release  = [&]() { solver.reset(); };
     run.add_rows = [&](std::ostream &out) { add_plastic_rows(*solver, out); };

@@ -118,6 +118,16 @@ namespace FourierSSI
                   const double held_fraction = 0.) const;
 
     /**
+     * The work of the applied loads on the last converged displacement,
+     * sum over harmonics of (lambda F_h + rho F_held,h) . u_h [kJ]: the
+     * goal of a load-controlled path (the stiffness and the forces carry
+     * the theta integral, so the sum is the 3D work). Homogeneous
+     * constraints only (the condensed load vector is then the work's).
+     */
+    double
+    load_work() const;
+
+    /**
      * int Bbar_h^T D eps(fields) over the plastic soil, theta by sampling:
      * equals the soil part of K_h u (a check of the projection that builds
      * the out-of-balance loads).
@@ -314,6 +324,10 @@ namespace FourierSSI
                const bool      holding,
                StepState      &state,
                SoilStepResult &result);
+
+    /** u_h = lambda u_pattern + correction + rho u_held of a state. */
+    Vector<double>
+    total_displacement(const StepState &state, const unsigned int h) const;
 
     RigidMotion
     motion_of(const StepState &state) const;
