@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <deal.II/grid/grid_tools.h>
 #include <fourier_ssi/discretization_design.h>
@@ -9,16 +10,36 @@ namespace FourierSSI
   {
     namespace
     {
+      /** The two ends of an interface line. */
+      std::array<Point<2>, 2>
+      ends_of(const InterfaceLine &line)
+      {
+        const auto point = [&](const double t) {
+          return line.fixed_coordinate == 0 ? Point<2>(line.value, t) :
+                                              Point<2>(t, line.value);
+        };
+        return {{point(line.from), point(line.to)}};
+      }
+
+      /** p is one of `points` (to round-off). */
+      bool
+      is_among(const Point<2> &p, const std::vector<Point<2>> &points)
+      {
+        return std::any_of(points.begin(),
+                           points.end(),
+                           [&](const Point<2> &q) {
+                             return q.distance(p) < 1e-9 * (1. + p.norm());
+                           });
+      }
+
       /** Every candidate point: line ends, box corners, the patch edge. */
       std::vector<Point<2>>
       candidate_points(const MeshBuilder &mesh)
       {
         std::vector<Point<2>> points;
         for (const InterfaceLine &line : mesh.interface_lines)
-          for (const double end : {line.from, line.to})
-            points.push_back(line.fixed_coordinate == 0 ?
-                               Point<2>(line.value, end) :
-                               Point<2>(end, line.value));
+          for (const Point<2> &end : ends_of(line))
+            points.push_back(end);
         std::vector<BoundingBox<2>> boxes = mesh.removed_regions;
         for (const auto &[id, box] : mesh.material_regions)
           boxes.push_back(box);
@@ -29,6 +50,14 @@ namespace FourierSSI
           points.emplace_back(mesh.surface_patch_radius,
                               mesh.z_breakpoints.back());
         return points;
+      }
+
+      /** ks = 0: nothing resists the slip along the interface. */
+      bool
+      slides_freely(const InterfaceLaw &law)
+      {
+        return law.tied_normal ||
+               (!law.tied && !law.vermeer && !law.coulomb && law.shear == 0.);
       }
     } // namespace
 
@@ -59,15 +88,37 @@ namespace FourierSSI
       return points;
     }
 
+    std::vector<Point<2>>
+    slip_wedge_points(const AllParameters &parameters)
+    {
+      std::vector<Point<2>> ends;
+      for (const InterfaceLine &line : parameters.mesh.interface_lines)
+        {
+          const auto law = parameters.interfaces.laws.find(line.boundary_id);
+          if (law == parameters.interfaces.laws.end() ||
+              !slides_freely(law->second))
+            continue;
+          for (const Point<2> &end : ends_of(line))
+            ends.push_back(end);
+        }
+      std::vector<Point<2>> wedges;
+      for (const Point<2> &p : singular_points(parameters.mesh))
+        if (is_among(p, ends))
+          wedges.push_back(p);
+      return wedges;
+    }
+
     AdaptivityParameters
     refinements(const AllParameters &parameters, const unsigned int member)
     {
-      AdaptivityParameters design = parameters.adaptivity;
-      const unsigned int   levels =
-        std::min(first_grading_levels + grading_levels_per_member * member,
-                 AdaptivityParameters::max_point_refinement_levels);
+      AdaptivityParameters        design = parameters.adaptivity;
+      const std::vector<Point<2>> wedges = slip_wedge_points(parameters);
       for (const Point<2> &p : singular_points(parameters.mesh))
         {
+          const unsigned int levels =
+            std::min(first_grading_levels + grading_levels_per_member * member +
+                       (is_among(p, wedges) ? slip_wedge_extra_levels : 0),
+                     AdaptivityParameters::max_point_refinement_levels);
           auto given = std::find_if(design.point_refinements.begin(),
                                     design.point_refinements.end(),
                                     [&](const auto &entry) {

@@ -6,9 +6,11 @@
 namespace FourierSSI
 {
   double
-  design_member_ratio(const double largest_poisson_ratio)
+  design_member_ratio(const double largest_poisson_ratio,
+                      const bool   slip_wedges)
   {
-    return largest_poisson_ratio >= locking_poisson_ratio ? 0.6 : 0.4;
+    return largest_poisson_ratio >= locking_poisson_ratio || slip_wedges ? 0.6 :
+                                                                           0.4;
   }
 
 

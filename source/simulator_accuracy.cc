@@ -66,7 +66,9 @@ namespace FourierSSI
   Simulator::assumed_ratio() const
   {
     return parameters.discretization.target_accuracy > 0. ?
-             design_member_ratio(largest_poisson_ratio(parameters.materials)) :
+             design_member_ratio(
+               largest_poisson_ratio(parameters.materials),
+               !DiscretizationDesign::slip_wedge_points(parameters).empty()) :
              one_halving_ratio;
   }
 

@@ -74,26 +74,40 @@ main()
     // Two values: the assumed ratio of a design member at nu = 0.25, 0.4
     // -> error estimate = |d| 0.4 / 0.6 (eq. (1) with r = 0.4; round-off).
     const SequenceErrorEstimate e =
-      estimate_sequence_error({2., 1.5}, design_member_ratio(0.25));
+      estimate_sequence_error({2., 1.5}, design_member_ratio(0.25, false));
     check::relative("two values, assumed 0.4: |d| 2/3",
                     e.absolute,
                     0.5 * 0.4 / 0.6,
                     1e-15);
     check::that("two values: not asymptotic", !e.asymptotic);
   }
-  check::relative("nu = 0.44: r = 0.4", design_member_ratio(0.44), 0.4, 0.);
-  check::relative("nu = 0.45: r = 0.6", design_member_ratio(0.45), 0.6, 0.);
-  check::relative("nu = 0.49: r = 0.6", design_member_ratio(0.49), 0.6, 0.);
+  check::relative("nu = 0.44: r = 0.4",
+                  design_member_ratio(0.44, false),
+                  0.4,
+                  0.);
+  check::relative("nu = 0.45: r = 0.6",
+                  design_member_ratio(0.45, false),
+                  0.6,
+                  0.);
+  check::relative("nu = 0.49: r = 0.6",
+                  design_member_ratio(0.49, false),
+                  0.6,
+                  0.);
+  check::relative("nu = 0.25, slip wedge: r = 0.6",
+                  design_member_ratio(0.25, true),
+                  0.6,
+                  0.);
   // Slowest measured member ratio of each class: the estimate from members
   // 0 and 1 of Q_k = Q + C rho^k against the truth |Q_1 - Q|.
-  for (const auto &[nu, rho, where] :
-       std::vector<std::tuple<double, double, std::string>>{
-         {0.25, 0.429, "rigid pile, rough, L/d = 15"},
-         {0.49, 0.631, "rigid pile, smooth, L/d = 15"}})
+  for (const auto &[nu, wedges, rho, where] :
+       std::vector<std::tuple<double, bool, double, std::string>>{
+         {0.25, false, 0.429, "rigid pile, rough, L/d = 15"},
+         {0.49, true, 0.652, "rigid pile, smooth, L/d = 15"},
+         {0.25, true, 0.614, "flexible pile, smooth, alpha = 1"}})
     {
       const std::vector<double>   q = geometric(10., 0.5, rho, 2);
       const SequenceErrorEstimate e =
-        estimate_sequence_error(q, design_member_ratio(nu));
+        estimate_sequence_error(q, design_member_ratio(nu, wedges));
       check::in_range("nu = " + std::to_string(nu) +
                         ", rho = " + std::to_string(rho) + " (" + where +
                         "): estimate / error in [0.8, 5]",
@@ -101,6 +115,20 @@ main()
                       0.8,
                       5.);
     }
+  {
+    // The fastest smooth class under the slip-wedge ratio 0.6: the smooth
+    // embedded footing (rho = 0.20 on K_M) is over-reported 6.0x, above
+    // the issue's sharpness goal of 5x (doc/accuracy-vs-time.md, "The slip
+    // wedge graded deeper"): only its reliability is asserted here, and
+    // the over-report itself, (0.6/0.4)/(0.2/0.8) = 6, to round-off.
+    const std::vector<double>   q = geometric(10., 0.5, 0.20, 2);
+    const SequenceErrorEstimate e =
+      estimate_sequence_error(q, design_member_ratio(0.25, true));
+    check::relative("smooth footing, rho = 0.20: estimate / error = 6",
+                    e.absolute / std::abs(q.back() - 10.),
+                    6.,
+                    1e-9);
+  }
   {
     // Differences that change sign: not asymptotic, the assumed ratio.
     const SequenceErrorEstimate e =

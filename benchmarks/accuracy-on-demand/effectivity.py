@@ -17,9 +17,11 @@ is given with the range that uncertainty allows.
 Reliability asks effectivity >= 0.8 (at most 20 % under-reported), and
 sharpness <= 5.
 
-The assumed ratio of a two-value estimate is design_member_ratio(nu) of
-sequence_error_estimate.h (0.4 below nu = 0.45, 0.6 from it; mirrored in
-design_ratio() here). The cases are the eight of the accuracy study and six
+The assumed ratio of a two-value estimate is design_member_ratio(nu,
+slip_wedges) of sequence_error_estimate.h (0.4 below nu = 0.45 without a
+smooth interface, 0.6 from nu = 0.45 or with one; mirrored in
+design_ratio() here). The cases are the eight of the accuracy study, the
+smooth pile (added with the deeper slip-wedge grading), and six
 of the thesis figure families ('sweep-*', written by tools/sweep.py) whose
 members converge more slowly; every member value of a case run is kept in
 members.csv, from which the member-ratio table (rho = e_1/e_0 per case and
@@ -52,9 +54,18 @@ MINIMUM_RATIO = 0.25  # sequence_error_estimate.h
 LOCKING_POISSON_RATIO = 0.45  # input_checks.h
 
 
-def design_ratio(nu):
-    """design_member_ratio(nu) of source/sequence_error_estimate.cc."""
-    return 0.6 if nu >= LOCKING_POISSON_RATIO else 0.4
+def design_ratio(nu, interface):
+    """design_member_ratio(nu, slip_wedges) of
+    source/sequence_error_estimate.cc: every case with a smooth interface
+    has slip wedges (the ends of its interface lines)."""
+    return 0.6 if nu >= LOCKING_POISSON_RATIO or interface == "smooth" \
+        else 0.4
+
+
+def case_ratio(name):
+    """The assumed member ratio of a case of CASES."""
+    _, interface, nu, _, _ = CASES[name]
+    return design_ratio(nu, interface)
 
 
 def tail(r):
@@ -162,6 +173,9 @@ CASES = {
     "footing-a1-nu0.25-smooth": (footing, "smooth", 0.25, 1, 6e5),
     "footing-a0.5-nu0.25-smooth": (footing, "smooth", 0.25, 0.5, 6e5),
     "pile-a1-nu0.25-rough": (pile, "rough", 0.25, 1, 6e5),
+    # The smooth pile: its slip wedges (shaft ends, tip) graded deeper
+    # (discretization_design.h, slip_wedge_extra_levels).
+    "pile-a1-nu0.25-smooth": (pile, "smooth", 0.25, 1, 6e5),
     # The classes of the figure families (doc/scenes.md) that converge
     # more slowly per member than the eight above. The footing runs to its
     # member 3 (459k DoFs), the piles to member 2 (about 410k; member 3
@@ -237,7 +251,7 @@ def read_members(path):
 
 def table(name, series):
     """Effectivity rows of one case, from its member values."""
-    assumed = design_ratio(CASES[name][2])
+    assumed = case_ratio(name)
     lines = []
     for q in ("K_H", "K_M", "K_MH"):
         members, dofs = series[q]
@@ -273,7 +287,7 @@ def rescore(path):
         l["member"], l["dofs"] = int(l["member"]), int(l["dofs"])
         if not l["asymptotic"]:
             step = l["estimate"] / tail(l["ratio"])  # |d_k| / |Q_k|
-            l["ratio"] = design_ratio(CASES[l["case"]][2])
+            l["ratio"] = case_ratio(l["case"])
             l["estimate"] = step * tail(l["ratio"])
             error, u = l["true_error"], l["reference_uncertainty"]
             l["effectivity"] = l["estimate"] / error
@@ -300,8 +314,8 @@ def study_ratios(lines, members):
                         rho=l["member_ratio"],
                         measured_as="e_1/e_0 against the finest member",
                         effectivity_0_4=step * tail(0.4) / l["true_error"],
-                        ratio=design_ratio(nu),
-                        effectivity=step * tail(design_ratio(nu)) /
+                        ratio=case_ratio(l["case"]),
+                        effectivity=step * tail(case_ratio(l["case"])) /
                         l["true_error"]))
     return out
 
@@ -309,7 +323,7 @@ def study_ratios(lines, members):
 def member_ratios(members):
     """The member 0 -> 1 error ratio rho of every case and goal with three
     members or more, and the effectivity of its member-1 estimate (two
-    values, assumed ratio) with r = 0.4 and with design_ratio(nu). Where
+    values, assumed ratio) with r = 0.4 and with case_ratio(name). Where
     the finest member's own estimate is below half of e_1 (as for the
     effectivity rows), rho = e_1/e_0 against it and the effectivity is
     measured: |d_1| (r/(1-r)) / e_1. Else (three members) rho = d_2/d_1,
@@ -323,7 +337,7 @@ def member_ratios(members):
             if len(values) < 3:
                 continue
             ref = values[-1]
-            uncertainty = estimate(values, design_ratio(nu))[0] * abs(ref)
+            uncertainty = estimate(values, case_ratio(name))[0] * abs(ref)
             e0, e1 = abs(values[0] - ref), abs(values[1] - ref)
             d1 = abs(values[1] - values[0])
             if len(values) >= 4:
@@ -349,8 +363,8 @@ def member_ratios(members):
                               dofs="/".join(f"{d // 1000}k" for d in dofs),
                               rho=rho, measured_as=how,
                               effectivity_0_4=effectivity(0.4),
-                              ratio=design_ratio(nu),
-                              effectivity=effectivity(design_ratio(nu))))
+                              ratio=case_ratio(name),
+                              effectivity=effectivity(case_ratio(name))))
     return lines
 
 
@@ -388,12 +402,13 @@ def write(out, lines, ratios):
         f.write("\nMember ratios rho = e_1/e_0 (members 0 -> 1) of every case, "
                 "and the effectivity of the member-1 estimate (two values, "
                 "assumed ratio) with r = 0.4 and with the rule's "
-                "design_member_ratio(nu) (0.4 below nu = 0.45, 0.6 from "
-                "it). 'd_2/d_1': three members only, rho of a geometric "
+                "design_member_ratio(nu, slip_wedges) (0.4 below nu = "
+                "0.45 without a smooth interface, 0.6 from nu = 0.45 or "
+                "with one). 'd_2/d_1': three members only, rho of a geometric "
                 "sequence and effectivity (r/(1-r))/(rho/(1-rho)), "
                 "inferred (no reference finer than member 2).\n\n"
                 "| case | nu | goal | member DoFs | rho | measured as | "
-                "effectivity, r = 0.4 | r(nu) | effectivity, r(nu) |\n"
+                "effectivity, r = 0.4 | rule's r | effectivity, rule's r |\n"
                 "|---|---|---|---|---|---|---|---|---|\n")
         for l in ratios:
             f.write(f"| {l['case']} | {l['nu']:g} | {l['quantity']} | "

@@ -16,7 +16,8 @@
  *    (rigid foundations, soil layers) and removed regions, and the edge of a
  *    surface patch. At an r^lambda corner singularity each bisection cuts
  *    the goal error by 2^-2lambda (0.41 rough, 0.63 smooth), for a constant
- *    number of cells per level;
+ *    number of cells per level; the end of a smooth interface (the slip
+ *    wedge, 0.63 per bisection) gets slip_wedge_extra_levels more;
  *  - where a material has G ~ depth^alpha (alpha > 0), anisotropic layers
  *    under the ground surface, first_surface_layers + k cuts, since G
  *    vanishes at the surface.
@@ -41,6 +42,16 @@ namespace FourierSSI
     /** Corner grading of member 0, and the levels added per member. */
     constexpr unsigned int first_grading_levels      = 8;
     constexpr unsigned int grading_levels_per_member = 2;
+    /**
+     * More bisections at the end of a smooth interface (ks = 0): its slip
+     * wedge converges at 0.63 per bisection against 0.41 at a bonded
+     * corner, and with the same levels it held the smooth embedded
+     * footing's error at 3.6e-3 (K_M, member 0) where the rough one was at
+     * 2e-5. Four more bring member 0 to 5.8e-4 for 7.4k more DoFs, so that
+     * member 1 certifies 1e-3 (doc/accuracy-vs-time.md, "The slip wedge
+     * graded deeper").
+     */
+    constexpr unsigned int slip_wedge_extra_levels = 4;
     /** Surface layers of member 0 (G ~ depth^alpha soil). */
     constexpr unsigned int first_surface_layers = 2;
 
@@ -51,6 +62,14 @@ namespace FourierSSI
      */
     std::vector<Point<2>>
     singular_points(const MeshBuilder &mesh);
+
+    /**
+     * The singular points (singular_points()) that end an interface line
+     * whose law lets it slide freely (ks = 0: smooth, or tied in the normal
+     * only): the slip wedges.
+     */
+    std::vector<Point<2>>
+    slip_wedge_points(const AllParameters &parameters);
 
     /** The a priori refinements of member `member` (user's entries added). */
     AdaptivityParameters

@@ -20,7 +20,8 @@
  *      smooth-interface slip wedge (doc/accuracy-vs-time.md), 2^-0.7 = 0.62,
  *      taken as `one_halving_ratio` = 0.65;
  *    - a member of the Target accuracy family (discretization_design.h),
- *      `design_member_ratio(nu)`, measured, not derived; see there.
+ *      `design_member_ratio(nu, slip_wedges)`, measured, not derived; see
+ *      there.
  */
 #ifndef fourier_ssi_sequence_error_estimate_h
 #define fourier_ssi_sequence_error_estimate_h
@@ -48,9 +49,11 @@ namespace FourierSSI
 
   /**
    * The assumed member ratio of the Target accuracy family, by the largest
-   * Poisson's ratio nu of the scene's materials:
-   *   0.4 for nu <  locking_poisson_ratio (0.45, input_checks.h),
-   *   0.6 for nu >= locking_poisson_ratio.
+   * Poisson's ratio nu of the scene's materials and whether the scene has
+   * a slip wedge (the end of a smooth interface,
+   * DiscretizationDesign::slip_wedge_points):
+   *   0.4 for nu <  locking_poisson_ratio (0.45, input_checks.h) without,
+   *   0.6 for nu >= locking_poisson_ratio, or with a slip wedge.
    * Measured, not derived. With two values the estimate is |d| r/(1-r)
    * and the truth |d| rho/(1-rho), rho = e_1/e_0 the member 0 -> 1 error
    * ratio, so the effectivity is (r/(1-r)) / (rho/(1-rho)) (eq. (2) of
@@ -74,9 +77,16 @@ namespace FourierSSI
    * Babuska & Suri 1992) until h resolves it; the threshold is the one at
    * which FE_Q(2) switches to B-bar. One ratio for all, 0.6, would
    * over-report the nu = 0.25 footings up to 7x and Table 4.1 up to 45x.
+   * Smooth interfaces: with their slip wedges graded deeper
+   * (slip_wedge_extra_levels) the smooth footings converge at rho = 0.20
+   * ... 0.26, but the smooth flexible pile at nu = 0.25 at 0.58 ... 0.61
+   * (three members, inferred; 0.46 ... 0.49 before the deeper grading),
+   * which 0.4 printed at 0.42 ... 0.48 of the truth. With 0.6: 0.96 ...
+   * 1.09 there, 4.3 ... 6.0 on the smooth footings.
    */
   double
-  design_member_ratio(const double largest_poisson_ratio);
+  design_member_ratio(const double largest_poisson_ratio,
+                      const bool   slip_wedges);
 
   /**
    * Eq. (1) for the last of `values` (at least two, nested meshes, coarse
