@@ -10,6 +10,7 @@
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/lapack_templates.h>
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/vector_tools.h>
@@ -177,6 +178,29 @@ namespace FourierSSI
     system_matrix.reinit(sparsity_pattern);
   }
 
+  namespace
+  {
+    /**
+     * matrix = G^T G (G: rows x columns, stored by rows) by BLAS syrk on
+     * its upper triangle, mirrored: exactly symmetric, as the direct
+     * solvers read one triangle only.
+     */
+    void
+    gram_matrix(const FullMatrix<double> &G, FullMatrix<double> &matrix)
+    {
+      const types::blas_int n = G.n(), k = G.m();
+      const double          one = 1., zero = 0.;
+      // G by rows is G^T by columns (leading dimension n): G^T G = A A^T.
+      std::vector<double> product(static_cast<std::size_t>(n) * n);
+      syrk("U", "N", &n, &k, &one, &G(0, 0), &n, &zero, product.data(), &n);
+      matrix.reinit(n, n);
+      for (types::blas_int j = 0; j < n; ++j)
+        for (types::blas_int i = 0; i <= j; ++i)
+          matrix(i, j) = matrix(j, i) =
+            product[i + static_cast<std::size_t>(j) * n];
+    }
+  } // namespace
+
   void
   HarmonicProblem::local_matrix(
     const typename DoFHandler<2>::active_cell_iterator &cell,
@@ -192,7 +216,6 @@ namespace FourierSSI
 
     const ElasticMaterial &material =
       parameters.materials.get(cell->material_id());
-    std::vector<StrainVector> strain(dofs_per_cell), stress(dofs_per_cell);
     std::vector<unsigned int> component(dofs_per_cell);
     for (unsigned int i = 0; i < dofs_per_cell; ++i)
       component[i] = fe->system_to_component_index(i).first;
@@ -213,35 +236,47 @@ namespace FourierSSI
     if (parameters.discretization.volumetric == "bbar" && fe->degree == 2)
       replace_dilatation(fe_values, strain_at);
 
-    // matrix = sum over q of strain_q^T stress_q, formed as one product of
-    // the stacked (6 n_q) x dofs strain and weighted stress tables: a BLAS-3
-    // product (FullMatrix::Tmmult) in place of the scalar triple loop: the
-    // assembly of the embedded footing's 53k-DoF FE_Q(4) mesh fell from
-    // 0.41-0.60 s to 0.26-0.30 s (doc/accuracy-vs-time.md, "Where the time
+    // matrix = sum over q of strain_q^T W D strain_q dV (W: the theta
+    // integral of each strain's trig factor, equal on rr, zz, tt, rz). With
+    // the bulk modulus K = lambda + 2 mu / 3 > 0 (nu > -1) the energy
+    // density is K tr^2 + 2 mu |dev e_normal|^2 + mu (e_rz^2 + e_zt^2 +
+    // e_rt^2) per weight, a sum of 7 squares: matrix = G^T G with G the
+    // stacked (7 n_q) x dofs table of their square roots, one BLAS syrk
+    // (half the flops of the general product of the 6-row strain and
+    // stress tables it replaces; doc/accuracy-vs-time.md, "Where the time
     // goes").
-    FullMatrix<double> strain_table(6 * n_q, dofs_per_cell);
-    FullMatrix<double> stress_table(6 * n_q, dofs_per_cell);
+    constexpr unsigned int squares = 7;
+    FullMatrix<double>     factor_table(squares * n_q, dofs_per_cell);
     for (const unsigned int q : fe_values.quadrature_point_indices())
       {
-        const Point<2> &x      = fe_values.quadrature_point(q);
-        const double    r      = x[0];
-        const double    depth  = parameters.materials.depth(x[1]);
-        const double    mu     = material.shear_modulus(depth);
-        const double    lambda = material.lambda(depth);
-        const double    dV     = r * fe_values.JxW(q);
-
+        const Point<2> &x     = fe_values.quadrature_point(q);
+        const double    r     = x[0];
+        const double    depth = parameters.materials.depth(x[1]);
+        const double    mu    = material.shear_modulus(depth);
+        const double    bulk  = material.lambda(depth) + 2. * mu / 3.;
+        const double    dV    = r * fe_values.JxW(q);
+        const double    in    = harmonic_operator.weight(StrainIndex::rr) * dV;
+        const double    out   = harmonic_operator.weight(StrainIndex::rt) * dV;
+        const std::array<double, squares> scale = {{std::sqrt(bulk * in),
+                                                    std::sqrt(2. * mu * in),
+                                                    std::sqrt(2. * mu * in),
+                                                    std::sqrt(2. * mu * in),
+                                                    std::sqrt(mu * in),
+                                                    std::sqrt(mu * out),
+                                                    std::sqrt(mu * out)}};
         for (unsigned int i = 0; i < dofs_per_cell; ++i)
           {
-            strain[i] = strain_at[q][i];
-            // Stress weighted with the theta integral of each strain's trig
-            // factor, so that strain[i] . stress[j] is the 3D energy product.
-            stress[i] = hooke_stress(strain[i], lambda, mu);
-            for (unsigned int k = 0; k < 6; ++k)
-              {
-                strain_table(6 * q + k, i) = strain[i][k];
-                stress_table(6 * q + k, i) =
-                  stress[i][k] * harmonic_operator.weight(k) * dV;
-              }
+            const StrainVector               &e     = strain_at[q][i];
+            const double                      trace = e[0] + e[1] + e[2];
+            const std::array<double, squares> part  = {{trace,
+                                                        e[0] - trace / 3.,
+                                                        e[1] - trace / 3.,
+                                                        e[2] - trace / 3.,
+                                                        e[StrainIndex::rz],
+                                                        e[StrainIndex::zt],
+                                                        e[StrainIndex::rt]}};
+            for (unsigned int k = 0; k < squares; ++k)
+              factor_table(squares * q + k, i) = scale[k] * part[k];
           }
 
         if (rhs)
@@ -257,12 +292,7 @@ namespace FourierSSI
               }
           }
       }
-    strain_table.Tmmult(matrix, stress_table);
-    // The product is symmetric up to round-off; its lower triangle is kept
-    // on both sides, as the direct solvers read one triangle only.
-    for (unsigned int i = 0; i < dofs_per_cell; ++i)
-      for (unsigned int j = i + 1; j < dofs_per_cell; ++j)
-        matrix(i, j) = matrix(j, i);
+    gram_matrix(factor_table, matrix);
 
     if (rhs)
       local_traction(cell, *rhs);
