@@ -360,12 +360,15 @@ namespace FourierSSI
         bool touched = false;
         for (unsigned int pass = 0; pass < layer.levels; ++pass)
           {
-            const double tolerance =
-              1e-6 * GridTools::minimal_cell_diameter(triangulation);
             for (const auto &cell : triangulation.active_cell_iterators())
               for (const auto &face : cell->face_iterators())
                 {
-                  const Point<2> c = face->center();
+                  // Relative to the face itself: a tolerance from the
+                  // smallest cell of a mesh graded 24 levels deep (1e-6 of
+                  // 2^-24 of a cell) fell below the round-off of the
+                  // surface's own coordinates, and no face was found.
+                  const double   tolerance = 1e-6 * face->diameter();
+                  const Point<2> c         = face->center();
                   if (std::abs(face->vertex(0)[fixed] - layer.value) >
                         tolerance ||
                       std::abs(face->vertex(1)[fixed] - layer.value) >
