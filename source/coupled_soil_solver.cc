@@ -279,12 +279,10 @@ namespace FourierSSI
         if (!set.owns(h))
           continue;
         const Vector<double> &pattern_load = set.problem(h).get_system_rhs();
-        Vector<double>        held(pattern_load.size());
-        if (const RigidFoundation *foundation = set.problem(h).get_foundation())
-          foundation->add_held_loads(held);
-        products[2 * h]     = held.norm_sqr();
-        products[2 * h + 1] = held * pattern_load;
-        b[h]                = {std::move(held)};
+        Vector<double>        held         = held_load(h);
+        products[2 * h]                    = held.norm_sqr();
+        products[2 * h + 1]                = held * pattern_load;
+        b[h]                               = {std::move(held)};
       }
     const std::vector<double> sums = sum_over_harmonics(products, 2);
     held_load_norm                 = std::sqrt(sums[0]);
@@ -1113,6 +1111,15 @@ namespace FourierSSI
     return u;
   }
 
+  Vector<double>
+  CoupledSoilSolver::held_load(const unsigned int h) const
+  {
+    Vector<double> held(set.problem(h).get_dof_handler().n_dofs());
+    if (const RigidFoundation *foundation = set.problem(h).get_foundation())
+      foundation->add_held_loads(held);
+    return held;
+  }
+
   double
   CoupledSoilSolver::load_work() const
   {
@@ -1123,14 +1130,8 @@ namespace FourierSSI
         {
           Vector<double> load = set.problem(h).get_system_rhs();
           load *= committed.load_factor;
-          if (const RigidFoundation *foundation =
-                set.problem(h).get_foundation();
-              foundation != nullptr && !held_solution.empty())
-            {
-              Vector<double> held(load.size());
-              foundation->add_held_loads(held);
-              load.add(committed.held_fraction, held);
-            }
+          if (!held_solution.empty())
+            load.add(committed.held_fraction, held_load(h));
           parts[h] = load * total_displacement(committed, h);
         }
     return sum_over_harmonics(parts, 1)[0];

@@ -181,23 +181,21 @@ namespace FourierSSI
   namespace
   {
     /**
-     * matrix = G^T G (G: rows x columns, stored by rows) by BLAS syrk on
-     * its upper triangle, mirrored: exactly symmetric, as the direct
-     * solvers read one triangle only.
+     * matrix = G^T G (G: rows x columns, stored by rows) by BLAS syrk.
+     * Stored by rows, G is G^T by columns and matrix's lower triangle is
+     * the upper triangle syrk fills by columns; it is mirrored: exactly
+     * symmetric, as the direct solvers read one triangle only.
      */
     void
     gram_matrix(const FullMatrix<double> &G, FullMatrix<double> &matrix)
     {
       const types::blas_int n = G.n(), k = G.m();
       const double          one = 1., zero = 0.;
-      // G by rows is G^T by columns (leading dimension n): G^T G = A A^T.
-      std::vector<double> product(static_cast<std::size_t>(n) * n);
-      syrk("U", "N", &n, &k, &one, &G(0, 0), &n, &zero, product.data(), &n);
-      matrix.reinit(n, n);
-      for (types::blas_int j = 0; j < n; ++j)
-        for (types::blas_int i = 0; i <= j; ++i)
-          matrix(i, j) = matrix(j, i) =
-            product[i + static_cast<std::size_t>(j) * n];
+      matrix.reinit(n, n, /*omit_default_initialization=*/true);
+      syrk("U", "N", &n, &k, &one, &G(0, 0), &n, &zero, &matrix(0, 0), &n);
+      for (types::blas_int i = 0; i < n; ++i)
+        for (types::blas_int j = i + 1; j < n; ++j)
+          matrix(i, j) = matrix(j, i);
     }
   } // namespace
 
@@ -210,7 +208,6 @@ namespace FourierSSI
     FEValues<2> &fe_values = *cell_values;
     fe_values.reinit(cell);
     const unsigned int dofs_per_cell = fe->n_dofs_per_cell();
-    matrix.reinit(dofs_per_cell, dofs_per_cell);
     if (rhs)
       rhs->reinit(dofs_per_cell);
 

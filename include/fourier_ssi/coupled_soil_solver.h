@@ -325,6 +325,10 @@ namespace FourierSSI
                StepState      &state,
                SoilStepResult &result);
 
+    /** F_held,h: the held foundation loads of harmonic h (zero without). */
+    Vector<double>
+    held_load(const unsigned int h) const;
+
     /** u_h = lambda u_pattern + correction + rho u_held of a state. */
     Vector<double>
     total_displacement(const StepState &state, const unsigned int h) const;
