@@ -407,7 +407,7 @@ namespace FourierSSI
     if (!factorization)
       {
         SparseDirect direct(parameters.solver.direct_backend());
-        direct.initialize(system_matrix);
+        direct.initialize(system_matrix, cell_interior_dofs(dof_handler));
         return unit_load_coefficients(direct, unit_solutions);
       }
     return unit_load_coefficients(*factorization, unit_solutions);
@@ -420,7 +420,7 @@ namespace FourierSSI
       return;
     factorization =
       std::make_unique<SparseDirect>(parameters.solver.direct_backend());
-    factorization->initialize(system_matrix);
+    factorization->initialize(system_matrix, cell_interior_dofs(dof_handler));
     ++factorization_count;
   }
 

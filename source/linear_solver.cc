@@ -89,7 +89,7 @@ namespace FourierSSI
     if (is_direct())
       {
         SparseDirect direct(direct_backend());
-        direct.initialize(A);
+        direct.initialize(A, cell_interior_dofs(dof_handler));
         direct.vmult(x, b);
       }
     else

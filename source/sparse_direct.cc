@@ -55,7 +55,9 @@ namespace FourierSSI
   SparseDirect::~SparseDirect() = default;
 
   void
-  SparseDirect::initialize(const SparseMatrix<double> &A)
+  SparseDirect::initialize(
+    const SparseMatrix<double>                              &A,
+    const std::vector<std::vector<types::global_dof_index>> &eliminated_blocks)
   {
     const std::string singular =
       "Linear solver: the system matrix is singular (is the body free to "
@@ -75,57 +77,30 @@ namespace FourierSSI
 
     cholmod           = std::make_unique<Cholmod>();
     cholmod_common &c = cholmod->common;
-    // deal.II stores rows (CSR) with the diagonal first, then the other
-    // columns in ascending order. The lower triangle of row j (columns
-    // i <= j) is column j of the upper triangle in CSC: handed to CHOLMOD
-    // as a symmetric matrix with stype = +1 (upper), sorted with the
-    // diagonal last. The upper form is the one CHOLMOD's supernodal
-    // factorization takes after one permuted transpose; the lower form
-    // needed two.
-    const types::global_dof_index n       = A.m();
-    std::size_t                   n_upper = 0;
-    for (types::global_dof_index j = 0; j < n; ++j)
-      for (auto entry = A.begin(j); entry != A.end(j); ++entry)
-        if (entry->column() <= j)
-          ++n_upper;
-    cholmod_sparse *upper = cholmod_l_allocate_sparse(
-      n, n, n_upper, /*sorted=*/1, /*packed=*/1, 1, CHOLMOD_REAL, &c);
-    AssertThrow(upper, ExcMessage("Linear solver: out of memory (CHOLMOD)"));
-    auto       *column_start = static_cast<SuiteSparse_long *>(upper->p);
-    auto       *row_index    = static_cast<SuiteSparse_long *>(upper->i);
-    auto       *value        = static_cast<double *>(upper->x);
-    std::size_t k            = 0;
-    for (types::global_dof_index j = 0; j < n; ++j)
-      {
-        column_start[j]     = k;
-        double diagonal     = 0.;
-        bool   has_diagonal = false;
-        for (auto entry = A.begin(j); entry != A.end(j); ++entry)
-          if (entry->column() < j)
-            {
-              row_index[k] = entry->column();
-              value[k]     = entry->value();
-              ++k;
-            }
-          else if (entry->column() == j)
-            {
-              diagonal     = entry->value();
-              has_diagonal = true;
-            }
-        if (has_diagonal)
-          {
-            row_index[k] = j;
-            value[k]     = diagonal;
-            ++k;
-          }
-      }
-    column_start[n] = k;
+    // The kept system after the cell interiors are condensed, handed to
+    // CHOLMOD as its upper triangle (stype = +1): the form its supernodal
+    // factorization takes after one permuted transpose.
+    StaticCondensation::UpperMatrix kept;
+    condensation.initialize(A, eliminated_blocks, kept);
+    cholmod_sparse view{};
+    view.nrow             = condensation.n_kept();
+    view.ncol             = condensation.n_kept();
+    view.nzmax            = kept.value.size();
+    view.p                = kept.column_start.data();
+    view.i                = kept.row_index.data();
+    view.x                = kept.value.data();
+    view.stype            = 1;
+    view.itype            = CHOLMOD_LONG;
+    view.xtype            = CHOLMOD_REAL;
+    view.dtype            = CHOLMOD_DOUBLE;
+    view.sorted           = 1;
+    view.packed           = 1;
+    cholmod_sparse *upper = &view;
 
     cholmod->factor     = cholmod_l_analyze(upper, &c);
     const bool analyzed = cholmod->factor != nullptr;
     if (analyzed)
       cholmod_l_factorize(upper, cholmod->factor, &c);
-    cholmod_l_free_sparse(&upper, &c);
     AssertThrow(analyzed && c.status != CHOLMOD_OUT_OF_MEMORY,
                 ExcMessage("Linear solver: out of memory (CHOLMOD)"));
     if (c.status == CHOLMOD_NOT_POSDEF)
@@ -137,7 +112,7 @@ namespace FourierSSI
         // the diagnosis that names the cause.
         cholmod.reset();
         backend = "lu";
-        initialize(A);
+        initialize(A, {});
         return;
       }
     AssertThrow(c.status == CHOLMOD_OK,
@@ -158,20 +133,16 @@ namespace FourierSSI
       }
     Assert(cholmod && cholmod->factor, ExcMessage("not initialized"));
     cholmod_common   &c = cholmod->common;
-    const std::size_t n = x[0].size();
+    const std::size_t n = condensation.n_kept();
     cholmod_dense    *rhs =
       cholmod_l_allocate_dense(n, x.size(), n, CHOLMOD_REAL, &c);
     AssertThrow(rhs, ExcMessage("Linear solver: out of memory (CHOLMOD)"));
-    auto *b = static_cast<double *>(rhs->x);
-    for (std::size_t j = 0; j < x.size(); ++j)
-      std::copy(x[j].begin(), x[j].end(), b + j * n);
+    condensation.condense(x, static_cast<double *>(rhs->x));
     cholmod_dense *solution =
       cholmod_l_solve(CHOLMOD_A, cholmod->factor, rhs, &c);
     cholmod_l_free_dense(&rhs, &c);
     AssertThrow(solution, ExcMessage("Linear solver: CHOLMOD solve failed"));
-    const auto *s = static_cast<const double *>(solution->x);
-    for (std::size_t j = 0; j < x.size(); ++j)
-      std::copy(s + j * n, s + (j + 1) * n, x[j].begin());
+    condensation.expand(static_cast<const double *>(solution->x), x);
     cholmod_l_free_dense(&solution, &c);
   }
 

@@ -30,8 +30,13 @@
 // bundled scene (irrelevant to the answer: the footing is rigid by exact
 // constraints) the tied FE_Q(4) footing gives 9e-11, with E = 1e3 5e-13, so
 // the tied cases use 1e3; and with the penalty kn of the bundled rough
-// interface: 2.4e-9 at kn = 1e10, 3e-11 at kn = 1e8, so the rough cases
-// (bundled E and kn) are bounded by 1e-8.
+// interface: 2.4e-9 at kn = 1e10, 3e-11 at kn = 1e8 (about eps kn / G,
+// G = 1e3 kPa at the footing: the residual of a row with penalty kn is
+// eps kn |u| however it is solved). At kn = 1e10 it depends on the
+// elimination order: 16 measured solver variants (CHOLMOD with AMD, METIS,
+// NESDIS, natural order, on the full matrix and with the cell interiors
+// condensed) gave 5e-10 ... 1.24e-8 on the two rough cases, i.e. up to
+// 5.6 eps kn / G. The rough cases are bounded by 20 eps kn / G = 4.4e-8.
 // Before the fix (a corner DoF in both resultants, and the nodal force of
 // hanging DoFs left out of the supports they hang from) every check here
 // failed: default scene 4.2e-3 (F_z) and 1.4e-2 (H), embedded footing
@@ -138,8 +143,8 @@ main()
   for (const FootingCase &c : {FootingCase{2, false, "tied", 1e-10},
                                FootingCase{4, false, "tied", 1e-10},
                                FootingCase{4, true, "tied", 1e-10},
-                               FootingCase{2, false, "rough", 1e-8},
-                               FootingCase{4, true, "rough", 1e-8}})
+                               FootingCase{2, false, "rough", 4.4e-8},
+                               FootingCase{4, true, "rough", 4.4e-8}})
     {
       const std::string scene =
         test_support::footing_one_cycle(c.degree) +

@@ -1,8 +1,15 @@
 // Hard-case stability (doc/robustness.md): interface penalty k = kn = ks from
 // 1e6 to 1e16 kPa/m on the embedded footing of prm/embedded-footing.prm (one
 // mesh level; soil G = 1e3 kPa at the footing depth). Asserts:
-//  - K_H and K_M increase monotonically with k up to 1e12 (a stiffer
-//    interface can only stiffen the system);
+//  - K_H and K_M increase monotonically with k up to 1e10 (a stiffer
+//    interface can only stiffen the system), and from 1e10 to 1e12 they do
+//    not fall by more than the round-off bound cond_scaled * eps = 5e-7
+//    (doc/robustness.md): the true increase there is the penalty deficit
+//    at 1e10, about 2.5e-7, below what the solve resolves at 1e12. Which
+//    side of it a run lands on depends on the elimination order only
+//    (measured K_H(1e12) vs the bonded value: -6e-8 with CHOLMOD's AMD on
+//    the full matrix, -1.3e-7 METIS, -1.1e-7 NESDIS, +6e-8 natural; with
+//    the cell interiors condensed -4.4e-7, -1.8e-7, +1.3e-7, +1.7e-8);
 //  - the bonded reference (same mesh, no interface lines: the footing cells
 //    share nodes with the soil) agrees with K(1e12) to 1e-6 relative
 //    (measured 1.5e-7 / 2.0e-7; penalty error ~ G / (k h) ~ 1e-8);
@@ -164,10 +171,14 @@ main(int argc, char **argv)
                       r.get("I_MH_from_M", h, 0),
                       k <= 1e12 ? 1e-6 : (k <= 1e14 ? 1e-4 : 1e-2));
     }
-  for (unsigned int i = 0; i + 1 < 4; ++i)
+  for (unsigned int i = 0; i + 1 < 3; ++i)
     check::that("K_H, K_M increase from k = " + std::to_string(i) +
                   "th to next value",
                 KH[i] < KH[i + 1] && KM[i] < KM[i + 1]);
+  const double round_off_1e12 = 5e-7; // cond_scaled * eps at k = 1e12
+  check::that("K_H, K_M from k = 1e10 to 1e12: no fall beyond round-off",
+              KH[3] > KH[2] * (1. - round_off_1e12) &&
+                KM[3] > KM[2] * (1. - round_off_1e12));
   for (unsigned int i = 4; i < ks.size(); ++i)
     {
       check::relative("K_H(k=1e" + std::to_string(6 + 2 * i) + ") vs K_H(1e12)",

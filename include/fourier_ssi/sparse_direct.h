@@ -18,6 +18,7 @@
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
+#include <fourier_ssi/static_condensation.h>
 #include <memory>
 #include <string>
 #include <vector>
@@ -38,10 +39,14 @@ namespace FourierSSI
 
     /**
      * Factorize A. Throws a one-line error if A is singular; Cholesky falls
-     * back to LU on a matrix that is not positive definite.
+     * back to LU on a matrix that is not positive definite. Cholesky first
+     * eliminates `eliminated_blocks` (cell_interior_dofs(): the cells'
+     * interior DoFs) by static condensation (static_condensation.h).
      */
     void
-    initialize(const SparseMatrix<double> &A);
+    initialize(const SparseMatrix<double> &A,
+               const std::vector<std::vector<types::global_dof_index>>
+                 &eliminated_blocks = {});
 
     /** x := A^-1 x. */
     void
@@ -59,6 +64,7 @@ namespace FourierSSI
     std::string backend;
     struct Cholmod;
     std::unique_ptr<Cholmod> cholmod;
+    StaticCondensation       condensation;
     SparseDirectUMFPACK      umfpack;
   };
 } // namespace FourierSSI

@@ -1,0 +1,338 @@
+#include <algorithm>
+#include <deal.II/lac/lapack_templates.h>
+#include <fourier_ssi/static_condensation.h>
+
+namespace FourierSSI
+{
+  std::vector<std::vector<types::global_dof_index>>
+  cell_interior_dofs(const DoFHandler<2> &dof_handler)
+  {
+    const FiniteElement<2> &fe         = dof_handler.get_fe();
+    const unsigned int      n_interior = fe.n_dofs_per_quad();
+    const unsigned int      first      = fe.get_first_quad_index();
+    std::vector<std::vector<types::global_dof_index>> blocks;
+    if (n_interior == 0)
+      return blocks;
+    std::vector<types::global_dof_index> dofs(fe.n_dofs_per_cell());
+    blocks.reserve(dof_handler.get_triangulation().n_active_cells());
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        cell->get_dof_indices(dofs);
+        blocks.emplace_back(dofs.begin() + first,
+                            dofs.begin() + first + n_interior);
+      }
+    return blocks;
+  }
+
+  void
+  StaticCondensation::reset(const types::global_dof_index n_dofs)
+  {
+    kept_index.resize(n_dofs);
+    kept_dofs.resize(n_dofs);
+    for (types::global_dof_index i = 0; i < n_dofs; ++i)
+      {
+        kept_index[i] = i;
+        kept_dofs[i]  = i;
+      }
+    eliminated.clear();
+    interior.clear();
+    coupling.clear();
+    factors.clear();
+    w.clear();
+  }
+
+  std::size_t
+  StaticCondensation::n_kept() const
+  {
+    return kept_dofs.size();
+  }
+
+  bool
+  StaticCondensation::initialize(
+    const SparseMatrix<double>                              &A,
+    const std::vector<std::vector<types::global_dof_index>> &blocks,
+    UpperMatrix                                             &kept)
+  {
+    const types::global_dof_index n = A.m();
+    reset(n);
+    // Which block each DoF is in; a block coupled to another block's DoFs
+    // (or sharing one) stays whole, and so does the other.
+    std::vector<int>  block_of(n, -1);
+    std::vector<bool> whole(blocks.size(), false);
+    for (unsigned int b = 0; b < blocks.size(); ++b)
+      for (const types::global_dof_index i : blocks[b])
+        {
+          if (block_of[i] >= 0)
+            whole[b] = whole[block_of[i]] = true;
+          block_of[i] = b;
+        }
+    for (unsigned int b = 0; b < blocks.size(); ++b)
+      for (const types::global_dof_index i : blocks[b])
+        for (auto entry = A.begin(i); entry != A.end(i); ++entry)
+          {
+            const int other = block_of[entry->column()];
+            if (other >= 0 && other != static_cast<int>(b))
+              whole[b] = whole[other] = true;
+          }
+    kept_dofs.clear();
+    for (types::global_dof_index i = 0; i < n; ++i)
+      if (block_of[i] >= 0 && !whole[block_of[i]])
+        kept_index[i] = -1;
+      else
+        {
+          kept_index[i] = kept_dofs.size();
+          kept_dofs.push_back(i);
+        }
+    copy_kept_part(A, kept);
+    local_position.assign(n, -1);
+    for (unsigned int b = 0; b < blocks.size(); ++b)
+      if (!whole[b] && !blocks[b].empty() &&
+          !eliminate_block(A, blocks[b], block_of, kept))
+        {
+          reset(n);
+          copy_kept_part(A, kept);
+          return false;
+        }
+    local_position = std::vector<int>();
+    return true;
+  }
+
+  void
+  StaticCondensation::copy_kept_part(const SparseMatrix<double> &A,
+                                     UpperMatrix                &kept) const
+  {
+    // deal.II stores rows with the diagonal first, then the other columns
+    // ascending. The lower triangle of row j (columns i <= j) is column j of
+    // the upper triangle (A is symmetric), written with the diagonal last.
+    kept.column_start.assign(1, 0);
+    kept.row_index.clear();
+    kept.value.clear();
+    kept.row_index.reserve(A.n_nonzero_elements() / 2 + A.m());
+    kept.value.reserve(A.n_nonzero_elements() / 2 + A.m());
+    for (const types::global_dof_index j : kept_dofs)
+      {
+        double diagonal     = 0.;
+        bool   has_diagonal = false;
+        for (auto entry = A.begin(j); entry != A.end(j); ++entry)
+          if (entry->column() < j && kept_index[entry->column()] >= 0)
+            {
+              kept.row_index.push_back(kept_index[entry->column()]);
+              kept.value.push_back(entry->value());
+            }
+          else if (entry->column() == j)
+            {
+              diagonal     = entry->value();
+              has_diagonal = true;
+            }
+        if (has_diagonal)
+          {
+            kept.row_index.push_back(kept_index[j]);
+            kept.value.push_back(diagonal);
+          }
+        kept.column_start.push_back(kept.row_index.size());
+      }
+  }
+
+  bool
+  StaticCondensation::eliminate_block(
+    const SparseMatrix<double>                 &A,
+    const std::vector<types::global_dof_index> &block,
+    const std::vector<int>                     &block_of,
+    UpperMatrix                                &kept)
+  {
+    const int b = block_of[block[0]];
+    // The coupling set C: the columns of the block's rows outside it.
+    std::vector<types::global_dof_index> &c = scratch_coupling;
+    c.clear();
+    for (const types::global_dof_index i : block)
+      for (auto entry = A.begin(i); entry != A.end(i); ++entry)
+        if (block_of[entry->column()] != b)
+          c.push_back(entry->column());
+    std::sort(c.begin(), c.end());
+    c.erase(std::unique(c.begin(), c.end()), c.end());
+
+    // A_II and A_IC, by columns; local_position: a DoF's row in
+    // [A_II A_IC]^T (block first, then C), -1 elsewhere.
+    const types::blas_int p = block.size(), m = c.size();
+    for (types::blas_int a = 0; a < p; ++a)
+      local_position[block[a]] = a;
+    for (types::blas_int r = 0; r < m; ++r)
+      local_position[c[r]] = p + r;
+    std::vector<double> &l = scratch_factor, &wb = scratch_w;
+    l.assign(p * p, 0.);
+    wb.assign(p * m, 0.);
+    for (types::blas_int a = 0; a < p; ++a)
+      for (auto entry = A.begin(block[a]); entry != A.end(block[a]); ++entry)
+        {
+          const int k = local_position[entry->column()];
+          if (k < p)
+            l[a + k * p] = entry->value();
+          else
+            wb[a + (k - p) * p] = entry->value();
+        }
+    for (const types::global_dof_index i : block)
+      local_position[i] = -1;
+    for (const types::global_dof_index i : c)
+      local_position[i] = -1;
+
+    // L L^T = A_II, W = L^-1 A_IC, U = W^T W (upper triangle).
+    types::blas_int info = 0;
+    potrf("L", &p, l.data(), &p, &info);
+    if (info != 0)
+      return false;
+    if (m > 0)
+      trtrs("L", "N", "N", &p, &m, l.data(), &p, wb.data(), &p, &info);
+    if (info != 0)
+      return false;
+    std::vector<double> &u = scratch_update;
+    u.resize(m * m);
+    const double one = 1., zero = 0.;
+    if (m > 0)
+      syrk("U", "T", &m, &p, &one, wb.data(), &p, &zero, u.data(), &m);
+
+    // S_CC -= U. C ascending and the kept numbering monotone, so the rows
+    // of column c of U are found by one walk down the kept column.
+    for (types::blas_int col = 0; col < m; ++col)
+      {
+        const std::int64_t kc  = kept_index[c[col]];
+        std::int64_t       pos = kept.column_start[kc];
+        const std::int64_t end = kept.column_start[kc + 1];
+        for (types::blas_int row = 0; row <= col; ++row)
+          {
+            const std::int64_t kr = kept_index[c[row]];
+            while (pos < end && kept.row_index[pos] < kr)
+              ++pos;
+            if (pos == end || kept.row_index[pos] != kr)
+              return false; // not in A's sparsity pattern
+            kept.value[pos] -= u[row + col * m];
+          }
+      }
+
+    eliminated.push_back({interior.size(),
+                          coupling.size(),
+                          factors.size(),
+                          w.size(),
+                          static_cast<unsigned int>(p),
+                          static_cast<unsigned int>(m)});
+    interior.insert(interior.end(), block.begin(), block.end());
+    coupling.insert(coupling.end(), c.begin(), c.end());
+    factors.insert(factors.end(), l.begin(), l.end());
+    w.insert(w.end(), wb.begin(), wb.end());
+    return true;
+  }
+
+  void
+  StaticCondensation::condense(std::vector<Vector<double>> &b,
+                               double                      *kept_rhs) const
+  {
+    const types::blas_int k = b.size();
+    std::vector<double>   y, t;
+    for (const Block &block : eliminated)
+      {
+        const types::blas_int p = block.n_interior, m = block.n_coupling;
+        const auto           *i = &interior[block.interior_start];
+        const auto           *c = &coupling[block.coupling_start];
+        y.resize(p * k);
+        for (types::blas_int j = 0; j < k; ++j)
+          for (types::blas_int a = 0; a < p; ++a)
+            y[a + j * p] = b[j][i[a]];
+        // y = L^-1 b_I; b_C -= W^T y.
+        types::blas_int info = 0;
+        trtrs("L",
+              "N",
+              "N",
+              &p,
+              &k,
+              &factors[block.factor_start],
+              &p,
+              y.data(),
+              &p,
+              &info);
+        for (types::blas_int j = 0; j < k; ++j)
+          for (types::blas_int a = 0; a < p; ++a)
+            b[j][i[a]] = y[a + j * p];
+        if (m == 0)
+          continue;
+        t.resize(m * k);
+        const double minus_one = -1., zero = 0.;
+        gemm("T",
+             "N",
+             &m,
+             &k,
+             &p,
+             &minus_one,
+             &w[block.w_start],
+             &p,
+             y.data(),
+             &p,
+             &zero,
+             t.data(),
+             &m);
+        for (types::blas_int j = 0; j < k; ++j)
+          for (types::blas_int r = 0; r < m; ++r)
+            b[j][c[r]] += t[r + j * m];
+      }
+    const std::size_t n = kept_dofs.size();
+    for (std::size_t j = 0; j < b.size(); ++j)
+      for (std::size_t r = 0; r < n; ++r)
+        kept_rhs[r + j * n] = b[j][kept_dofs[r]];
+  }
+
+  void
+  StaticCondensation::expand(const double                *kept_solution,
+                             std::vector<Vector<double>> &x) const
+  {
+    const std::size_t n = kept_dofs.size();
+    for (std::size_t j = 0; j < x.size(); ++j)
+      for (std::size_t r = 0; r < n; ++r)
+        x[j][kept_dofs[r]] = kept_solution[r + j * n];
+    const types::blas_int k = x.size();
+    std::vector<double>   y, xc;
+    for (const Block &block : eliminated)
+      {
+        const types::blas_int p = block.n_interior, m = block.n_coupling;
+        const auto           *i = &interior[block.interior_start];
+        const auto           *c = &coupling[block.coupling_start];
+        // x_I = L^-T (y - W x_C), y = L^-1 b_I left by condense().
+        y.resize(p * k);
+        for (types::blas_int j = 0; j < k; ++j)
+          for (types::blas_int a = 0; a < p; ++a)
+            y[a + j * p] = x[j][i[a]];
+        if (m > 0)
+          {
+            xc.resize(m * k);
+            for (types::blas_int j = 0; j < k; ++j)
+              for (types::blas_int r = 0; r < m; ++r)
+                xc[r + j * m] = x[j][c[r]];
+            const double minus_one = -1., one = 1.;
+            gemm("N",
+                 "N",
+                 &p,
+                 &k,
+                 &m,
+                 &minus_one,
+                 &w[block.w_start],
+                 &p,
+                 xc.data(),
+                 &m,
+                 &one,
+                 y.data(),
+                 &p);
+          }
+        types::blas_int info = 0;
+        trtrs("L",
+              "T",
+              "N",
+              &p,
+              &k,
+              &factors[block.factor_start],
+              &p,
+              y.data(),
+              &p,
+              &info);
+        for (types::blas_int j = 0; j < k; ++j)
+          for (types::blas_int a = 0; a < p; ++a)
+            x[j][i[a]] = y[a + j * p];
+      }
+  }
+} // namespace FourierSSI
