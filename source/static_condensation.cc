@@ -84,10 +84,45 @@ namespace FourierSSI
           kept_dofs.push_back(i);
         }
     copy_kept_part(A, kept);
-    local_position.assign(n, -1);
+
+    // Each condensed block's coupling set C (the columns of its rows outside
+    // it), then the storage of all L and W at once, sized exactly.
     for (unsigned int b = 0; b < blocks.size(); ++b)
-      if (!whole[b] && !blocks[b].empty() &&
-          !eliminate_block(A, blocks[b], block_of, kept))
+      if (!whole[b] && !blocks[b].empty())
+        {
+          Block block;
+          block.interior_start = interior.size();
+          block.coupling_start = coupling.size();
+          interior.insert(interior.end(), blocks[b].begin(), blocks[b].end());
+          for (const types::global_dof_index i : blocks[b])
+            for (auto entry = A.begin(i); entry != A.end(i); ++entry)
+              if (block_of[entry->column()] != static_cast<int>(b))
+                coupling.push_back(entry->column());
+          const auto first = coupling.begin() + block.coupling_start;
+          std::sort(first, coupling.end());
+          coupling.erase(std::unique(first, coupling.end()), coupling.end());
+          block.n_interior = blocks[b].size();
+          block.n_coupling = coupling.size() - block.coupling_start;
+          block.factor_start =
+            eliminated.empty() ?
+              0 :
+              eliminated.back().factor_start +
+                eliminated.back().n_interior * eliminated.back().n_interior;
+          block.w_start = eliminated.empty() ? 0 :
+                                               eliminated.back().w_start +
+                                                 eliminated.back().n_interior *
+                                                   eliminated.back().n_coupling;
+          eliminated.push_back(block);
+        }
+    if (!eliminated.empty())
+      {
+        const Block &last = eliminated.back();
+        factors.resize(last.factor_start + last.n_interior * last.n_interior);
+        w.resize(last.w_start + last.n_interior * last.n_coupling);
+      }
+    local_position.assign(n, -1);
+    for (const Block &block : eliminated)
+      if (!eliminate_block(A, block, kept))
         {
           reset(n);
           copy_kept_part(A, kept);
@@ -134,35 +169,24 @@ namespace FourierSSI
   }
 
   bool
-  StaticCondensation::eliminate_block(
-    const SparseMatrix<double>                 &A,
-    const std::vector<types::global_dof_index> &block,
-    const std::vector<int>                     &block_of,
-    UpperMatrix                                &kept)
+  StaticCondensation::eliminate_block(const SparseMatrix<double> &A,
+                                      const Block                &block,
+                                      UpperMatrix                &kept)
   {
-    const int b = block_of[block[0]];
-    // The coupling set C: the columns of the block's rows outside it.
-    std::vector<types::global_dof_index> &c = scratch_coupling;
-    c.clear();
-    for (const types::global_dof_index i : block)
-      for (auto entry = A.begin(i); entry != A.end(i); ++entry)
-        if (block_of[entry->column()] != b)
-          c.push_back(entry->column());
-    std::sort(c.begin(), c.end());
-    c.erase(std::unique(c.begin(), c.end()), c.end());
+    const types::blas_int p = block.n_interior, m = block.n_coupling;
+    const auto           *i  = &interior[block.interior_start];
+    const auto           *c  = &coupling[block.coupling_start];
+    double               *l  = &factors[block.factor_start];
+    double               *wb = &w[block.w_start];
 
-    // A_II and A_IC, by columns; local_position: a DoF's row in
-    // [A_II A_IC]^T (block first, then C), -1 elsewhere.
-    const types::blas_int p = block.size(), m = c.size();
+    // A_II into l, A_IC into wb, by columns; local_position: a DoF's row
+    // in [A_II A_IC]^T (block first, then C), -1 elsewhere.
     for (types::blas_int a = 0; a < p; ++a)
-      local_position[block[a]] = a;
+      local_position[i[a]] = a;
     for (types::blas_int r = 0; r < m; ++r)
       local_position[c[r]] = p + r;
-    std::vector<double> &l = scratch_factor, &wb = scratch_w;
-    l.assign(p * p, 0.);
-    wb.assign(p * m, 0.);
     for (types::blas_int a = 0; a < p; ++a)
-      for (auto entry = A.begin(block[a]); entry != A.end(block[a]); ++entry)
+      for (auto entry = A.begin(i[a]); entry != A.end(i[a]); ++entry)
         {
           const int k = local_position[entry->column()];
           if (k < p)
@@ -170,25 +194,25 @@ namespace FourierSSI
           else
             wb[a + (k - p) * p] = entry->value();
         }
-    for (const types::global_dof_index i : block)
-      local_position[i] = -1;
-    for (const types::global_dof_index i : c)
-      local_position[i] = -1;
+    for (types::blas_int a = 0; a < p; ++a)
+      local_position[i[a]] = -1;
+    for (types::blas_int r = 0; r < m; ++r)
+      local_position[c[r]] = -1;
 
     // L L^T = A_II, W = L^-1 A_IC, U = W^T W (upper triangle).
     types::blas_int info = 0;
-    potrf("L", &p, l.data(), &p, &info);
+    potrf("L", &p, l, &p, &info);
     if (info != 0)
       return false;
     if (m > 0)
-      trtrs("L", "N", "N", &p, &m, l.data(), &p, wb.data(), &p, &info);
+      trtrs("L", "N", "N", &p, &m, l, &p, wb, &p, &info);
     if (info != 0)
       return false;
     std::vector<double> &u = scratch_update;
     u.resize(m * m);
     const double one = 1., zero = 0.;
     if (m > 0)
-      syrk("U", "T", &m, &p, &one, wb.data(), &p, &zero, u.data(), &m);
+      syrk("U", "T", &m, &p, &one, wb, &p, &zero, u.data(), &m);
 
     // S_CC -= U. C ascending and the kept numbering monotone, so the rows
     // of column c of U are found by one walk down the kept column.
@@ -207,17 +231,6 @@ namespace FourierSSI
             kept.value[pos] -= u[row + col * m];
           }
       }
-
-    eliminated.push_back({interior.size(),
-                          coupling.size(),
-                          factors.size(),
-                          w.size(),
-                          static_cast<unsigned int>(p),
-                          static_cast<unsigned int>(m)});
-    interior.insert(interior.end(), block.begin(), block.end());
-    coupling.insert(coupling.end(), c.begin(), c.end());
-    factors.insert(factors.end(), l.begin(), l.end());
-    w.insert(w.end(), wb.begin(), wb.end());
     return true;
   }
 

@@ -93,12 +93,16 @@ namespace FourierSSI
     void
     copy_kept_part(const SparseMatrix<double> &A, UpperMatrix &kept) const;
 
-    /** Factor one block and subtract W^T W from `kept`; false if it cannot. */
+    struct Block;
+
+    /**
+     * Factor one block into its slots of `factors` and `w` and subtract
+     * W^T W from `kept`; false if it cannot.
+     */
     bool
-    eliminate_block(const SparseMatrix<double>                 &A,
-                    const std::vector<types::global_dof_index> &block,
-                    const std::vector<int>                     &block_of,
-                    UpperMatrix                                &kept);
+    eliminate_block(const SparseMatrix<double> &A,
+                    const Block                &block,
+                    UpperMatrix                &kept);
 
     /** Full index -> kept index (-1: eliminated). */
     std::vector<std::int64_t> kept_index;
@@ -118,9 +122,8 @@ namespace FourierSSI
     std::vector<double>                  w;       // W, p x |C| by columns
 
     /** Work arrays of initialize(), kept between blocks. */
-    std::vector<int>                     local_position;
-    std::vector<types::global_dof_index> scratch_coupling;
-    std::vector<double> scratch_factor, scratch_w, scratch_update;
+    std::vector<int>    local_position;
+    std::vector<double> scratch_update;
   };
 } // namespace FourierSSI
 
