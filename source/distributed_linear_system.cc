@@ -98,8 +98,8 @@ namespace FourierSSI
   }
 
   double
-  DistributedLinearSystem::assemble(const LocalMatrix &local_matrix,
-                                    Vector<double>    &rhs)
+  DistributedLinearSystem::assemble(const LocalMatrixFactory &local_matrix,
+                                    Vector<double>           &rhs)
   {
     matrix = 0.;
     Vector<double> local_rhs(dof_handler->n_dofs());
@@ -109,6 +109,7 @@ namespace FourierSSI
       interfaces,
       [this](const unsigned int cell) { return cell_partition[cell] == rank; },
       local_matrix,
+      1, // MPI ranks fill the cores
       matrix,
       local_rhs);
     // Rows written on other ranks are summed into their owners here.

@@ -205,7 +205,37 @@ namespace FourierSSI
     FullMatrix<double>                                 &matrix,
     Vector<double>                                     *rhs) const
   {
-    FEValues<2> &fe_values = *cell_values;
+    local_matrix(*cell_values, *face_values, cell, matrix, rhs);
+  }
+
+  LocalMatrixFactory
+  HarmonicProblem::local_matrix_factory() const
+  {
+    return [this]() -> LocalMatrix {
+      auto values =
+        std::make_shared<FEValues<2>>(cell_values->get_mapping(),
+                                      cell_values->get_fe(),
+                                      cell_values->get_quadrature(),
+                                      cell_values->get_update_flags());
+      auto face =
+        std::make_shared<FEFaceValues<2>>(face_values->get_mapping(),
+                                          face_values->get_fe(),
+                                          face_values->get_quadrature(),
+                                          face_values->get_update_flags());
+      return [this, values, face](const auto &cell, auto &matrix, auto *rhs) {
+        local_matrix(*values, *face, cell, matrix, rhs);
+      };
+    };
+  }
+
+  void
+  HarmonicProblem::local_matrix(
+    FEValues<2>                                        &fe_values,
+    FEFaceValues<2>                                    &fe_face_values,
+    const typename DoFHandler<2>::active_cell_iterator &cell,
+    FullMatrix<double>                                 &matrix,
+    Vector<double>                                     *rhs) const
+  {
     fe_values.reinit(cell);
     const unsigned int dofs_per_cell = fe->n_dofs_per_cell();
     if (rhs)
@@ -292,18 +322,18 @@ namespace FourierSSI
     gram_matrix(factor_table, matrix);
 
     if (rhs)
-      local_traction(cell, *rhs);
+      local_traction(fe_face_values, cell, *rhs);
   }
 
   void
   HarmonicProblem::local_traction(
+    FEFaceValues<2>                                    &fe_face_values,
     const typename DoFHandler<2>::active_cell_iterator &cell,
     Vector<double>                                     &rhs) const
   {
     if (tractions.empty())
       return;
-    FEFaceValues<2> &fe_face_values = *face_values;
-    Vector<double>   traction(3);
+    Vector<double> traction(3);
     for (const auto f : cell->face_indices())
       {
         if (!cell->face(f)->at_boundary())
@@ -341,11 +371,8 @@ namespace FourierSSI
   {
     if (distributed)
       {
-        time_interface_assembly = distributed->assemble(
-          [this](const auto &cell, auto &matrix, auto *rhs) {
-            local_matrix(cell, matrix, rhs);
-          },
-          system_rhs);
+        time_interface_assembly =
+          distributed->assemble(local_matrix_factory(), system_rhs);
         if (foundation)
           foundation->add_loads(system_rhs);
         return;
@@ -357,9 +384,8 @@ namespace FourierSSI
       constraints,
       interfaces.get(),
       [](const unsigned int) { return true; },
-      [this](const auto &cell, auto &matrix, auto *rhs) {
-        local_matrix(cell, matrix, rhs);
-      },
+      local_matrix_factory(),
+      assembly_threads,
       system_matrix,
       system_rhs);
     // Foundation loads act on the (unconstrained) master DoFs.

@@ -69,6 +69,20 @@ namespace FourierSSI
     threads = uses_distributed_solve(parameters.solver, communicator) ?
                 1 :
                 std::max(1u, std::min<unsigned int>(wanted, harmonics.size()));
+    // Cores the harmonics leave idle (fewer harmonics than cores: a lone
+    // stiffness harmonic) serve the cell loops of their assembly. Under MPI
+    // the ranks share the node's cores.
+    const unsigned int n_world =
+      Utilities::MPI::job_supports_mpi() ?
+        Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) :
+        1;
+    const unsigned int cores =
+      std::max(1u, MultithreadInfo::n_cores() / n_world);
+    for (const auto &problem : problems)
+      problem->set_assembly_threads(
+        uses_distributed_solve(parameters.solver, communicator) ?
+          1 :
+          std::max(1u, cores / threads));
   }
 
   void

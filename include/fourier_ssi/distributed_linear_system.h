@@ -80,7 +80,7 @@ namespace FourierSSI
      * Returns this rank's wall time on the interface pairs.
      */
     double
-    assemble(const LocalMatrix &local_matrix, Vector<double> &rhs);
+    assemble(const LocalMatrixFactory &local_matrix, Vector<double> &rhs);
 
     /**
      * Solve A x = b (replicated vectors); the first nonzero solve builds the

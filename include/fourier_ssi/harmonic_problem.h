@@ -19,6 +19,7 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_out.h>
+#include <fourier_ssi/assembly_loop.h>
 #include <fourier_ssi/distributed_linear_system.h>
 #include <fourier_ssi/harmonic_operator.h>
 #include <fourier_ssi/interface_integrator.h>
@@ -82,6 +83,17 @@ namespace FourierSSI
                     const Triangulation<2>  &triangulation,
                     const LoadDecomposition *loads        = nullptr,
                     const MPI_Comm           communicator = MPI_COMM_SELF);
+
+    /**
+     * Threads for the cell loop of the assembly: the cores this harmonic
+     * does not share with other harmonics or ranks (HarmonicSet). The
+     * results are the same bit for bit on any number.
+     */
+    void
+    set_assembly_threads(const unsigned int n_threads)
+    {
+      assembly_threads = std::max(1u, n_threads);
+    }
 
     /** DoFs, constraints (hanging nodes, Dirichlet, axis), sparsity. */
     void
@@ -307,6 +319,21 @@ namespace FourierSSI
                  FullMatrix<double>                                 &matrix,
                  Vector<double>                                     *rhs) const;
 
+    /** The same on given scratch objects (one set per assembly thread). */
+    void
+    local_matrix(FEValues<2>     &fe_values,
+                 FEFaceValues<2> &fe_face_values,
+                 const typename DoFHandler<2>::active_cell_iterator &cell,
+                 FullMatrix<double>                                 &matrix,
+                 Vector<double>                                     *rhs) const;
+
+    /** A local_matrix() with scratch objects of its own (assembly_loop.h). */
+    LocalMatrixFactory
+    local_matrix_factory() const;
+
+    /** Threads of the cell loop (assembly_loop.h), not of the results. */
+    unsigned int assembly_threads = 1;
+
     /** The unit-H and unit-M cases with a given factorization. */
     FoundationCoefficients
     unit_load_coefficients(const SparseDirect          &direct,
@@ -330,7 +357,8 @@ namespace FourierSSI
 
     /** Add the surface tractions of one cell to its local load. */
     void
-    local_traction(const typename DoFHandler<2>::active_cell_iterator &cell,
+    local_traction(FEFaceValues<2> &fe_face_values,
+                   const typename DoFHandler<2>::active_cell_iterator &cell,
                    Vector<double> &rhs) const;
 
     const AllParameters             &parameters;
