@@ -234,6 +234,47 @@ namespace FourierSSI
     return true;
   }
 
+  namespace
+  {
+    /** dense (rows x k, by columns) = the entries `rows` of each x[j]. */
+    void
+    gather(const std::vector<Vector<double>> &x,
+           const types::global_dof_index     *rows,
+           const types::blas_int              n_rows,
+           std::vector<double>               &dense)
+    {
+      dense.resize(n_rows * x.size());
+      for (std::size_t j = 0; j < x.size(); ++j)
+        for (types::blas_int a = 0; a < n_rows; ++a)
+          dense[a + j * n_rows] = x[j][rows[a]];
+    }
+
+    /** The entries `rows` of each x[j] = (or +=) dense. */
+    void
+    scatter(const std::vector<double>     &dense,
+            const types::global_dof_index *rows,
+            const types::blas_int          n_rows,
+            const bool                     add,
+            std::vector<Vector<double>>   &x)
+    {
+      for (std::size_t j = 0; j < x.size(); ++j)
+        for (types::blas_int a = 0; a < n_rows; ++a)
+          x[j][rows[a]] = (add ? x[j][rows[a]] : 0.) + dense[a + j * n_rows];
+    }
+
+    /** y := L^-1 y ("N") or L^-T y ("T"), L lower (p x p), k columns. */
+    void
+    triangular_solve(const char           *transpose,
+                     const double         *l,
+                     const types::blas_int p,
+                     const types::blas_int k,
+                     std::vector<double>  &y)
+    {
+      types::blas_int info = 0;
+      trtrs("L", transpose, "N", &p, &k, l, &p, y.data(), &p, &info);
+    }
+  } // namespace
+
   void
   StaticCondensation::condense(std::vector<Vector<double>> &b,
                                double                      *kept_rhs) const
@@ -245,25 +286,10 @@ namespace FourierSSI
         const types::blas_int p = block.n_interior, m = block.n_coupling;
         const auto           *i = &interior[block.interior_start];
         const auto           *c = &coupling[block.coupling_start];
-        y.resize(p * k);
-        for (types::blas_int j = 0; j < k; ++j)
-          for (types::blas_int a = 0; a < p; ++a)
-            y[a + j * p] = b[j][i[a]];
-        // y = L^-1 b_I; b_C -= W^T y.
-        types::blas_int info = 0;
-        trtrs("L",
-              "N",
-              "N",
-              &p,
-              &k,
-              &factors[block.factor_start],
-              &p,
-              y.data(),
-              &p,
-              &info);
-        for (types::blas_int j = 0; j < k; ++j)
-          for (types::blas_int a = 0; a < p; ++a)
-            b[j][i[a]] = y[a + j * p];
+        // y = L^-1 b_I, kept in b_I for expand(); b_C -= W^T y.
+        gather(b, i, p, y);
+        triangular_solve("N", &factors[block.factor_start], p, k, y);
+        scatter(y, i, p, false, b);
         if (m == 0)
           continue;
         t.resize(m * k);
@@ -281,9 +307,7 @@ namespace FourierSSI
              &zero,
              t.data(),
              &m);
-        for (types::blas_int j = 0; j < k; ++j)
-          for (types::blas_int r = 0; r < m; ++r)
-            b[j][c[r]] += t[r + j * m];
+        scatter(t, c, m, true, b);
       }
     const std::size_t n = kept_dofs.size();
     for (std::size_t j = 0; j < b.size(); ++j)
@@ -307,16 +331,10 @@ namespace FourierSSI
         const auto           *i = &interior[block.interior_start];
         const auto           *c = &coupling[block.coupling_start];
         // x_I = L^-T (y - W x_C), y = L^-1 b_I left by condense().
-        y.resize(p * k);
-        for (types::blas_int j = 0; j < k; ++j)
-          for (types::blas_int a = 0; a < p; ++a)
-            y[a + j * p] = x[j][i[a]];
+        gather(x, i, p, y);
         if (m > 0)
           {
-            xc.resize(m * k);
-            for (types::blas_int j = 0; j < k; ++j)
-              for (types::blas_int r = 0; r < m; ++r)
-                xc[r + j * m] = x[j][c[r]];
+            gather(x, c, m, xc);
             const double minus_one = -1., one = 1.;
             gemm("N",
                  "N",
@@ -332,20 +350,8 @@ namespace FourierSSI
                  y.data(),
                  &p);
           }
-        types::blas_int info = 0;
-        trtrs("L",
-              "T",
-              "N",
-              &p,
-              &k,
-              &factors[block.factor_start],
-              &p,
-              y.data(),
-              &p,
-              &info);
-        for (types::blas_int j = 0; j < k; ++j)
-          for (types::blas_int a = 0; a < p; ++a)
-            x[j][i[a]] = y[a + j * p];
+        triangular_solve("T", &factors[block.factor_start], p, k, y);
+        scatter(y, i, p, false, x);
       }
   }
 } // namespace FourierSSI

@@ -29,11 +29,7 @@ namespace
   {
     const AllParameters parameters = test_support::parameters_from(prm_text);
     Triangulation<2>    triangulation;
-    parameters.mesh.build(triangulation);
-    std::set<types::boundary_id> interface_ids;
-    for (const auto &[id, law] : parameters.interfaces.laws)
-      interface_ids.insert(id);
-    refine_a_priori(triangulation, parameters.adaptivity, interface_ids);
+    test_support::build_refined_mesh(parameters, triangulation);
     HarmonicProblem problem(parameters,
                             Harmonic{1, Family::symmetric},
                             triangulation);

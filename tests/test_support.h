@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdlib>
 #include <deal.II/base/mpi.h>
+#include <fourier_ssi/adaptivity.h>
 #include <fourier_ssi/parameters.h>
 #include <fourier_ssi/simulator.h>
 #include <fstream>
@@ -198,6 +199,23 @@ namespace test_support
     const FourierSSI::AllParameters parameters = parameters_from(prm_text);
     FourierSSI::Simulator           simulator(parameters);
     return simulator.run(std::cout, /*write_files=*/false);
+  }
+
+  /**
+   * The scene's mesh as a run builds it without a target: the Mesh
+   * subsection, then the a priori refinement (points, boxes, layers).
+   */
+  inline void
+  build_refined_mesh(const FourierSSI::AllParameters &parameters,
+                     dealii::Triangulation<2>        &triangulation)
+  {
+    parameters.mesh.build(triangulation);
+    std::set<dealii::types::boundary_id> interface_ids;
+    for (const auto &[id, law] : parameters.interfaces.laws)
+      interface_ids.insert(id);
+    FourierSSI::refine_a_priori(triangulation,
+                                parameters.adaptivity,
+                                interface_ids);
   }
 } // namespace test_support
 
