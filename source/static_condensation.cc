@@ -55,9 +55,27 @@ namespace FourierSSI
   {
     const types::global_dof_index n = A.m();
     reset(n);
-    // Which block each DoF is in; a block coupled to another block's DoFs
-    // (or sharing one) stays whole, and so does the other.
-    std::vector<int>  block_of(n, -1);
+    const std::vector<int> block_of = condensed_block_of(A, blocks);
+    number_kept_dofs(block_of);
+    copy_kept_part(A, kept);
+    plan_blocks(A, blocks, block_of);
+    if (!eliminate_blocks(A, kept))
+      {
+        reset(n);
+        copy_kept_part(A, kept);
+        return false;
+      }
+    return true;
+  }
+
+  std::vector<int>
+  StaticCondensation::condensed_block_of(
+    const SparseMatrix<double>                              &A,
+    const std::vector<std::vector<types::global_dof_index>> &blocks) const
+  {
+    // A block that shares a DoF with another block, or couples to one,
+    // stays whole, and so does the other.
+    std::vector<int>  block_of(A.m(), -1);
     std::vector<bool> whole(blocks.size(), false);
     for (unsigned int b = 0; b < blocks.size(); ++b)
       for (const types::global_dof_index i : blocks[b])
@@ -74,25 +92,43 @@ namespace FourierSSI
             if (other >= 0 && other != static_cast<int>(b))
               whole[b] = whole[other] = true;
           }
+    for (int &b : block_of)
+      if (b >= 0 && whole[b])
+        b = -1;
+    return block_of;
+  }
+
+  void
+  StaticCondensation::number_kept_dofs(const std::vector<int> &block_of)
+  {
     kept_dofs.clear();
-    for (types::global_dof_index i = 0; i < n; ++i)
-      if (block_of[i] >= 0 && !whole[block_of[i]])
+    for (types::global_dof_index i = 0; i < block_of.size(); ++i)
+      if (block_of[i] >= 0)
         kept_index[i] = -1;
       else
         {
           kept_index[i] = kept_dofs.size();
           kept_dofs.push_back(i);
         }
-    copy_kept_part(A, kept);
+  }
 
+  void
+  StaticCondensation::plan_blocks(
+    const SparseMatrix<double>                              &A,
+    const std::vector<std::vector<types::global_dof_index>> &blocks,
+    const std::vector<int>                                  &block_of)
+  {
     // Each condensed block's coupling set C (the columns of its rows outside
     // it), then the storage of all L and W at once, sized exactly.
+    std::size_t n_factor = 0, n_w = 0;
     for (unsigned int b = 0; b < blocks.size(); ++b)
-      if (!whole[b] && !blocks[b].empty())
+      if (!blocks[b].empty() && block_of[blocks[b][0]] == static_cast<int>(b))
         {
           Block block;
           block.interior_start = interior.size();
           block.coupling_start = coupling.size();
+          block.factor_start   = n_factor;
+          block.w_start        = n_w;
           interior.insert(interior.end(), blocks[b].begin(), blocks[b].end());
           for (const types::global_dof_index i : blocks[b])
             for (auto entry = A.begin(i); entry != A.end(i); ++entry)
@@ -103,31 +139,22 @@ namespace FourierSSI
           coupling.erase(std::unique(first, coupling.end()), coupling.end());
           block.n_interior = blocks[b].size();
           block.n_coupling = coupling.size() - block.coupling_start;
-          block.factor_start =
-            eliminated.empty() ?
-              0 :
-              eliminated.back().factor_start +
-                eliminated.back().n_interior * eliminated.back().n_interior;
-          block.w_start = eliminated.empty() ? 0 :
-                                               eliminated.back().w_start +
-                                                 eliminated.back().n_interior *
-                                                   eliminated.back().n_coupling;
+          n_factor += block.n_interior * block.n_interior;
+          n_w += block.n_interior * block.n_coupling;
           eliminated.push_back(block);
         }
-    if (!eliminated.empty())
-      {
-        const Block &last = eliminated.back();
-        factors.resize(last.factor_start + last.n_interior * last.n_interior);
-        w.resize(last.w_start + last.n_interior * last.n_coupling);
-      }
-    local_position.assign(n, -1);
+    factors.resize(n_factor);
+    w.resize(n_w);
+  }
+
+  bool
+  StaticCondensation::eliminate_blocks(const SparseMatrix<double> &A,
+                                       UpperMatrix                &kept)
+  {
+    local_position.assign(A.m(), -1);
     for (const Block &block : eliminated)
       if (!eliminate_block(A, block, kept))
-        {
-          reset(n);
-          copy_kept_part(A, kept);
-          return false;
-        }
+        return false;
     local_position = std::vector<int>();
     return true;
   }

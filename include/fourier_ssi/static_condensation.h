@@ -90,8 +90,32 @@ namespace FourierSSI
     void
     reset(const types::global_dof_index n_dofs);
 
+    /**
+     * Each DoF's block if it is condensed, else -1 (kept DoFs, and the DoFs
+     * of blocks kept whole).
+     */
+    std::vector<int>
+    condensed_block_of(
+      const SparseMatrix<double>                              &A,
+      const std::vector<std::vector<types::global_dof_index>> &blocks) const;
+
+    /** kept_index and kept_dofs from the condensed DoFs. */
+    void
+    number_kept_dofs(const std::vector<int> &block_of);
+
+    /** The upper triangle of A's kept rows and columns. */
     void
     copy_kept_part(const SparseMatrix<double> &A, UpperMatrix &kept) const;
+
+    /** The condensed blocks, their coupling sets and their storage. */
+    void
+    plan_blocks(const SparseMatrix<double>                              &A,
+                const std::vector<std::vector<types::global_dof_index>> &blocks,
+                const std::vector<int> &block_of);
+
+    /** eliminate_block() on every planned block; false if one cannot. */
+    bool
+    eliminate_blocks(const SparseMatrix<double> &A, UpperMatrix &kept);
 
     struct Block;
 
