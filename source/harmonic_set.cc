@@ -66,7 +66,9 @@ namespace FourierSSI
         parameters, harmonic, triangulation, &loads, communicator));
     const unsigned int wanted =
       max_threads > 0 ? max_threads : MultithreadInfo::n_cores();
-    threads = uses_distributed_solve(parameters.solver, communicator) ?
+    const bool distributed =
+      uses_distributed_solve(parameters.solver, communicator);
+    threads = distributed ?
                 1 :
                 std::max(1u, std::min<unsigned int>(wanted, harmonics.size()));
     // Cores the harmonics leave idle (fewer harmonics than cores: a lone
@@ -79,10 +81,7 @@ namespace FourierSSI
     const unsigned int cores =
       std::max(1u, MultithreadInfo::n_cores() / n_world);
     for (const auto &problem : problems)
-      problem->set_assembly_threads(
-        uses_distributed_solve(parameters.solver, communicator) ?
-          1 :
-          std::max(1u, cores / threads));
+      problem->set_assembly_threads(distributed ? 1 : cores / threads);
   }
 
   void

@@ -83,24 +83,23 @@ namespace FourierSSI
     StaticCondensation::UpperMatrix kept;
     condensation.initialize(A, eliminated_blocks, kept);
     cholmod_sparse view{};
-    view.nrow             = condensation.n_kept();
-    view.ncol             = condensation.n_kept();
-    view.nzmax            = kept.value.size();
-    view.p                = kept.column_start.data();
-    view.i                = kept.row_index.data();
-    view.x                = kept.value.data();
-    view.stype            = 1;
-    view.itype            = CHOLMOD_LONG;
-    view.xtype            = CHOLMOD_REAL;
-    view.dtype            = CHOLMOD_DOUBLE;
-    view.sorted           = 1;
-    view.packed           = 1;
-    cholmod_sparse *upper = &view;
+    view.nrow   = condensation.n_kept();
+    view.ncol   = condensation.n_kept();
+    view.nzmax  = kept.value.size();
+    view.p      = kept.column_start.data();
+    view.i      = kept.row_index.data();
+    view.x      = kept.value.data();
+    view.stype  = 1;
+    view.itype  = CHOLMOD_LONG;
+    view.xtype  = CHOLMOD_REAL;
+    view.dtype  = CHOLMOD_DOUBLE;
+    view.sorted = 1;
+    view.packed = 1;
 
-    cholmod->factor     = cholmod_l_analyze(upper, &c);
+    cholmod->factor     = cholmod_l_analyze(&view, &c);
     const bool analyzed = cholmod->factor != nullptr;
     if (analyzed)
-      cholmod_l_factorize(upper, cholmod->factor, &c);
+      cholmod_l_factorize(&view, cholmod->factor, &c);
     AssertThrow(analyzed && c.status != CHOLMOD_OUT_OF_MEMORY,
                 ExcMessage("Linear solver: out of memory (CHOLMOD)"));
     if (c.status == CHOLMOD_NOT_POSDEF)

@@ -151,11 +151,11 @@ namespace FourierSSI
   StaticCondensation::eliminate_blocks(const SparseMatrix<double> &A,
                                        UpperMatrix                &kept)
   {
-    local_position.assign(A.m(), -1);
+    Workspace work;
+    work.local_position.assign(A.m(), -1);
     for (const Block &block : eliminated)
-      if (!eliminate_block(A, block, kept))
+      if (!eliminate_block(A, block, work, kept))
         return false;
-    local_position = std::vector<int>();
     return true;
   }
 
@@ -198,16 +198,17 @@ namespace FourierSSI
   bool
   StaticCondensation::eliminate_block(const SparseMatrix<double> &A,
                                       const Block                &block,
+                                      Workspace                  &work,
                                       UpperMatrix                &kept)
   {
+    std::vector<int>     &local_position = work.local_position;
     const types::blas_int p = block.n_interior, m = block.n_coupling;
     const auto           *i  = &interior[block.interior_start];
     const auto           *c  = &coupling[block.coupling_start];
     double               *l  = &factors[block.factor_start];
     double               *wb = &w[block.w_start];
 
-    // A_II into l, A_IC into wb, by columns; local_position: a DoF's row
-    // in [A_II A_IC]^T (block first, then C), -1 elsewhere.
+    // A_II into l, A_IC into wb, by columns (block first, then C).
     for (types::blas_int a = 0; a < p; ++a)
       local_position[i[a]] = a;
     for (types::blas_int r = 0; r < m; ++r)
@@ -235,7 +236,7 @@ namespace FourierSSI
       trtrs("L", "N", "N", &p, &m, l, &p, wb, &p, &info);
     if (info != 0)
       return false;
-    std::vector<double> &u = scratch_update;
+    std::vector<double> &u = work.update;
     u.resize(m * m);
     const double one = 1., zero = 0.;
     if (m > 0)

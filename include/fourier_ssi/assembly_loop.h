@@ -36,7 +36,7 @@ namespace FourierSSI
 
   namespace internal
   {
-    /** WorkStream copy data: the matrices, loads and DoFs of a chunk. */
+    /** One chunk's cell matrices, loads and DoFs, added in cell order. */
     struct ChunkCopy
     {
       std::vector<FullMatrix<double>>                   matrices;

@@ -120,12 +120,24 @@ namespace FourierSSI
     struct Block;
 
     /**
+     * Work arrays of eliminate_blocks(), shared by its blocks:
+     * local_position[i] is DoF i's row in [A_II A_IC]^T of the block at
+     * hand (-1 elsewhere), update its W^T W.
+     */
+    struct Workspace
+    {
+      std::vector<int>    local_position;
+      std::vector<double> update;
+    };
+
+    /**
      * Factor one block into its slots of `factors` and `w` and subtract
      * W^T W from `kept`; false if it cannot.
      */
     bool
     eliminate_block(const SparseMatrix<double> &A,
                     const Block                &block,
+                    Workspace                  &work,
                     UpperMatrix                &kept);
 
     /** Full index -> kept index (-1: eliminated). */
@@ -144,10 +156,6 @@ namespace FourierSSI
     std::vector<types::global_dof_index> coupling;
     std::vector<double>                  factors; // L, p x p by columns
     std::vector<double>                  w;       // W, p x |C| by columns
-
-    /** Work arrays of initialize(), kept between blocks. */
-    std::vector<int>    local_position;
-    std::vector<double> scratch_update;
   };
 } // namespace FourierSSI
 
