@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <atomic>
 #include <exception>
+#include <fourier_ssi/serial_blas.h>
 #include <fourier_ssi/thread_ranges.h>
 #include <thread>
 #include <vector>
@@ -36,7 +37,7 @@ namespace FourierSSI
       {
         std::vector<std::thread> workers;
         for (unsigned int t = 0; t < threads; ++t)
-          workers.emplace_back(work);
+          workers.push_back(serial_thread(work));
         for (auto &worker : workers)
           worker.join();
       }
