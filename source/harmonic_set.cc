@@ -5,6 +5,7 @@
 #include <exception>
 #include <fourier_ssi/harmonic_set.h>
 #include <fourier_ssi/messages.h>
+#include <fourier_ssi/serial_blas.h>
 #include <thread>
 
 namespace FourierSSI
@@ -49,12 +50,38 @@ namespace FourierSSI
     };
   } // namespace
 
+  unsigned int
+  HarmonicSet::cores_per_rank()
+  {
+    const unsigned int n_world =
+      Utilities::MPI::job_supports_mpi() ?
+        Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) :
+        1;
+    return std::max(1u, MultithreadInfo::n_cores() / n_world);
+  }
+
+  unsigned int
+  HarmonicSet::concurrent_harmonics(const AllParameters &parameters,
+                                    const unsigned int   n_harmonics,
+                                    const MPI_Comm       communicator,
+                                    const unsigned int   max_threads,
+                                    const unsigned int   cores)
+  {
+    if (uses_distributed_solve(parameters.solver, communicator))
+      return 1;
+    const unsigned int wanted =
+      max_threads > 0 ? max_threads : MultithreadInfo::n_cores();
+    const unsigned int at_once = std::min(wanted, n_harmonics);
+    return std::max(1u, cores > 0 ? std::min(at_once, cores) : at_once);
+  }
+
   HarmonicSet::HarmonicSet(const AllParameters         &parameters,
                            const std::vector<Harmonic> &harmonics,
                            const Triangulation<2>      &triangulation,
                            const LoadDecomposition     &loads,
                            const MPI_Comm               communicator,
-                           const unsigned int           max_threads)
+                           const unsigned int           max_threads,
+                           const unsigned int           cores)
     : parameters(parameters)
     , triangulation(triangulation)
     , loads(loads)
@@ -64,24 +91,15 @@ namespace FourierSSI
     for (const Harmonic &harmonic : harmonics)
       problems.push_back(std::make_shared<HarmonicProblem>(
         parameters, harmonic, triangulation, &loads, communicator));
-    const unsigned int wanted =
-      max_threads > 0 ? max_threads : MultithreadInfo::n_cores();
+    const unsigned int share = cores > 0 ? cores : cores_per_rank();
+    threads                  = concurrent_harmonics(
+      parameters, harmonics.size(), communicator, max_threads, cores);
+    // Cores the harmonics leave idle (fewer harmonics than cores: a lone
+    // stiffness harmonic) serve the cell loops of their assembly.
     const bool distributed =
       uses_distributed_solve(parameters.solver, communicator);
-    threads = distributed ?
-                1 :
-                std::max(1u, std::min<unsigned int>(wanted, harmonics.size()));
-    // Cores the harmonics leave idle (fewer harmonics than cores: a lone
-    // stiffness harmonic) serve the cell loops of their assembly. Under MPI
-    // the ranks share the node's cores.
-    const unsigned int n_world =
-      Utilities::MPI::job_supports_mpi() ?
-        Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) :
-        1;
-    const unsigned int cores =
-      std::max(1u, MultithreadInfo::n_cores() / n_world);
     for (const auto &problem : problems)
-      problem->set_assembly_threads(distributed ? 1 : cores / threads);
+      problem->set_assembly_threads(distributed ? 1 : share / threads);
   }
 
   void
@@ -116,7 +134,7 @@ namespace FourierSSI
         const SingleThreadedBlas single_threaded_blas;
         std::vector<std::thread> workers;
         for (unsigned int t = 0; t < threads; ++t)
-          workers.emplace_back(work);
+          workers.push_back(serial_thread(work));
         for (auto &worker : workers)
           worker.join();
       }

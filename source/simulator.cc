@@ -141,7 +141,7 @@ namespace FourierSSI
   {
     reconstruction = FieldReconstruction();
     harmonic_set.reset();
-    triangulation.clear();
+    triangulation->clear();
     interface_ids.clear();
     for (const auto &[id, law] : parameters.interfaces.laws)
       interface_ids.insert(id);
@@ -152,26 +152,26 @@ namespace FourierSSI
       DiscretizationDesign::build_member(parameters,
                                          0,
                                          interface_ids,
-                                         triangulation);
+                                         *triangulation);
     else
       {
-        parameters.mesh.build(triangulation);
-        refine_a_priori(triangulation, parameters.adaptivity, interface_ids);
+        parameters.mesh.build(*triangulation);
+        refine_a_priori(*triangulation, parameters.adaptivity, interface_ids);
       }
-    for (const auto &cell : triangulation.active_cell_iterators())
+    for (const auto &cell : triangulation->active_cell_iterators())
       parameters.materials.get(cell->material_id()); // throws if missing
   }
 
   void
   Simulator::make_plan(std::ostream &log)
   {
-    plan = plan_scene(parameters, triangulation);
+    plan = plan_scene(parameters, *triangulation);
     for (const std::string &line : plan.log_lines)
       log << line << std::endl;
     // Checks that can be made before anything is assembled (throw on bad
     // input, return warnings).
     for (const std::string &line :
-         check_scene_before_solve(parameters, triangulation, plan))
+         check_scene_before_solve(parameters, *triangulation, plan))
       log << line << std::endl;
     goal_estimator.reset();
     if (parameters.adaptivity.strategy == RefinementStrategy::goal)
@@ -188,9 +188,9 @@ namespace FourierSSI
     harmonic_set.reset();
     outcomes.clear();
     if (parameters.adaptivity.strategy == RefinementStrategy::global)
-      triangulation.refine_global(1);
+      triangulation->refine_global(1);
     else
-      indicator->refine(triangulation,
+      indicator->refine(*triangulation,
                         parameters.adaptivity.refine_fraction,
                         interface_ids);
   }
@@ -198,40 +198,61 @@ namespace FourierSSI
   void
   Simulator::solve_harmonics(const unsigned int cycle)
   {
-    harmonic_set = std::make_unique<HarmonicSet>(
-      parameters,
-      plan.harmonics,
-      triangulation,
-      plan.loads,
-      communicator,
-      parameters.discretization.concurrent_harmonics);
-    outcomes = std::vector<HarmonicOutcome>(harmonic_set->size());
     Timer timer;
     try
       {
-        harmonic_set->for_each(
-          [&](const unsigned int i) { solve_harmonic(i, cycle, outcomes[i]); });
+        solve_harmonics_on(
+          *triangulation, cycle, cores, harmonic_set, outcomes);
       }
     catch (const std::exception &e)
       {
-        // The harmonics that succeeded wrote files: removed by run().
-        for (const HarmonicOutcome &outcome : outcomes)
-          written.insert(written.end(),
-                         outcome.files.begin(),
-                         outcome.files.end());
-        AssertThrow(false,
-                    ExcMessage("cycle " + std::to_string(cycle) + ", " +
-                               one_line_message(e)));
+        fail_cycle(cycle, outcomes, e);
       }
     cycle_wall_time = timer.wall_time();
   }
 
   void
-  Simulator::solve_harmonic(const unsigned int i,
-                            const unsigned int cycle,
-                            HarmonicOutcome   &outcome) const
+  Simulator::solve_harmonics_on(const Triangulation<2>       &mesh,
+                                const unsigned int            cycle,
+                                const unsigned int            n_cores,
+                                std::unique_ptr<HarmonicSet> &set,
+                                std::vector<HarmonicOutcome> &solved) const
   {
-    HarmonicProblem   &problem = harmonic_set->problem(i);
+    set = std::make_unique<HarmonicSet>(
+      parameters,
+      plan.harmonics,
+      mesh,
+      plan.loads,
+      communicator,
+      parameters.discretization.concurrent_harmonics,
+      n_cores);
+    solved = std::vector<HarmonicOutcome>(set->size());
+    set->for_each([&](const unsigned int i) {
+      solve_harmonic(*set, mesh, i, cycle, solved[i]);
+    });
+  }
+
+  void
+  Simulator::fail_cycle(const unsigned int                  cycle,
+                        const std::vector<HarmonicOutcome> &solved,
+                        const std::exception               &e)
+  {
+    // The harmonics that succeeded wrote files: removed by run().
+    for (const HarmonicOutcome &outcome : solved)
+      written.insert(written.end(), outcome.files.begin(), outcome.files.end());
+    AssertThrow(false,
+                ExcMessage("cycle " + std::to_string(cycle) + ", " +
+                           one_line_message(e)));
+  }
+
+  void
+  Simulator::solve_harmonic(HarmonicSet            &set,
+                            const Triangulation<2> &mesh,
+                            const unsigned int      i,
+                            const unsigned int      cycle,
+                            HarmonicOutcome        &outcome) const
+  {
+    HarmonicProblem   &problem = set.problem(i);
     std::ostringstream unused;
     TimerOutput timer(unused, TimerOutput::never, TimerOutput::wall_times);
     {
@@ -258,8 +279,8 @@ namespace FourierSSI
     if (goal_estimator && outcome.solution.has_coefficients)
       {
         TimerOutput::Scope scope(timer, "estimate");
-        outcome.goal     = goal_estimator->estimate(harmonic_set->harmonic(i),
-                                                triangulation,
+        outcome.goal     = goal_estimator->estimate(set.harmonic(i),
+                                                mesh,
                                                 problem,
                                                 outcome.solution.unit_solutions,
                                                 outcome.solution.coefficients);
@@ -340,7 +361,7 @@ namespace FourierSSI
   void
   Simulator::collect_cycle(const unsigned int cycle, std::ostream &log)
   {
-    indicator = std::make_unique<RefinementIndicator>(triangulation);
+    indicator = std::make_unique<RefinementIndicator>(*triangulation);
     // The phases of a harmonic's pipeline, in order (TimerOutput sections).
     const std::vector<std::string> phases = {"setup",
                                              "assembly",

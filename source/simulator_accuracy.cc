@@ -4,12 +4,17 @@
 // from those values (sequence_error_estimate.h).
 #include <algorithm>
 #include <deal.II/base/timer.h>
+#include <deal.II/dofs/dof_handler.h>
 #include <fourier_ssi/discretization_design.h>
+#include <fourier_ssi/distributed_linear_system.h>
+#include <fourier_ssi/harmonic_problem.h>
 #include <fourier_ssi/input_checks.h>
 #include <fourier_ssi/messages.h>
+#include <fourier_ssi/serial_blas.h>
 #include <fourier_ssi/simulator.h>
 #include <iomanip>
 #include <sstream>
+#include <thread>
 
 namespace FourierSSI
 {
@@ -118,7 +123,7 @@ namespace FourierSSI
         parameters.boundary_conditions.dirichlet.empty())
       return; // no goal value
     Timer timer;
-    if (!DiscretizationDesign::coarsen_once(triangulation, interface_ids))
+    if (!DiscretizationDesign::coarsen_once(*triangulation, interface_ids))
       {
         log << "error estimate: none (the mesh has no refinement level to "
                "undo; set Discretization/Target accuracy, or Refinement "
@@ -145,6 +150,168 @@ namespace FourierSSI
     estimate_wall_time = timer.wall_time();
   }
 
+  std::unique_ptr<Triangulation<2>>
+  Simulator::member_mesh(const unsigned int member) const
+  {
+    auto mesh = std::make_unique<Triangulation<2>>();
+    DiscretizationDesign::build_member(parameters,
+                                       member,
+                                       interface_ids,
+                                       *mesh);
+    return mesh;
+  }
+
+  double
+  Simulator::cell_growth(const Triangulation<2> &next) const
+  {
+    // A member's DoFs scale from the current one's by the cell count
+    // (the decision is made before the next member is set up).
+    return static_cast<double>(next.n_active_cells()) /
+           triangulation->n_active_cells();
+  }
+
+  double
+  Simulator::solved_dofs() const
+  {
+    double dofs = 0.;
+    for (unsigned int i = 0; i < harmonic_set->size(); ++i)
+      dofs =
+        std::max<double>(dofs,
+                         harmonic_set->problem(i).get_dof_handler().n_dofs());
+    return dofs;
+  }
+
+  void
+  Simulator::target_unmet_at_limit(const unsigned int      member,
+                                   const double            dofs,
+                                   const Triangulation<2> &next,
+                                   std::ostream           &log)
+  {
+    std::ostringstream line;
+    line << "Discretization/Target accuracy "
+         << parameters.discretization.target_accuracy
+         << " not reached: estimated relative error ";
+    if (member >= 2)
+      line << std::setprecision(2) << largest_estimated_error();
+    else
+      line << "unknown (one mesh solved)";
+    line << " with " << static_cast<long long>(dofs)
+         << " DoFs; the next mesh (about "
+         << static_cast<long long>(dofs * cell_growth(next))
+         << " DoFs) exceeds Adaptivity/Maximum DoFs = " << std::setprecision(6)
+         << parameters.adaptivity.maximum_dofs;
+    target_not_reached = line.str();
+    log << target_not_reached << std::endl;
+  }
+
+  unsigned int
+  Simulator::available_cores() const
+  {
+    return cores > 0 ? cores : HarmonicSet::cores_per_rank();
+  }
+
+  bool
+  Simulator::members_fit_side_by_side() const
+  {
+    // Two members at once need twice the cores the harmonics of one take
+    // (a distributed solve's collective calls must not interleave), and
+    // member 1 within Maximum DoFs by the rule the sequential path applies
+    // after member 0, so that the cores never change which members are
+    // solved.
+    const unsigned int share   = available_cores();
+    const unsigned int at_once = HarmonicSet::concurrent_harmonics(
+      parameters,
+      plan.harmonics.size(),
+      communicator,
+      parameters.discretization.concurrent_harmonics,
+      0);
+    if (uses_distributed_solve(parameters.solver, communicator) ||
+        share < 2 * at_once)
+      return false;
+    DoFHandler<2> dof_handler(*triangulation);
+    dof_handler.distribute_dofs(
+      *make_displacement_element(parameters.discretization.degree));
+    try
+      {
+        return dof_handler.n_dofs() * cell_growth(*member_mesh(1)) <=
+               parameters.adaptivity.maximum_dofs;
+      }
+    catch (const std::exception &)
+      {
+        return false; // Mesh/Maximum DoFs: after member 0, as in sequence
+      }
+  }
+
+  void
+  Simulator::solve_two_members(std::ostream &log)
+  {
+    // Member 1 aside on its own mesh and half of the cores, member 0 on the
+    // current mesh and the other half.
+    std::unique_ptr<Triangulation<2>> next = member_mesh(1);
+    std::unique_ptr<HarmonicSet>      next_set;
+    std::vector<HarmonicOutcome>      next_outcomes;
+    double                            next_wall = 0.;
+    std::exception_ptr                next_error, error;
+    const unsigned int                share = available_cores();
+    log << "meshes 0 and 1 of the design solved side by side on " << share / 2
+        << " + " << share - share / 2
+        << " cores (the harmonics leave cores idle)" << std::endl;
+    std::thread aside = serial_thread([&]() {
+      Timer timer;
+      try
+        {
+          solve_harmonics_on(
+            *next, 1, share - share / 2, next_set, next_outcomes);
+        }
+      catch (...)
+        {
+          next_error = std::current_exception();
+        }
+      next_wall = timer.wall_time();
+    });
+    Timer       timer;
+    try
+      {
+        solve_harmonics_on(
+          *triangulation, 0, share / 2, harmonic_set, outcomes);
+      }
+    catch (...)
+      {
+        error = std::current_exception();
+      }
+    cycle_wall_time = timer.wall_time();
+    aside.join();
+    // Failures as the sequential path reports them: member 0's first.
+    if (error || next_error)
+      {
+        if (!error)
+          collect_cycle(0, log); // as member 0 would be before member 1
+        for (const HarmonicOutcome &outcome : next_outcomes)
+          written.insert(written.end(),
+                         outcome.files.begin(),
+                         outcome.files.end());
+        try
+          {
+            std::rethrow_exception(error ? error : next_error);
+          }
+        catch (const std::exception &e)
+          {
+            fail_cycle(error ? 0 : 1, outcomes, e);
+          }
+      }
+    collect_cycle(0, log);
+    record_goal_values();
+    // Member 1 becomes the current mesh: the fields of member 0 are
+    // released before its mesh.
+    reconstruction  = FieldReconstruction();
+    harmonic_set    = std::move(next_set);
+    outcomes        = std::move(next_outcomes);
+    triangulation   = std::move(next);
+    cycle_wall_time = next_wall;
+    collect_cycle(1, log);
+    record_goal_values();
+  }
+
   void
   Simulator::solve_to_target(std::ostream &log)
   {
@@ -160,69 +327,51 @@ namespace FourierSSI
              "accuracy"
           << std::endl;
     Timer        run_timer;
-    double       last_member_time = 0., dofs = 0.;
+    double       last_member_time = 0.;
     unsigned int member = 0, last_solved = 0;
     for (;; ++member)
       {
-        if (member > 0)
+        if (member == 0 && members_fit_side_by_side())
           {
-            // The next member's size: its mesh is built aside (cheap next
-            // to a solve) and its DoFs scaled from this member's by the
-            // cell count.
-            Triangulation<2> next;
-            DiscretizationDesign::build_member(parameters,
-                                               member,
-                                               interface_ids,
-                                               next);
-            const double growth = static_cast<double>(next.n_active_cells()) /
-                                  triangulation.n_active_cells();
-            if (dofs * growth > limit)
-              {
-                std::ostringstream line;
-                line << "Discretization/Target accuracy " << target
-                     << " not reached: estimated relative error ";
-                if (member >= 2)
-                  line << std::setprecision(2) << largest_estimated_error();
-                else
-                  line << "unknown (one mesh solved)";
-                line << " with " << static_cast<long long>(dofs)
-                     << " DoFs; the next mesh (about "
-                     << static_cast<long long>(dofs * growth)
-                     << " DoFs) exceeds Adaptivity/Maximum DoFs = "
-                     << std::setprecision(6) << limit;
-                target_not_reached = line.str();
-                log << target_not_reached << std::endl;
-                break;
-              }
-            reconstruction = FieldReconstruction();
-            harmonic_set.reset();
-            outcomes.clear();
-            DiscretizationDesign::build_member(parameters,
-                                               member,
-                                               interface_ids,
-                                               triangulation);
+            solve_two_members(log);
+            member           = 1;
+            last_member_time = cycle_wall_time;
           }
-        Timer member_timer;
+        else
+          {
+            if (member > 0)
+              {
+                std::unique_ptr<Triangulation<2>> next = member_mesh(member);
+                const double                      dofs = solved_dofs();
+                if (dofs * cell_growth(*next) > limit)
+                  {
+                    target_unmet_at_limit(member, dofs, *next, log);
+                    break;
+                  }
+                reconstruction = FieldReconstruction();
+                harmonic_set.reset();
+                outcomes.clear();
+                triangulation = std::move(next);
+              }
+            Timer member_timer;
+            solve_harmonics(member);
+            collect_cycle(member, log);
+            record_goal_values();
+            last_member_time = member_timer.wall_time();
+          }
         last_solved = member;
-        solve_harmonics(member);
-        collect_cycle(member, log);
-        record_goal_values();
-        last_member_time = member_timer.wall_time();
-        dofs             = 0.;
-        for (unsigned int i = 0; i < harmonic_set->size(); ++i)
-          dofs = std::max<double>(
-            dofs, harmonic_set->problem(i).get_dof_handler().n_dofs());
         if (member == 0)
           continue;
         const double error = largest_estimated_error();
         log << "target accuracy " << target << ": mesh " << member << ", "
-            << static_cast<long long>(dofs)
+            << static_cast<long long>(solved_dofs())
             << " DoFs, largest estimated relative error "
             << std::setprecision(2) << error << std::endl;
         if (error <= target)
           break;
       }
-    // The meshes before the answer's were solved for the estimate.
+    // The meshes before the answer's were solved for the estimate; side by
+    // side with the answer's, they cost only the wall time they add.
     estimate_wall_time = run_timer.wall_time() - last_member_time;
     report_error_estimates(last_solved, log);
   }

@@ -203,7 +203,7 @@ namespace FourierSSI
                                                        interface_ids,
                                                        next);
             const double more = static_cast<double>(next.n_active_cells()) /
-                                triangulation.n_active_cells();
+                                triangulation->n_active_cells();
             if (more * dofs > parameters.adaptivity.maximum_dofs)
               {
                 std::ostringstream why;
@@ -228,11 +228,11 @@ namespace FourierSSI
             DiscretizationDesign::build_plastic_member(parameters,
                                                        member,
                                                        interface_ids,
-                                                       triangulation);
+                                                       *triangulation);
           }
         Timer member_timer;
         log << "target accuracy " << target << ": mesh " << member << ", "
-            << triangulation.n_active_cells() << " cells" << std::endl;
+            << triangulation->n_active_cells() << " cells" << std::endl;
         // The truncation on the coarsest mesh: cheap, and the harmonics'
         // share of the error changes little with the mesh
         // (doc/soil-plasticity.md 8b).

@@ -132,7 +132,7 @@ namespace FourierSSI
         std::max(1u, MultithreadInfo::n_cores() / n_ranks);
     harmonic_set = std::make_unique<HarmonicSet>(parameters,
                                                  plan.harmonics,
-                                                 triangulation,
+                                                 *triangulation,
                                                  plan.loads,
                                                  MPI_COMM_SELF,
                                                  threads);

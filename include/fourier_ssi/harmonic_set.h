@@ -39,14 +39,33 @@ namespace FourierSSI
   public:
     /**
      * `max_threads`: how many harmonics may run at once (0 = the cores);
-     * forced to 1 for a distributed solve.
+     * forced to 1 for a distributed solve. `cores`: the cores the set may
+     * use (0 = cores_per_rank()); the harmonics run at once share them, and
+     * the ones they leave idle serve the cell loops of their assembly.
      */
     HarmonicSet(const AllParameters         &parameters,
                 const std::vector<Harmonic> &harmonics,
                 const Triangulation<2>      &triangulation,
                 const LoadDecomposition     &loads,
                 const MPI_Comm               communicator,
-                const unsigned int           max_threads);
+                const unsigned int           max_threads,
+                const unsigned int           cores = 0);
+
+    /** The node's cores shared among the MPI ranks of the job. */
+    static unsigned int
+    cores_per_rank();
+
+    /**
+     * How many of `n_harmonics` harmonics run at once (`max_threads` as in
+     * the constructor; 1 for a distributed solve), at most `cores` of them
+     * when `cores` > 0.
+     */
+    static unsigned int
+    concurrent_harmonics(const AllParameters &parameters,
+                         const unsigned int   n_harmonics,
+                         const MPI_Comm       communicator,
+                         const unsigned int   max_threads,
+                         const unsigned int   cores);
 
     unsigned int
     size() const

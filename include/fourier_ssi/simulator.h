@@ -46,6 +46,17 @@ namespace FourierSSI
     explicit Simulator(const AllParameters &parameters,
                        const MPI_Comm       communicator = MPI_COMM_SELF);
 
+    /**
+     * The cores a run may use (0, the default: the node's cores shared
+     * among the MPI ranks). Decides, e.g., whether two members of a target
+     * run are solved side by side.
+     */
+    void
+    set_cores(const unsigned int n_cores)
+    {
+      cores = n_cores;
+    }
+
     /** Run everything; returns the scalar results (also written as CSV). */
     ResultsTable
     run(std::ostream &log, const bool write_files = true);
@@ -61,7 +72,7 @@ namespace FourierSSI
     const Triangulation<2> &
     get_triangulation() const
     {
-      return triangulation;
+      return *triangulation;
     }
 
     /**
@@ -295,11 +306,72 @@ namespace FourierSSI
     void
     solve_harmonics(const unsigned int cycle);
 
-    /** One harmonic's pipeline; runs on a worker thread. */
+    /**
+     * Discretization/Target accuracy, members 0 (the current mesh) and 1
+     * at once, each on half of the cores (a lone harmonic leaves cores
+     * idle, and the design always needs two members before it can estimate
+     * anything); then both are collected in order and member 1 is the
+     * current mesh. Same values as one after the other:
+     * the assembly does not depend on its thread count.
+     */
     void
-    solve_harmonic(const unsigned int i,
-                   const unsigned int cycle,
-                   HarmonicOutcome   &outcome) const;
+    solve_two_members(std::ostream &log);
+
+    /** The designed mesh of `member` (discretization_design.h), aside. */
+    std::unique_ptr<Triangulation<2>>
+    member_mesh(const unsigned int member) const;
+
+    /** Cells of `next` over the current mesh's: how its DoFs scale. */
+    double
+    cell_growth(const Triangulation<2> &next) const;
+
+    /** The largest DoF count of the current mesh's solved harmonics. */
+    double
+    solved_dofs() const;
+
+    /**
+     * target_not_reached = "... not reached: ... the next mesh (about N
+     * DoFs) exceeds Adaptivity/Maximum DoFs"; logged.
+     */
+    void
+    target_unmet_at_limit(const unsigned int      member,
+                          const double            dofs,
+                          const Triangulation<2> &next,
+                          std::ostream           &log);
+
+    /** set_cores(), or the node's cores shared among the MPI ranks. */
+    unsigned int
+    available_cores() const;
+
+    /** True if two members fit side by side (solve_two_members()). */
+    bool
+    members_fit_side_by_side() const;
+
+    /**
+     * solve_harmonics() on any mesh: a new HarmonicSet on `n_cores` cores
+     * (0: the rank's share) and what each harmonic produced; throws on the
+     * first failure (the files written so far stay in `solved`).
+     */
+    void
+    solve_harmonics_on(const Triangulation<2>       &mesh,
+                       const unsigned int            cycle,
+                       const unsigned int            n_cores,
+                       std::unique_ptr<HarmonicSet> &set,
+                       std::vector<HarmonicOutcome> &solved) const;
+
+    /** Keep the files of `solved` for removal; throw "cycle N, <e>". */
+    void
+    fail_cycle(const unsigned int                  cycle,
+               const std::vector<HarmonicOutcome> &solved,
+               const std::exception               &e);
+
+    /** One harmonic of `set` on `mesh`; runs on a worker thread. */
+    void
+    solve_harmonic(HarmonicSet            &set,
+                   const Triangulation<2> &mesh,
+                   const unsigned int      i,
+                   const unsigned int      cycle,
+                   HarmonicOutcome        &outcome) const;
 
     /**
      * The scene load, and on the stiffness harmonic the unit-H and unit-M
@@ -371,15 +443,23 @@ namespace FourierSSI
 
     const AllParameters &parameters;
     const MPI_Comm       communicator;
-    bool                 write_files = true;
+    /** The cores this simulator may use (0: the rank's share). */
+    unsigned int cores       = 0;
+    bool         write_files = true;
     /** A solve made only for the error estimate: no files. */
     bool                     estimate_only = false;
     std::vector<GoalHistory> goal_histories;
     /** Wall time of the solves made only for the error estimate [s]. */
     double      estimate_wall_time = 0.;
     std::string target_not_reached;
-    /** Owned here: the reconstruction's DoF handlers live on it. */
-    Triangulation<2>                     triangulation;
+    /**
+     * The current mesh, owned here: the reconstruction's DoF handlers live
+     * on it. On the heap so that a mesh solved aside (solve_two_members())
+     * can become the current one without moving the object its DoF
+     * handlers point to.
+     */
+    std::unique_ptr<Triangulation<2>> triangulation =
+      std::make_unique<Triangulation<2>>();
     std::set<types::boundary_id>         interface_ids;
     ScenePlan                            plan;
     std::unique_ptr<GoalEstimator>       goal_estimator;
