@@ -256,30 +256,42 @@ namespace FourierSSI
     log << "meshes 0 and 1 of the design solved side by side on " << share / 2
         << " + " << share - share / 2
         << " cores (the harmonics leave cores idle)" << std::endl;
-    std::thread aside = serial_thread([&]() {
+    // A member's solve with its wall time; a failure is kept for later, so
+    // that both threads end before either is reported.
+    const auto solve_member = [this](const Triangulation<2>       &mesh,
+                                     const unsigned int            member,
+                                     const unsigned int            n_cores,
+                                     std::unique_ptr<HarmonicSet> &set,
+                                     std::vector<HarmonicOutcome> &solved,
+                                     std::exception_ptr           &failure,
+                                     double                       &wall) {
       Timer timer;
       try
         {
-          solve_harmonics_on(
-            *next, 1, share - share / 2, next_set, next_outcomes);
+          solve_harmonics_on(mesh, member, n_cores, set, solved);
         }
       catch (...)
         {
-          next_error = std::current_exception();
+          failure = std::current_exception();
         }
-      next_wall = timer.wall_time();
+      wall = timer.wall_time();
+    };
+    std::thread aside = serial_thread([&]() {
+      solve_member(*next,
+                   1,
+                   share - share / 2,
+                   next_set,
+                   next_outcomes,
+                   next_error,
+                   next_wall);
     });
-    Timer       timer;
-    try
-      {
-        solve_harmonics_on(
-          *triangulation, 0, share / 2, harmonic_set, outcomes);
-      }
-    catch (...)
-      {
-        error = std::current_exception();
-      }
-    cycle_wall_time = timer.wall_time();
+    solve_member(*triangulation,
+                 0,
+                 share / 2,
+                 harmonic_set,
+                 outcomes,
+                 error,
+                 cycle_wall_time);
     aside.join();
     // Failures as the sequential path reports them: member 0's first.
     if (error || next_error)
