@@ -8,6 +8,7 @@
 #include <fourier_ssi/discretization_design.h>
 #include <fourier_ssi/distributed_linear_system.h>
 #include <fourier_ssi/harmonic_problem.h>
+#include <fourier_ssi/heap_prefault.h>
 #include <fourier_ssi/input_checks.h>
 #include <fourier_ssi/messages.h>
 #include <fourier_ssi/serial_blas.h>
@@ -210,6 +211,24 @@ namespace FourierSSI
     return cores > 0 ? cores : HarmonicSet::cores_per_rank();
   }
 
+  unsigned int
+  Simulator::harmonics_at_once() const
+  {
+    return HarmonicSet::concurrent_harmonics(
+      parameters,
+      plan.harmonics.size(),
+      communicator,
+      parameters.discretization.concurrent_harmonics,
+      0);
+  }
+
+  bool
+  Simulator::cores_left_idle() const
+  {
+    return !uses_distributed_solve(parameters.solver, communicator) &&
+           available_cores() > harmonics_at_once();
+  }
+
   bool
   Simulator::members_fit_side_by_side() const
   {
@@ -218,15 +237,8 @@ namespace FourierSSI
     // member 1 within Maximum DoFs by the rule the sequential path applies
     // after member 0, so that the cores never change which members are
     // solved.
-    const unsigned int share   = available_cores();
-    const unsigned int at_once = HarmonicSet::concurrent_harmonics(
-      parameters,
-      plan.harmonics.size(),
-      communicator,
-      parameters.discretization.concurrent_harmonics,
-      0);
     if (uses_distributed_solve(parameters.solver, communicator) ||
-        share < 2 * at_once)
+        available_cores() < 2 * harmonics_at_once())
       return false;
     DoFHandler<2> dof_handler(*triangulation);
     dof_handler.distribute_dofs(
@@ -351,11 +363,13 @@ namespace FourierSSI
           }
         else
           {
+            std::unique_ptr<HeapPrefault> prefault;
             if (member > 0)
               {
-                std::unique_ptr<Triangulation<2>> next = member_mesh(member);
-                const double                      dofs = solved_dofs();
-                if (dofs * cell_growth(*next) > limit)
+                std::unique_ptr<Triangulation<2>> next   = member_mesh(member);
+                const double                      dofs   = solved_dofs();
+                const double                      growth = cell_growth(*next);
+                if (dofs * growth > limit)
                   {
                     target_unmet_at_limit(member, dofs, *next, log);
                     break;
@@ -364,9 +378,15 @@ namespace FourierSSI
                 harmonic_set.reset();
                 outcomes.clear();
                 triangulation = std::move(next);
+                // The heap the previous member needed, scaled with the
+                // DoFs, faulted in on the core the harmonics leave idle.
+                if (cores_left_idle())
+                  prefault = std::make_unique<HeapPrefault>(
+                    HeapPrefault::heap_bytes() * (growth - 1.));
               }
             Timer member_timer;
             solve_harmonics(member);
+            prefault.reset();
             collect_cycle(member, log);
             record_goal_values();
             last_member_time = member_timer.wall_time();

@@ -5,12 +5,15 @@
 // (rough, alpha = 0.5; one stiffness harmonic) on 2 cores gives the same
 // results.csv rows, bit for bit, as on 1 core (the assembly's sum does not
 // depend on its thread count, tests/assembly_threads.cc), in the same order,
-// and the same log apart from the timings and the side-by-side line. With
+// and the same log apart from the timings and the side-by-side line. The
+// same at target 2e-6, where mesh 2 follows the pair and, on 2 cores, its
+// memory is faulted in on the idle core (HeapPrefault). With
 // Adaptivity/Maximum DoFs between the sizes of meshes 0 and 1 the pair is not
 // started, and both runs stop after mesh 0 with the same one-line message.
 #include "check.h"
 #include "test_support.h"
 
+#include <fourier_ssi/huge_page_allocation.h>
 #include <fourier_ssi/simulator.h>
 #include <regex>
 
@@ -121,6 +124,9 @@ end
 int
 main()
 {
+  // As the program does (command_line.cc): the heap keeps freed memory, which
+  // is what lets the 2-core runs fault in a later mesh's memory beside it.
+  keep_freed_memory();
   std::cout << "Target 1e-4, 1 core (one mesh after the other) and 2 cores "
                "(meshes 0 and 1 side by side)"
             << std::endl;
@@ -144,6 +150,22 @@ main()
                                   1),
                   1e-6,
                   1e-4);
+
+  std::cout << "\nTarget 2e-6: mesh 2 (147 990 DoFs) after the pair, on 2 "
+               "cores with its memory faulted in beside it (heap_prefault.h)"
+            << std::endl;
+  const std::string finer = footing + "subsection Discretization\n set Target "
+                                      "accuracy = 2e-6\nend\n";
+  const Run         one_finer = run_on(finer, 1);
+  const Run         two_finer = run_on(finer, 2);
+  check::that("both stop at mesh 2",
+              one_finer.log.find("mesh 2, 147990 DoFs") != std::string::npos &&
+                two_finer.log.find("mesh 2, 147990 DoFs") !=
+                  std::string::npos &&
+                two_finer.log.find("mesh 3") == std::string::npos);
+  check_same_rows(one_finer.results, two_finer.results);
+  check::that("same log apart from timings",
+              without_timings(one_finer.log) == without_timings(two_finer.log));
 
   std::cout << "\nAdaptivity/Maximum DoFs = 4e4 (mesh 0: 22 542 DoFs, mesh "
                "1: 53 010): no pair, one mesh, the same unmet line"

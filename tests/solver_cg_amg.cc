@@ -5,12 +5,11 @@
 // strain energy (quadratic in the error) must agree with the direct
 // solution's to 1e-8 relative. Iteration counts (33-53 measured) are checked
 // against a generous bound of 500 only: they depend on the ML version.
-#include <fourier_ssi/harmonic.h>
-
-#include <tuple>
-
 #include "check.h"
 #include "test_support.h"
+
+#include <fourier_ssi/harmonic.h>
+#include <tuple>
 
 using namespace FourierSSI;
 

@@ -10,7 +10,7 @@ of the answer's mesh, its 'cycle k summary' line, plus the solves made for
 its estimate, row time_error_estimate: without start-up), the time of the solves made only for the error estimate (row
 time_error_estimate: the coarsened mesh of a one-mesh run, the members
 before the answer's of a Target accuracy run) as a fraction of the
-computation, the DoFs of the
+computation, the peak resident memory of the process, the DoFs of the
 answer, its estimated and its true error (references: doc/accuracy-vs-time.md,
 third version, good to a few 1e-7 for rough; the smooth reference is the
 finest member of benchmarks/accuracy-on-demand/effectivity.csv).
@@ -24,6 +24,7 @@ Writes benchmark.csv and benchmark.md next to this script.
 import argparse
 import csv
 import math
+import os
 import pathlib
 import re
 import statistics
@@ -63,14 +64,14 @@ def recipe(name):
     return (ROOT / "prm" / name).read_text()
 
 
-# (name, prm text, reference, runs: the 1e-6 design takes minutes, once)
+# (name, prm text, reference, runs: None = --repeat)
 CASES = [
     ("rough 1e-4, Target accuracy", lambda: designed("rough", "1e-4"), ROUGH,
      None),
     ("rough 1e-4, embedded-footing-graded.prm",
      lambda: recipe("embedded-footing-graded.prm"), ROUGH, None),
     ("rough 1e-6, Target accuracy", lambda: designed("rough", "1e-6"), ROUGH,
-     1),
+     None),
     ("rough 1e-6, embedded-footing-precise.prm",
      lambda: recipe("embedded-footing-precise.prm"), ROUGH, None),
     ("smooth 1e-3, Target accuracy", lambda: designed("smooth", "1e-3"),
@@ -90,9 +91,17 @@ end
 """
     (work / "case.prm").write_text(prm)
     start = time.time()
-    p = subprocess.run([exe, str(work / "case.prm")], capture_output=True,
-                       text=True)
+    with open(work / "stdout.txt", "w") as out, \
+            open(work / "stderr.txt", "w") as err:
+        child = subprocess.Popen([exe, str(work / "case.prm")], stdout=out,
+                                 stderr=err)
+        # os.wait4: this run's own resource usage (peak resident memory).
+        _, status, usage = os.wait4(child.pid, 0)
     wall = time.time() - start
+    peak_mib = usage.ru_maxrss / 1024.
+    p = subprocess.CompletedProcess(
+        child.args, os.waitstatus_to_exitcode(status),
+        (work / "stdout.txt").read_text(), (work / "stderr.txt").read_text())
     (work / "log.txt").write_text(p.stdout + p.stderr)
     if p.returncode != 0:
         raise SystemExit(f"run failed: {p.stderr}")
@@ -111,13 +120,15 @@ end
     value["work_share"] = (sum(float(w) for w in walls[:-1]) /
                            sum(float(w) for w in walls)
                            if len(walls) > 1 else float("nan"))
+    value["peak_mib"] = peak_mib
     return wall, compute, value
 
 
-def summarize(name, walls, computes, value, ref):
+def summarize(name, walls, computes, peaks, value, ref):
     estimate_time = value.get("time_error_estimate", float("nan"))
     row = dict(case=name, runs=len(walls), dofs=int(value["n_dofs"]),
                process_s=statistics.median(walls),
+               peak_mib=statistics.median(peaks),
                compute_s=statistics.median(computes),
                estimate_share=estimate_time / computes[-1],
                work_share=value["work_share"])
@@ -147,6 +158,7 @@ def main():
         ref = ref or smooth_reference()
         walls = {tag: [] for tag, _ in exes}
         computes = {tag: [] for tag, _ in exes}
+        peaks = {tag: [] for tag, _ in exes}
         value = {}
         for k in range(runs or args.repeat):
             for tag, exe in exes:
@@ -155,9 +167,10 @@ def main():
                                               name.lower()))
                 walls[tag].append(w)
                 computes[tag].append(c)
+                peaks[tag].append(value[tag]["peak_mib"])
         for tag, _ in exes:
             row = summarize(name + tag, walls[tag], computes[tag],
-                            value[tag], ref)
+                            peaks[tag], value[tag], ref)
             lines.append(row)
             print(row, flush=True)
     with open(HERE / "benchmark.csv", "w", newline="") as f:
@@ -167,13 +180,15 @@ def main():
     with open(HERE / "benchmark.md", "w") as f:
         f.write("Medians of the runs of each case, one session, 2 cores "
                 "shared with other jobs.\n\n"
-                "| case | runs | DoFs | process [s] | computation [s] | estimate "
+                "| case | runs | DoFs | process [s] | computation [s] | peak "
+                "memory [MiB] | estimate "
                 "share (wall) | estimate share (work) | K_H est / true | "
                 "K_M est / true | K_MH est / true |\n"
-                "|---|---|---|---|---|---|---|---|---|---|\n")
+                "|---|---|---|---|---|---|---|---|---|---|---|\n")
         for r in lines:
             f.write(f"| {r['case']} | {r['runs']} | {r['dofs']} | {r['process_s']:.2f} | "
-                    f"{r['compute_s']:.2f} | {r['estimate_share']:.0%} | "
+                    f"{r['compute_s']:.2f} | {r['peak_mib']:.0f} | "
+                    f"{r['estimate_share']:.0%} | "
                     f"{r['work_share']:.0%} | " +
                     " | ".join(f"{r[q + '_estimate']:.1e} / {r[q + '_error']:.1e}"
                                for q in ("K_H", "K_M", "K_MH")) + " |\n")
