@@ -1,4 +1,3 @@
-#include <atomic>
 #include <cstdlib>
 #include <cstring>
 #include <fourier_ssi/huge_page_allocation.h>
@@ -12,8 +11,7 @@ namespace FourierSSI
   namespace
   {
     constexpr std::size_t huge_page = std::size_t(2) << 20;
-    std::atomic<bool>     kept{false};
-  } // namespace
+  }
 
   void *
   huge_page_malloc(const std::size_t size)
@@ -49,13 +47,6 @@ namespace FourierSSI
     // unmapped on free and its pages faulted in again by the next one.
     mallopt(M_MMAP_MAX, 0);
     mallopt(M_TRIM_THRESHOLD, std::numeric_limits<int>::max());
-    kept = true;
-  }
-
-  bool
-  freed_memory_kept()
-  {
-    return kept;
   }
 } // namespace FourierSSI
 

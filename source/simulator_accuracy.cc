@@ -8,7 +8,6 @@
 #include <fourier_ssi/discretization_design.h>
 #include <fourier_ssi/distributed_linear_system.h>
 #include <fourier_ssi/harmonic_problem.h>
-#include <fourier_ssi/heap_prefault.h>
 #include <fourier_ssi/input_checks.h>
 #include <fourier_ssi/messages.h>
 #include <fourier_ssi/serial_blas.h>
@@ -223,13 +222,6 @@ namespace FourierSSI
   }
 
   bool
-  Simulator::cores_left_idle() const
-  {
-    return !uses_distributed_solve(parameters.solver, communicator) &&
-           available_cores() > harmonics_at_once();
-  }
-
-  bool
   Simulator::members_fit_side_by_side() const
   {
     // Two members at once need twice the cores the harmonics of one take
@@ -363,13 +355,11 @@ namespace FourierSSI
           }
         else
           {
-            std::unique_ptr<HeapPrefault> prefault;
             if (member > 0)
               {
-                std::unique_ptr<Triangulation<2>> next   = member_mesh(member);
-                const double                      dofs   = solved_dofs();
-                const double                      growth = cell_growth(*next);
-                if (dofs * growth > limit)
+                std::unique_ptr<Triangulation<2>> next = member_mesh(member);
+                const double                      dofs = solved_dofs();
+                if (dofs * cell_growth(*next) > limit)
                   {
                     target_unmet_at_limit(member, dofs, *next, log);
                     break;
@@ -378,15 +368,9 @@ namespace FourierSSI
                 harmonic_set.reset();
                 outcomes.clear();
                 triangulation = std::move(next);
-                // The heap the previous member needed, scaled with the
-                // DoFs, faulted in on the core the harmonics leave idle.
-                if (cores_left_idle())
-                  prefault = std::make_unique<HeapPrefault>(
-                    HeapPrefault::heap_bytes() * (growth - 1.));
               }
             Timer member_timer;
             solve_harmonics(member);
-            prefault.reset();
             collect_cycle(member, log);
             record_goal_values();
             last_member_time = member_timer.wall_time();

@@ -6,8 +6,7 @@
 // results.csv rows, bit for bit, as on 1 core (the assembly's sum does not
 // depend on its thread count, tests/assembly_threads.cc), in the same order,
 // and the same log apart from the timings and the side-by-side line. The
-// same at target 2e-6, where mesh 2 follows the pair and, on 2 cores, its
-// memory is faulted in on the idle core (HeapPrefault). With
+// same at target 2e-6, where mesh 2 follows the pair in sequence. With
 // Adaptivity/Maximum DoFs between the sizes of meshes 0 and 1 the pair is not
 // started, and both runs stop after mesh 0 with the same one-line message.
 #include "check.h"
@@ -124,8 +123,7 @@ end
 int
 main()
 {
-  // As the program does (command_line.cc): the heap keeps freed memory, which
-  // is what lets the 2-core runs fault in a later mesh's memory beside it.
+  // As the program does (command_line.cc): the heap keeps freed memory.
   keep_freed_memory();
   std::cout << "Target 1e-4, 1 core (one mesh after the other) and 2 cores "
                "(meshes 0 and 1 side by side)"
@@ -151,8 +149,8 @@ main()
                   1e-6,
                   1e-4);
 
-  std::cout << "\nTarget 2e-6: mesh 2 (147 990 DoFs) after the pair, on 2 "
-               "cores with its memory faulted in beside it (heap_prefault.h)"
+  std::cout << "\nTarget 2e-6: mesh 2 (147 990 DoFs) after the pair, in "
+               "sequence"
             << std::endl;
   const std::string finer = footing + "subsection Discretization\n set Target "
                                       "accuracy = 2e-6\nend\n";

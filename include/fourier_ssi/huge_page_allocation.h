@@ -44,10 +44,6 @@ namespace FourierSSI
    */
   void
   keep_freed_memory();
-
-  /** True once keep_freed_memory() was called. */
-  bool
-  freed_memory_kept();
 } // namespace FourierSSI
 
 #endif

@@ -347,14 +347,6 @@ namespace FourierSSI
     unsigned int
     harmonics_at_once() const;
 
-    /**
-     * True if the harmonics leave cores idle (not a distributed solve):
-     * they then serve the cell loop, a second member (solve_two_members())
-     * or the faulting-in of the next member's memory (heap_prefault.h).
-     */
-    bool
-    cores_left_idle() const;
-
     /** True if two members fit side by side (solve_two_members()). */
     bool
     members_fit_side_by_side() const;
