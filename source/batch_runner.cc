@@ -4,6 +4,7 @@
 #include <deal.II/base/utilities.h>
 #include <filesystem>
 #include <fourier_ssi/batch_runner.h>
+#include <fourier_ssi/case_queue.h>
 #include <fourier_ssi/messages.h>
 #include <fourier_ssi/parameters.h>
 #include <fourier_ssi/simulator.h>
@@ -48,6 +49,52 @@ namespace FourierSSI
     return cases;
   }
 
+  namespace
+  {
+    /**
+     * One case of the batch, serial (MPI_COMM_SELF), as `fourier-ssi CASE`
+     * would run it: its status ("ok" or the one-line error, never empty),
+     * log and batch-CSV rows.
+     */
+    void
+    solve_case(const std::string &file,
+               std::string       &status,
+               std::string       &log_text,
+               std::string       &rows)
+    {
+      std::ostringstream log;
+      try
+        {
+          AllParameters parameters;
+          parameters.read_file(file);
+          log << "fourier-ssi: " << file << '\n';
+          Simulator          simulator(parameters);
+          const ResultsTable results = simulator.run(log);
+          std::ostringstream csv;
+          csv << std::setprecision(12);
+          for (const ResultRow &row : results.rows())
+            if (row.quantity.rfind("time_", 0) != 0)
+              csv << file << ',' << row.quantity << ',' << row.harmonic.n << ','
+                  << to_string(row.harmonic.family) << ',' << row.cycle << ','
+                  << row.value << ',' << row.unit << '\n';
+          rows   = csv.str();
+          status = "ok";
+          // A target not reached fails the case (its rows stay, marked),
+          // as it fails a single run.
+          if (!simulator.unmet_target().empty() &&
+              !parameters.adaptivity.allow_unconverged)
+            status = simulator.unmet_target();
+        }
+      catch (const std::exception &e)
+        {
+          status = one_line_message(e);
+        }
+      if (status.empty())
+        status = "failed";
+      log_text = log.str();
+    }
+  } // namespace
+
   int
   run_batch(const std::vector<std::string> &arguments,
             const MPI_Comm                  communicator,
@@ -68,40 +115,14 @@ namespace FourierSSI
     const std::vector<std::string> cases = batch_cases(rest);
 
     // Per case: status ("ok" or the error), log, CSV rows. Cases of other
-    // ranks stay empty strings.
+    // ranks stay empty strings: a non-empty status marks the case's rank.
     std::vector<std::string> status(cases.size()), logs(cases.size()),
       rows(cases.size());
-    for (unsigned int c = rank; c < cases.size(); c += n_ranks)
-      {
-        std::ostringstream log;
-        try
-          {
-            AllParameters parameters;
-            parameters.read_file(cases[c]);
-            log << "fourier-ssi: " << cases[c] << '\n';
-            Simulator          simulator(parameters); // serial: MPI_COMM_SELF
-            const ResultsTable results = simulator.run(log);
-            std::ostringstream csv;
-            csv << std::setprecision(12);
-            for (const ResultRow &row : results.rows())
-              if (row.quantity.rfind("time_", 0) != 0)
-                csv << cases[c] << ',' << row.quantity << ',' << row.harmonic.n
-                    << ',' << to_string(row.harmonic.family) << ',' << row.cycle
-                    << ',' << row.value << ',' << row.unit << '\n';
-            rows[c]   = csv.str();
-            status[c] = "ok";
-            // A target not reached fails the case (its rows stay, marked),
-            // as it fails a single run.
-            if (!simulator.unmet_target().empty() &&
-                !parameters.adaptivity.allow_unconverged)
-              status[c] = simulator.unmet_target();
-          }
-        catch (const std::exception &e)
-          {
-            status[c] = one_line_message(e);
-          }
-        logs[c] = log.str();
-      }
+    {
+      CaseQueue queue(communicator, cases.size());
+      for (unsigned int c = queue.next(); c < cases.size(); c = queue.next())
+        solve_case(cases[c], status[c], logs[c], rows[c]);
+    }
 
     const std::vector<std::vector<std::string>> all_status =
       Utilities::MPI::gather(communicator, status, 0);
@@ -112,19 +133,25 @@ namespace FourierSSI
     int exit_code = 0;
     if (rank == 0)
       {
+        const auto owner = [&](const unsigned int c) {
+          unsigned int r = 0;
+          while (r + 1 < n_ranks && all_status[r][c].empty())
+            ++r;
+          return r;
+        };
         std::ostringstream csv;
         csv << "case,quantity,n,family,cycle,value,unit\n";
         for (unsigned int c = 0; c < cases.size(); ++c)
           {
-            const unsigned int owner = c % n_ranks;
-            out << all_logs[owner][c];
-            if (all_status[owner][c] != "ok")
+            const unsigned int r = owner(c);
+            out << all_logs[r][c];
+            if (all_status[r][c] != "ok")
               {
                 err << "fourier-ssi: error: " << cases[c] << ": "
-                    << all_status[owner][c] << std::endl;
+                    << all_status[r][c] << std::endl;
                 exit_code = 1;
               }
-            csv << all_rows[owner][c];
+            csv << all_rows[r][c];
           }
         // The succeeded cases' rows are written (a failed case has none);
         // the failed ones are listed on stderr and the exit code is 1. With
@@ -132,7 +159,7 @@ namespace FourierSSI
         std::filesystem::remove(csv_file);
         unsigned int n_ok = 0;
         for (unsigned int c = 0; c < cases.size(); ++c)
-          n_ok += all_status[c % n_ranks][c] == "ok";
+          n_ok += all_status[owner(c)][c] == "ok";
         if (n_ok > 0)
           {
             std::ofstream file(csv_file);

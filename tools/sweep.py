@@ -59,8 +59,8 @@ rigid motion (Rigid foundation/Tie = material, as the embedded footing): its
 rows go to DIR/<family>-rigid.csv, the flexible ones to DIR/<family>.csv.
 
 All cases run in one process, 'fourier-ssi --batch' (no start-up per case);
---mpi N hands them to 'mpirun -np N fourier-ssi --batch' instead (cases dealt
-round-robin to the ranks, each solved serially: README, "MPI"). The
+--mpi N hands them to 'mpirun -np N fourier-ssi --batch' instead (each rank
+takes the next case when it is free, each solved serially: README, "MPI"). The
 'seconds' column is the case's computation: the sum over its meshes of the
 setup, assembly, solve and postprocess wall times from its results.csv.
 One progress line per case; one CSV row per case (DIR default output/sweeps).

@@ -1,13 +1,14 @@
 /**
  * Parameter sweeps over MPI ranks:
  *   mpirun -np N fourier-ssi --batch [--csv FILE] CASE.prm... | LIST...
- * The cases are dealt round-robin to the ranks (case i on rank i mod N); each
- * case runs serially (MPI_COMM_SELF) exactly as `fourier-ssi CASE.prm` would,
- * writing its own Output/Directory. Rank 0 gathers every case's log and
- * scalar results and writes one CSV "case,quantity,n,family,cycle,value,unit"
- * in case order (default batch.csv). The wall times (time_* rows) stay in
- * each case's own results.csv and are left out of the batch CSV, so that the
- * batch CSV is byte-identical for any number of ranks.
+ * Each rank takes the next case when it is free (CaseQueue; on several nodes
+ * case i goes to rank i mod N); each case runs serially (MPI_COMM_SELF) exactly
+ * as `fourier-ssi CASE.prm` would, writing its own Output/Directory. Rank 0
+ * gathers every case's log and scalar results and writes one CSV
+ * "case,quantity,n,family,cycle,value,unit" in case order (default batch.csv).
+ * The wall times (time_* rows) stay in each case's own results.csv and are left
+ * out of the batch CSV, so that the batch CSV is byte-identical for any number
+ * of ranks.
  */
 #ifndef fourier_ssi_batch_runner_h
 #define fourier_ssi_batch_runner_h
