@@ -8,8 +8,7 @@ namespace FourierSSI
     int r = 0;
     MPI_Comm_rank(communicator, &r);
     MPI_Comm_size(communicator, &n_ranks);
-    rank         = r;
-    next_in_turn = rank;
+    next_in_turn = r;
     if (n_ranks == 1)
       return;
     MPI_Comm_split_type(

@@ -221,8 +221,8 @@ namespace FourierSSI
       0);
   }
 
-  bool
-  Simulator::members_fit_side_by_side() const
+  std::unique_ptr<Triangulation<2>>
+  Simulator::side_by_side_mesh() const
   {
     // Two members at once need twice the cores the harmonics of one take
     // (a distributed solve's collective calls must not interleave), and
@@ -231,32 +231,36 @@ namespace FourierSSI
     // solved.
     if (uses_distributed_solve(parameters.solver, communicator) ||
         available_cores() < 2 * harmonics_at_once())
-      return false;
-    DoFHandler<2> dof_handler(*triangulation);
-    dof_handler.distribute_dofs(
-      *make_displacement_element(parameters.discretization.degree));
+      return nullptr;
+    std::unique_ptr<Triangulation<2>> next;
     try
       {
-        return dof_handler.n_dofs() * cell_growth(*member_mesh(1)) <=
-               parameters.adaptivity.maximum_dofs;
+        next = member_mesh(1);
       }
     catch (const std::exception &)
       {
-        return false; // Mesh/Maximum DoFs: after member 0, as in sequence
+        return nullptr; // Mesh/Maximum DoFs: after member 0, as in sequence
       }
+    DoFHandler<2> dof_handler(*triangulation);
+    dof_handler.distribute_dofs(
+      *make_displacement_element(parameters.discretization.degree));
+    if (dof_handler.n_dofs() * cell_growth(*next) >
+        parameters.adaptivity.maximum_dofs)
+      return nullptr;
+    return next;
   }
 
   void
-  Simulator::solve_two_members(std::ostream &log)
+  Simulator::solve_two_members(std::unique_ptr<Triangulation<2>> next,
+                               std::ostream                     &log)
   {
     // Member 1 aside on its own mesh and half of the cores, member 0 on the
     // current mesh and the other half.
-    std::unique_ptr<Triangulation<2>> next = member_mesh(1);
-    std::unique_ptr<HarmonicSet>      next_set;
-    std::vector<HarmonicOutcome>      next_outcomes;
-    double                            next_wall = 0.;
-    std::exception_ptr                next_error, error;
-    const unsigned int                share = available_cores();
+    std::unique_ptr<HarmonicSet> next_set;
+    std::vector<HarmonicOutcome> next_outcomes;
+    double                       next_wall = 0.;
+    std::exception_ptr           next_error, error;
+    const unsigned int           share = available_cores();
     log << "meshes 0 and 1 of the design solved side by side on " << share / 2
         << " + " << share - share / 2
         << " cores (the harmonics leave cores idle)" << std::endl;
@@ -347,9 +351,11 @@ namespace FourierSSI
     unsigned int member = 0, last_solved = 0;
     for (;; ++member)
       {
-        if (member == 0 && members_fit_side_by_side())
+        std::unique_ptr<Triangulation<2>> mesh_1 =
+          member == 0 ? side_by_side_mesh() : nullptr;
+        if (mesh_1)
           {
-            solve_two_members(log);
+            solve_two_members(std::move(mesh_1), log);
             member           = 1;
             last_member_time = cycle_wall_time;
           }

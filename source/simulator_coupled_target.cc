@@ -202,8 +202,7 @@ namespace FourierSSI
                                                        member,
                                                        interface_ids,
                                                        next);
-            const double more = static_cast<double>(next.n_active_cells()) /
-                                triangulation->n_active_cells();
+            const double more = cell_growth(next);
             if (more * dofs > parameters.adaptivity.maximum_dofs)
               {
                 std::ostringstream why;

@@ -43,13 +43,12 @@ namespace FourierSSI
 
   private:
     const unsigned int n_cases;
-    unsigned int       rank    = 0;
     int                n_ranks = 1;
     /** Dealt in turn: this rank's next case. */
-    unsigned int next_in_turn;
-    MPI_Comm     node    = MPI_COMM_NULL;
-    MPI_Win      window  = MPI_WIN_NULL;
-    long        *counter = nullptr;
+    unsigned int next_in_turn = 0;
+    MPI_Comm     node         = MPI_COMM_NULL;
+    MPI_Win      window       = MPI_WIN_NULL;
+    long        *counter      = nullptr;
   };
 } // namespace FourierSSI
 

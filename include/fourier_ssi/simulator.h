@@ -308,14 +308,15 @@ namespace FourierSSI
 
     /**
      * Discretization/Target accuracy, members 0 (the current mesh) and 1
-     * at once, each on half of the cores (a lone harmonic leaves cores
-     * idle, and the design always needs two members before it can estimate
-     * anything); then both are collected in order and member 1 is the
-     * current mesh. Same values as one after the other:
-     * the assembly does not depend on its thread count.
+     * (`next`, from side_by_side_mesh()) at once, each on half of the cores (a
+     * lone harmonic leaves cores idle, and the design always needs two members
+     * before it can estimate anything); then both are collected in order and
+     * member 1 is the current mesh. Same values as one after the other: the
+     * assembly does not depend on its thread count.
      */
     void
-    solve_two_members(std::ostream &log);
+    solve_two_members(std::unique_ptr<Triangulation<2>> next,
+                      std::ostream                     &log);
 
     /** The designed mesh of `member` (discretization_design.h), aside. */
     std::unique_ptr<Triangulation<2>>
@@ -347,9 +348,12 @@ namespace FourierSSI
     unsigned int
     harmonics_at_once() const;
 
-    /** True if two members fit side by side (solve_two_members()). */
-    bool
-    members_fit_side_by_side() const;
+    /**
+     * Member 1's mesh if members 0 and 1 fit side by side
+     * (solve_two_members()), else null.
+     */
+    std::unique_ptr<Triangulation<2>>
+    side_by_side_mesh() const;
 
     /**
      * solve_harmonics() on any mesh: a new HarmonicSet on `n_cores` cores
