@@ -22,7 +22,7 @@
 
 #include <deal.II/numerics/vector_tools.h>
 
-#include <fourier_ssi/harmonic_problem.h>
+#include <fourier_ssi/harmonic/harmonic_problem.h>
 
 #include <fstream>
 #include <iostream>

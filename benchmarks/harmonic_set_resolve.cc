@@ -8,8 +8,8 @@
 //   dofs_per_harmonic,harmonics,threads,factorize_s,resolve_median_s,ratio
 #include <algorithm>
 #include <deal.II/base/timer.h>
-#include <fourier_ssi/harmonic_set.h>
-#include <fourier_ssi/scene_plan.h>
+#include <fourier_ssi/harmonic/harmonic_set.h>
+#include <fourier_ssi/driver/scene_plan.h>
 #include <fstream>
 #include <iostream>
 #include <sstream>

@@ -1,4 +1,4 @@
-// AndersonAcceleration (include/fourier_ssi/anderson_acceleration.h) on an
+// AndersonAcceleration (include/fourier_ssi/coupled/anderson_acceleration.h) on an
 // affine fixed point x = A x + b split in two blocks, against properties
 // that hold independently of the implementation:
 //  * on an affine map, Anderson with depth m >= n (the dimension) and
@@ -14,7 +14,7 @@
 #include "check.h"
 
 #include <deal.II/lac/full_matrix.h>
-#include <fourier_ssi/anderson_acceleration.h>
+#include <fourier_ssi/coupled/anderson_acceleration.h>
 #include <random>
 
 using namespace FourierSSI;

@@ -11,7 +11,7 @@
 #include "check.h"
 
 #include <cmath>
-#include <fourier_ssi/capacity_plateau.h>
+#include <fourier_ssi/estimation/capacity_plateau.h>
 #include <vector>
 
 using namespace FourierSSI;

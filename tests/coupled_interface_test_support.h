@@ -6,7 +6,7 @@
 
 #include "factorized_scene.h"
 
-#include <fourier_ssi/coupled_interface_solver.h>
+#include <fourier_ssi/coupled/coupled_interface_solver.h>
 #include <iostream>
 #include <regex>
 #include <string>

@@ -17,7 +17,7 @@
 #include "check.h"
 #include "test_support.h"
 
-#include <fourier_ssi/simulator.h>
+#include <fourier_ssi/driver/simulator.h>
 
 using namespace FourierSSI;
 

@@ -45,8 +45,8 @@
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/numerics/vector_tools.h>
-#include <fourier_ssi/harmonic_problem.h>
-#include <fourier_ssi/stress_postprocessor.h>
+#include <fourier_ssi/harmonic/harmonic_problem.h>
+#include <fourier_ssi/harmonic/stress_postprocessor.h>
 #include <fstream>
 
 using namespace FourierSSI;

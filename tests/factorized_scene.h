@@ -8,9 +8,9 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/vector.h>
-#include <fourier_ssi/harmonic_set.h>
-#include <fourier_ssi/parameters.h>
-#include <fourier_ssi/scene_plan.h>
+#include <fourier_ssi/harmonic/harmonic_set.h>
+#include <fourier_ssi/input/parameters.h>
+#include <fourier_ssi/driver/scene_plan.h>
 #include <string>
 #include <vector>
 

@@ -17,7 +17,7 @@
 #include "test_support.h"
 
 #include <cmath>
-#include <fourier_ssi/simulator.h>
+#include <fourier_ssi/driver/simulator.h>
 #include <functional>
 #include <set>
 

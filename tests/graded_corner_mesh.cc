@@ -20,7 +20,7 @@
 #include "test_support.h"
 
 #include <deal.II/grid/grid_tools.h>
-#include <fourier_ssi/simulator.h>
+#include <fourier_ssi/driver/simulator.h>
 
 using namespace FourierSSI;
 

@@ -15,8 +15,8 @@
 #include "test_support.h"
 
 #include <deal.II/base/mpi.h>
-#include <fourier_ssi/harmonic_set.h>
-#include <fourier_ssi/scene_plan.h>
+#include <fourier_ssi/harmonic/harmonic_set.h>
+#include <fourier_ssi/driver/scene_plan.h>
 #include <random>
 
 using namespace FourierSSI;

@@ -28,7 +28,7 @@
 #include <cmath>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/mapping_q1.h>
-#include <fourier_ssi/harmonic_problem.h>
+#include <fourier_ssi/harmonic/harmonic_problem.h>
 #include <map>
 #include <tuple>
 

@@ -1,6 +1,6 @@
 // A rigid pile (radius a = 0.5 m, length L = 5 m) with Mohr-Coulomb
 // interfaces on its shaft and base, n = 0 only, solved by the coupled
-// initial-stiffness iteration (include/fourier_ssi/coupled_interface_solver.h,
+// initial-stiffness iteration (include/fourier_ssi/coupled/coupled_interface_solver.h,
 // doc/nonlinear-interfaces.md section 7):
 //
 // (1) Limits. c = 1e9 kPa, no cut-off (never yields): one load step equals
@@ -30,7 +30,7 @@
 #include "check.h"
 #include "factorized_scene.h"
 
-#include <fourier_ssi/coupled_interface_solver.h>
+#include <fourier_ssi/coupled/coupled_interface_solver.h>
 
 using namespace FourierSSI;
 

@@ -15,7 +15,7 @@
 #include "check.h"
 #include "factorized_scene.h"
 
-#include <fourier_ssi/coupled_interface_solver.h>
+#include <fourier_ssi/coupled/coupled_interface_solver.h>
 #include <regex>
 
 using namespace FourierSSI;

@@ -11,7 +11,7 @@
 #include <check.h>
 #include <cmath>
 #include <deal.II/lac/vector.h>
-#include <fourier_ssi/interface_element.h>
+#include <fourier_ssi/interfaces/interface_element.h>
 #include <string>
 #include <vector>
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <deal.II/base/polynomial.h>
 #include <deal.II/base/quadrature_lib.h>
-#include <fourier_ssi/interface_element.h>
+#include <fourier_ssi/interfaces/interface_element.h>
 #include <functional>
 #include <iostream>
 #include <limits>

@@ -9,7 +9,7 @@
 #include <check.h>
 #include <cmath>
 #include <deal.II/base/quadrature_lib.h>
-#include <fourier_ssi/interface_element.h>
+#include <fourier_ssi/interfaces/interface_element.h>
 #include <iostream>
 #include <random>
 #include <string>

@@ -12,7 +12,7 @@
 #include <cmath>
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <deal.II/lac/vector.h>
-#include <fourier_ssi/interface_element.h>
+#include <fourier_ssi/interfaces/interface_element.h>
 #include <iostream>
 #include <random>
 #include <string>

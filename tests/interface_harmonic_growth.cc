@@ -23,7 +23,7 @@
 #include "check.h"
 #include "coupled_interface_test_support.h"
 
-#include <fourier_ssi/simulator.h>
+#include <fourier_ssi/driver/simulator.h>
 
 using namespace FourierSSI;
 using coupled_test::with_entry;

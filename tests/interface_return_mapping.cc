@@ -1,5 +1,5 @@
 // The closed-form return mapping of the Mohr-Coulomb interface with a tension
-// cut-off (include/fourier_ssi/interface_law.h, doc/nonlinear-interfaces.md
+// cut-off (include/fourier_ssi/interfaces/interface_law.h, doc/nonlinear-interfaces.md
 // section 2) against hand-computed cases, its consistency (returned
 // tractions on the slip surface), the .prm syntax of the laws (the linear
 // presets unchanged) and the rejected inputs.
@@ -22,8 +22,8 @@
 #include "check.h"
 
 #include <cmath>
-#include <fourier_ssi/interface_law.h>
-#include <fourier_ssi/messages.h>
+#include <fourier_ssi/interfaces/interface_law.h>
+#include <fourier_ssi/input/messages.h>
 #include <random>
 
 using namespace FourierSSI;

@@ -30,7 +30,7 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/mapping_q1.h>
-#include <fourier_ssi/harmonic_problem.h>
+#include <fourier_ssi/harmonic/harmonic_problem.h>
 #include <fstream>
 
 using namespace FourierSSI;

@@ -14,7 +14,7 @@
 #include "mms_solutions.h"
 #include "test_support.h"
 
-#include <fourier_ssi/harmonic.h>
+#include <fourier_ssi/fourier/harmonic.h>
 
 using namespace FourierSSI;
 

@@ -12,8 +12,8 @@
 #include "check.h"
 #include "test_support.h"
 
-#include <fourier_ssi/huge_page_allocation.h>
-#include <fourier_ssi/simulator.h>
+#include <fourier_ssi/linear_algebra/huge_page_allocation.h>
+#include <fourier_ssi/driver/simulator.h>
 #include <regex>
 
 using namespace FourierSSI;

@@ -45,8 +45,8 @@
 #include "test_support.h"
 
 #include <cmath>
-#include <fourier_ssi/adaptivity.h>
-#include <fourier_ssi/harmonic_problem.h>
+#include <fourier_ssi/mesh/adaptivity.h>
+#include <fourier_ssi/harmonic/harmonic_problem.h>
 
 using namespace FourierSSI;
 

@@ -12,7 +12,7 @@
 
 #include <deal.II/grid/tria.h>
 #include <deal.II/numerics/vector_tools.h>
-#include <fourier_ssi/harmonic_problem.h>
+#include <fourier_ssi/harmonic/harmonic_problem.h>
 
 using namespace FourierSSI;
 

@@ -46,8 +46,8 @@
 
 #include <cmath>
 #include <deal.II/lac/sparse_direct.h>
-#include <fourier_ssi/harmonic.h>
-#include <fourier_ssi/harmonic_problem.h>
+#include <fourier_ssi/fourier/harmonic.h>
+#include <fourier_ssi/harmonic/harmonic_problem.h>
 #include <fstream>
 #include <random>
 #include <sstream>

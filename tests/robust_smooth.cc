@@ -14,7 +14,7 @@
 #include "test_support.h"
 
 #include <cmath>
-#include <fourier_ssi/harmonic.h>
+#include <fourier_ssi/fourier/harmonic.h>
 #include <fstream>
 #include <sstream>
 

@@ -8,8 +8,8 @@
 #include "check.h"
 #include "test_support.h"
 
-#include <fourier_ssi/messages.h>
-#include <fourier_ssi/simulator.h>
+#include <fourier_ssi/input/messages.h>
+#include <fourier_ssi/driver/simulator.h>
 #include <regex>
 
 using namespace FourierSSI;

@@ -1,5 +1,5 @@
 // The error of a value on nested meshes from the values on the coarser ones
-// (include/fourier_ssi/sequence_error_estimate.h, eq. (1)): checked on
+// (include/fourier_ssi/estimation/sequence_error_estimate.h, eq. (1)): checked on
 // sequences whose limit is known, Q_k = Q + C r^k.
 //  - r in [0.25, 1): eq. (1) is exact for a geometric sequence (the tail
 //    sum), so the estimate equals the true error to round-off (1e-9,
@@ -17,7 +17,7 @@
 #include "check.h"
 
 #include <cmath>
-#include <fourier_ssi/sequence_error_estimate.h>
+#include <fourier_ssi/estimation/sequence_error_estimate.h>
 #include <string>
 #include <tuple>
 #include <vector>

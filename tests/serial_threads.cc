@@ -30,8 +30,8 @@
 #include <deal.II/numerics/matrix_creator.h>
 #include <dlfcn.h>
 #include <filesystem>
-#include <fourier_ssi/serial_blas.h>
-#include <fourier_ssi/sparse_direct.h>
+#include <fourier_ssi/linear_algebra/serial_blas.h>
+#include <fourier_ssi/linear_algebra/sparse_direct.h>
 #include <fstream>
 #include <thread>
 

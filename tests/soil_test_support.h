@@ -8,9 +8,9 @@
 #include "test_support.h"
 
 #include <deal.II/grid/tria.h>
-#include <fourier_ssi/coupled_soil_solver.h>
-#include <fourier_ssi/harmonic_set.h>
-#include <fourier_ssi/scene_plan.h>
+#include <fourier_ssi/coupled/coupled_soil_solver.h>
+#include <fourier_ssi/harmonic/harmonic_set.h>
+#include <fourier_ssi/driver/scene_plan.h>
 #include <random>
 #include <regex>
 

@@ -24,8 +24,8 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_direct.h>
 #include <deal.II/numerics/vector_tools.h>
-#include <fourier_ssi/sparse_direct.h>
-#include <fourier_ssi/static_condensation.h>
+#include <fourier_ssi/linear_algebra/sparse_direct.h>
+#include <fourier_ssi/linear_algebra/static_condensation.h>
 
 using namespace FourierSSI;
 

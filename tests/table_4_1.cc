@@ -20,7 +20,7 @@
 
 #include <chrono>
 #include <cmath>
-#include <fourier_ssi/harmonic.h>
+#include <fourier_ssi/fourier/harmonic.h>
 #include <sstream>
 
 using namespace FourierSSI;

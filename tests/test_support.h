@@ -8,9 +8,9 @@
 #include <array>
 #include <cstdlib>
 #include <deal.II/base/mpi.h>
-#include <fourier_ssi/adaptivity.h>
-#include <fourier_ssi/parameters.h>
-#include <fourier_ssi/simulator.h>
+#include <fourier_ssi/mesh/adaptivity.h>
+#include <fourier_ssi/input/parameters.h>
+#include <fourier_ssi/driver/simulator.h>
 #include <fstream>
 #include <iomanip>
 #include <iostream>

@@ -23,8 +23,8 @@
 #include "test_support.h"
 
 #include <cmath>
-#include <fourier_ssi/scene_plan.h>
-#include <fourier_ssi/simulator.h>
+#include <fourier_ssi/driver/scene_plan.h>
+#include <fourier_ssi/driver/simulator.h>
 #include <set>
 
 using namespace FourierSSI;

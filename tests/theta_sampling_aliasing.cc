@@ -1,4 +1,4 @@
-// Theta sampling and projection (include/fourier_ssi/theta_sampling.h,
+// Theta sampling and projection (include/fourier_ssi/fourier/theta_sampling.h,
 // doc/nonlinear-interfaces.md section 3): the trapezoidal rule on N equally
 // spaced angles is the exact DFT, so (i) sampling harmonics 0..n_max of both
 // families and projecting back returns the amplitudes to round-off iff
@@ -11,7 +11,7 @@
 #include "check.h"
 
 #include <cmath>
-#include <fourier_ssi/theta_sampling.h>
+#include <fourier_ssi/fourier/theta_sampling.h>
 #include <random>
 
 using namespace FourierSSI;

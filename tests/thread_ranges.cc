@@ -5,7 +5,7 @@
 #include "check.h"
 
 #include <atomic>
-#include <fourier_ssi/thread_ranges.h>
+#include <fourier_ssi/linear_algebra/thread_ranges.h>
 #include <stdexcept>
 #include <vector>
 

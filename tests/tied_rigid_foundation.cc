@@ -18,7 +18,7 @@
 #include "check.h"
 #include "test_support.h"
 
-#include <fourier_ssi/simulator.h>
+#include <fourier_ssi/driver/simulator.h>
 #include <tuple>
 
 using namespace FourierSSI;

@@ -13,7 +13,7 @@
 #include "check.h"
 #include "test_support.h"
 
-#include <fourier_ssi/simulator.h>
+#include <fourier_ssi/driver/simulator.h>
 
 using namespace FourierSSI;
 

@@ -6,7 +6,7 @@ program walks its designed family of nested meshes (member 0, 1, 2, ...)
 until Adaptivity/Maximum DoFs stops it. From the rows of results.csv (one
 cycle per member) this script forms, for every member k >= 1, the estimate
 the program prints for a run that stops at k: eq. (1) of
-include/fourier_ssi/sequence_error_estimate.h on the values of members
+include/fourier_ssi/estimation/sequence_error_estimate.h on the values of members
 0..k. The reference is the finest member; its own estimate is its
 uncertainty, and a member enters the table only where its true error
 |Q_k - Q_ref| / |Q_ref| is at least 2x that uncertainty; the effectivity
@@ -56,7 +56,7 @@ LOCKING_POISSON_RATIO = 0.45  # input_checks.h
 
 def design_ratio(nu, interface):
     """design_member_ratio(nu, slip_wedges) of
-    source/sequence_error_estimate.cc: every case with a smooth interface
+    source/estimation/sequence_error_estimate.cc: every case with a smooth interface
     has slip wedges (the ends of its interface lines)."""
     return 0.6 if nu >= LOCKING_POISSON_RATIO or interface == "smooth" \
         else 0.4

@@ -17,7 +17,7 @@ Derives, with exact rational arithmetic (sympy):
 Usage (run from anywhere, with /usr/bin/python3):
     interface_coefficients.py                 report (derivation + comparison)
     interface_coefficients.py --write-tables  regenerate
-                                              source/interface_element_tables.inc
+                                              source/interfaces/interface_element_tables.inc
     interface_coefficients.py --check-tables  exit 1 if that file is stale
 """
 

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Checks of the closed-form return mappings of include/fourier_ssi/soil_law.h
+"""Checks of the closed-form return mappings of include/fourier_ssi/coupled/soil_law.h
 (doc/soil-plasticity.md section 2). Prints one PASS/FAIL line per check and
 exits non-zero on failure. Run with Debian's /usr/bin/python3 (sympy).
 

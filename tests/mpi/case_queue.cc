@@ -9,7 +9,7 @@
 
 #include <chrono>
 #include <deal.II/base/mpi.h>
-#include <fourier_ssi/case_queue.h>
+#include <fourier_ssi/driver/case_queue.h>
 #include <thread>
 #include <vector>
 

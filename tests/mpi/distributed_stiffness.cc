@@ -17,7 +17,7 @@
 #include <check.h>
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/tria.h>
-#include <fourier_ssi/harmonic_problem.h>
+#include <fourier_ssi/harmonic/harmonic_problem.h>
 #include <test_support.h>
 
 using namespace FourierSSI;

@@ -1,0 +1,324 @@
+/**
+ * Nonlinear (Mohr-Coulomb, tension cut-off) interfaces on a set of Fourier
+ * harmonics coupled through theta (doc/nonlinear-interfaces.md, section 5).
+ *
+ * Initial-stiffness (modified Newton) iteration on the kept elastic
+ * factorizations of a HarmonicSet: every harmonic's matrix K_h holds the
+ * closed-form interface matrices with the elastic kn, ks. With d_p the
+ * plastic relative displacement (slip and gap) at the interface points, the
+ * discrete equilibrium is, per harmonic h,
+ *   K_h u_h = lambda F_h + c_h(d_p),   c_h = int int B_h^T D d_p r ds dtheta,
+ * (the interface force int B^T (t - t0) = K_interface u - c). One iteration:
+ *   1. the relative displacement at every interface Gauss point, summed over
+ *      all harmonics at N theta samples (ThetaSampling::evaluate);
+ *   2. the return mapping at every (point, theta) -> d_p, t;
+ *   3. the out-of-balance load G_h = int B_h^T D d_p, theta-integrated with
+ *      the trapezoidal rule against each harmonic's factor and through the
+ *      element's shape functions (the same B that gives the closed-form K);
+ *   4. force residual R = G - c; converged if |R| <= tolerance |lambda F|
+ *      (|G| if lambda F = 0; 2-norms over all harmonics); else
+ *   5. c <- c + dc, dc = omega R (Aitken's Delta^2 rule, or omega = 1) or
+ *      the Anderson update (AndersonAcceleration), and v = K^-1 c follows
+ *      through each harmonic's flexibility block on the interface DoFs
+ *      (K^-1 restricted to the DoFs the relative displacements read x the
+ *      DoFs c reaches, built once from the kept factorizations of the
+ *      HarmonicSet): a dense product per iteration instead of a re-solve;
+ *      the full K^-1 c is solved once per converged step.
+ * With Maximum harmonic above the set's highest harmonic, harmonics whose
+ * amplitude in the interface traction has not decayed below Harmonic
+ * tolerance are added to the set after a converged step (HarmonicSet::add)
+ * and the step is solved again.
+ * Under mpirun the harmonics are distributed over the ranks
+ * (HarmonicSet::distribute_over): each rank owns some harmonics, their
+ * factorizations and flexibility blocks, and an iteration exchanges once
+ * (one MPI_Allreduce) the interface amplitudes of every harmonic at the
+ * Gauss points; each amplitude is non-zero on its owner only, so the sum is
+ * exact and every rank samples, return-maps, accelerates and decides on
+ * bitwise the same numbers (the decisions cannot diverge).
+ * Load control scales the scene's loads by lambda; displacement control
+ * chooses lambda in every iteration so that one rigid-foundation motion
+ * equals its target (needed past the peak). A step that does not converge is
+ * cut in half (up to a limit); then the solve stops with a one-line error,
+ * the converged steps kept.
+ */
+#ifndef fourier_ssi_coupled_interface_solver_h
+#define fourier_ssi_coupled_interface_solver_h
+
+#include <array>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+#include <fourier_ssi/harmonic/harmonic_set.h>
+#include <fourier_ssi/coupled/initial_stress.h>
+#include <fourier_ssi/interfaces/interface_law.h>
+#include <fourier_ssi/input/nonlinear_interface_parameters.h>
+#include <fourier_ssi/interfaces/nonlinear_interface_points.h>
+#include <fourier_ssi/input/parameters.h>
+#include <fourier_ssi/fourier/theta_sampling.h>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace FourierSSI
+{
+  using namespace dealii;
+
+  /** One converged load step. */
+  struct LoadStepResult
+  {
+    /** Factor on the scene's loads (load control: step / n_steps). */
+    double load_factor = 0.;
+    /** Fraction of the held loads: none here (a plastic-soil stage). */
+    double held_fraction = 0.;
+    /** Rigid motion of the foundation (RigidMotion fields). */
+    RigidMotion motion;
+    /** Out-of-balance solves of this step (0: elastic). */
+    unsigned int iterations = 0;
+    double       residual   = 0.;
+    /** Interface (point, theta) samples sticking, slipping, open. */
+    std::array<unsigned int, 3> states = {{0, 0, 0}};
+    /**
+     * Resultant of the interface tractions (change from the initial state) on
+     * the rigid foundation's material: force (x, y, z) [kN] and moment about
+     * the origin (x, y, z) [kN m].
+     */
+    std::array<double, 6> resultant = {{0., 0., 0., 0., 0., 0.}};
+    /** Wall time of the step [s]. */
+    double time = 0.;
+    /** Harmonics solved in this step (grows with Maximum harmonic). */
+    unsigned int n_harmonics = 0;
+  };
+
+  class CoupledInterfaceSolver
+  {
+  public:
+    /**
+     * `set` must be assembled and factorized; its harmonics' matrices hold
+     * the elastic interface stiffness kn, ks of every interface. With
+     * `Nonlinear interfaces/Maximum harmonic` above the highest harmonic of
+     * the set, harmonics the interface tractions call for are added to it.
+     */
+    CoupledInterfaceSolver(HarmonicSet &set, const AllParameters &parameters);
+
+    /**
+     * All load steps. Returns normally if every step converged; otherwise
+     * throws a one-line error after the step cuts, the converged steps kept
+     * in get_steps().
+     */
+    void
+    run(std::ostream &log);
+
+    const std::vector<LoadStepResult> &
+    get_steps() const
+    {
+      return steps;
+    }
+
+    /** Interface state of every converged step (same order as steps). */
+    const std::vector<InterfaceSnapshot> &
+    get_snapshots() const
+    {
+      return snapshots;
+    }
+
+    /**
+     * CSV of the interface state at every (point, theta sample) of every
+     * converged step: position, angle, stick/slip/open, traction and
+     * relative displacement with their units in the header
+     * (coupled_interface_solver_output.cc).
+     */
+    void
+    write_interface_state_csv(const std::string &filename) const;
+
+    /**
+     * VTU (ParaView) of the last converged step's interface samples as
+     * points in 3D, (r cos theta, r sin theta, z): state (0 stick, 1 slip,
+     * 2 open), traction [kPa] and relative displacement [m] in the local
+     * (s, n, theta) components, next to the revolved soil field.
+     */
+    void
+    write_interface_state_vtu(const std::string &filename) const;
+
+    /**
+     * Total displacement amplitudes of harmonic i (last converged state).
+     * Collective when the harmonics are distributed over ranks: every rank
+     * calls it for the same i and gets the owner's field.
+     */
+    Vector<double>
+    solution(const unsigned int i) const;
+
+    /** N, the theta samples of the iteration. */
+    unsigned int
+    n_theta_samples() const
+    {
+      return sampling.n_samples();
+    }
+
+    /**
+     * The applied rigid-foundation loads at factor lambda in the order of
+     * LoadStepResult::resultant (F_x, F_y, F_z, M_x, M_y, M_z), with M about
+     * the origin (H at the reference elevation).
+     */
+    std::array<double, 6>
+    applied_loads(const double load_factor,
+                  const double held_fraction = 0.) const;
+
+    /**
+     * int int B_h^T D d r ds dtheta of the relative displacement d of the
+     * given fields (one per harmonic), condensed: the elastic force of the
+     * nonlinear interfaces computed through the theta sampling and the Gauss
+     * points, which must equal the closed-form K_interface u (a check of the
+     * projection that builds the out-of-balance loads).
+     */
+    std::vector<Vector<double>>
+    interface_force(const std::vector<Vector<double>> &fields) const;
+
+    /** Number of Gauss points of the nonlinear interfaces. */
+    unsigned int
+    n_interface_points() const
+    {
+      return points.size();
+    }
+
+    /**
+     * CSV: step, load factor, applied V, H_x, M_y, T, the motion, iterations,
+     * residual, states, converged (1; a failed step is not a row).
+     */
+    void
+    write_csv(const std::string &filename) const;
+
+  private:
+    /**
+     * The iteration condensed onto the interface (section 5 of the doc): c
+     * is non-zero only at the DoFs its assembly reaches ("write": the
+     * interface DoFs, or their masters where constrained), and an iteration
+     * reads K^-1 c only at the interface DoFs ("read") and in the controlled
+     * motion. So the flexibility block F = K^-1 restricted to read x write
+     * (one solve per write DoF, once per harmonic) gives the iterate exactly,
+     * a dense product instead of a sparse re-solve per iteration; the full
+     * K^-1 c is solved once per converged step.
+     */
+    struct Condensation
+    {
+      std::vector<types::global_dof_index> write, read;
+      /** F(i, j) = (K^-1 e_write[j])(read[i]). */
+      FullMatrix<double> flexibility;
+      /** Controlled motion of K^-1 e_write[j] (0 if not its harmonic). */
+      std::vector<double> controlled_motion;
+    };
+
+    /** Iteration state of a load step. */
+    struct StepState
+    {
+      double load_factor = 0.;
+      /** K^-1 c per harmonic, and c (condensed). */
+      std::vector<Vector<double>> correction_solution, correction_load;
+      /** K^-1 c valid at the read DoFs only (the iteration's view). */
+      std::vector<Vector<double>> interface_solution;
+      /** The controlled motion of K^-1 c [m or rad]. */
+      double controlled_motion = 0.;
+      /** Plastic relative displacement per point and sample. */
+      std::vector<LocalVector> plastic;
+    };
+
+    void
+    solve_load_pattern();
+
+    /** The owner's copy of values of harmonic h on every rank. */
+    void
+    from_owner(const unsigned int h, std::vector<double> &values) const;
+
+    double
+    from_owner(const unsigned int h, const double value) const;
+
+    /** Condensation of the harmonics first, first + 1, ... */
+    void
+    condense(const unsigned int first);
+
+    /** The controlled motion of a (full) field of harmonic h. */
+    double
+    controlled_motion_of(const unsigned int h, const Vector<double> &v) const;
+
+    /** Index of the harmonic that carries the controlled motion. */
+    unsigned int
+    controlled_harmonic() const;
+
+    /** The entries of (condensed) loads at the write DoFs, per harmonic. */
+    std::vector<Vector<double>>
+    on_write_dofs(const std::vector<Vector<double>> &full) const;
+
+    /**
+     * c += dc (given at the write DoFs), and K^-1 c at the read DoFs and in
+     * the controlled motion through the condensation.
+     */
+    void
+    add_correction(const std::vector<Vector<double>> &dc_write,
+                   StepState                         &state) const;
+
+    /** The full K^-1 c of a converged state (one solve per harmonic). */
+    void
+    complete(StepState &state) const;
+
+    /**
+     * Secant predictor: state's correction moved on by ratio times the
+     * change over the last converged step (before_last to committed); every
+     * part of the state but the plastic slip is linear in c
+     * (doc/nonlinear-interfaces.md section 5).
+     */
+    void
+    extrapolate(const StepState &before_last,
+                const double     ratio,
+                StepState       &state) const;
+
+    /** Iterate one step to lambda (load control) or to a motion target. */
+    bool
+    solve_step(const double       target,
+               StepState         &state,
+               LoadStepResult    &result,
+               InterfaceSnapshot &snapshot);
+
+    std::array<double, 6>
+    foundation_resultant(const std::vector<LocalVector> &traction) const;
+
+    RigidMotion
+    motion_of(const StepState &state) const;
+
+    /**
+     * Harmonics n <= Maximum harmonic, not solved, whose amplitude in the
+     * traction change t - t0 of a converged state exceeds Harmonic
+     * tolerance times the largest amplitude; each logged with its amplitude.
+     */
+    std::vector<Harmonic>
+    harmonics_called_for(const InterfaceSnapshot &snapshot,
+                         std::ostream            &log) const;
+
+    /** Add harmonics to the set and extend the iteration state by zeros. */
+    void
+    grow(const std::vector<Harmonic> &added);
+
+    HarmonicSet                 &set;
+    const AllParameters         &parameters;
+    NonlinearInterfaceParameters settings;
+    std::vector<Harmonic>        harmonics;
+    ThetaSampling                sampling;
+    /** Every candidate harmonic n <= Maximum harmonic (growth only). */
+    std::vector<Harmonic> candidates;
+    ThetaSampling         spectrum;
+    /** The Gauss points of the coulomb interfaces and their laws. */
+    NonlinearInterfacePoints           interface;
+    const std::vector<InterfacePoint> &points;
+    std::vector<Condensation>          condensed;
+    std::vector<Vector<double>>        pattern_solution;
+    /** Controlled motion of the pattern solution u_F (load factor 1). */
+    double pattern_motion = 0.;
+    /** sqrt(sum_h |F_h|^2) of the scene's (condensed) loads. */
+    double                         pattern_load_norm = 0.;
+    std::vector<LocalVector>       pattern_relative;
+    StepState                      committed;
+    std::vector<LoadStepResult>    steps;
+    std::vector<InterfaceSnapshot> snapshots;
+  };
+} // namespace FourierSSI
+
+#endif

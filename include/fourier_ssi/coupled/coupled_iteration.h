@@ -1,0 +1,244 @@
+/**
+ * What the coupled iterations (nonlinear interfaces, plastic soil) share:
+ * sums over the harmonics of a correction, the acceleration of the fixed
+ * point c = G(c), and the harmonic and component that carry a controlled
+ * rigid-foundation motion (doc/nonlinear-interfaces.md section 5,
+ * doc/soil-plasticity.md).
+ */
+#ifndef fourier_ssi_coupled_iteration_h
+#define fourier_ssi_coupled_iteration_h
+
+#include <array>
+#include <deal.II/base/exceptions.h>
+#include <deal.II/lac/vector.h>
+#include <fourier_ssi/coupled/anderson_acceleration.h>
+#include <fourier_ssi/fourier/harmonic.h>
+#include <fourier_ssi/input/nonlinear_interface_parameters.h>
+#include <fourier_ssi/postprocess/results_table.h>
+#include <fourier_ssi/harmonic/rigid_foundation.h>
+#include <fstream>
+#include <iomanip>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace FourierSSI
+{
+  using namespace dealii;
+
+  /** sqrt(sum_h |v_h|^2): the norm of a field given per harmonic. */
+  double
+  norm_over_harmonics(const std::vector<Vector<double>> &vectors);
+
+  /** sum_h a_h . b_h. */
+  double
+  dot_over_harmonics(const std::vector<Vector<double>> &a,
+                     const std::vector<Vector<double>> &b);
+
+  /**
+   * The harmonic that carries a controlled foundation motion: n = 0
+   * symmetric (vertical), n = 0 antisymmetric (twist), n = 1 symmetric
+   * (horizontal, rotation).
+   */
+  Harmonic
+  controlled_harmonic(const NonlinearInterfaceParameters::Motion motion);
+
+  /** The component of a rigid motion that a load step controls. */
+  double
+  controlled_component(const RigidMotion                         &motion,
+                       const NonlinearInterfaceParameters::Motion controlled);
+
+  /**
+   * The foundation loads of a load step, load_factor times the given ones,
+   * as the resultant (F_x, F_y, F_z, M_x, M_y, M_z) about the origin [kN,
+   * kN.m]: (H, M) act at (0, 0, z_ref), so moved to the origin M_y gains
+   * z_ref H_x and M_x loses z_ref H_y. held_fraction times the held loads
+   * (Rigid foundation/Held ...) is added.
+   */
+  std::array<double, 6>
+  applied_foundation_loads(const RigidFoundationParameters &foundation,
+                           const double                     load_factor,
+                           const double                     held_fraction = 0.);
+
+  /**
+   * M_y about the reference point (as the prm gives it) out of the
+   * resultant about the origin: M_y - z_ref H_x [kN.m].
+   */
+  double
+  moment_about_reference(const std::array<double, 6>     &loads,
+                         const RigidFoundationParameters &foundation);
+
+  /** A foundation load by name, with its unit. */
+  struct NamedLoad
+  {
+    std::string name, unit;
+    double      value = 0.;
+  };
+
+  /**
+   * The load that works on a controlled motion (vertical: V [kN],
+   * horizontal: H [kN], rotation: M about the reference point [kN.m],
+   * twist: T [kN.m]) out of the resultant about the origin
+   * (applied_foundation_loads).
+   */
+  NamedLoad
+  conjugate_load(const std::array<double, 6>               &loads,
+                 const RigidFoundationParameters           &foundation,
+                 const NonlinearInterfaceParameters::Motion controlled);
+
+  /** The leading columns of every load-displacement.csv (both solvers). */
+  constexpr const char *load_step_csv_header =
+    "step,load_factor,V_kN,H_kN,M_kNm,T_kNm,vertical_m,horizontal_m,"
+    "rotation_rad,twist_rad,iterations,residual";
+
+  /** One row's leading columns, in the order of load_step_csv_header. */
+  void
+  write_load_step_columns(std::ostream                    &out,
+                          const unsigned int               step,
+                          const double                     load_factor,
+                          const double                     held_fraction,
+                          const RigidFoundationParameters &foundation,
+                          const RigidMotion               &motion,
+                          const unsigned int               iterations,
+                          const double                     residual);
+
+  /**
+   * load-displacement.csv of a coupled solver: per converged step the
+   * leading columns of load_step_csv_header, then the solver's own
+   * (`extra_header`; write_extra(out, step result) writes them), then
+   * converged = 1.
+   */
+  template <class StepResult, class ExtraColumns>
+  void
+  write_load_step_csv(const std::string               &filename,
+                      const std::vector<StepResult>   &steps,
+                      const RigidFoundationParameters &foundation,
+                      const std::string               &extra_header,
+                      const ExtraColumns              &write_extra)
+  {
+    std::ofstream out(filename);
+    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+    out << load_step_csv_header << ',' << extra_header << ",converged\n"
+        << std::setprecision(12);
+    for (unsigned int s = 0; s < steps.size(); ++s)
+      {
+        const StepResult &r = steps[s];
+        write_load_step_columns(out,
+                                s + 1,
+                                r.load_factor,
+                                r.held_fraction,
+                                foundation,
+                                r.motion,
+                                r.iterations,
+                                r.residual);
+        out << ',';
+        write_extra(out, r);
+        out << ",1\n";
+      }
+    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+  }
+
+  /**
+   * The rows of results.csv every coupled solver writes per converged load
+   * step (cycle = step number): the applied loads [kN, kN.m], the
+   * foundation motion [m, rad], iterations, residual and wall time. A step
+   * result has load_factor, motion, iterations, residual and time; the
+   * solver has applied_loads(load_factor, held_fraction).
+   */
+  template <class Solver>
+  void
+  add_load_step_rows(const Solver &solver, ResultsTable &results)
+  {
+    const Harmonic any{0, Family::symmetric};
+    const auto    &steps = solver.get_steps();
+    for (unsigned int s = 0; s < steps.size(); ++s)
+      {
+        const auto &r    = steps[s];
+        const auto loads = solver.applied_loads(r.load_factor, r.held_fraction);
+        const RigidMotion &m    = r.motion;
+        const unsigned int step = s + 1;
+        results.add("step_load_factor", any, step, r.load_factor, "-");
+        results.add("step_vertical_force", any, step, loads[2], "kN");
+        results.add("step_horizontal_force", any, step, loads[0], "kN");
+        results.add("step_moment", any, step, loads[4], "kN.m");
+        results.add("step_torque", any, step, loads[5], "kN.m");
+        results.add("step_vertical_displacement",
+                    any,
+                    step,
+                    m.vertical_displacement,
+                    "m");
+        results.add("step_horizontal_displacement",
+                    any,
+                    step,
+                    m.horizontal_displacement,
+                    "m");
+        results.add("step_rotation", any, step, m.rotation, "rad");
+        results.add("step_twist", any, step, m.twist, "rad");
+        results.add("step_iterations", any, step, r.iterations, "-");
+        results.add("step_residual", any, step, r.residual, "-");
+        results.add("step_wall_time", any, step, r.time, "s");
+      }
+  }
+
+  /**
+   * The one line of a load step that did not converge even after the
+   * allowed step cuts (`entry` names the solver's parameter section).
+   */
+  std::string
+  unconverged_step_message(const std::string                  &entry,
+                           const unsigned int                  converged_steps,
+                           const NonlinearInterfaceParameters &settings);
+
+  /**
+   * Runs a coupled solver's load steps; if one fails, the converged steps
+   * are written to `incomplete_curve` (unless empty; the name marks them
+   * as such) before the error goes on.
+   */
+  template <class Solver>
+  void
+  run_keeping_converged_steps(Solver            &solver,
+                              std::ostream      &log,
+                              const std::string &incomplete_curve)
+  {
+    try
+      {
+        solver.run(log);
+      }
+    catch (const std::exception &)
+      {
+        if (!incomplete_curve.empty() && !solver.get_steps().empty())
+          solver.write_csv(incomplete_curve);
+        throw;
+      }
+  }
+
+  /**
+   * The update of the correction load c <- c + dc of one iteration from
+   * the force residual R = G(c) - c: dc = R (none), omega R with Aitken's
+   * Delta^2 rule omega_k = -omega_{k-1} R_{k-1}^T (R_k - R_{k-1}) /
+   * |R_k - R_{k-1}|^2, or the Anderson update on the last m residuals
+   * (doc/nonlinear-interfaces.md section 5). One per load step.
+   */
+  class FixedPointAcceleration
+  {
+  public:
+    using Kind = NonlinearInterfaceParameters::Acceleration;
+
+    FixedPointAcceleration(const Kind kind, const unsigned int anderson_depth);
+
+    std::vector<Vector<double>>
+    increment(const std::vector<Vector<double>> &load,
+              const std::vector<Vector<double>> &residual);
+
+  private:
+    double
+    aitken_factor(const std::vector<Vector<double>> &residual) const;
+
+    Kind                        kind;
+    AndersonAcceleration        anderson;
+    double                      omega = 1.;
+    std::vector<Vector<double>> previous_residual;
+  };
+} // namespace FourierSSI
+
+#endif

@@ -1,0 +1,459 @@
+/**
+ * Perfectly plastic soil (Tresca, Mohr-Coulomb; soil_law.h) on a set of
+ * Fourier harmonics coupled through theta (doc/soil-plasticity.md,
+ * section 3): the interfaces' coupled iteration (coupled_interface_solver.h)
+ * applied at the soil's quadrature points.
+ *
+ * Every harmonic keeps its elastic matrix K_h and factorization (HarmonicSet).
+ * With s_p = D eps_p the "plastic stress" at every (quadrature point, theta
+ * sample), the discrete equilibrium of harmonic h is
+ *   K_h u_h = lambda F_h + c_h,   c_h = int Bbar_h^T [int factor_h s_p dtheta]
+ *                                          r dr dz,
+ * (the internal force int Bbar^T sigma = K u - c, sigma = D (eps - eps_p)).
+ * One iteration:
+ *   1. strain amplitudes of every harmonic at every soil quadrature point
+ *      (Bbar u_h: with B-bar the dilatation projected per cell), summed at N
+ *      theta samples (ThetaSampling::evaluate);
+ *   2. the return mapping at every (point, theta) from the last converged
+ *      plastic stress -> s_p = D eps - sigma;
+ *   3. G_h = int Bbar_h^T (theta-integrated s_p) for every harmonic;
+ *   4. R = G - c; converged if |R| <= tolerance |lambda F| (2-norms over
+ *      the harmonics); else c <- c + omega R, all harmonics re-solved with
+ *      their kept factorizations, omega by Aitken's Delta^2 rule.
+ * Loading (load or displacement control of the rigid foundation), step
+ * cutting and the settings are those of subsection "Nonlinear interfaces".
+ * Coulomb interfaces in the scene iterate with the soil: their
+ * out-of-balance load (NonlinearInterfacePoints) joins G in step 3, and
+ * their part of the tangent joins K_t (doc/soil-plasticity.md 6b).
+ *
+ * Under mpirun (Stiffness = elastic) the harmonics are distributed over the
+ * ranks (HarmonicSet::distribute_over), as for the interfaces: each rank
+ * re-solves its own harmonics and computes their strain amplitudes, and
+ * return-maps every P-th soil point. Two sums over the ranks per iteration
+ * (MPI_Allreduce: the strain amplitudes, then the theta integrals of s_p)
+ * give every rank all of them; each entry is non-zero on one rank only, so
+ * the sums are exact, and every rank assembles G, tests convergence and
+ * updates c on the same bits as a serial run (doc/soil-plasticity.md
+ * section 3c). Stiffness = tangent (one block matrix over all harmonics) on
+ * several ranks is refused.
+ */
+#ifndef fourier_ssi_coupled_soil_solver_h
+#define fourier_ssi_coupled_soil_solver_h
+
+#include <array>
+#include <deal.II/lac/vector.h>
+#include <fourier_ssi/harmonic/bbar_projection.h>
+#include <fourier_ssi/coupled/coupled_tangent.h>
+#include <fourier_ssi/harmonic/harmonic_set.h>
+#include <fourier_ssi/input/nonlinear_interface_parameters.h>
+#include <fourier_ssi/interfaces/nonlinear_interface_points.h>
+#include <fourier_ssi/input/parameters.h>
+#include <fourier_ssi/coupled/soil_law.h>
+#include <fourier_ssi/fourier/theta_sampling.h>
+#include <memory>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace FourierSSI
+{
+  using namespace dealii;
+
+  /** One converged load step of the plastic soil. */
+  struct SoilStepResult
+  {
+    double load_factor = 0.;
+    /** Fraction of the held loads (Rigid foundation/Held ...) applied. */
+    double       held_fraction = 0.;
+    RigidMotion  motion;
+    unsigned int iterations = 0;
+    /** |R| / |lambda F| at convergence. */
+    double residual = 0.;
+    /** (point, theta) samples elastic and plastic. */
+    unsigned int n_elastic = 0, n_plastic = 0;
+    /** Largest f(sigma) over every (point, theta) [kPa] (<= 0 admissible). */
+    double largest_yield_value = 0.;
+    /**
+     * Coulomb interfaces: (point, theta) samples sticking, slipping, open
+     * (all zero without).
+     */
+    ContactCounts contact = {{0, 0, 0}};
+    /** Largest f(t) of the coulomb interfaces [kPa] (<= 0 admissible). */
+    double largest_interface_yield_value = 0.;
+    /** The coulomb interfaces at every (point, theta) (empty without). */
+    InterfaceSnapshot interface_state;
+    double            time = 0.;
+  };
+
+  class CoupledSoilSolver
+  {
+  public:
+    /** `set` must be assembled and factorized. */
+    CoupledSoilSolver(const HarmonicSet &set, const AllParameters &parameters);
+
+    /** All load steps; throws one line if a step does not converge. */
+    void
+    run(std::ostream &log);
+
+    const std::vector<SoilStepResult> &
+    get_steps() const
+    {
+      return steps;
+    }
+
+    /**
+     * Total displacement amplitudes of harmonic i (last converged state).
+     * Collective when the harmonics are distributed over ranks: every rank
+     * calls it for the same i and gets the owner's field.
+     */
+    Vector<double>
+    solution(const unsigned int i) const;
+
+    /**
+     * (F_x, F_y, F_z, M_x, M_y, M_z) applied at load factor lambda with the
+     * fraction held_fraction of the held loads.
+     */
+    std::array<double, 6>
+    applied_loads(const double load_factor,
+                  const double held_fraction = 0.) const;
+
+    /**
+     * The work of the applied loads on the last converged displacement,
+     * sum over harmonics of (lambda F_h + rho F_held,h) . u_h [kJ]: the
+     * goal of a load-controlled path (the stiffness and the forces carry
+     * the theta integral, so the sum is the 3D work). Homogeneous
+     * constraints only (the condensed load vector is then the work's).
+     */
+    double
+    load_work() const;
+
+    /**
+     * int Bbar_h^T D eps(fields) over the plastic soil, theta by sampling:
+     * equals the soil part of K_h u (a check of the projection that builds
+     * the out-of-balance loads).
+     */
+    std::vector<Vector<double>>
+    soil_force(const std::vector<Vector<double>> &fields) const;
+
+    /**
+     * The out-of-balance load G(u) = int Bbar^T (D eps(u) - sigma(u)) of
+     * the displacement fields u (one per harmonic), the return mapping from
+     * the committed state: what the iteration balances.
+     */
+    std::vector<Vector<double>>
+    out_of_balance_load(const std::vector<Vector<double>> &fields);
+
+    /**
+     * K_t(u) x: the coupled tangent (Stiffness = tangent) built at the
+     * fields u and applied to x; K u - G(u) is the internal force, so
+     * K_t x = K x - dG/du x (checked against differences of
+     * out_of_balance_load in tests/soil_coupled_tangent.cc).
+     */
+    std::vector<Vector<double>>
+    tangent_product(const std::vector<Vector<double>> &fields,
+                    const std::vector<Vector<double>> &x);
+
+    unsigned int
+    n_soil_points() const
+    {
+      return points.size();
+    }
+
+    unsigned int
+    n_theta_samples() const
+    {
+      return sampling.n_samples();
+    }
+
+    /** True if the scene has coulomb interfaces (iterated with the soil). */
+    bool
+    has_coulomb_interfaces() const
+    {
+      return interface != nullptr;
+    }
+
+    /**
+     * CSV of the coulomb interfaces' state at every (point, theta) of every
+     * converged step (NonlinearInterfacePoints::write_state_csv).
+     */
+    void
+    write_interface_state_csv(const std::string &filename) const;
+
+    /** CSV: step, load factor, loads, motion, iterations, residual, ... */
+    void
+    write_csv(const std::string &filename) const;
+
+  private:
+    /** A soil quadrature point: its cell, weight and elastic constants. */
+    struct SoilPoint
+    {
+      unsigned int cell;
+      unsigned int q;
+      double       r, dV, depth, shear_modulus, lambda;
+      unsigned int law;
+      /** The geostatic stress sigma_0 (Initial stress; zero without). */
+      StrainVector initial_stress;
+    };
+
+    /** A cell of plastic soil: shape data at its quadrature points. */
+    struct SoilCell
+    {
+      /** Local DoF indices per harmonic. */
+      std::vector<std::vector<types::global_dof_index>> dof_indices;
+      /** shape_value[q][i], shape_grad[q][i]. */
+      std::vector<std::vector<double>>       shape_value;
+      std::vector<std::vector<Tensor<1, 2>>> shape_grad;
+      std::vector<double>                    radius;
+      /** B-bar projection of the cell (null: standard strains). */
+      std::shared_ptr<LinearProjection> projection;
+      unsigned int                      first_point;
+    };
+
+    struct StepState
+    {
+      double load_factor = 0.;
+      /** rho: the held loads' part rho F_held of the load. */
+      double                      held_fraction = 0.;
+      std::vector<Vector<double>> correction_solution, correction_load;
+      /** s_p = D eps_p per (point, theta). */
+      std::vector<StrainVector> plastic;
+      /** Coulomb interfaces: d_p per (interface point, theta). */
+      std::vector<LocalVector> interface_plastic;
+    };
+
+    void
+    make_points();
+    /** One line if the geostatic stress lies outside a soil law. */
+    void
+    check_initial_stress() const;
+    void
+    solve_load_pattern();
+    /** K^-1 F_held and its strains (Rigid foundation/Held ...). */
+    void
+    solve_held_loads();
+
+    /** |lambda F + rho F_held| (2-norm over the harmonics). */
+    double
+    applied_load_norm(const StepState &state) const;
+
+    /**
+     * One stage of the load path: `steps` equal steps, the held loads
+     * brought on (holding) or the loads scaled by the load or displacement
+     * control from the committed state.
+     */
+    void
+    run_stage(const bool holding, const unsigned int steps, std::ostream &log);
+    /**
+     * Secant predictor: state's correction (load and displacement) moved on
+     * by ratio times the change over the last converged step (from
+     * before_last to committed). At a plateau the plastic mechanism goes on
+     * as in the last step, so Newton starts next to the answer; the elastic
+     * predictor (the correction kept) would spread the increment as
+     * elastic strain and overshoot the capacity (doc/soil-plasticity.md 3b).
+     */
+    void
+    extrapolate(const StepState &before_last,
+                const double     ratio,
+                StepState       &state) const;
+
+    /**
+     * Strain amplitudes [point][harmonic] of fields (one per harmonic): of
+     * the harmonics this rank owns, summed over the ranks (the one
+     * collective of an iteration).
+     */
+    std::vector<std::vector<StrainVector>>
+    strain_amplitudes(const std::vector<Vector<double>> &fields) const;
+
+    /**
+     * Total strain samples [point * N + j] at lambda and rho, at the points
+     * this rank owns (owns_point; zero at the others).
+     */
+    std::vector<StrainVector>
+    strain_samples(const std::vector<Vector<double>> &correction,
+                   const double                       load_factor,
+                   const double                       held_fraction) const;
+
+    /**
+     * Coulomb interfaces: the relative displacement at every (interface
+     * point, theta) at lambda and rho (correction + lambda u_F + rho
+     * u_held).
+     */
+    std::vector<LocalVector>
+    relative_samples(const std::vector<Vector<double>> &correction,
+                     const double                       load_factor,
+                     const double                       held_fraction) const;
+
+    /**
+     * Coulomb interfaces at the relative displacements given: the return
+     * mapping from the committed state into `plastic` and `snapshot`, and
+     * their out-of-balance load added to `load`; the sample counts.
+     */
+    ContactCounts
+    add_interface_load(const std::vector<LocalVector> &relative,
+                       std::vector<LocalVector>       &plastic,
+                       InterfaceSnapshot              &snapshot,
+                       std::vector<Vector<double>>    &load) const;
+
+    /**
+     * Return mapping from the committed state at every (point, theta) of
+     * the points this rank owns; the counts of `result` are this rank's
+     * (count_over_ranks: all of them).
+     */
+    void
+    return_map(const std::vector<StrainVector> &strain,
+               std::vector<StrainVector>       &plastic,
+               SoilStepResult                  &result) const;
+
+    /**
+     * G_h = int Bbar_h^T (theta integral of samples), every harmonic: the
+     * theta integrals at the points this rank owns, summed over the ranks.
+     */
+    std::vector<Vector<double>>
+    load_of(const std::vector<StrainVector> &samples) const;
+
+    /** lambda that puts the controlled motion of the state at target. */
+    double
+    controlled_load_factor(const StepState &state, const double target) const;
+
+    /**
+     * Solve one step to `target`: the held fraction (holding), else the
+     * load factor (load control) or the controlled motion.
+     */
+    bool
+    solve_step(const double    target,
+               const bool      holding,
+               StepState      &state,
+               SoilStepResult &result);
+
+    /** F_held,h: the held foundation loads of harmonic h (zero without). */
+    Vector<double>
+    held_load(const unsigned int h) const;
+
+    /** u_h = lambda u_pattern + correction + rho u_held of a state. */
+    Vector<double>
+    total_displacement(const StepState &state, const unsigned int h) const;
+
+    RigidMotion
+    motion_of(const StepState &state) const;
+
+    /**
+     * sigma_0 + D eps at a point: its stress if it had stayed elastic from
+     * the initial (geostatic) state.
+     */
+    StrainVector
+    elastic_stress(const SoilPoint &point, const StrainVector &eps) const;
+
+    /**
+     * The return mapping at sample k of a point from the committed state:
+     * trial = elastic - s_p,committed (elastic from elastic_stress()).
+     */
+    SoilReturn
+    return_from_committed(const SoilPoint    &point,
+                          const unsigned int  k,
+                          const StrainVector &elastic) const;
+
+    /**
+     * D_e - D_ep at sample k of point p (row-major 6 x 6, forward
+     * differences of the return mapping from the committed state); false
+     * where the return is elastic (no softening).
+     */
+    bool
+    softening_at(const unsigned int      p,
+                 const unsigned int      k,
+                 const StrainVector     &strain,
+                 std::array<double, 36> &softening) const;
+
+    /**
+     * Stiffness = tangent: K_t,hg = delta_hg K_h - int Bbar_h^T
+     * [theta integral of factor_h (D_e - D_ep) factor_g] Bbar_g
+     * (coupled_tangent.h) at the strain samples given; factorized, with
+     * K_t^-1 F.
+     */
+    void
+    update_tangent(const std::vector<StrainVector> &strain,
+                   const std::vector<LocalVector>  &relative);
+
+    /**
+     * The out-of-balance load correction of one tangent (Newton) step:
+     * du = K_t^-1 (R + dlambda F), dlambda keeping the controlled motion
+     * (displacement control; 0 under load control); returns
+     * dc = K du - dlambda F, the change of the correction load that moves
+     * the total displacement by du.
+     */
+    std::vector<Vector<double>>
+    tangent_correction(const std::vector<Vector<double>> &residual,
+                       const bool displacement_control) const;
+
+    /**
+     * The log's account of a step: V, H and the moment and torque where
+     * the scene applies them, with the motion each works on.
+     */
+    /** The held loads (V, H, M about the reference point, T). */
+    void
+    write_held_loads(std::ostream &log) const;
+
+    void
+    write_foundation_state(std::ostream         &log,
+                           const SoilStepResult &result) const;
+
+    /** The controlled motion component of harmonic h's field v. */
+    double
+    controlled_motion(const unsigned int h, const Vector<double> &v) const;
+
+    /**
+     * Several ranks: point p is return-mapped by rank p mod P only (the
+     * return mapping is most of an iteration, doc/soil-plasticity.md 3c).
+     */
+    bool
+    owns_point(const unsigned int p) const
+    {
+      return p % point_stride == point_rank;
+    }
+
+    /** The elastic and plastic counts and largest f over the ranks. */
+    void
+    count_over_ranks(SoilStepResult &result) const;
+
+    /**
+     * sum_h values[h * n + c] for c < n, summed over the ranks first: per
+     * harmonic quantities, each non-zero on its owner only, added in the
+     * harmonics' order as a serial run adds them (the same bits).
+     */
+    std::vector<double>
+    sum_over_harmonics(std::vector<double> values, const unsigned int n) const;
+
+    const HarmonicSet            &set;
+    const AllParameters          &parameters;
+    NonlinearInterfaceParameters  settings;
+    std::vector<Harmonic>         harmonics;
+    std::vector<HarmonicOperator> operators;
+    ThetaSampling                 sampling;
+    std::vector<SoilLaw>          laws;
+    std::vector<SoilCell>         cells;
+    std::vector<SoilPoint>        points;
+    std::vector<unsigned int>     component;
+    std::vector<Vector<double>>   pattern_solution;
+    double                        pattern_load_norm = 0.;
+    /** Held loads: K^-1 F_held, |F_held|, F . F_held; empty: none. */
+    std::vector<Vector<double>> held_solution;
+    double                      held_load_norm = 0., pattern_held_dot = 0.;
+    std::vector<std::vector<StrainVector>> held_strain;
+    /** Strain amplitudes of the load pattern [point][harmonic]. */
+    std::vector<std::vector<StrainVector>> pattern_strain;
+    StepState                              committed;
+    std::vector<SoilStepResult>            steps;
+    /** Stiffness = tangent: the coupled tangent and K_t^-1 F. */
+    std::unique_ptr<CoupledTangent> tangent;
+    std::vector<Vector<double>>     tangent_pattern;
+    /**
+     * Coulomb interfaces (null: none): their points, the relative
+     * displacements of the load pattern and of the held loads.
+     */
+    std::unique_ptr<NonlinearInterfacePoints> interface;
+    std::vector<LocalVector>                  pattern_relative, held_relative;
+    /** owns_point(): the ranks and this rank (1, 0: every point). */
+    unsigned int point_stride = 1, point_rank = 0;
+  };
+} // namespace FourierSSI
+
+#endif

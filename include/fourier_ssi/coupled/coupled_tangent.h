@@ -1,0 +1,101 @@
+/**
+ * The tangent stiffness of a set of harmonics that a nonlinear law couples
+ * through theta (doc/soil-plasticity.md section 3, "Tangent"): one block per
+ * pair of harmonics (h, g),
+ *   K_t,hg = delta_hg K_h - int Bbar_h^T S_hg Bbar_g r dr dz,
+ * with K_h the kept elastic (condensed) matrix of harmonic h and S_hg the
+ * theta integral of factor_h (D_e - D_ep) factor_g at the points that yield.
+ * Each block is condensed with the constraints of its row harmonic (rows)
+ * and of its column harmonic (columns), so the block system is the
+ * condensed Newton system of all harmonics together; it is factorized with
+ * UMFPACK (the softened part of D_ep need not be symmetric: Mohr-Coulomb
+ * with psi < phi) as one matrix whose pattern is analysed once
+ * (umfpack_lu.h).
+ */
+#ifndef fourier_ssi_coupled_tangent_h
+#define fourier_ssi_coupled_tangent_h
+
+#include <deal.II/lac/block_sparse_matrix.h>
+#include <deal.II/lac/block_sparsity_pattern.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+#include <fourier_ssi/harmonic/harmonic_set.h>
+#include <fourier_ssi/linear_algebra/umfpack_lu.h>
+#include <vector>
+
+namespace FourierSSI
+{
+  using namespace dealii;
+
+  class CoupledTangent
+  {
+  public:
+    /**
+     * `cell_dofs[c][h]`: the DoF indices of harmonic h on the c-th cell
+     * whose law can yield (their couplings between harmonics are the only
+     * ones the softening adds).
+     */
+    CoupledTangent(
+      const HarmonicSet &set,
+      const std::vector<std::vector<std::vector<types::global_dof_index>>>
+        &cell_dofs);
+
+    /** Every block to the elastic matrices: K_t = diag(K_h). */
+    void
+    reset_to_elastic();
+
+    /**
+     * Block (h, g) += the condensed local matrix (the softening enters
+     * negated; thread-safe per block row h).
+     */
+    void
+    add(const unsigned int                          h,
+        const unsigned int                          g,
+        const FullMatrix<double>                   &local,
+        const std::vector<types::global_dof_index> &row_dofs,
+        const std::vector<types::global_dof_index> &column_dofs);
+
+    void
+    factorize();
+
+    /** y_h = sum_g K_t,hg x_g (condensed; a check of the assembly). */
+    void
+    vmult(std::vector<Vector<double>>       &y,
+          const std::vector<Vector<double>> &x) const;
+
+    /**
+     * b_to_x[h] := (K_t^-1 b)_h for condensed loads b of every harmonic;
+     * the constraints of every harmonic then distributed (increments).
+     */
+    void
+    solve(std::vector<Vector<double>> &b_to_x) const;
+
+    unsigned int
+    n_factorizations() const
+    {
+      return factorizations;
+    }
+
+  private:
+    const HarmonicSet        &set;
+    BlockSparsityPattern      pattern;
+    BlockSparseMatrix<double> matrix;
+    /** The whole matrix by rows (harmonic h's rows at offset[h]). */
+    UmfpackLU                 lu;
+    std::vector<unsigned int> offset;
+    /**
+     * Where each entry of the blocks goes among lu.values(), in the order
+     * of copy_to_lu()'s sweep (block row, block column, row, entry).
+     */
+    std::vector<unsigned int> position;
+    unsigned int              factorizations = 0;
+
+    /** The rows of the whole matrix and position[], from the pattern. */
+    void
+    make_lu_pattern();
+    void
+    copy_to_lu();
+  };
+} // namespace FourierSSI
+
+#endif

@@ -1,0 +1,119 @@
+/**
+ * Perfectly plastic soil laws per material id and their closed-form return
+ * mapping in principal stresses (doc/soil-plasticity.md, section 2).
+ *
+ * Stresses are tension positive, in the order of StrainVector
+ * (r, z, theta, rz, ztheta, rtheta) with the shear STRESSES (not doubled).
+ * Principal stresses s1 >= s2 >= s3. Every yield surface used here is a
+ * union of planes in principal space,
+ *   Tresca:        f = s1 - s3 - 2 s_u(depth),   s_u = s_u0 + k depth,
+ *   Mohr-Coulomb:  f = (s1 - s3) + (s1 + s3) sin phi - 2 c cos phi,
+ *   potential      g = (s1 - s3) + (s1 + s3) sin psi,
+ * so the return onto one plane, onto the edge where two planes meet
+ * (s1 = s2 or s2 = s3) and, for Mohr-Coulomb, onto the apex
+ * s1 = s2 = s3 = c cot phi, is a linear system of at most 2 x 2 equations
+ * (de Souza Neto, Peric & Owen 2008, Computational Methods for Plasticity,
+ * sections 8.2.1 and 8.2.2; checked in doc/derivations/soil_return_mapping.py).
+ * The principal directions of the trial stress are kept (isotropy).
+ */
+#ifndef fourier_ssi_soil_law_h
+#define fourier_ssi_soil_law_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/types.h>
+#include <fourier_ssi/fourier/harmonic_operator.h>
+#include <map>
+#include <string>
+
+namespace FourierSSI
+{
+  using namespace dealii;
+
+  /** Which surface the return mapping ended on. */
+  enum class SoilState
+  {
+    elastic,
+    plane,
+    edge,
+    apex
+  };
+
+  struct SoilReturn
+  {
+    /** The admissible stress (tension positive, shear stresses). */
+    StrainVector stress = {{0., 0., 0., 0., 0., 0.}};
+    SoilState    state  = SoilState::elastic;
+  };
+
+  struct SoilLaw
+  {
+    enum class Kind
+    {
+      tresca,
+      mohr_coulomb
+    };
+    Kind kind = Kind::tresca;
+    /** Tresca: s_u = su0 + su_gradient depth [kPa, kPa/m]. */
+    double su0         = 0.;
+    double su_gradient = 0.;
+    /** Mohr-Coulomb: c' [kPa], phi', psi [rad]. */
+    double cohesion = 0., friction = 0., dilation = 0.;
+
+    /** Undrained strength s_u at a depth [kPa] (Tresca). */
+    double
+    undrained_strength(const double depth) const
+    {
+      return su0 + su_gradient * depth;
+    }
+
+    /** f(stress) [kPa]: <= 0 admissible. */
+    double
+    yield_function(const StrainVector &stress, const double depth) const;
+
+    /**
+     * The closest admissible stress (in the energy norm of the elastic law
+     * G, K) to the elastic trial stress, at a point at `depth`.
+     */
+    SoilReturn
+    return_map(const StrainVector &trial,
+               const double        shear_modulus,
+               const double        bulk_modulus,
+               const double        depth) const;
+  };
+
+  /**
+   * Subsection "Soil plasticity": the plastic laws per material id; a
+   * material without a law stays linear elastic.
+   */
+  struct SoilPlasticityParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /**
+     * "id: tresca, su=..., k=...; id: mohr-coulomb, c=..., phi=...,
+     * psi=..."; throws one line naming the entry and the offending text.
+     */
+    void
+    parse_law_list(const std::string &text);
+
+    bool
+    any() const
+    {
+      return !laws.empty();
+    }
+
+    std::map<types::material_id, SoilLaw> laws;
+
+    /**
+     * What the coupled iteration re-solves with (doc/soil-plasticity.md
+     * section 3): the kept elastic factorizations only (initial stiffness),
+     * or the tangent of all harmonics coupled (Newton; coupled_tangent.h).
+     */
+    bool tangent = true;
+  };
+} // namespace FourierSSI
+
+#endif

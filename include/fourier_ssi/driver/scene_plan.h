@@ -1,0 +1,51 @@
+/**
+ * What a scene calls for, decided before anything is assembled: the
+ * harmonics its loads contain (exactly for foundation resultants, by Fourier
+ * decomposition for loads given as functions of theta) and the effects to
+ * simulate (interfaces, non-homogeneity, stiffness extraction, output). The
+ * plan's log lines say, one each, what is simulated and what is skipped and
+ * why.
+ */
+#ifndef fourier_ssi_scene_plan_h
+#define fourier_ssi_scene_plan_h
+
+#include <deal.II/grid/tria.h>
+#include <fourier_ssi/fourier/harmonic.h>
+#include <fourier_ssi/fourier/load_decomposition.h>
+#include <fourier_ssi/input/parameters.h>
+#include <string>
+#include <vector>
+
+namespace FourierSSI
+{
+  using namespace dealii;
+
+  struct ScenePlan
+  {
+    /** Harmonics to solve, n ascending, symmetric before antisymmetric. */
+    std::vector<Harmonic> harmonics;
+    /** The theta-dependent loads with their sampling chosen. */
+    LoadDecomposition loads;
+    /** Relative amplitude of each (n, family) in the theta-dependent loads. */
+    std::map<std::pair<unsigned int, Family>, double> load_amplitudes;
+    std::vector<std::string>                          log_lines;
+  };
+
+  /**
+   * Plan a scene on its (coarse) mesh. Resultants on a rigid foundation map
+   * exactly: V -> n = 0 symmetric, T -> n = 0 antisymmetric, H_x and M_y ->
+   * n = 1 symmetric, H_y and M_x -> n = 1 antisymmetric; the stiffness
+   * coefficients need n = 1 symmetric. Throws a one-line error for a scene
+   * without load in automatic mode or with harmonic-dependent amplitude
+   * expressions that cannot be attributed to harmonics.
+   */
+  ScenePlan
+  plan_scene(const AllParameters    &parameters,
+             const Triangulation<2> &triangulation);
+
+  /** "n = 0, 2..6, 8" style list of harmonic numbers. */
+  std::string
+  compact_list(const std::vector<unsigned int> &numbers);
+} // namespace FourierSSI
+
+#endif

@@ -1,0 +1,485 @@
+/**
+ * The driver, in the shape of deal.II's step-6: make the mesh and the scene
+ * plan (the harmonics the loads need, the effects to simulate); for each
+ * refinement cycle, set up, assemble and solve every harmonic (a
+ * HarmonicSet, harmonics concurrently), post-process each one, estimate and
+ * refine; write the output. Files are written only for a run that succeeds;
+ * a failure removes what this run wrote, and a run starts by removing the
+ * result files an earlier run left in its output directory, so nothing
+ * stale or partial is left looking like a result.
+ */
+#ifndef fourier_ssi_simulator_h
+#define fourier_ssi_simulator_h
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/timer.h>
+#include <deal.II/grid/tria.h>
+#include <fourier_ssi/mesh/adaptivity.h>
+#include <fourier_ssi/coupled/coupled_iteration.h>
+#include <fourier_ssi/postprocess/field_reconstruction.h>
+#include <fourier_ssi/estimation/goal_estimator.h>
+#include <fourier_ssi/harmonic/harmonic_postprocessors.h>
+#include <fourier_ssi/harmonic/harmonic_set.h>
+#include <fourier_ssi/input/parameters.h>
+#include <fourier_ssi/postprocess/results_table.h>
+#include <fourier_ssi/driver/scene_plan.h>
+#include <fourier_ssi/estimation/sequence_error_estimate.h>
+#include <functional>
+#include <map>
+#include <memory>
+#include <ostream>
+#include <set>
+
+namespace FourierSSI
+{
+  class CoupledInterfaceSolver;
+  class CoupledSoilSolver;
+
+  class Simulator
+  {
+  public:
+    /**
+     * On a communicator of more than one rank each harmonic's linear system
+     * is distributed (the mesh and postprocessing are replicated); only rank
+     * 0 writes the CSV files, every rank its piece of the VTU output.
+     */
+    explicit Simulator(const AllParameters &parameters,
+                       const MPI_Comm       communicator = MPI_COMM_SELF);
+
+    /**
+     * The cores a run may use (0, the default: the node's cores shared
+     * among the MPI ranks). Decides, e.g., whether two members of a target
+     * run are solved side by side.
+     */
+    void
+    set_cores(const unsigned int n_cores)
+    {
+      cores = n_cores;
+    }
+
+    /** Run everything; returns the scalar results (also written as CSV). */
+    ResultsTable
+    run(std::ostream &log, const bool write_files = true);
+
+    /** The harmonics of the last cycle, summed in 3D (after run()). */
+    const FieldReconstruction &
+    get_reconstruction() const
+    {
+      return reconstruction;
+    }
+
+    /** The mesh of the last cycle (after run()). */
+    const Triangulation<2> &
+    get_triangulation() const
+    {
+      return *triangulation;
+    }
+
+    /**
+     * Empty, or the one line saying that Discretization/Target accuracy was
+     * not reached (after run(); the front end exits non-zero with it unless
+     * Adaptivity/Allow unconverged is set).
+     */
+    const std::string &
+    unmet_target() const
+    {
+      return target_not_reached;
+    }
+
+    /** The scene plan (after run()): the one list of harmonics. */
+    const ScenePlan &
+    get_plan() const
+    {
+      return plan;
+    }
+
+  private:
+    /** What one harmonic produced in a cycle, merged in harmonic order. */
+    struct HarmonicOutcome
+    {
+      HarmonicSolution         solution;
+      HarmonicReport           report;
+      GoalEstimate             goal;
+      bool                     has_goal = false;
+      std::vector<std::string> files;
+      /** Phase wall times of this harmonic (sections of a TimerOutput). */
+      std::map<std::string, double> times;
+    };
+
+    /**
+     * A decision that reads the file system, made on rank 0 and sent to
+     * every rank: ranks that see the disk at different moments (one rank
+     * creating the output folder while another checks it) must not take
+     * different branches, or the one that goes on waits forever.
+     */
+    template <typename T>
+    T
+    decided_on_rank_0(const std::function<T()> &decide) const;
+
+    void
+    check_output_paths() const;
+
+    /**
+     * A goal value of one harmonic (K_H, a foundation motion, a reaction)
+     * on each nested mesh solved so far, coarse to fine.
+     */
+    struct GoalHistory
+    {
+      Harmonic            harmonic;
+      std::string         quantity;
+      std::string         unit;
+      std::vector<double> values;
+    };
+
+    void
+    remove_stale_results() const;
+
+    void
+    make_mesh();
+
+    void
+    make_plan(std::ostream &log);
+
+    void
+    refine_mesh();
+
+    /**
+     * A scene with a nonlinear (coulomb) interface: every harmonic assembled
+     * and factorized once, the load steps of CoupledInterfaceSolver, the
+     * load-displacement CSV and results.csv (simulator_nonlinear.cc).
+     */
+    void
+    solve_nonlinear_interfaces(std::ostream &log);
+    /** The last converged step as every harmonic's solution (3D output). */
+    void
+    keep_last_step(const CoupledInterfaceSolver &solver);
+
+    /**
+     * The HarmonicSet of a coupled solve (coulomb interface, plastic soil),
+     * assembled and factorized: under mpirun each rank owns whole harmonics
+     * (HarmonicSet::distribute_over), serial systems on cores / ranks
+     * threads (simulator_nonlinear.cc).
+     */
+    void
+    make_distributed_harmonic_set();
+    /** Which rank owns which harmonic (several ranks only). */
+    void
+    log_harmonic_distribution(std::ostream &log) const;
+
+    /**
+     * A scene with plastic soil (Soil plasticity/Laws): the load steps of
+     * CoupledSoilSolver on one HarmonicSet (simulator_soil.cc).
+     */
+    void
+    solve_plastic_soil(std::ostream &log);
+
+    /**
+     * The HarmonicSet of plan.harmonics on the current mesh and the load
+     * path of a coupled Solver (CoupledSoilSolver, CoupledInterfaceSolver)
+     * on it; with keep_incomplete, the converged steps of a path that fails
+     * are written to load-displacement-incomplete.csv (marked by the name;
+     * not in `written`: a failed run removes its results, not this record).
+     */
+    template <class Solver>
+    std::unique_ptr<Solver>
+    solve_coupled_curve(std::ostream &log, const bool keep_incomplete)
+    {
+      Timer timer;
+      make_distributed_harmonic_set();
+      log << "assembled and factorized " << harmonic_set->size()
+          << " harmonics in " << timer.wall_time() << " s" << std::endl;
+      log_harmonic_distribution(log);
+      auto solver = std::make_unique<Solver>(*harmonic_set, parameters);
+      run_keeping_converged_steps(*solver,
+                                  log,
+                                  keep_incomplete && writes_csv() ?
+                                    parameters.output.directory +
+                                      "/load-displacement-incomplete.csv" :
+                                    "");
+      log << "coupled solve: " << solver->get_steps().size() << " steps in "
+          << timer.wall_time() << " s" << std::endl;
+      return solver;
+    }
+
+    /** A plastic curve's rows (steps, plastic state, capacity). */
+    void
+    add_plastic_rows(const CoupledSoilSolver &solver, std::ostream &log);
+
+    /** Its CSV files and results.csv. */
+    void
+    write_plastic_files(const CoupledSoilSolver &solver, std::ostream &log);
+
+    /**
+     * Target accuracy with plastic soil: the capacity on the scene's mesh
+     * refined globally until its estimated error (mesh + harmonic
+     * truncation + plateau) is below the target (doc/soil-plasticity.md
+     * section 8c).
+     */
+    void
+    solve_plastic_soil_to_target(std::ostream &log);
+
+    /** The goal value of a coupled load path on one mesh. */
+    struct CoupledGoal
+    {
+      /** The load that works on the controlled motion: H, V, M or T. */
+      std::string name, unit;
+      double      value = 0.;
+      /** The rise to the asymptote (capacity runs; 0 otherwise). */
+      double plateau_error = 0.;
+      /** Converged steps: the row (cycle) of the goal in results.csv. */
+      unsigned int steps = 0;
+    };
+
+    /**
+     * What the target loop needs from a coupled solver: solve the curve on
+     * the current mesh and plan.harmonics (the solver kept), release it
+     * (before the mesh or the set change), its rows and files.
+     */
+    struct CoupledCurveRun
+    {
+      std::function<CoupledGoal(std::ostream &)> solve;
+      std::function<void()>                      release;
+      std::function<void(std::ostream &)>        add_rows, write_files;
+      /** Row name of the goal: "capacity_" or "end_load_". */
+      std::string goal_prefix;
+      /** The goal is a capacity: its plateau error counts. */
+      bool plateau = false;
+    };
+
+    /**
+     * Discretization/Target accuracy on a coupled scene
+     * (simulator_coupled_target.cc, doc/soil-plasticity.md section 8c).
+     */
+    void
+    solve_coupled_to_target(std::ostream &log, CoupledCurveRun &run);
+
+    /**
+     * The goal values on the current mesh with the harmonics n <= n_max /
+     * 4 and n_max / 2 (those that keep n = 1 and differ), into `known`
+     * (n_max -> value; the ones already there are not solved again).
+     */
+    void
+    solve_fewer_harmonics(CoupledCurveRun                &run,
+                          std::map<unsigned int, double> &known,
+                          std::ostream                   &log);
+
+    /** The DoFs of all harmonics of the set (one coupled LU). */
+    double
+    coupled_dofs() const;
+
+    /** target_not_reached = the one line "... not reached: why"; logged. */
+    void
+    target_unmet(const double       target,
+                 const std::string &why,
+                 std::ostream      &log);
+
+    /**
+     * plan.harmonics to n <= 2 n_max in the same families (true), or one
+     * line in target_not_reached when that would exceed Maximum DoFs.
+     */
+    bool
+    double_harmonics(CoupledCurveRun &run,
+                     const double     target,
+                     const double     truncation,
+                     std::ostream    &log);
+
+    /** The goal's error bar: log line and rows (NaN: not estimated). */
+    void
+    report_coupled_error(CoupledCurveRun   &run,
+                         const CoupledGoal &goal,
+                         const unsigned int n_meshes,
+                         const double       mesh_error,
+                         const double       harmonic_error,
+                         const bool         growth,
+                         std::ostream      &log);
+
+    /** Its rows and the last step as every harmonic's solution. */
+    void
+    add_interface_rows(const CoupledInterfaceSolver &solver);
+
+    /** Its CSV files, then write_output() (3D lines, VTU, results). */
+    void
+    write_interface_files(const CoupledInterfaceSolver &solver,
+                          std::ostream                 &log);
+
+    /** Set up, assemble, solve and post-process every harmonic. */
+    void
+    solve_harmonics(const unsigned int cycle);
+
+    /**
+     * Discretization/Target accuracy, members 0 (the current mesh) and 1
+     * (`next`, from side_by_side_mesh()) at once, each on half of the cores (a
+     * lone harmonic leaves cores idle, and the design always needs two members
+     * before it can estimate anything); then both are collected in order and
+     * member 1 is the current mesh. Same values as one after the other: the
+     * assembly does not depend on its thread count.
+     */
+    void
+    solve_two_members(std::unique_ptr<Triangulation<2>> next,
+                      std::ostream                     &log);
+
+    /** The designed mesh of `member` (discretization_design.h), aside. */
+    std::unique_ptr<Triangulation<2>>
+    member_mesh(const unsigned int member) const;
+
+    /** Cells of `next` over the current mesh's: how its DoFs scale. */
+    double
+    cell_growth(const Triangulation<2> &next) const;
+
+    /** The largest DoF count of the current mesh's solved harmonics. */
+    double
+    solved_dofs() const;
+
+    /**
+     * target_not_reached = "... not reached: ... the next mesh (about N
+     * DoFs) exceeds Adaptivity/Maximum DoFs"; logged.
+     */
+    void
+    target_unmet_at_limit(const unsigned int      member,
+                          const double            dofs,
+                          const Triangulation<2> &next,
+                          std::ostream           &log);
+
+    /** set_cores(), or the node's cores shared among the MPI ranks. */
+    unsigned int
+    available_cores() const;
+
+    /** How many harmonics run at once on the available cores. */
+    unsigned int
+    harmonics_at_once() const;
+
+    /**
+     * Member 1's mesh if members 0 and 1 fit side by side
+     * (solve_two_members()), else null.
+     */
+    std::unique_ptr<Triangulation<2>>
+    side_by_side_mesh() const;
+
+    /**
+     * solve_harmonics() on any mesh: a new HarmonicSet on `n_cores` cores
+     * (0: the rank's share) and what each harmonic produced; throws on the
+     * first failure (the files written so far stay in `solved`).
+     */
+    void
+    solve_harmonics_on(const Triangulation<2>       &mesh,
+                       const unsigned int            cycle,
+                       const unsigned int            n_cores,
+                       std::unique_ptr<HarmonicSet> &set,
+                       std::vector<HarmonicOutcome> &solved) const;
+
+    /** Keep the files of `solved` for removal; throw "cycle N, <e>". */
+    void
+    fail_cycle(const unsigned int                  cycle,
+               const std::vector<HarmonicOutcome> &solved,
+               const std::exception               &e);
+
+    /** One harmonic of `set` on `mesh`; runs on a worker thread. */
+    void
+    solve_harmonic(HarmonicSet            &set,
+                   const Triangulation<2> &mesh,
+                   const unsigned int      i,
+                   const unsigned int      cycle,
+                   HarmonicOutcome        &outcome) const;
+
+    /**
+     * The scene load, and on the stiffness harmonic the unit-H and unit-M
+     * loads with the same factorization.
+     */
+    HarmonicSolution
+    solve_loads(HarmonicProblem &problem) const;
+
+    /** VTU and interface CSV files of one harmonic; returns the names. */
+    std::vector<std::string>
+    write_harmonic_files(const HarmonicSolution &solution,
+                         const unsigned int      cycle) const;
+
+    /**
+     * Rows, log lines, refinement indicators and the 3D reconstruction of
+     * the cycle, in harmonic order (independent of the thread count).
+     */
+    void
+    collect_cycle(const unsigned int cycle, std::ostream &log);
+
+    /**
+     * Discretization/Target accuracy: solve the members of the designed
+     * family (discretization_design.h) until the estimated error of every
+     * goal value is below the target or the next member would exceed
+     * Adaptivity/Maximum DoFs.
+     */
+    void
+    solve_to_target(std::ostream &log);
+
+    /**
+     * A run on one mesh of its own: solve the mesh coarsened once (every
+     * refinement undone by one level) for the goal values only, so that
+     * the answer has an error estimate (no rows, log lines or files).
+     */
+    void
+    solve_coarser_member(std::ostream &log);
+
+    /** Append this cycle's goal values (the quantities goal_rows() picks). */
+    void
+    record_goal_values();
+
+    /** The ratio eq. (1) assumes where it cannot observe one. */
+    double
+    assumed_ratio() const;
+
+    /**
+     * The estimated relative error of every goal value from its nested
+     * values (eq. (1) of sequence_error_estimate.h); the largest one.
+     */
+    double
+    largest_estimated_error() const;
+
+    /**
+     * Log "K_H = 10.7993 +- 2.1e-05 (rel)" per goal value and write the
+     * rows <quantity>_error (relative) under the last cycle.
+     */
+    void
+    report_error_estimates(const unsigned int cycle, std::ostream &log);
+
+    /** True if the goal strategy's estimate meets its tolerance. */
+    bool
+    goal_tolerance_reached(const unsigned int cycle, std::ostream &log) const;
+
+    void
+    write_output(std::ostream &log);
+
+    bool
+    writes_csv() const;
+
+    const AllParameters &parameters;
+    const MPI_Comm       communicator;
+    /** The cores this simulator may use (0: the rank's share). */
+    unsigned int cores       = 0;
+    bool         write_files = true;
+    /** A solve made only for the error estimate: no files. */
+    bool                     estimate_only = false;
+    std::vector<GoalHistory> goal_histories;
+    /** Wall time of the solves made only for the error estimate [s]. */
+    double      estimate_wall_time = 0.;
+    std::string target_not_reached;
+    /**
+     * The current mesh, owned here: the reconstruction's DoF handlers live
+     * on it. On the heap so that a mesh solved aside (solve_two_members())
+     * can become the current one without moving the object its DoF
+     * handlers point to.
+     */
+    std::unique_ptr<Triangulation<2>> triangulation =
+      std::make_unique<Triangulation<2>>();
+    std::set<types::boundary_id>         interface_ids;
+    ScenePlan                            plan;
+    std::unique_ptr<GoalEstimator>       goal_estimator;
+    std::unique_ptr<HarmonicSet>         harmonic_set;
+    std::vector<HarmonicOutcome>         outcomes;
+    std::unique_ptr<RefinementIndicator> indicator;
+    double                               cycle_wall_time = 0.;
+    ResultsTable                         results;
+    FieldReconstruction                  reconstruction;
+    /** Files this run wrote (removed again if it fails). */
+    std::vector<std::string> written;
+  };
+} // namespace FourierSSI
+
+#endif

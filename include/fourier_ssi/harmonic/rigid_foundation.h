@@ -1,0 +1,213 @@
+/**
+ * A rigid foundation as exact rigid-body kinematics (no "very stiff material"
+ * trick): every tied DoF is constrained to the motion of two (n = 1) or one
+ * (n = 0) master DoFs of one foundation node A = (r_A, z_A), r_A > 0.
+ *
+ * Rigid motions per harmonic (doc/theory.md, rigid-body modes), with the
+ * reference point on the axis at elevation z_ref, s = +1 (symmetric) or -1:
+ *   n = 1: U = U_h + Theta (z - z_ref),  W = -s U,  V = -Theta r
+ *          (U_h: horizontal translation, Theta: rotation; symmetric family:
+ *          translation along x, rotation about +y: M_y = M)
+ *   n = 0, symmetric:     U = 0, V = W_v            (vertical translation)
+ *   n = 0, antisymmetric: W = Phi r                 (torsion about z)
+ *   n >= 2: a rigid body does not move (U = V = W = 0).
+ * Loads (H, M), V, T act on the masters through their virtual work:
+ * H dU_h + M dTheta with U_h = U_A + V_A (z_A - z_ref) / r_A,
+ * Theta = -V_A / r_A, i.e. nodal forces H on U_A and (H (z_A - z_ref) - M)/r_A
+ * on V_A. The harmonic system's nodal forces are 3D virtual-work coefficients
+ * (theta weights included), so these are the physical 3D loads.
+ */
+#ifndef fourier_ssi_rigid_foundation_h
+#define fourier_ssi_rigid_foundation_h
+
+#include <array>
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <deal.II/dofs/dof_handler.h>
+#include <deal.II/lac/affine_constraints.h>
+#include <deal.II/lac/vector.h>
+#include <fourier_ssi/fourier/harmonic.h>
+#include <set>
+#include <string>
+
+namespace FourierSSI
+{
+  using namespace dealii;
+
+  struct RigidFoundationParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    bool         enabled     = false;
+    std::string  tie         = "material"; // "material" or "boundary"
+    unsigned int id          = 1;
+    bool         normal_only = false; // tie only V (a frictionless contact)
+    double       reference_elevation = 0.;
+    double       horizontal_force    = 0.; // H [kN], n = 1
+    double       moment              = 0.; // M [kN.m], n = 1
+    double       horizontal_force_y  = 0.; // H_y [kN], n = 1 antisymmetric
+    double       moment_x            = 0.; // M_x [kN.m], n = 1 antisymmetric
+    double       vertical_force      = 0.; // V [kN], n = 0 symmetric
+    double       torque              = 0.; // T [kN.m], n = 0 antisymmetric
+    /**
+     * Held loads (plastic soil): applied first, then kept while the loads
+     * above are scaled; a combined loading path (a fixed V, then H or M).
+     */
+    double held_horizontal_force = 0.; // H_x [kN]
+    double held_moment           = 0.; // M_y [kN.m]
+    double held_vertical_force   = 0.; // V [kN]
+    double held_torque           = 0.; // T [kN.m]
+
+    bool
+    any_held() const
+    {
+      return held_horizontal_force != 0. || held_moment != 0. ||
+             held_vertical_force != 0. || held_torque != 0.;
+    }
+    /** Also solve the unit H and unit M cases (thesis eqs 4.2-4.5). */
+    bool   stiffness_coefficients  = false;
+    double reference_shear_modulus = 1.; // G_se (footing) or G_L (pile)
+    double reference_length        = 1.; // a (footing radius) or r (pile)
+    /**
+     * nu of the soil for E = 2 G (1 + nu) in the printed compliances and
+     * for the half-space closed forms of a rigid disc; < 0: not given.
+     */
+    double reference_poisson_ratio = -1.;
+  };
+
+  /**
+   * Dimensionless influence and stiffness coefficients of a rigid
+   * foundation under (H, M), thesis eqs 4.2-4.5 (6.1-6.3 for piles):
+   *   [u_H / a, theta]^T = [[I_H, I_MH], [I_MH, I_M]] [H/(G a^2), M/(G a^3)]^T
+   * and K = I^-1. I_MH is read from both load cases (the flexibility matrix
+   * must be symmetric: a check of the whole system).
+   */
+  struct FoundationCoefficients
+  {
+    double I_H = 0., I_M = 0., I_MH_from_H = 0., I_MH_from_M = 0.;
+    double K_H = 0., K_M = 0., K_MH = 0.;
+  };
+
+  /** The rigid motion read back from a solution. */
+  struct RigidMotion
+  {
+    double horizontal_displacement = 0.; // U_h [m]
+    double rotation                = 0.; // Theta [rad]
+    double vertical_displacement   = 0.; // W_v [m]
+    double twist                   = 0.; // Phi [rad]
+  };
+
+  class RigidFoundation
+  {
+  public:
+    RigidFoundation(const RigidFoundationParameters &parameters,
+                    const Harmonic                  &harmonic);
+
+    /**
+     * Constrain the tied DoFs to the master DoFs. Call before the axis
+     * conditions (a rigid motion satisfies them, so the axis DoFs of the
+     * foundation are simply tied). DoFs already constrained (hanging nodes,
+     * Dirichlet) are left alone. Throws if nothing is tied.
+     */
+    void
+    add_constraints(const DoFHandler<2>       &dof_handler,
+                    AffineConstraints<double> &constraints);
+
+    /** Add the foundation loads of this harmonic to the global load vector. */
+    void
+    add_loads(Vector<double> &rhs) const;
+
+    /**
+     * Add the held loads of this harmonic (Held vertical force, ...: the
+     * part of a combined loading path kept constant, plastic soil).
+     */
+    void
+    add_held_loads(Vector<double> &rhs) const;
+
+    RigidMotion
+    motion(const Vector<double> &solution) const;
+
+    /**
+     * The load vector of a unit horizontal force (load_case 0) or a unit
+     * moment (load_case 1); n = 1 only.
+     */
+    Vector<double>
+    unit_load(const unsigned int load_case, const unsigned int n_dofs) const;
+
+    /**
+     * Influence and stiffness coefficients from the motions (U_h, Theta) under
+     * unit H and under unit M.
+     */
+    FoundationCoefficients
+    coefficients(const RigidMotion &under_unit_H,
+                 const RigidMotion &under_unit_M) const;
+
+    /**
+     * Throw a one-line "singular" error if the foundation moves more than
+     * 1e6 times the largest displacement of the free (untied, unconstrained)
+     * DoFs: nothing resists that motion (e.g. a smooth interface under a
+     * horizontal load on a surface footing), and the direct solver returned
+     * an arbitrary multiple of the free rigid-body mode.
+     */
+    void
+    check_supported(const Vector<double>            &solution,
+                    const AffineConstraints<double> &constraints) const;
+
+    unsigned int
+    n_tied_dofs() const
+    {
+      return n_tied;
+    }
+
+    /** The master node's DoFs (the rigid motion's unknowns). */
+    std::set<types::global_dof_index>
+    master_dofs() const
+    {
+      return {master_U, master_V, master_W};
+    }
+
+  private:
+    /** Amplitudes (U_A, V_A, W_A) of the master node, or forces on them. */
+    using MasterValues = std::array<double, 3>;
+
+    /**
+     * The rigid-body kinematics of this harmonic (the table above), the one
+     * place it is written: the amplitudes (U, V, W) at x of the rigid body
+     * whose master node moves by `master`. The constraint weights, the
+     * motion read back and the loads' nodal forces all follow from it.
+     */
+    std::array<double, 3>
+    displacement_at(const Point<2> &x, const MasterValues &master) const;
+
+    /** The rigid motion (U_h, Theta, W_v, Phi) for the master amplitudes. */
+    RigidMotion
+    motion_of(const MasterValues &master) const;
+
+    /**
+     * Nodal forces on the master DoFs that do the virtual work of the
+     * resultants H, M, V, T on every rigid motion.
+     */
+    MasterValues
+    master_forces(const double horizontal_force,
+                  const double moment,
+                  const double vertical_force,
+                  const double torque) const;
+
+    /** rhs(master DoF k) += forces[k]. */
+    void
+    add_master_forces(Vector<double> &rhs, const MasterValues &forces) const;
+
+    const RigidFoundationParameters &parameters;
+    const Harmonic                   harmonic;
+    Point<2>                         master_position;
+    types::global_dof_index          master_U = numbers::invalid_dof_index;
+    types::global_dof_index          master_V = numbers::invalid_dof_index;
+    types::global_dof_index          master_W = numbers::invalid_dof_index;
+    unsigned int                     n_tied   = 0;
+  };
+} // namespace FourierSSI
+
+#endif

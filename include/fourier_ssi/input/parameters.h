@@ -1,0 +1,152 @@
+/**
+ * All run-time parameters of fourier-ssi, one struct per .prm subsection
+ * (deal.II step-44 habit), combined in AllParameters.
+ */
+#ifndef fourier_ssi_parameters_h
+#define fourier_ssi_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <fourier_ssi/mesh/adaptivity.h>
+#include <fourier_ssi/fourier/boundary_conditions.h>
+#include <fourier_ssi/fourier/harmonic.h>
+#include <fourier_ssi/coupled/initial_stress.h>
+#include <fourier_ssi/interfaces/interface_pairing.h>
+#include <fourier_ssi/linear_algebra/linear_solver.h>
+#include <fourier_ssi/fourier/load_decomposition.h>
+#include <fourier_ssi/fourier/material.h>
+#include <fourier_ssi/mesh/mesh_builder.h>
+#include <fourier_ssi/input/nonlinear_interface_parameters.h>
+#include <fourier_ssi/harmonic/rigid_foundation.h>
+#include <fourier_ssi/coupled/soil_law.h>
+#include <string>
+#include <vector>
+
+namespace FourierSSI
+{
+  using namespace dealii;
+
+  /** Which harmonics to solve and with which element. */
+  struct DiscretizationParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /** Harmonics chosen from the loads (Harmonics = auto), see ScenePlan. */
+    bool                  automatic = false;
+    std::vector<Harmonic> harmonics;
+    unsigned int          degree = 2;
+    /**
+     * "standard" or "bbar" (projected dilatation, p = 2): what is solved.
+     * The entry's default 'auto' is resolved when the parameters are read
+     * (AllParameters::parse_parameters): bbar for p = 2 when a material has
+     * nu >= locking_poisson_ratio, standard otherwise.
+     */
+    std::string volumetric = "standard";
+    /** True if `volumetric` was chosen by 'auto' (the log says so). */
+    bool         volumetric_automatic = false;
+    unsigned int refinement_cycles    = 1;
+    /**
+     * Relative accuracy asked of the goal values (0: not set). When set,
+     * the program designs an FE_Q(4) discretization and refines it until
+     * the estimated error is below it (discretization_design.h).
+     */
+    double target_accuracy = 0.;
+    /** Harmonics solved at the same time (threads); 0: one per core. */
+    unsigned int concurrent_harmonics = 0;
+  };
+
+  /** Optional exact amplitudes for error norms (tests, verification). */
+  struct ExactSolutionParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    bool                 enabled = false;
+    ComponentExpressions amplitudes;
+  };
+
+  /** A straight line in the (r, z) plane sampled at n_points points. */
+  struct OutputLine
+  {
+    Point<2>     start, end;
+    unsigned int n_points = 2;
+  };
+
+  struct OutputParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    std::string directory    = "output";
+    std::string results_file = "results.csv";
+    bool        write_vtu    = true;
+    /** Stress amplitudes in the per-harmonic VTU. */
+    bool write_stresses = true;
+    /** Relative displacement and traction per interface node pair (CSV). */
+    bool write_interface_tractions = true;
+    /** 3D reconstruction along lines at the angles theta_degrees. */
+    std::vector<OutputLine> lines;
+    /**
+     * Limit of Lines 3D points per line: a typo such as 1e8 points would
+     * otherwise write gigabytes of CSV (each point is a search in the mesh
+     * and one row per angle).
+     */
+    static constexpr unsigned int max_points_per_line = 100000;
+    std::vector<double>           theta_degrees;
+    /** The mesh revolved about the axis with the 3D displacement. */
+    bool         write_3d_vtu    = false;
+    unsigned int theta_divisions = 36;
+  };
+
+  struct AllParameters
+  {
+    /**
+     * Plastic soil or a coulomb interface: the harmonics are coupled
+     * through theta and solved together along a load path.
+     */
+    bool
+    coupled() const
+    {
+      return soil_plasticity.any() || interfaces.any_nonlinear();
+    }
+
+    AllParameters();
+
+    static void
+    declare_parameters(ParameterHandler &prm);
+
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /** Read a .prm file; errors name the file and the entry. */
+    void
+    read_file(const std::string &filename);
+
+    /** Read .prm text (tests). */
+    void
+    read_string(const std::string &text);
+
+    DiscretizationParameters     discretization;
+    MeshBuilder                  mesh;
+    MaterialLibrary              materials;
+    BoundaryConditions           boundary_conditions;
+    LinearSolver                 solver;
+    ExactSolutionParameters      exact_solution;
+    OutputParameters             output;
+    InterfaceParameters          interfaces;
+    RigidFoundationParameters    rigid_foundation;
+    AdaptivityParameters         adaptivity;
+    LoadParameters               loads;
+    InitialStressParameters      initial_stress;
+    NonlinearInterfaceParameters nonlinear_interfaces;
+    SoilPlasticityParameters     soil_plasticity;
+  };
+} // namespace FourierSSI
+
+#endif

@@ -1,0 +1,697 @@
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <deal.II/base/quadrature_lib.h>
+#include <fourier_ssi/coupled/coupled_interface_solver.h>
+#include <fourier_ssi/coupled/coupled_iteration.h>
+#include <fstream>
+#include <iomanip>
+#include <set>
+#include <sstream>
+
+namespace FourierSSI
+{
+  namespace
+  {
+    const std::string entry = "Nonlinear interfaces";
+
+    /**
+     * With growth n_max is Maximum harmonic, so that the samples (and the
+     * state kept at them) stay valid when harmonics are added.
+     */
+    unsigned int
+    theta_samples_for(const std::vector<Harmonic>        &list,
+                      const NonlinearInterfaceParameters &settings)
+    {
+      return FourierSSI::theta_samples_for(std::max(highest_harmonic(list),
+                                                    settings.maximum_harmonic),
+                                           settings.theta_samples);
+    }
+
+    std::string
+    name_of(const NonlinearInterfaceParameters &settings)
+    {
+      using Kind = NonlinearInterfaceParameters::Acceleration;
+      return settings.acceleration == Kind::anderson ?
+               ", Anderson m = " + std::to_string(settings.anderson_depth) :
+             settings.acceleration == Kind::aitken ? ", Aitken" :
+                                                     ", no acceleration";
+    }
+
+    /**
+     * Growth: every n <= Maximum harmonic in the families of the set, if
+     * that is above the highest harmonic of the set; else none.
+     */
+    std::vector<Harmonic>
+    candidate_harmonics(const std::vector<Harmonic> &list,
+                        const unsigned int           maximum_harmonic)
+    {
+      std::vector<Harmonic> result;
+      if (maximum_harmonic <= highest_harmonic(list))
+        return result;
+      for (const Family family : {Family::symmetric, Family::antisymmetric})
+        if (std::any_of(list.begin(), list.end(), [&](const Harmonic &h) {
+              return h.family == family;
+            }))
+          for (unsigned int n = 0; n <= maximum_harmonic; ++n)
+            result.push_back({n, family});
+      return result;
+    }
+
+    bool
+    contains(const std::vector<Harmonic> &list, const Harmonic &h)
+    {
+      return std::any_of(list.begin(), list.end(), [&](const Harmonic &g) {
+        return g.n == h.n && g.family == h.family;
+      });
+    }
+
+    const InterfaceIntegrator &
+    interfaces_of(const HarmonicProblem &problem)
+    {
+      AssertThrow(problem.get_interfaces() != nullptr,
+                  ExcMessage(entry + ": the scene has no interfaces"));
+      return *problem.get_interfaces();
+    }
+  } // namespace
+
+  CoupledInterfaceSolver::CoupledInterfaceSolver(
+    HarmonicSet         &set,
+    const AllParameters &parameters)
+    : set(set)
+    , parameters(parameters)
+    , settings(parameters.nonlinear_interfaces)
+    , harmonics(set.get_harmonics())
+    , sampling(harmonics, theta_samples_for(harmonics, settings))
+    , candidates(candidate_harmonics(harmonics, settings.maximum_harmonic))
+    , spectrum(candidates, sampling.n_samples())
+    , interface(set, parameters)
+    , points(interface.get_points())
+  {
+    for (unsigned int h = 0; h < set.size(); ++h)
+      AssertThrow(!set.problem(h).get_constraints().has_inhomogeneities(),
+                  ExcMessage(entry +
+                             ": not yet: prescribed (non-zero) Dirichlet "
+                             "values with nonlinear interfaces; load the "
+                             "scene through the Rigid foundation"));
+    solve_load_pattern();
+    committed.correction_solution = pattern_solution;
+    committed.correction_load     = pattern_solution;
+    for (unsigned int h = 0; h < set.size(); ++h)
+      {
+        committed.correction_solution[h] = 0.;
+        committed.correction_load[h]     = 0.;
+      }
+    committed.interface_solution = committed.correction_solution;
+    condense(0);
+    committed.plastic.assign(points.size() * sampling.n_samples(),
+                             {{0., 0., 0.}});
+  }
+
+  void
+  CoupledInterfaceSolver::solve_load_pattern()
+  {
+    // Each rank solves the harmonics it owns; the others' fields stay zero
+    // here (never read: their amplitudes come from their owners).
+    std::vector<std::vector<Vector<double>>> b(set.size());
+    std::vector<double>                      norm_sqr = {0.};
+    for (unsigned int h = 0; h < set.size(); ++h)
+      if (set.owns(h))
+        {
+          b[h] = {set.problem(h).get_system_rhs()};
+          norm_sqr[0] += b[h][0].norm_sqr();
+        }
+    set.sum_over_ranks(norm_sqr);
+    pattern_load_norm = std::sqrt(norm_sqr[0]);
+    set.solve_increments(b);
+    pattern_solution.clear();
+    for (unsigned int h = 0; h < set.size(); ++h)
+      pattern_solution.push_back(
+        set.owns(h) ?
+          b[h][0] :
+          Vector<double>(set.problem(h).get_dof_handler().n_dofs()));
+    pattern_relative =
+      interface.relative_displacements(pattern_solution, sampling);
+    if (settings.control == NonlinearInterfaceParameters::Control::displacement)
+      {
+        const unsigned int h = controlled_harmonic();
+        pattern_motion       = from_owner(
+          h, set.owns(h) ? controlled_motion_of(h, pattern_solution[h]) : 0.);
+        AssertThrow(pattern_motion != 0.,
+                    ExcMessage(entry +
+                               "/Controlled motion: the Rigid foundation "
+                               "loads do not drive this motion (give the "
+                               "load that does, e.g. V for vertical)"));
+      }
+  }
+
+  void
+  CoupledInterfaceSolver::from_owner(const unsigned int   h,
+                                     std::vector<double> &values) const
+  {
+    if (set.n_owning_ranks() > 1)
+      {
+        const int ierr = MPI_Bcast(values.data(),
+                                   values.size(),
+                                   MPI_DOUBLE,
+                                   set.owner(h),
+                                   set.get_ranks());
+        AssertThrowMPI(ierr);
+      }
+  }
+
+  double
+  CoupledInterfaceSolver::from_owner(const unsigned int h,
+                                     const double       value) const
+  {
+    std::vector<double> values = {value};
+    from_owner(h, values);
+    return values[0];
+  }
+
+  std::vector<Vector<double>>
+  CoupledInterfaceSolver::interface_force(
+    const std::vector<Vector<double>> &fields) const
+  {
+    return interface.load_of(interface.relative_displacements(fields, sampling),
+                             sampling);
+  }
+
+  unsigned int
+  CoupledInterfaceSolver::controlled_harmonic() const
+  {
+    const Harmonic wanted = FourierSSI::controlled_harmonic(settings.motion);
+    for (unsigned int h = 0; h < set.size(); ++h)
+      if (harmonics[h].n == wanted.n && harmonics[h].family == wanted.family)
+        {
+          AssertThrow(set.problem(h).get_foundation() != nullptr,
+                      ExcMessage(entry +
+                                 "/Control: displacement control needs a "
+                                 "Rigid foundation"));
+          return h;
+        }
+    AssertThrow(false,
+                ExcMessage(entry +
+                           "/Controlled motion: its harmonic is not solved "
+                           "(n = 0 for vertical and twist, n = 1 symmetric "
+                           "for horizontal and rotation)"));
+    return 0;
+  }
+
+  double
+  CoupledInterfaceSolver::controlled_motion_of(const unsigned int    h,
+                                               const Vector<double> &v) const
+  {
+    return controlled_component(set.problem(h).get_foundation()->motion(v),
+                                settings.motion);
+  }
+
+  void
+  CoupledInterfaceSolver::condense(const unsigned int first)
+  {
+    const bool displacement_control =
+      settings.control == NonlinearInterfaceParameters::Control::displacement;
+    const unsigned int controlled =
+      displacement_control ? controlled_harmonic() : set.size();
+    condensed.resize(set.size());
+    // 1. Per harmonic, the DoFs c reaches (write) and the DoFs the relative
+    //    displacements read, from the nonlinear pairs.
+    std::set<unsigned int> nonlinear_pairs;
+    for (const InterfacePoint &point : points)
+      nonlinear_pairs.insert(point.pair);
+    for (unsigned int h = first; h < set.size(); ++h)
+      {
+        const AffineConstraints<double> &constraints =
+          set.problem(h).get_homogeneous_constraints();
+        const auto &pairs = interfaces_of(set.problem(h)).get_pairs();
+        std::set<types::global_dof_index> write, read;
+        for (const unsigned int i : nonlinear_pairs)
+          for (const types::global_dof_index d : pairs[i].dof_indices)
+            {
+              read.insert(d);
+              if (!constraints.is_constrained(d))
+                write.insert(d);
+              else if (const auto *entries =
+                         constraints.get_constraint_entries(d))
+                for (const auto &entry : *entries)
+                  write.insert(entry.first);
+            }
+        condensed[h].write.assign(write.begin(), write.end());
+        condensed[h].read.assign(read.begin(), read.end());
+        if (set.owns(h))
+          condensed[h].flexibility.reinit(read.size(), write.size());
+        condensed[h].controlled_motion.assign(write.size(), 0.);
+      }
+    // 2. K^-1 e_j for every write DoF j, in batches (memory), every
+    //    harmonic this rank owns concurrently with the kept factorizations.
+    //    The number of batches is the same on every rank (solve_increments
+    //    is collective when the harmonics are distributed).
+    std::size_t n_write = 0;
+    for (unsigned int h = first; h < set.size(); ++h)
+      n_write = std::max(n_write, condensed[h].write.size());
+    const unsigned int batch = 64;
+    for (unsigned int start = 0; start < n_write; start += batch)
+      {
+        std::vector<std::vector<Vector<double>>> x(set.size());
+        for (unsigned int h = first; h < set.size(); ++h)
+          if (set.owns(h))
+            for (unsigned int j = start;
+                 j < std::min<std::size_t>(start + batch,
+                                           condensed[h].write.size());
+                 ++j)
+              {
+                x[h].emplace_back(pattern_solution[h].size());
+                x[h].back()(condensed[h].write[j]) = 1.;
+              }
+        set.solve_increments(x);
+        for (unsigned int h = first; h < set.size(); ++h)
+          for (unsigned int k = 0; k < x[h].size(); ++k)
+            {
+              Condensation &c = condensed[h];
+              for (unsigned int i = 0; i < c.read.size(); ++i)
+                c.flexibility(i, start + k) = x[h][k](c.read[i]);
+              if (h == controlled)
+                c.controlled_motion[start + k] =
+                  controlled_motion_of(h, x[h][k]);
+            }
+      }
+    // 3. The controlled motion of every column on every rank: the iteration
+    //    updates the motion (and so lambda) redundantly.
+    if (controlled >= first && controlled < set.size())
+      from_owner(controlled, condensed[controlled].controlled_motion);
+  }
+
+  std::vector<Vector<double>>
+  CoupledInterfaceSolver::on_write_dofs(
+    const std::vector<Vector<double>> &full) const
+  {
+    std::vector<Vector<double>> result(set.size());
+    for (unsigned int h = 0; h < set.size(); ++h)
+      {
+        const Condensation &c = condensed[h];
+        result[h].reinit(c.write.size());
+        for (unsigned int j = 0; j < c.write.size(); ++j)
+          result[h](j) = full[h](c.write[j]);
+      }
+    return result;
+  }
+
+  void
+  CoupledInterfaceSolver::add_correction(
+    const std::vector<Vector<double>> &dc_write,
+    StepState                         &state) const
+  {
+    for (unsigned int h = 0; h < set.size(); ++h)
+      {
+        const Condensation &c = condensed[h];
+        if (set.owns(h))
+          {
+            Vector<double> dv_read(c.read.size());
+            c.flexibility.vmult(dv_read, dc_write[h]);
+            for (unsigned int i = 0; i < c.read.size(); ++i)
+              state.interface_solution[h](c.read[i]) += dv_read(i);
+          }
+        for (unsigned int j = 0; j < c.write.size(); ++j)
+          {
+            state.correction_load[h](c.write[j]) += dc_write[h](j);
+            state.controlled_motion += c.controlled_motion[j] * dc_write[h](j);
+          }
+      }
+  }
+
+  void
+  CoupledInterfaceSolver::complete(StepState &state) const
+  {
+    std::vector<std::vector<Vector<double>>> x(set.size());
+    for (unsigned int h = 0; h < set.size(); ++h)
+      if (set.owns(h))
+        x[h] = {state.correction_load[h]};
+    set.solve_increments(x);
+    for (unsigned int h = 0; h < set.size(); ++h)
+      if (set.owns(h))
+        state.correction_solution[h] = x[h][0];
+    // Restart the next step's condensed view from the exact field (no
+    // accumulation of round-off over the steps).
+    state.interface_solution = state.correction_solution;
+    if (settings.control == NonlinearInterfaceParameters::Control::displacement)
+      {
+        const unsigned int h = controlled_harmonic();
+        state.controlled_motion =
+          from_owner(h,
+                     set.owns(h) ?
+                       controlled_motion_of(h, state.correction_solution[h]) :
+                       0.);
+      }
+  }
+
+  void
+  CoupledInterfaceSolver::extrapolate(const StepState &before_last,
+                                      const double     ratio,
+                                      StepState       &state) const
+  {
+    const auto move_on = [ratio](Vector<double>       &v,
+                                 const Vector<double> &last,
+                                 const Vector<double> &before) {
+      v.add(ratio, last);
+      v.add(-ratio, before);
+    };
+    for (unsigned int h = 0; h < set.size(); ++h)
+      {
+        move_on(state.correction_load[h],
+                committed.correction_load[h],
+                before_last.correction_load[h]);
+        move_on(state.correction_solution[h],
+                committed.correction_solution[h],
+                before_last.correction_solution[h]);
+        move_on(state.interface_solution[h],
+                committed.interface_solution[h],
+                before_last.interface_solution[h]);
+      }
+    state.controlled_motion +=
+      ratio * (committed.controlled_motion - before_last.controlled_motion);
+  }
+
+  bool
+  CoupledInterfaceSolver::solve_step(const double       target,
+                                     StepState         &state,
+                                     LoadStepResult    &result,
+                                     InterfaceSnapshot &snapshot)
+  {
+    const bool displacement_control =
+      settings.control == NonlinearInterfaceParameters::Control::displacement;
+    std::vector<LocalVector>  plastic, traction;
+    std::vector<ContactState> contact;
+    FixedPointAcceleration    acceleration(settings.acceleration,
+                                        settings.anderson_depth);
+    for (unsigned int iteration = 0; iteration <= settings.maximum_iterations;
+         ++iteration)
+      {
+        state.load_factor =
+          displacement_control ?
+            (target - state.controlled_motion) / pattern_motion :
+            target;
+        // 1-2: relative displacements at every (point, theta), the law.
+        std::vector<LocalVector> relative =
+          interface.relative_displacements(state.interface_solution, sampling);
+        for (unsigned int k = 0; k < relative.size(); ++k)
+          for (unsigned int c = 0; c < 3; ++c)
+            relative[k][c] += state.load_factor * pattern_relative[k][c];
+        const auto counts = interface.return_map(
+          relative, committed.plastic, plastic, traction, contact);
+        // 3-4: out-of-balance load and force residual R = G - c.
+        std::vector<Vector<double>> residual =
+          interface.load_of(plastic, sampling);
+        const double load_norm = norm_over_harmonics(residual);
+        for (unsigned int h = 0; h < set.size(); ++h)
+          residual[h] -= state.correction_load[h];
+        const double residual_norm = norm_over_harmonics(residual);
+        // Relative to the applied load, so that the interface tractions
+        // balance it to the tolerance (the correction load G can be much
+        // larger than the load, e.g. a released initial base compression).
+        const double applied = std::abs(state.load_factor) * pattern_load_norm;
+        const double scale   = applied > 0. ? applied : load_norm;
+        if (!std::isfinite(residual_norm))
+          return false;
+        if (residual_norm <= settings.tolerance * scale)
+          {
+            complete(state);
+            // A diverged iterate can pass the relative test with a huge
+            // load factor; the controlled motion then misses its target
+            // (cancellation of lambda m(u_F) against m(v)): not converged.
+            if (displacement_control &&
+                std::abs(state.load_factor * pattern_motion +
+                         state.controlled_motion - target) >
+                  1e-8 * std::abs(target))
+              return false;
+            state.plastic     = plastic;
+            result.iterations = iteration;
+            result.residual   = scale > 0. ? residual_norm / scale : 0.;
+            result.states     = counts;
+            result.resultant  = foundation_resultant(traction);
+            snapshot          = {relative, traction, contact};
+            return true;
+          }
+        // 5: c <- c + dc and v <- v + K^-1 dc at the interface (section 5,
+        //    condensed: exact, without a re-solve).
+        //    c and R live on the write DoFs: the acceleration works there.
+        add_correction(acceleration.increment(on_write_dofs(
+                                                state.correction_load),
+                                              on_write_dofs(residual)),
+                       state);
+      }
+    return false;
+  }
+
+  std::array<double, 6>
+  CoupledInterfaceSolver::foundation_resultant(
+    const std::vector<LocalVector> &traction) const
+  {
+    std::array<double, 6> resultant = {{0., 0., 0., 0., 0., 0.}};
+    if (!parameters.rigid_foundation.enabled ||
+        parameters.rigid_foundation.tie != "material")
+      return resultant;
+    const std::vector<InterfacePair> &pairs =
+      interfaces_of(set.problem(0)).get_pairs();
+    const unsigned int N      = sampling.n_samples();
+    const double       weight = 2. * numbers::PI / N;
+    for (unsigned int i = 0; i < points.size(); ++i)
+      {
+        const InterfacePair &pair = pairs[points[i].pair];
+        // t = sigma n is the force per unit area that B exerts on A (n out
+        // of A): the foundation transmits +t to A if it is B, -t if it is A.
+        const double sign =
+          pair.material_b == parameters.rigid_foundation.id ? 1. :
+          pair.material_a == parameters.rigid_foundation.id ? -1. :
+                                                              0.;
+        if (sign == 0.)
+          continue;
+        const double r = points[i].position[0], z = points[i].position[1];
+        for (unsigned int j = 0; j < N; ++j)
+          {
+            LocalVector t = traction[i * N + j];
+            for (unsigned int c = 0; c < 3; ++c)
+              t[c] -= points[i].initial_traction[c];
+            const double da    = sign * weight * points[i].area_per_radian;
+            const double t_r   = t[0] * pair.tangent[0] + t[1] * pair.normal[0];
+            const double t_z   = t[0] * pair.tangent[1] + t[1] * pair.normal[1];
+            const double theta = sampling.angle(j);
+            const double c = std::cos(theta), s = std::sin(theta);
+            const double F[3] = {da * (t_r * c - t[2] * s),
+                                 da * (t_r * s + t[2] * c),
+                                 da * t_z};
+            const double x = r * c, y = r * s;
+            resultant[0] += F[0];
+            resultant[1] += F[1];
+            resultant[2] += F[2];
+            resultant[3] += y * F[2] - z * F[1];
+            resultant[4] += z * F[0] - x * F[2];
+            resultant[5] += x * F[1] - y * F[0];
+          }
+      }
+    return resultant;
+  }
+
+  std::array<double, 6>
+  CoupledInterfaceSolver::applied_loads(const double load_factor,
+                                        const double held_fraction) const
+  {
+    return applied_foundation_loads(parameters.rigid_foundation,
+                                    load_factor,
+                                    held_fraction);
+  }
+
+  RigidMotion
+  CoupledInterfaceSolver::motion_of(const StepState &state) const
+  {
+    std::vector<double> total(4, 0.);
+    for (unsigned int h = 0; h < set.size(); ++h)
+      {
+        const RigidFoundation *foundation = set.problem(h).get_foundation();
+        if (!set.owns(h) || foundation == nullptr || harmonics[h].n > 1 ||
+            (harmonics[h].n == 1 && harmonics[h].family != Family::symmetric))
+          continue;
+        Vector<double> u = pattern_solution[h];
+        u.sadd(state.load_factor, 1., state.correction_solution[h]);
+        const RigidMotion m = foundation->motion(u);
+        total[0] += m.vertical_displacement;
+        total[1] += m.twist;
+        total[2] += m.horizontal_displacement;
+        total[3] += m.rotation;
+      }
+    set.sum_over_ranks(total);
+    RigidMotion motion;
+    motion.vertical_displacement   = total[0];
+    motion.twist                   = total[1];
+    motion.horizontal_displacement = total[2];
+    motion.rotation                = total[3];
+    return motion;
+  }
+
+  std::vector<Harmonic>
+  CoupledInterfaceSolver::harmonics_called_for(
+    const InterfaceSnapshot &snapshot,
+    std::ostream            &log) const
+  {
+    std::vector<Harmonic> added;
+    if (candidates.empty())
+      return added;
+    // 1. The spectrum of t - t0: per candidate harmonic, the amplitudes of
+    //    the three components at every point, squared and weighted by the
+    //    point's area (an L2 norm over the interface of that harmonic).
+    const unsigned int  N = sampling.n_samples();
+    std::vector<double> norm_sqr(candidates.size(), 0.), samples(N), amplitude;
+    for (unsigned int i = 0; i < points.size(); ++i)
+      for (unsigned int c = 0; c < 3; ++c)
+        {
+          for (unsigned int j = 0; j < N; ++j)
+            samples[j] =
+              snapshot.traction[i * N + j][c] - points[i].initial_traction[c];
+          spectrum.project(samples,
+                           c == 2 ? ThetaFactor::circumferential :
+                                    ThetaFactor::in_plane,
+                           amplitude);
+          for (unsigned int h = 0; h < candidates.size(); ++h)
+            norm_sqr[h] +=
+              points[i].area_per_radian * amplitude[h] * amplitude[h];
+        }
+    // 2. Harmonics not solved whose amplitude has not decayed below the
+    //    tolerance relative to the largest one.
+    const double largest =
+      std::sqrt(*std::max_element(norm_sqr.begin(), norm_sqr.end()));
+    std::ostringstream why;
+    for (unsigned int h = 0; h < candidates.size(); ++h)
+      {
+        const double relative =
+          largest > 0. ? std::sqrt(norm_sqr[h]) / largest : 0.;
+        if (contains(harmonics, candidates[h]) ||
+            relative <= settings.harmonic_tolerance)
+          continue;
+        added.push_back(candidates[h]);
+        why << ' ' << candidates[h].name() << " (" << std::setprecision(3)
+            << relative << ')';
+      }
+    if (!added.empty())
+      log << "  harmonics added, interface-traction amplitude relative to "
+             "the largest above "
+          << settings.harmonic_tolerance << ":" << why.str()
+          << "; the step is solved again\n";
+    return added;
+  }
+
+  void
+  CoupledInterfaceSolver::grow(const std::vector<Harmonic> &added)
+  {
+    set.add(added);
+    harmonics = set.get_harmonics();
+    sampling  = ThetaSampling(harmonics, sampling.n_samples());
+    solve_load_pattern();
+    const unsigned int first = committed.correction_solution.size();
+    for (unsigned int h = first; h < set.size(); ++h)
+      {
+        committed.correction_solution.emplace_back(pattern_solution[h].size());
+        committed.correction_load.emplace_back(pattern_solution[h].size());
+        committed.interface_solution.emplace_back(pattern_solution[h].size());
+      }
+    condense(first);
+  }
+
+  Vector<double>
+  CoupledInterfaceSolver::solution(const unsigned int i) const
+  {
+    Vector<double> u = pattern_solution[i];
+    u.sadd(committed.load_factor, 1., committed.correction_solution[i]);
+    if (set.n_owning_ranks() > 1)
+      {
+        const int ierr = MPI_Bcast(
+          u.begin(), u.size(), MPI_DOUBLE, set.owner(i), set.get_ranks());
+        AssertThrowMPI(ierr);
+      }
+    return u;
+  }
+
+  void
+  CoupledInterfaceSolver::run(std::ostream &log)
+  {
+    const bool load_control =
+      settings.control == NonlinearInterfaceParameters::Control::load;
+    log << "nonlinear interfaces: " << points.size() << " points x "
+        << sampling.n_samples() << " theta samples, " << set.size()
+        << " harmonics";
+    if (set.n_owning_ranks() > 1)
+      log << " distributed over " << set.n_owning_ranks() << " MPI ranks";
+    log << ", " << (load_control ? "load" : "displacement") << " control, "
+        << settings.load_steps << " steps, tolerance " << settings.tolerance
+        << name_of(settings);
+    if (!candidates.empty())
+      log << ", harmonics grow up to n = " << settings.maximum_harmonic
+          << " where the interface traction calls for them (tolerance "
+          << settings.harmonic_tolerance << ")";
+    log << '\n';
+    if (interface.without_strength())
+      log << "warning: " << entry
+          << ": a coulomb interface has c = 0 and no Initial stress: it has "
+             "no strength\n";
+    double       done = 0., increment = 1. / settings.load_steps;
+    unsigned int cuts = 0;
+    // The state before the last converged step and that step's size: the
+    // next step starts from the last correction extrapolated (as for the
+    // plastic soil, doc/soil-plasticity.md 3b); none after harmonics grow.
+    StepState before_last;
+    double    last_increment = 0.;
+    while (done < 1. - 1e-12)
+      {
+        const double fraction = std::min(1., done + increment);
+        const double target =
+          load_control ? fraction : fraction * settings.target;
+        StepState state = committed;
+        if (last_increment > 0.)
+          extrapolate(before_last, increment / last_increment, state);
+        LoadStepResult    result;
+        InterfaceSnapshot snapshot;
+        const auto        start = std::chrono::steady_clock::now();
+        if (!solve_step(target, state, result, snapshot))
+          {
+            AssertThrow(++cuts <= settings.maximum_step_cuts,
+                        ExcMessage(unconverged_step_message(entry,
+                                                            steps.size(),
+                                                            settings)));
+            increment /= 2.;
+            log << "  step cut to " << increment << " of the loading\n";
+            continue;
+          }
+        const std::vector<Harmonic> added = harmonics_called_for(snapshot, log);
+        if (!added.empty())
+          {
+            grow(added);
+            last_increment = 0.;
+            continue;
+          }
+        before_last        = std::move(committed);
+        last_increment     = fraction - done;
+        committed          = state;
+        done               = fraction;
+        result.n_harmonics = set.size();
+        result.load_factor = state.load_factor;
+        result.motion      = motion_of(state);
+        result.time        = std::chrono::duration<double>(
+                        std::chrono::steady_clock::now() - start)
+                        .count();
+        steps.push_back(result);
+        snapshots.push_back(std::move(snapshot));
+        const auto loads = applied_loads(result.load_factor);
+        log << "  step " << steps.size() << ": factor " << result.load_factor
+            << ", V " << loads[2] << " kN, H " << loads[0] << " kN, T "
+            << loads[5] << " kN m; w " << result.motion.vertical_displacement
+            << " m, u " << result.motion.horizontal_displacement << " m, twist "
+            << result.motion.twist << " rad; " << result.iterations
+            << " iterations; stick/slip/open " << result.states[0] << '/'
+            << result.states[1] << '/' << result.states[2] << "; "
+            << result.n_harmonics << " harmonics\n";
+      }
+    if (set.n_owning_ranks() > 1)
+      log << "  MPI: " << set.n_rank_sums() << " sums over the ranks ("
+          << "one per iteration, a few per step), " << set.rank_sum_time()
+          << " s in them on rank 0 (computing or waiting for the others)\n";
+  }
+
+} // namespace FourierSSI

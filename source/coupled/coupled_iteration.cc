@@ -1,0 +1,167 @@
+#include <cmath>
+#include <fourier_ssi/coupled/coupled_iteration.h>
+
+namespace FourierSSI
+{
+  double
+  norm_over_harmonics(const std::vector<Vector<double>> &vectors)
+  {
+    double sum = 0.;
+    for (const Vector<double> &v : vectors)
+      sum += v.norm_sqr();
+    return std::sqrt(sum);
+  }
+
+  double
+  dot_over_harmonics(const std::vector<Vector<double>> &a,
+                     const std::vector<Vector<double>> &b)
+  {
+    double sum = 0.;
+    for (unsigned int h = 0; h < a.size(); ++h)
+      sum += a[h] * b[h];
+    return sum;
+  }
+
+  Harmonic
+  controlled_harmonic(const NonlinearInterfaceParameters::Motion motion)
+  {
+    using M = NonlinearInterfaceParameters::Motion;
+    if (motion == M::vertical)
+      return {0, Family::symmetric};
+    if (motion == M::twist)
+      return {0, Family::antisymmetric};
+    return {1, Family::symmetric};
+  }
+
+  double
+  controlled_component(const RigidMotion                         &motion,
+                       const NonlinearInterfaceParameters::Motion controlled)
+  {
+    using M = NonlinearInterfaceParameters::Motion;
+    switch (controlled)
+      {
+        case M::vertical:
+          return motion.vertical_displacement;
+        case M::twist:
+          return motion.twist;
+        case M::horizontal:
+          return motion.horizontal_displacement;
+        case M::rotation:
+          return motion.rotation;
+      }
+    return 0.;
+  }
+
+  std::array<double, 6>
+  applied_foundation_loads(const RigidFoundationParameters &f,
+                           const double                     load_factor,
+                           const double                     held_fraction)
+  {
+    const double z_ref = f.reference_elevation;
+    const double H     = load_factor * f.horizontal_force +
+                     held_fraction * f.held_horizontal_force;
+    const double M = load_factor * f.moment + held_fraction * f.held_moment;
+    return {
+      {H,
+       load_factor * f.horizontal_force_y,
+       load_factor * f.vertical_force + held_fraction * f.held_vertical_force,
+       load_factor * (f.moment_x - z_ref * f.horizontal_force_y),
+       M + z_ref * H,
+       load_factor * f.torque + held_fraction * f.held_torque}};
+  }
+
+  double
+  moment_about_reference(const std::array<double, 6>     &loads,
+                         const RigidFoundationParameters &foundation)
+  {
+    return loads[4] - foundation.reference_elevation * loads[0];
+  }
+
+  NamedLoad
+  conjugate_load(const std::array<double, 6>               &loads,
+                 const RigidFoundationParameters           &foundation,
+                 const NonlinearInterfaceParameters::Motion controlled)
+  {
+    using M = NonlinearInterfaceParameters::Motion;
+    switch (controlled)
+      {
+        case M::vertical:
+          return {"V", "kN", loads[2]};
+        case M::horizontal:
+          return {"H", "kN", loads[0]};
+        case M::rotation:
+          return {"M", "kN.m", moment_about_reference(loads, foundation)};
+        case M::twist:
+          return {"T", "kN.m", loads[5]};
+      }
+    return {};
+  }
+
+  void
+  write_load_step_columns(std::ostream                    &out,
+                          const unsigned int               step,
+                          const double                     load_factor,
+                          const double                     held_fraction,
+                          const RigidFoundationParameters &f,
+                          const RigidMotion               &motion,
+                          const unsigned int               iterations,
+                          const double                     residual)
+  {
+    // M about the reference point, as given in the prm.
+    const auto loads = applied_foundation_loads(f, load_factor, held_fraction);
+    const double moment = moment_about_reference(loads, f);
+    out << step << ',' << load_factor << ',' << loads[2] << ',' << loads[0]
+        << ',' << moment << ',' << loads[5] << ','
+        << motion.vertical_displacement << ',' << motion.horizontal_displacement
+        << ',' << motion.rotation << ',' << motion.twist << ',' << iterations
+        << ',' << residual;
+  }
+
+  std::string
+  unconverged_step_message(const std::string                  &entry,
+                           const unsigned int                  converged_steps,
+                           const NonlinearInterfaceParameters &settings)
+  {
+    return entry + ": load step " + std::to_string(converged_steps + 1) +
+           " did not converge in " +
+           std::to_string(settings.maximum_iterations) + " iterations after " +
+           std::to_string(settings.maximum_step_cuts) + " step cuts; the " +
+           std::to_string(converged_steps) + " converged steps are kept";
+  }
+
+  FixedPointAcceleration::FixedPointAcceleration(
+    const Kind         kind,
+    const unsigned int anderson_depth)
+    : kind(kind)
+    , anderson(anderson_depth)
+  {}
+
+  std::vector<Vector<double>>
+  FixedPointAcceleration::increment(const std::vector<Vector<double>> &load,
+                                    const std::vector<Vector<double>> &residual)
+  {
+    if (kind == Kind::anderson)
+      return anderson.increment(load, residual);
+    if (kind == Kind::aitken && !previous_residual.empty())
+      omega = aitken_factor(residual);
+    previous_residual                  = residual;
+    std::vector<Vector<double>> result = residual;
+    for (Vector<double> &block : result)
+      block *= omega;
+    return result;
+  }
+
+  double
+  FixedPointAcceleration::aitken_factor(
+    const std::vector<Vector<double>> &residual) const
+  {
+    std::vector<Vector<double>> change = residual;
+    for (unsigned int h = 0; h < change.size(); ++h)
+      change[h] -= previous_residual[h];
+    const double change_sqr = dot_over_harmonics(change, change);
+    return change_sqr > 0. ?
+             -omega * dot_over_harmonics(previous_residual, change) /
+               change_sqr :
+             omega;
+  }
+} // namespace FourierSSI

@@ -1,0 +1,1352 @@
+#include <chrono>
+#include <cmath>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+#include <fourier_ssi/coupled/coupled_iteration.h>
+#include <fourier_ssi/coupled/coupled_soil_solver.h>
+#include <fourier_ssi/fourier/harmonic_pair_integral.h>
+#include <fourier_ssi/harmonic/stress_postprocessor.h>
+#include <fourier_ssi/linear_algebra/thread_ranges.h>
+#include <fstream>
+#include <iomanip>
+#include <iterator>
+#include <mutex>
+#include <sstream>
+
+namespace FourierSSI
+{
+  namespace
+  {
+    const std::string entry = "Soil plasticity";
+
+    /**
+     * Stiffness = tangent: the shortest fraction of a Newton update the
+     * backtracking tries, and how many updates without a new smallest
+     * residual mean the iteration cycles between plastic states (the step
+     * is then cut).
+     */
+    constexpr double       smallest_step_length = 1. / 16.;
+    constexpr unsigned int stagnation_limit     = 20;
+
+    /**
+     * The acceleration of the out-of-balance iteration: Newton updates are
+     * taken as they are (relaxing them by Aitken or Anderson was measured
+     * to double the iterations, doc/soil-plasticity.md section 3); the
+     * initial-stiffness iteration takes Nonlinear interfaces/Acceleration.
+     */
+    NonlinearInterfaceParameters::Acceleration
+    acceleration_of(const NonlinearInterfaceParameters &settings,
+                    const bool                          tangent)
+    {
+      return tangent ? NonlinearInterfaceParameters::Acceleration::none :
+                       settings.acceleration;
+    }
+
+    /** How the log names the iteration. */
+    std::string
+    iteration_name(const NonlinearInterfaceParameters &settings,
+                   const bool                          tangent)
+    {
+      using Acceleration = NonlinearInterfaceParameters::Acceleration;
+      if (tangent)
+        return "Newton on the coupled tangent, backtracking";
+      return settings.acceleration == Acceleration::aitken ?
+               "initial stiffness, Aitken" :
+             settings.acceleration == Acceleration::anderson ?
+               "initial stiffness, Anderson" :
+               "initial stiffness";
+    }
+
+    /** Strain components 0..3 carry the in-plane factor, 4, 5 the other. */
+    ThetaFactor
+    factor_of(const unsigned int k)
+    {
+      return k < 4 ? ThetaFactor::in_plane : ThetaFactor::circumferential;
+    }
+
+    /**
+     * B-bar on a cell's strain field: the dilatation replaced by its
+     * projection (with_dilatation). Applied to a stress field it is also
+     * the transpose: sum_q dV Bbar^T s = sum_q dV B^T bar(s), since the
+     * r-weighted projection is self-adjoint (doc/soil-plasticity.md 3).
+     */
+    void
+    apply_bbar(const LinearProjection    *projection,
+               std::vector<StrainVector> &field)
+    {
+      if (projection == nullptr || !projection->valid)
+        return;
+      std::vector<double> trace(field.size());
+      for (unsigned int q = 0; q < field.size(); ++q)
+        trace[q] = field[q][0] + field[q][1] + field[q][2];
+      const auto c = projection->project(trace);
+      for (unsigned int q = 0; q < field.size(); ++q)
+        field[q] = with_dilatation(field[q], projection->value_at(c, q));
+    }
+  } // namespace
+
+  CoupledSoilSolver::CoupledSoilSolver(const HarmonicSet   &set,
+                                       const AllParameters &parameters)
+    : set(set)
+    , parameters(parameters)
+    , settings(parameters.nonlinear_interfaces)
+    , harmonics(set.get_harmonics())
+    , sampling(harmonics,
+               theta_samples_for(highest_harmonic(harmonics),
+                                 parameters.nonlinear_interfaces.theta_samples))
+  {
+    for (const Harmonic &h : harmonics)
+      operators.emplace_back(h);
+    for (unsigned int h = 0; h < set.size(); ++h)
+      AssertThrow(!set.problem(h).get_constraints().has_inhomogeneities(),
+                  ExcMessage(entry +
+                             ": not yet: prescribed (non-zero) Dirichlet "
+                             "values with plastic soil; load the scene "
+                             "through the Rigid foundation"));
+    // Newton needs the whole coupled block matrix on one rank; the
+    // initial-stiffness iteration re-solves each harmonic on its owner.
+    AssertThrow(!parameters.soil_plasticity.tangent ||
+                  set.n_owning_ranks() == 1,
+                ExcMessage(entry + ": not yet: Stiffness = tangent on several "
+                                   "MPI ranks (the coupled tangent is one "
+                                   "block matrix over all harmonics); use "
+                                   "Stiffness = elastic or one rank"));
+    make_points();
+    check_initial_stress();
+    if (parameters.interfaces.any_nonlinear())
+      interface = std::make_unique<NonlinearInterfacePoints>(set, parameters);
+    if (set.n_owning_ranks() > 1)
+      {
+        point_stride = set.n_owning_ranks();
+        point_rank   = Utilities::MPI::this_mpi_process(set.get_ranks());
+      }
+    solve_load_pattern();
+    if (parameters.rigid_foundation.any_held())
+      solve_held_loads();
+    committed.correction_solution = pattern_solution;
+    for (Vector<double> &v : committed.correction_solution)
+      v = 0.;
+    committed.correction_load = committed.correction_solution;
+    committed.plastic.assign(points.size() * sampling.n_samples(),
+                             {{0., 0., 0., 0., 0., 0.}});
+    if (interface)
+      committed.interface_plastic.assign(interface->size() *
+                                           sampling.n_samples(),
+                                         {{0., 0., 0.}});
+  }
+
+  void
+  CoupledSoilSolver::check_initial_stress() const
+  {
+    // The geostatic state must be admissible: K0 between the active and
+    // passive ratios of Mohr-Coulomb soil, (1 - K0) sigma'_v <= 2 s_u for
+    // Tresca. Tolerance: round-off of the stress.
+    for (const SoilPoint &point : points)
+      {
+        double size = 0.;
+        for (const double s : point.initial_stress)
+          size = std::max(size, std::abs(s));
+        const double f =
+          laws[point.law].yield_function(point.initial_stress, point.depth);
+        if (f <= 1e-12 * std::max(size, 1.))
+          continue;
+        const auto law =
+          std::next(parameters.soil_plasticity.laws.begin(), point.law);
+        std::ostringstream message;
+        message << std::setprecision(4)
+                << "Initial stress/K0: the geostatic stress at depth "
+                << point.depth << " m violates the yield condition of "
+                << "material " << static_cast<unsigned int>(law->first)
+                << " (Soil plasticity/Laws; f = " << f << " kPa > 0): K0 = "
+                << parameters.initial_stress.earth_pressure_coefficient
+                << " must lie between the active and passive ratios "
+                   "(Mohr-Coulomb), (1 - K0) sigma'_v within 2 s_u (Tresca)";
+        AssertThrow(false, ExcMessage(message.str()));
+      }
+  }
+
+  void
+  CoupledSoilSolver::make_points()
+  {
+    std::map<types::material_id, unsigned int> law_index;
+    for (const auto &[id, law] : parameters.soil_plasticity.laws)
+      {
+        law_index[id] = laws.size();
+        laws.push_back(law);
+      }
+    const DoFHandler<2> &dofs0 = set.problem(0).get_dof_handler();
+    const auto          &fe    = dofs0.get_fe();
+    // The stiffness's own quadrature (HarmonicProblem), so that a field
+    // with eps_p = eps gives back exactly the soil part of K u.
+    FEValues<2> fe_values(fe,
+                          QGauss<2>(fe.degree + 2),
+                          update_values | update_gradients |
+                            update_quadrature_points | update_JxW_values);
+    const bool  bbar =
+      parameters.discretization.volumetric == "bbar" && fe.degree == 2;
+    const unsigned int n_dofs = fe.n_dofs_per_cell();
+    for (unsigned int i = 0; i < n_dofs; ++i)
+      component.push_back(fe.system_to_component_index(i).first);
+    std::vector<typename DoFHandler<2>::active_cell_iterator> iterators;
+    for (unsigned int h = 0; h < set.size(); ++h)
+      iterators.push_back(set.problem(h).get_dof_handler().begin_active());
+    for (; iterators[0] != dofs0.end();)
+      {
+        const auto law = law_index.find(iterators[0]->material_id());
+        if (law != law_index.end())
+          {
+            fe_values.reinit(iterators[0]);
+            SoilCell cell;
+            cell.first_point = points.size();
+            for (unsigned int h = 0; h < set.size(); ++h)
+              {
+                std::vector<types::global_dof_index> indices(n_dofs);
+                iterators[h]->get_dof_indices(indices);
+                cell.dof_indices.push_back(indices);
+              }
+            if (bbar)
+              cell.projection = std::make_shared<LinearProjection>(fe_values);
+            const ElasticMaterial &material =
+              parameters.materials.get(iterators[0]->material_id());
+            for (const unsigned int q : fe_values.quadrature_point_indices())
+              {
+                const Point<2> &x = fe_values.quadrature_point(q);
+                cell.radius.push_back(x[0]);
+                cell.shape_value.emplace_back(n_dofs);
+                cell.shape_grad.emplace_back(n_dofs);
+                for (unsigned int i = 0; i < n_dofs; ++i)
+                  {
+                    cell.shape_value[q][i] = fe_values.shape_value(i, q);
+                    cell.shape_grad[q][i]  = fe_values.shape_grad(i, q);
+                  }
+                SoilPoint point;
+                point.cell          = cells.size();
+                point.q             = q;
+                point.r             = x[0];
+                point.dV            = x[0] * fe_values.JxW(q);
+                point.depth         = parameters.materials.depth(x[1]);
+                point.shear_modulus = material.shear_modulus(point.depth);
+                point.lambda        = material.lambda(point.depth);
+                point.law           = law->second;
+                point.initial_stress =
+                  parameters.initial_stress.soil_stress(point.depth);
+                points.push_back(point);
+              }
+            cells.push_back(std::move(cell));
+          }
+        for (auto &it : iterators)
+          ++it;
+      }
+    AssertThrow(!points.empty(),
+                ExcMessage(entry + "/Laws: no cell of the mesh has a "
+                                   "material id with a plastic law"));
+  }
+
+  void
+  CoupledSoilSolver::solve_load_pattern()
+  {
+    // Each rank solves the harmonics it owns; the others' fields stay zero
+    // here (never read: their strain amplitudes come from their owners).
+    std::vector<std::vector<Vector<double>>> b(set.size());
+    std::vector<double>                      norm_sqr(set.size(), 0.);
+    for (unsigned int h = 0; h < set.size(); ++h)
+      if (set.owns(h))
+        {
+          b[h]        = {set.problem(h).get_system_rhs()};
+          norm_sqr[h] = b[h][0].norm_sqr();
+        }
+    pattern_load_norm = std::sqrt(sum_over_harmonics(norm_sqr, 1)[0]);
+    set.solve_increments(b);
+    for (unsigned int h = 0; h < set.size(); ++h)
+      pattern_solution.push_back(
+        set.owns(h) ?
+          b[h][0] :
+          Vector<double>(set.problem(h).get_dof_handler().n_dofs()));
+    pattern_strain = strain_amplitudes(pattern_solution);
+    if (interface)
+      pattern_relative =
+        interface->relative_displacements(pattern_solution, sampling);
+  }
+
+  void
+  CoupledSoilSolver::solve_held_loads()
+  {
+    // |F_held|^2 and F . F_held per harmonic [h * 2 + 0, 1], on the owner.
+    std::vector<std::vector<Vector<double>>> b(set.size());
+    std::vector<double>                      products(2 * set.size(), 0.);
+    for (unsigned int h = 0; h < set.size(); ++h)
+      {
+        if (!set.owns(h))
+          continue;
+        const Vector<double> &pattern_load = set.problem(h).get_system_rhs();
+        Vector<double>        held         = held_load(h);
+        products[2 * h]                    = held.norm_sqr();
+        products[2 * h + 1]                = held * pattern_load;
+        b[h]                               = {std::move(held)};
+      }
+    const std::vector<double> sums = sum_over_harmonics(products, 2);
+    held_load_norm                 = std::sqrt(sums[0]);
+    pattern_held_dot               = sums[1];
+    set.solve_increments(b);
+    for (unsigned int h = 0; h < set.size(); ++h)
+      held_solution.push_back(
+        set.owns(h) ?
+          b[h][0] :
+          Vector<double>(set.problem(h).get_dof_handler().n_dofs()));
+    held_strain = strain_amplitudes(held_solution);
+    if (interface)
+      held_relative =
+        interface->relative_displacements(held_solution, sampling);
+  }
+
+  double
+  CoupledSoilSolver::applied_load_norm(const StepState &state) const
+  {
+    const double lambda = state.load_factor, rho = state.held_fraction;
+    const double norm_sqr =
+      lambda * lambda * pattern_load_norm * pattern_load_norm +
+      2. * lambda * rho * pattern_held_dot +
+      rho * rho * held_load_norm * held_load_norm;
+    return std::sqrt(std::max(norm_sqr, 0.));
+  }
+
+  std::vector<std::vector<StrainVector>>
+  CoupledSoilSolver::strain_amplitudes(
+    const std::vector<Vector<double>> &fields) const
+  {
+    std::vector<std::vector<StrainVector>> result(
+      points.size(), std::vector<StrainVector>(set.size()));
+    // Harmonics concurrently: each writes its own column.
+    set.for_each([&](const unsigned int h) {
+      if (!set.owns(h))
+        return;
+      std::vector<StrainVector> cell_strain;
+      for (const SoilCell &cell : cells)
+        {
+          const unsigned int n_q = cell.radius.size();
+          cell_strain.resize(n_q);
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              std::array<double, 3>       values = {{0., 0., 0.}};
+              std::array<Tensor<1, 2>, 3> gradients;
+              for (unsigned int i = 0; i < cell.shape_value[q].size(); ++i)
+                {
+                  const double u = fields[h](cell.dof_indices[h][i]);
+                  values[component[i]] += u * cell.shape_value[q][i];
+                  gradients[component[i]] += u * cell.shape_grad[q][i];
+                }
+              cell_strain[q] =
+                operators[h].strain(values, gradients, cell.radius[q]);
+            }
+          apply_bbar(cell.projection.get(), cell_strain);
+          for (unsigned int q = 0; q < n_q; ++q)
+            result[cell.first_point + q][h] = cell_strain[q];
+        }
+    });
+    // Every harmonic's amplitudes on every rank (the first sum of an
+    // iteration; load_of makes the second). Each entry is non-zero on its
+    // owner only, so the sum is exact and the same bits on every rank,
+    // whatever the reduction order.
+    if (set.n_owning_ranks() > 1)
+      {
+        const unsigned int  H = set.size();
+        std::vector<double> flat(points.size() * H * 6);
+        for (unsigned int p = 0; p < points.size(); ++p)
+          for (unsigned int h = 0; h < H; ++h)
+            std::copy(result[p][h].begin(),
+                      result[p][h].end(),
+                      flat.begin() + (p * H + h) * 6);
+        set.sum_over_ranks(flat);
+        for (unsigned int p = 0; p < points.size(); ++p)
+          for (unsigned int h = 0; h < H; ++h)
+            std::copy(flat.begin() + (p * H + h) * 6,
+                      flat.begin() + (p * H + h + 1) * 6,
+                      result[p][h].begin());
+      }
+    return result;
+  }
+
+  void
+  CoupledSoilSolver::count_over_ranks(SoilStepResult &result) const
+  {
+    if (point_stride == 1)
+      return;
+    std::vector<double> counts = {static_cast<double>(result.n_elastic),
+                                  static_cast<double>(result.n_plastic)};
+    set.sum_over_ranks(counts);
+    result.n_elastic = static_cast<unsigned int>(counts[0]);
+    result.n_plastic = static_cast<unsigned int>(counts[1]);
+    result.largest_yield_value =
+      Utilities::MPI::max(result.largest_yield_value, set.get_ranks());
+  }
+
+  std::vector<double>
+  CoupledSoilSolver::sum_over_harmonics(std::vector<double> values,
+                                        const unsigned int  n) const
+  {
+    set.sum_over_ranks(values);
+    std::vector<double> sum(n, 0.);
+    for (unsigned int h = 0; h < values.size() / n; ++h)
+      for (unsigned int c = 0; c < n; ++c)
+        sum[c] += values[h * n + c];
+    return sum;
+  }
+
+  std::vector<StrainVector>
+  CoupledSoilSolver::strain_samples(
+    const std::vector<Vector<double>> &correction,
+    const double                       load_factor,
+    const double                       held_fraction) const
+  {
+    const unsigned int        N = sampling.n_samples(), H = set.size();
+    const auto                amplitude = strain_amplitudes(correction);
+    std::vector<StrainVector> samples(points.size() * N);
+    std::vector<double>       a(H), s;
+    for (unsigned int p = 0; p < points.size(); ++p)
+      {
+        if (!owns_point(p))
+          continue;
+        for (unsigned int k = 0; k < 6; ++k)
+          {
+            for (unsigned int h = 0; h < H; ++h)
+              a[h] =
+                amplitude[p][h][k] + load_factor * pattern_strain[p][h][k] +
+                (held_strain.empty() ? 0. :
+                                       held_fraction * held_strain[p][h][k]);
+            sampling.evaluate(a, factor_of(k), s);
+            for (unsigned int j = 0; j < N; ++j)
+              samples[p * N + j][k] = s[j];
+          }
+      }
+    return samples;
+  }
+
+  std::vector<LocalVector>
+  CoupledSoilSolver::relative_samples(
+    const std::vector<Vector<double>> &correction,
+    const double                       load_factor,
+    const double                       held_fraction) const
+  {
+    std::vector<LocalVector> relative =
+      interface->relative_displacements(correction, sampling);
+    for (unsigned int k = 0; k < relative.size(); ++k)
+      for (unsigned int c = 0; c < 3; ++c)
+        relative[k][c] +=
+          load_factor * pattern_relative[k][c] +
+          (held_relative.empty() ? 0. : held_fraction * held_relative[k][c]);
+    return relative;
+  }
+
+  void
+  CoupledSoilSolver::return_map(const std::vector<StrainVector> &strain,
+                                std::vector<StrainVector>       &plastic,
+                                SoilStepResult                  &result) const
+  {
+    const unsigned int N = sampling.n_samples();
+    plastic.resize(strain.size());
+    result.n_elastic           = 0;
+    result.n_plastic           = 0;
+    result.largest_yield_value = -std::numeric_limits<double>::max();
+    // The points on the harmonic set's threads (every (point, theta) is
+    // independent; the counts and the largest f do not depend on the order:
+    // the same bits on any number of threads).
+    std::mutex merge;
+    for_each_range(
+      points.size(),
+      16,
+      set.n_threads(),
+      [&](const unsigned int first, const unsigned int last) {
+        unsigned int n_elastic = 0, n_plastic = 0;
+        double       largest = -std::numeric_limits<double>::max();
+        for (unsigned int p = first; p < last; ++p)
+          {
+            if (!owns_point(p))
+              continue;
+            const SoilPoint &point = points[p];
+            for (unsigned int j = 0; j < N; ++j)
+              {
+                const unsigned int k = p * N + j;
+                // s_p = sigma_0 + D eps - sigma keeps the internal force
+                // int Bbar^T (sigma - sigma_0) = K u - c.
+                const StrainVector elastic = elastic_stress(point, strain[k]);
+                const SoilReturn   r = return_from_committed(point, k, elastic);
+                for (unsigned int c = 0; c < 6; ++c)
+                  plastic[k][c] = elastic[c] - r.stress[c];
+                if (r.state == SoilState::elastic)
+                  ++n_elastic;
+                else
+                  ++n_plastic;
+                largest = std::max(largest,
+                                   laws[point.law].yield_function(r.stress,
+                                                                  point.depth));
+              }
+          }
+        std::lock_guard<std::mutex> lock(merge);
+        result.n_elastic += n_elastic;
+        result.n_plastic += n_plastic;
+        result.largest_yield_value =
+          std::max(result.largest_yield_value, largest);
+      });
+  }
+
+  std::vector<Vector<double>>
+  CoupledSoilSolver::load_of(const std::vector<StrainVector> &samples) const
+  {
+    const unsigned int          N = sampling.n_samples(), H = set.size();
+    std::vector<Vector<double>> load(H);
+    for (unsigned int h = 0; h < H; ++h)
+      load[h].reinit(set.problem(h).get_dof_handler().n_dofs());
+    // Theta integrals int factor_h s dtheta per point, component, harmonic.
+    std::vector<std::vector<StrainVector>> integral(
+      points.size(), std::vector<StrainVector>(H));
+    std::vector<char>   any(points.size(), 0);
+    std::vector<double> s(N), coefficient;
+    for (unsigned int p = 0; p < points.size(); ++p)
+      {
+        if (!owns_point(p))
+          continue;
+        for (unsigned int j = 0; j < N; ++j)
+          for (unsigned int k = 0; k < 6; ++k)
+            any[p] = any[p] || samples[p * N + j][k] != 0.;
+        if (!any[p])
+          continue; // an elastic point: no load, no work
+        for (unsigned int k = 0; k < 6; ++k)
+          {
+            for (unsigned int j = 0; j < N; ++j)
+              s[j] = samples[p * N + j][k];
+            sampling.integrate(s, factor_of(k), coefficient);
+            for (unsigned int h = 0; h < H; ++h)
+              integral[p][h][k] = coefficient[h];
+          }
+      }
+    // Every point's theta integrals on every rank (each non-zero on the
+    // rank that return-maps the point: an exact sum), then G_h of every
+    // harmonic redundantly, as the serial run assembles it.
+    if (point_stride > 1)
+      {
+        const unsigned int  size = H * 6 + 1;
+        std::vector<double> flat(points.size() * size, 0.);
+        for (unsigned int p = 0; p < points.size(); ++p)
+          if (owns_point(p) && any[p])
+            {
+              for (unsigned int h = 0; h < H; ++h)
+                std::copy(integral[p][h].begin(),
+                          integral[p][h].end(),
+                          flat.begin() + p * size + h * 6);
+              flat[p * size + H * 6] = 1.;
+            }
+        set.sum_over_ranks(flat);
+        for (unsigned int p = 0; p < points.size(); ++p)
+          {
+            any[p] = flat[p * size + H * 6] != 0.;
+            for (unsigned int h = 0; h < H; ++h)
+              std::copy(flat.begin() + p * size + h * 6,
+                        flat.begin() + p * size + (h + 1) * 6,
+                        integral[p][h].begin());
+          }
+      }
+    set.for_each([&](const unsigned int h) {
+      std::vector<StrainVector> field;
+      for (const SoilCell &cell : cells)
+        {
+          const unsigned int n_q    = cell.radius.size();
+          bool               active = false;
+          field.resize(n_q);
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              field[q] = integral[cell.first_point + q][h];
+              active   = active || any[cell.first_point + q];
+            }
+          if (!active)
+            continue; // only the points that yield cost work
+          apply_bbar(cell.projection.get(), field);
+          const unsigned int n_dofs = component.size();
+          Vector<double>     local(n_dofs);
+          for (unsigned int q = 0; q < n_q; ++q)
+            {
+              const double dV = points[cell.first_point + q].dV;
+              for (unsigned int i = 0; i < n_dofs; ++i)
+                {
+                  const StrainVector b =
+                    operators[h].strain_of_component(component[i],
+                                                     cell.shape_value[q][i],
+                                                     cell.shape_grad[q][i],
+                                                     cell.radius[q]);
+                  double sum = 0.;
+                  for (unsigned int k = 0; k < 6; ++k)
+                    sum += b[k] * field[q][k];
+                  local(i) += sum * dV;
+                }
+            }
+          set.problem(h)
+            .get_homogeneous_constraints()
+            .distribute_local_to_global(local, cell.dof_indices[h], load[h]);
+        }
+    });
+    return load;
+  }
+
+  std::vector<Vector<double>>
+  CoupledSoilSolver::soil_force(const std::vector<Vector<double>> &fields) const
+  {
+    const unsigned int        N = sampling.n_samples();
+    std::vector<StrainVector> strain(points.size() * N);
+    const auto                amplitude = strain_amplitudes(fields);
+    std::vector<double>       a(set.size()), s;
+    for (unsigned int p = 0; p < points.size(); ++p)
+      for (unsigned int k = 0; k < 6; ++k)
+        {
+          for (unsigned int h = 0; h < set.size(); ++h)
+            a[h] = amplitude[p][h][k];
+          sampling.evaluate(a, factor_of(k), s);
+          for (unsigned int j = 0; j < N; ++j)
+            strain[p * N + j][k] = s[j];
+        }
+    for (unsigned int p = 0; p < points.size(); ++p)
+      for (unsigned int j = 0; j < N; ++j)
+        strain[p * N + j] = hooke_stress(strain[p * N + j],
+                                         points[p].lambda,
+                                         points[p].shear_modulus);
+    return load_of(strain);
+  }
+
+  std::vector<Vector<double>>
+  CoupledSoilSolver::out_of_balance_load(
+    const std::vector<Vector<double>> &fields)
+  {
+    std::vector<StrainVector> plastic;
+    SoilStepResult            result;
+    return_map(strain_samples(fields, 0., 0.), plastic, result);
+    std::vector<Vector<double>> load = load_of(plastic);
+    if (interface)
+      {
+        std::vector<LocalVector> interface_plastic;
+        InterfaceSnapshot        snapshot;
+        add_interface_load(relative_samples(fields, 0., 0.),
+                           interface_plastic,
+                           snapshot,
+                           load);
+      }
+    return load;
+  }
+
+  ContactCounts
+  CoupledSoilSolver::add_interface_load(
+    const std::vector<LocalVector> &relative,
+    std::vector<LocalVector>       &plastic,
+    InterfaceSnapshot              &snapshot,
+    std::vector<Vector<double>>    &load) const
+  {
+    snapshot.relative = relative;
+    const ContactCounts counts =
+      interface->return_map(relative,
+                            committed.interface_plastic,
+                            plastic,
+                            snapshot.traction,
+                            snapshot.state);
+    const std::vector<Vector<double>> interface_load =
+      interface->load_of(plastic, sampling);
+    for (unsigned int h = 0; h < set.size(); ++h)
+      load[h] += interface_load[h];
+    return counts;
+  }
+
+  std::vector<Vector<double>>
+  CoupledSoilSolver::tangent_product(const std::vector<Vector<double>> &fields,
+                                     const std::vector<Vector<double>> &x)
+  {
+    update_tangent(strain_samples(fields, 0., 0.),
+                   interface ? relative_samples(fields, 0., 0.) :
+                               std::vector<LocalVector>());
+    std::vector<Vector<double>> y;
+    tangent->vmult(y, x);
+    return y;
+  }
+
+  double
+  CoupledSoilSolver::controlled_motion(const unsigned int    h,
+                                       const Vector<double> &v) const
+  {
+    const RigidFoundation *foundation = set.problem(h).get_foundation();
+    AssertThrow(foundation != nullptr,
+                ExcMessage("Nonlinear interfaces/Control: displacement "
+                           "control needs a Rigid foundation"));
+    return controlled_component(foundation->motion(v), settings.motion);
+  }
+
+  double
+  CoupledSoilSolver::controlled_load_factor(const StepState &state,
+                                            const double     target) const
+  {
+    const Harmonic wanted = controlled_harmonic(settings.motion);
+    for (unsigned int h = 0; h < set.size(); ++h)
+      if (harmonics[h].n == wanted.n && harmonics[h].family == wanted.family)
+        {
+          // The motions by the pattern and now, from the owner of h (the
+          // others add zeros: exact).
+          std::vector<double> motion = {0., 0.};
+          if (set.owns(h))
+            {
+              motion[0] = controlled_motion(h, pattern_solution[h]);
+              motion[1] = controlled_motion(h, state.correction_solution[h]);
+              if (!held_solution.empty())
+                motion[1] +=
+                  state.held_fraction * controlled_motion(h, held_solution[h]);
+            }
+          set.sum_over_ranks(motion);
+          const double by_pattern = motion[0], now = motion[1];
+          AssertThrow(by_pattern != 0.,
+                      ExcMessage("Nonlinear interfaces/Controlled motion: "
+                                 "the Rigid foundation loads do not drive "
+                                 "this motion (give the load that does)"));
+          return (target - now) / by_pattern;
+        }
+    AssertThrow(false,
+                ExcMessage("Nonlinear interfaces/Controlled motion: its "
+                           "harmonic is not solved"));
+    return 0.;
+  }
+
+  StrainVector
+  CoupledSoilSolver::elastic_stress(const SoilPoint    &point,
+                                    const StrainVector &eps) const
+  {
+    StrainVector stress = hooke_stress(eps, point.lambda, point.shear_modulus);
+    for (unsigned int c = 0; c < 6; ++c)
+      stress[c] += point.initial_stress[c];
+    return stress;
+  }
+
+  SoilReturn
+  CoupledSoilSolver::return_from_committed(const SoilPoint    &point,
+                                           const unsigned int  k,
+                                           const StrainVector &elastic) const
+  {
+    // Trial: sigma_0 + D (eps - eps_p,committed) = elastic - s_p,committed.
+    StrainVector trial = elastic;
+    for (unsigned int c = 0; c < 6; ++c)
+      trial[c] -= committed.plastic[k][c];
+    const double G = point.shear_modulus;
+    return laws[point.law].return_map(trial,
+                                      G,
+                                      point.lambda + 2. * G / 3.,
+                                      point.depth);
+  }
+
+  bool
+  CoupledSoilSolver::softening_at(const unsigned int      p,
+                                  const unsigned int      k,
+                                  const StrainVector     &strain,
+                                  std::array<double, 36> &softening) const
+  {
+    const SoilPoint &point = points[p];
+    const double     G = point.shear_modulus, lambda = point.lambda;
+    const auto       stress = [&](const StrainVector &eps) {
+      return return_from_committed(point, k, elastic_stress(point, eps));
+    };
+    const SoilReturn at = stress(strain);
+    if (at.state == SoilState::elastic)
+      return false;
+    // A step small next to the strain but far above round-off: the
+    // forward difference is then exact on each plane of the surface (the
+    // return is linear there); at an edge it takes one side's tangent.
+    double size = 0.;
+    for (const double e : strain)
+      size = std::max(size, std::abs(e));
+    const double step = 1e-6 * std::max(size, 1e-12);
+    for (unsigned int l = 0; l < 6; ++l)
+      {
+        StrainVector plus = strain, unit{};
+        plus[l] += step;
+        unit[l]                    = 1.;
+        const StrainVector s_plus  = stress(plus).stress,
+                           elastic = hooke_stress(unit, lambda, G);
+        for (unsigned int a = 0; a < 6; ++a)
+          softening[a * 6 + l] = elastic[a] - (s_plus[a] - at.stress[a]) / step;
+      }
+    return true;
+  }
+
+  void
+  CoupledSoilSolver::update_tangent(const std::vector<StrainVector> &strain,
+                                    const std::vector<LocalVector>  &relative)
+  {
+    const unsigned int N = sampling.n_samples(), H = set.size();
+    // 1. S_hg = theta integral of factor_h (D_e - D_ep) factor_g per point,
+    //    over the samples that yield (harmonic_pair_integral.h); empty: a
+    //    point elastic at every theta. softening[p][(a * 6 + b) * H^2 + h *
+    //    H + g], the harmonic pair innermost (contiguous in the assembly).
+    const unsigned int               HH = H * H;
+    std::vector<std::vector<double>> softening(points.size());
+    for_each_range(
+      points.size(),
+      16,
+      set.n_threads(),
+      [&](const unsigned int first, const unsigned int last) {
+        std::array<double, 36> c;
+        HarmonicPairIntegral   integral(harmonics, sampling, 6, 4);
+        for (unsigned int p = first; p < last; ++p)
+          {
+            bool yields = false;
+            for (unsigned int j = 0; j < N; ++j)
+              {
+                if (!softening_at(p, p * N + j, strain[p * N + j], c))
+                  continue;
+                if (!yields)
+                  {
+                    integral.clear();
+                    yields = true;
+                  }
+                integral.add_sample(j, c.data());
+              }
+            if (yields)
+              integral.integrals(softening[p]);
+          }
+      });
+    // 2. K_t = diag(K_h) - the softening of the yielding cells, block row h
+    //    by harmonic h's thread.
+    if (!tangent)
+      {
+        std::vector<std::vector<std::vector<types::global_dof_index>>> dofs;
+        for (const SoilCell &cell : cells)
+          dofs.push_back(cell.dof_indices);
+        // The coulomb interfaces' pairs couple the harmonics too.
+        if (interface)
+          for (auto &pair : interface->pair_dofs())
+            dofs.push_back(std::move(pair));
+        tangent = std::make_unique<CoupledTangent>(set, dofs);
+      }
+    tangent->reset_to_elastic();
+    const unsigned int n_dofs = component.size();
+    // The cells with a yielding point, and the Bbar strains of their shape
+    // functions for every harmonic [yielding cell][h][i][q], once per build
+    // (every block row h needs every column harmonic g).
+    std::vector<unsigned int> yielding;
+    for (unsigned int c = 0; c < cells.size(); ++c)
+      for (unsigned int q = 0; q < cells[c].radius.size(); ++q)
+        if (!softening[cells[c].first_point + q].empty())
+          {
+            yielding.push_back(c);
+            break;
+          }
+    using ShapeStrains = std::vector<std::vector<StrainVector>>;
+    std::vector<std::vector<ShapeStrains>> strains(
+      yielding.size(), std::vector<ShapeStrains>(H));
+    set.for_each([&](const unsigned int h) {
+      for (unsigned int y = 0; y < yielding.size(); ++y)
+        {
+          const SoilCell    &cell = cells[yielding[y]];
+          const unsigned int n_q  = cell.radius.size();
+          ShapeStrains       b(n_dofs, std::vector<StrainVector>(n_q));
+          for (unsigned int i = 0; i < n_dofs; ++i)
+            {
+              for (unsigned int q = 0; q < n_q; ++q)
+                b[i][q] =
+                  operators[h].strain_of_component(component[i],
+                                                   cell.shape_value[q][i],
+                                                   cell.shape_grad[q][i],
+                                                   cell.radius[q]);
+              apply_bbar(cell.projection.get(), b[i]);
+            }
+          strains[y][h] = std::move(b);
+        }
+    });
+    // Block row h: K_t,hg -= int Bbar_h^T S_hg Bbar_g.
+    set.for_each([&](const unsigned int h) {
+      FullMatrix<double> local(n_dofs, n_dofs);
+      for (unsigned int y = 0; y < yielding.size(); ++y)
+        {
+          const SoilCell     &cell       = cells[yielding[y]];
+          const unsigned int  n_q        = cell.radius.size();
+          const ShapeStrains &row_strain = strains[y][h];
+          for (unsigned int g = 0; g < H; ++g)
+            {
+              const ShapeStrains &column_strain = strains[y][g];
+              local                             = 0.;
+              for (unsigned int q = 0; q < n_q; ++q)
+                {
+                  const unsigned int p = cell.first_point + q;
+                  if (softening[p].empty())
+                    continue;
+                  const double *s  = &softening[p][h * H + g];
+                  const double  dV = points[p].dV;
+                  for (unsigned int j = 0; j < n_dofs; ++j)
+                    {
+                      StrainVector sb{};
+                      for (unsigned int a = 0; a < 6; ++a)
+                        for (unsigned int e = 0; e < 6; ++e)
+                          sb[a] += s[(a * 6 + e) * HH] * column_strain[j][q][e];
+                      for (unsigned int i = 0; i < n_dofs; ++i)
+                        {
+                          double sum = 0.;
+                          for (unsigned int a = 0; a < 6; ++a)
+                            sum += row_strain[i][q][a] * sb[a];
+                          local(i, j) -= dV * sum;
+                        }
+                    }
+                }
+              tangent->add(
+                h, g, local, cell.dof_indices[h], cell.dof_indices[g]);
+            }
+        }
+    });
+    // 3. The interfaces' part: -int B_h^T (D - D_t) B_g at the samples
+    //    that slip or open.
+    if (interface)
+      interface->add_softening(relative,
+                               committed.interface_plastic,
+                               sampling,
+                               *tangent);
+    tangent->factorize();
+    tangent_pattern.resize(H);
+    for (unsigned int h = 0; h < H; ++h)
+      tangent_pattern[h] = set.problem(h).get_system_rhs();
+    tangent->solve(tangent_pattern);
+  }
+
+  std::vector<Vector<double>>
+  CoupledSoilSolver::tangent_correction(
+    const std::vector<Vector<double>> &residual,
+    const bool                         displacement_control) const
+  {
+    std::vector<Vector<double>> du = residual;
+    tangent->solve(du);
+    double load_change = 0.;
+    if (displacement_control)
+      {
+        const Harmonic wanted = controlled_harmonic(settings.motion);
+        for (unsigned int h = 0; h < set.size(); ++h)
+          if (harmonics[h].n == wanted.n &&
+              harmonics[h].family == wanted.family)
+            {
+              const double by_pattern =
+                controlled_motion(h, tangent_pattern[h]);
+              if (by_pattern != 0.)
+                load_change = -controlled_motion(h, du[h]) / by_pattern;
+            }
+      }
+    std::vector<Vector<double>> change(set.size());
+    set.for_each([&](const unsigned int h) {
+      du[h].add(load_change, tangent_pattern[h]);
+      change[h].reinit(du[h].size());
+      set.problem(h).get_system_matrix().vmult(change[h], du[h]);
+      change[h].add(-load_change, set.problem(h).get_system_rhs());
+      set.problem(h).get_homogeneous_constraints().set_zero(change[h]);
+    });
+    return change;
+  }
+
+  bool
+  CoupledSoilSolver::solve_step(const double    target,
+                                const bool      holding,
+                                StepState      &state,
+                                SoilStepResult &result)
+  {
+    // Holding: the held loads come on at a fixed load factor.
+    const bool displacement_control =
+      !holding &&
+      settings.control == NonlinearInterfaceParameters::Control::displacement;
+    if (holding)
+      state.held_fraction = target;
+    const bool tangent_stiffness = parameters.soil_plasticity.tangent;
+    std::vector<StrainVector> plastic;
+    std::vector<LocalVector>  interface_plastic;
+    FixedPointAcceleration    acceleration(acceleration_of(settings,
+                                                        tangent_stiffness),
+                                        settings.anderson_depth);
+    // Stiffness = tangent: the last update (to go back along it when it
+    // overshot), and the progress of the iteration.
+    std::vector<Vector<double>> last_load(set.size()),
+      last_solution(set.size());
+    double       step_length = 1., previous_norm = 0.;
+    double       smallest_norm = std::numeric_limits<double>::max();
+    unsigned int updates = 0, since_smallest = 0;
+    for (unsigned int iteration = 0; iteration <= settings.maximum_iterations;
+         ++iteration)
+      {
+        if (!holding)
+          state.load_factor = displacement_control ?
+                                controlled_load_factor(state, target) :
+                                target;
+        // 1-2: strains at every (point, theta), the return mapping.
+        const std::vector<StrainVector> strain =
+          strain_samples(state.correction_solution,
+                         state.load_factor,
+                         state.held_fraction);
+        return_map(strain, plastic, result);
+        // 3-4: out-of-balance load and force residual R = G - c; the
+        //    coulomb interfaces add theirs (one c for both sources).
+        std::vector<Vector<double>> residual = load_of(plastic);
+        std::vector<LocalVector>    relative;
+        if (interface)
+          {
+            relative       = relative_samples(state.correction_solution,
+                                        state.load_factor,
+                                        state.held_fraction);
+            result.contact = add_interface_load(relative,
+                                                interface_plastic,
+                                                result.interface_state,
+                                                residual);
+            result.largest_interface_yield_value =
+              interface->largest_yield_value(result.interface_state.traction);
+          }
+        const double load_norm = norm_over_harmonics(residual);
+        for (unsigned int h = 0; h < set.size(); ++h)
+          residual[h] -= state.correction_load[h];
+        const double residual_norm = norm_over_harmonics(residual);
+        const double applied       = applied_load_norm(state);
+        const double scale         = applied > 0. ? applied : load_norm;
+        if (!std::isfinite(residual_norm))
+          return false;
+        if (residual_norm <= settings.tolerance * scale)
+          {
+            count_over_ranks(result);
+            state.plastic           = plastic;
+            state.interface_plastic = interface_plastic;
+            result.iterations       = iteration;
+            result.residual         = scale > 0. ? residual_norm / scale : 0.;
+            return true;
+          }
+        if (tangent_stiffness)
+          {
+            // A Newton update that increased the residual crossed many
+            // changes of plastic state: halve it (backtracking).
+            if (updates > 0 && residual_norm > previous_norm)
+              {
+                // No decrease even at the shortest step: the Newton
+                // direction is wrong (a near-singular tangent at a plateau);
+                // going on from the worse point wanders off (measured:
+                // |R| / |F| up to 1e6 before the stagnation rule stops it),
+                // so cut the step at once.
+                if (step_length <= smallest_step_length)
+                  return false;
+                step_length /= 2.;
+                for (unsigned int h = 0; h < set.size(); ++h)
+                  {
+                    state.correction_load[h].add(-step_length, last_load[h]);
+                    state.correction_solution[h].add(-step_length,
+                                                     last_solution[h]);
+                  }
+                continue;
+              }
+            // Cycling between plastic states: cut the step instead.
+            if (residual_norm < smallest_norm)
+              {
+                smallest_norm  = residual_norm;
+                since_smallest = 0;
+              }
+            else if (++since_smallest > stagnation_limit)
+              return false;
+            previous_norm = residual_norm;
+            step_length   = 1.;
+            // Rebuilt at every update: keeping it for 3-10 updates (modified
+            // Newton) was measured slower (doc/soil-plasticity.md 3b).
+            update_tangent(strain, relative);
+            residual = tangent_correction(residual, displacement_control);
+            ++updates;
+          }
+        std::vector<Vector<double>> correction =
+          acceleration.increment(state.correction_load, residual);
+        std::vector<std::vector<Vector<double>>> increment(set.size());
+        for (unsigned int h = 0; h < set.size(); ++h)
+          {
+            state.correction_load[h] += correction[h];
+            last_load[h] = correction[h];
+            increment[h] = {std::move(correction[h])};
+          }
+        set.solve_increments(increment);
+        for (unsigned int h = 0; h < set.size(); ++h)
+          if (set.owns(h))
+            {
+              state.correction_solution[h] += increment[h][0];
+              last_solution[h] = increment[h][0];
+            }
+      }
+    return false;
+  }
+
+  std::array<double, 6>
+  CoupledSoilSolver::applied_loads(const double load_factor,
+                                   const double held_fraction) const
+  {
+    return applied_foundation_loads(parameters.rigid_foundation,
+                                    load_factor,
+                                    held_fraction);
+  }
+
+  RigidMotion
+  CoupledSoilSolver::motion_of(const StepState &state) const
+  {
+    // Per harmonic [h * 4 + c], on its owner; summed in the harmonics' order.
+    std::vector<double> parts(4 * set.size(), 0.);
+    for (unsigned int h = 0; h < set.size(); ++h)
+      {
+        const RigidFoundation *foundation = set.problem(h).get_foundation();
+        if (!set.owns(h) || foundation == nullptr || harmonics[h].n > 1 ||
+            (harmonics[h].n == 1 && harmonics[h].family != Family::symmetric))
+          continue;
+        const RigidMotion m = foundation->motion(total_displacement(state, h));
+        parts[4 * h]        = m.vertical_displacement;
+        parts[4 * h + 1]    = m.twist;
+        parts[4 * h + 2]    = m.horizontal_displacement;
+        parts[4 * h + 3]    = m.rotation;
+      }
+    const std::vector<double> sum = sum_over_harmonics(parts, 4);
+    RigidMotion               total;
+    total.vertical_displacement   = sum[0];
+    total.twist                   = sum[1];
+    total.horizontal_displacement = sum[2];
+    total.rotation                = sum[3];
+    return total;
+  }
+
+  Vector<double>
+  CoupledSoilSolver::total_displacement(const StepState   &state,
+                                        const unsigned int h) const
+  {
+    Vector<double> u = pattern_solution[h];
+    u.sadd(state.load_factor, 1., state.correction_solution[h]);
+    if (!held_solution.empty())
+      u.add(state.held_fraction, held_solution[h]);
+    return u;
+  }
+
+  Vector<double>
+  CoupledSoilSolver::held_load(const unsigned int h) const
+  {
+    Vector<double> held(set.problem(h).get_dof_handler().n_dofs());
+    if (const RigidFoundation *foundation = set.problem(h).get_foundation())
+      foundation->add_held_loads(held);
+    return held;
+  }
+
+  double
+  CoupledSoilSolver::load_work() const
+  {
+    // Per harmonic on its owner, summed in the harmonics' order.
+    std::vector<double> parts(set.size(), 0.);
+    for (unsigned int h = 0; h < set.size(); ++h)
+      if (set.owns(h))
+        {
+          Vector<double> load = set.problem(h).get_system_rhs();
+          load *= committed.load_factor;
+          if (!held_solution.empty())
+            load.add(committed.held_fraction, held_load(h));
+          parts[h] = load * total_displacement(committed, h);
+        }
+    return sum_over_harmonics(parts, 1)[0];
+  }
+
+  Vector<double>
+  CoupledSoilSolver::solution(const unsigned int i) const
+  {
+    Vector<double> u = total_displacement(committed, i);
+    if (set.n_owning_ranks() > 1)
+      {
+        const int ierr = MPI_Bcast(
+          u.begin(), u.size(), MPI_DOUBLE, set.owner(i), set.get_ranks());
+        AssertThrowMPI(ierr);
+      }
+    return u;
+  }
+
+  void
+  CoupledSoilSolver::run(std::ostream &log)
+  {
+    const bool load_control =
+      settings.control == NonlinearInterfaceParameters::Control::load;
+    log << "plastic soil: " << points.size() << " quadrature points x "
+        << sampling.n_samples() << " theta samples, " << set.size()
+        << " harmonics"
+        << (set.n_owning_ranks() > 1 ?
+              " distributed over " + std::to_string(set.n_owning_ranks()) +
+                " MPI ranks" :
+              std::string())
+        << ", " << (load_control ? "load" : "displacement") << " control, "
+        << settings.load_steps << " steps, tolerance " << settings.tolerance
+        << ", " << iteration_name(settings, parameters.soil_plasticity.tangent)
+        << (cells.front().projection ? ", B-bar" : "") << '\n';
+    if (!held_solution.empty())
+      {
+        log << "held loads first (" << settings.held_load_steps
+            << " load-controlled steps), then held: ";
+        write_held_loads(log);
+        log << '\n';
+        run_stage(true, settings.held_load_steps, log);
+      }
+    run_stage(false, settings.load_steps, log);
+    if (set.n_owning_ranks() > 1)
+      log << "  MPI: " << set.n_rank_sums()
+          << " sums over the ranks (strain amplitudes and theta integrals "
+             "every iteration, the controlled motion under displacement "
+             "control, a few per step), "
+          << set.rank_sum_time()
+          << " s in them on rank 0 (computing or waiting for the others)\n";
+  }
+
+  void
+  CoupledSoilSolver::write_held_loads(std::ostream &log) const
+  {
+    const auto held = applied_loads(0., 1.);
+    log << "V " << held[2] << " kN, H " << held[0] << " kN, M "
+        << moment_about_reference(held, parameters.rigid_foundation)
+        << " kNm, T " << held[5] << " kNm";
+  }
+
+  void
+  CoupledSoilSolver::extrapolate(const StepState &before_last,
+                                 const double     ratio,
+                                 StepState       &state) const
+  {
+    for (unsigned int h = 0; h < set.size(); ++h)
+      {
+        state.correction_load[h].add(ratio, committed.correction_load[h]);
+        state.correction_load[h].add(-ratio, before_last.correction_load[h]);
+        state.correction_solution[h].add(ratio,
+                                         committed.correction_solution[h]);
+        state.correction_solution[h].add(-ratio,
+                                         before_last.correction_solution[h]);
+      }
+  }
+
+  void
+  CoupledSoilSolver::run_stage(const bool         holding,
+                               const unsigned int n_steps,
+                               std::ostream      &log)
+  {
+    const bool load_control =
+      settings.control == NonlinearInterfaceParameters::Control::load;
+    // Displacement control moves from where the held loads left the
+    // controlled motion to Target.
+    const double start =
+      holding || load_control ?
+        0. :
+        controlled_component(motion_of(committed), settings.motion);
+    const double step = 1. / n_steps;
+    double       done = 0., increment = step;
+    // Cuts of the step being solved; converged steps at a cut size since
+    // the last change of size: `needed` of them double it back toward
+    // `step` (a cut at a sharp change of plastic state need not slow the
+    // rest of the path). A doubled size that fails at once doubles `needed`:
+    // on a plateau where only the cut size converges, the failed attempts
+    // then become rarer instead of recurring every other step
+    // (doc/soil-plasticity.md 3b).
+    unsigned int cuts = 0, easy_steps = 0, needed = 2;
+    // The state before the last converged step of this stage and that
+    // step's size: the next step starts from the last correction
+    // extrapolated (secant predictor).
+    StepState before_last;
+    double    last_increment = 0.;
+    bool      just_grown     = false;
+    while (done < 1. - 1e-12)
+      {
+        const double fraction = std::min(1., done + increment);
+        const double target   = holding || load_control ?
+                                  fraction :
+                                  start + fraction * (settings.target - start);
+        StepState    state    = committed;
+        if (last_increment > 0.)
+          extrapolate(before_last, increment / last_increment, state);
+        SoilStepResult result;
+        const auto     clock = std::chrono::steady_clock::now();
+        if (!solve_step(target, holding, state, result))
+          {
+            AssertThrow(++cuts <= settings.maximum_step_cuts,
+                        ExcMessage(unconverged_step_message(entry,
+                                                            steps.size(),
+                                                            settings)));
+            increment /= 2.;
+            easy_steps = 0;
+            if (just_grown)
+              needed *= 2;
+            just_grown = false;
+            log << "  step cut to " << increment << " of the "
+                << (holding ? "held loads" : "loading") << '\n';
+            continue;
+          }
+        before_last    = std::move(committed);
+        last_increment = fraction - done;
+        committed      = state;
+        done           = fraction;
+        cuts           = 0;
+        if (just_grown) // the doubled size converged: back to the default
+          needed = 2;
+        just_grown = false;
+        if (increment < step && ++easy_steps == needed)
+          {
+            increment  = std::min(step, 2. * increment);
+            easy_steps = 0;
+            just_grown = true;
+          }
+        result.load_factor   = state.load_factor;
+        result.held_fraction = state.held_fraction;
+        result.motion        = motion_of(state);
+        result.time          = std::chrono::duration<double>(
+                        std::chrono::steady_clock::now() - clock)
+                        .count();
+        steps.push_back(result);
+        log << "  step " << steps.size()
+            << (holding ? " (held loads): " : ": ");
+        write_foundation_state(log, result);
+        log << "; " << result.iterations << " iterations; plastic samples "
+            << result.n_plastic << " of " << result.n_plastic + result.n_elastic
+            << "; max f " << result.largest_yield_value << " kPa; ";
+        if (interface)
+          log << "interface stick/slip/open " << result.contact[0] << '/'
+              << result.contact[1] << '/' << result.contact[2] << "; ";
+        log << result.time << " s" << std::endl;
+      }
+  }
+
+  void
+  CoupledSoilSolver::write_foundation_state(std::ostream         &log,
+                                            const SoilStepResult &result) const
+  {
+    // The loads the scene applies (as in load-displacement.csv: M about the
+    // reference point), each with the motion it works on.
+    const RigidFoundationParameters &f = parameters.rigid_foundation;
+    const auto loads = applied_loads(result.load_factor, result.held_fraction);
+    const RigidMotion &motion = result.motion;
+    const bool         moment = f.moment != 0. || f.held_moment != 0.;
+    const bool         torque = f.torque != 0. || f.held_torque != 0.;
+    log << "V " << loads[2] << " kN, H " << loads[0] << " kN";
+    if (moment)
+      log << ", M " << moment_about_reference(loads, f) << " kNm";
+    if (torque)
+      log << ", T " << loads[5] << " kNm";
+    log << "; w " << motion.vertical_displacement << " m, u "
+        << motion.horizontal_displacement << " m";
+    if (moment)
+      log << ", rotation " << motion.rotation << " rad";
+    if (torque)
+      log << ", twist " << motion.twist << " rad";
+  }
+
+  void
+  CoupledSoilSolver::write_interface_state_csv(
+    const std::string &filename) const
+  {
+    AssertThrow(interface != nullptr,
+                ExcMessage(entry + ": the scene has no coulomb interface"));
+    std::vector<InterfaceSnapshot> snapshots;
+    for (const SoilStepResult &step : steps)
+      snapshots.push_back(step.interface_state);
+    interface->write_state_csv(filename, snapshots, sampling);
+  }
+
+  void
+  CoupledSoilSolver::write_csv(const std::string &filename) const
+  {
+    write_load_step_csv(filename,
+                        steps,
+                        parameters.rigid_foundation,
+                        "elastic,plastic,max_yield_kPa,time_s,held_fraction,"
+                        "stick,slip,open",
+                        [](std::ostream &out, const SoilStepResult &r) {
+                          out << r.n_elastic << ',' << r.n_plastic << ','
+                              << r.largest_yield_value << ',' << r.time << ','
+                              << r.held_fraction << ',' << r.contact[0] << ','
+                              << r.contact[1] << ',' << r.contact[2];
+                        });
+  }
+} // namespace FourierSSI

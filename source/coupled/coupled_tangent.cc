@@ -1,0 +1,166 @@
+#include <algorithm>
+#include <deal.II/lac/affine_constraints.templates.h>
+#include <deal.II/lac/block_vector.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <fourier_ssi/coupled/coupled_tangent.h>
+
+namespace FourierSSI
+{
+  CoupledTangent::CoupledTangent(
+    const HarmonicSet &set,
+    const std::vector<std::vector<std::vector<types::global_dof_index>>>
+      &cell_dofs)
+    : set(set)
+    , lu("Soil plasticity: the coupled Newton tangent")
+  {
+    const unsigned int          H = set.size();
+    BlockDynamicSparsityPattern dsp(H, H);
+    for (unsigned int h = 0; h < H; ++h)
+      for (unsigned int g = 0; g < H; ++g)
+        dsp.block(h, g).reinit(set.problem(h).get_dof_handler().n_dofs(),
+                               set.problem(g).get_dof_handler().n_dofs());
+    dsp.collect_sizes();
+    for (unsigned int h = 0; h < H; ++h)
+      {
+        // The elastic couplings (the interfaces, the rigid foundation's
+        // constraints and the elastic materials included).
+        const SparseMatrix<double> &elastic =
+          set.problem(h).get_system_matrix();
+        for (unsigned int row = 0; row < elastic.m(); ++row)
+          for (auto entry = elastic.begin(row); entry != elastic.end(row);
+               ++entry)
+            dsp.block(h, h).add(row, entry->column());
+        const auto &rows = set.problem(h).get_homogeneous_constraints();
+        for (const auto &dofs : cell_dofs)
+          for (unsigned int g = 0; g < H; ++g)
+            rows.add_entries_local_to_global(
+              dofs[h],
+              set.problem(g).get_homogeneous_constraints(),
+              dofs[g],
+              dsp.block(h, g),
+              false);
+      }
+    pattern.copy_from(dsp);
+    matrix.reinit(pattern);
+    make_lu_pattern();
+  }
+
+  void
+  CoupledTangent::make_lu_pattern()
+  {
+    const unsigned int H = set.size();
+    offset.assign(H + 1, 0);
+    for (unsigned int h = 0; h < H; ++h)
+      offset[h + 1] = offset[h] + pattern.block(h, h).n_rows();
+    // Each row of the whole matrix: (column, sweep index) over its blocks,
+    // sorted by column (UMFPACK wants sorted indices).
+    std::vector<std::vector<std::pair<long, unsigned int>>> rows(offset[H]);
+    unsigned int                                            sweep = 0;
+    for (unsigned int h = 0; h < H; ++h)
+      for (unsigned int g = 0; g < H; ++g)
+        {
+          const SparsityPattern &block = pattern.block(h, g);
+          for (unsigned int row = 0; row < block.n_rows(); ++row)
+            for (auto entry = block.begin(row); entry != block.end(row);
+                 ++entry)
+              rows[offset[h] + row].emplace_back(offset[g] + entry->column(),
+                                                 sweep++);
+        }
+    std::vector<long> row_start(1, 0), columns;
+    position.resize(sweep);
+    for (auto &row : rows)
+      {
+        std::sort(row.begin(), row.end());
+        for (const auto &[column, index] : row)
+          {
+            position[index] = columns.size();
+            columns.push_back(column);
+          }
+        row_start.push_back(columns.size());
+      }
+    lu.set_pattern(std::move(row_start), std::move(columns));
+  }
+
+  void
+  CoupledTangent::copy_to_lu()
+  {
+    std::vector<double> &values = lu.values();
+    unsigned int         sweep  = 0;
+    for (unsigned int h = 0; h < set.size(); ++h)
+      for (unsigned int g = 0; g < set.size(); ++g)
+        {
+          const SparseMatrix<double> &block = matrix.block(h, g);
+          for (unsigned int row = 0; row < block.m(); ++row)
+            for (auto entry = block.begin(row); entry != block.end(row);
+                 ++entry)
+              values[position[sweep++]] = entry->value();
+        }
+  }
+
+  void
+  CoupledTangent::reset_to_elastic()
+  {
+    matrix = 0.;
+    set.for_each([&](const unsigned int h) {
+      const SparseMatrix<double> &elastic = set.problem(h).get_system_matrix();
+      SparseMatrix<double>       &block   = matrix.block(h, h);
+      for (unsigned int row = 0; row < elastic.m(); ++row)
+        for (auto entry = elastic.begin(row); entry != elastic.end(row);
+             ++entry)
+          block.set(row, entry->column(), entry->value());
+    });
+  }
+
+  void
+  CoupledTangent::add(const unsigned int                          h,
+                      const unsigned int                          g,
+                      const FullMatrix<double>                   &local,
+                      const std::vector<types::global_dof_index> &row_dofs,
+                      const std::vector<types::global_dof_index> &column_dofs)
+  {
+    set.problem(h).get_homogeneous_constraints().distribute_local_to_global(
+      local,
+      row_dofs,
+      set.problem(g).get_homogeneous_constraints(),
+      column_dofs,
+      matrix.block(h, g));
+  }
+
+  void
+  CoupledTangent::factorize()
+  {
+    copy_to_lu();
+    lu.factorize();
+    ++factorizations;
+  }
+
+  void
+  CoupledTangent::vmult(std::vector<Vector<double>>       &y,
+                        const std::vector<Vector<double>> &x) const
+  {
+    BlockVector<double> in(pattern.get_row_indices()),
+      out(pattern.get_row_indices());
+    for (unsigned int h = 0; h < x.size(); ++h)
+      in.block(h) = x[h];
+    matrix.vmult(out, in);
+    y.resize(x.size());
+    for (unsigned int h = 0; h < x.size(); ++h)
+      y[h] = out.block(h);
+  }
+
+  void
+  CoupledTangent::solve(std::vector<Vector<double>> &b_to_x) const
+  {
+    std::vector<double> b(offset.back()), x;
+    for (unsigned int h = 0; h < b_to_x.size(); ++h)
+      std::copy(b_to_x[h].begin(), b_to_x[h].end(), b.begin() + offset[h]);
+    lu.solve(b, x);
+    for (unsigned int h = 0; h < b_to_x.size(); ++h)
+      {
+        std::copy(x.begin() + offset[h],
+                  x.begin() + offset[h + 1],
+                  b_to_x[h].begin());
+        set.problem(h).get_homogeneous_constraints().distribute(b_to_x[h]);
+      }
+  }
+} // namespace FourierSSI

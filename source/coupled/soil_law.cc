@@ -1,0 +1,323 @@
+#include <cmath>
+#include <deal.II/base/symmetric_tensor.h>
+#include <deal.II/base/utilities.h>
+#include <fourier_ssi/input/prm_values.h>
+#include <fourier_ssi/coupled/soil_law.h>
+#include <sstream>
+
+namespace FourierSSI
+{
+  namespace
+  {
+    const std::string entry = "Soil plasticity/Laws";
+
+    using Principal = std::array<double, 3>;
+
+    /** (r, z, theta) tensor of a stress vector (shear stresses, not doubled).
+     */
+    SymmetricTensor<2, 3>
+    to_tensor(const StrainVector &s)
+    {
+      SymmetricTensor<2, 3> t;
+      t[0][0] = s[StrainIndex::rr];
+      t[1][1] = s[StrainIndex::zz];
+      t[2][2] = s[StrainIndex::tt];
+      t[0][1] = s[StrainIndex::rz];
+      t[1][2] = s[StrainIndex::zt];
+      t[0][2] = s[StrainIndex::rt];
+      return t;
+    }
+
+    StrainVector
+    to_vector(const SymmetricTensor<2, 3> &t)
+    {
+      return {{t[0][0], t[1][1], t[2][2], t[0][1], t[1][2], t[0][2]}};
+    }
+
+    /**
+     * One plane of the yield surface in principal space, f = n . s - k, with
+     * the gradient m of its plastic potential.
+     */
+    struct Plane
+    {
+      Principal n, m;
+      double    k;
+    };
+
+    double
+    dot(const Principal &a, const Principal &b)
+    {
+      return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    }
+
+    /** D m with the principal elastic matrix (K - 2G/3) 1 1^T + 2 G I. */
+    Principal
+    elastic_times(const Principal &m, const double G, const double K)
+    {
+      const double volumetric = (K - 2. * G / 3.) * (m[0] + m[1] + m[2]);
+      return {{volumetric + 2. * G * m[0],
+               volumetric + 2. * G * m[1],
+               volumetric + 2. * G * m[2]}};
+    }
+
+    /**
+     * Return onto the planes given (one or two): s = s_tr - sum_a dgamma_a
+     * D m_a with f_b(s) = 0 for every plane b, a linear system
+     * sum_a (n_b . D m_a) dgamma_a = f_b(s_tr). Returns false if a
+     * multiplier is negative (the trial is not in this return's region).
+     */
+    bool
+    return_to_planes(const Principal          &trial,
+                     const std::vector<Plane> &planes,
+                     const double              G,
+                     const double              K,
+                     Principal                &result)
+    {
+      const unsigned int     n_planes = planes.size();
+      std::vector<Principal> Dm(n_planes);
+      double                 A[2][2], f[2], dgamma[2];
+      for (unsigned int a = 0; a < n_planes; ++a)
+        Dm[a] = elastic_times(planes[a].m, G, K);
+      for (unsigned int b = 0; b < n_planes; ++b)
+        {
+          f[b] = dot(planes[b].n, trial) - planes[b].k;
+          for (unsigned int a = 0; a < n_planes; ++a)
+            A[b][a] = dot(planes[b].n, Dm[a]);
+        }
+      if (n_planes == 1)
+        dgamma[0] = f[0] / A[0][0];
+      else
+        {
+          const double det = A[0][0] * A[1][1] - A[0][1] * A[1][0];
+          dgamma[0]        = (A[1][1] * f[0] - A[0][1] * f[1]) / det;
+          dgamma[1]        = (A[0][0] * f[1] - A[1][0] * f[0]) / det;
+        }
+      result = trial;
+      for (unsigned int a = 0; a < n_planes; ++a)
+        {
+          if (dgamma[a] < 0.)
+            return false;
+          for (unsigned int i = 0; i < 3; ++i)
+            result[i] -= dgamma[a] * Dm[a][i];
+        }
+      return true;
+    }
+
+    /**
+     * s1 >= s2 >= s3 up to the round-off of a return from `trial` (the
+     * returned stresses are differences of trial-sized numbers).
+     */
+    bool
+    ordered(const Principal &s, const Principal &trial)
+    {
+      const double slack =
+        1e-12 * (std::abs(trial[0]) + std::abs(trial[1]) + std::abs(trial[2]));
+      return s[0] + slack >= s[1] && s[1] + slack >= s[2];
+    }
+  } // namespace
+
+  double
+  SoilLaw::yield_function(const StrainVector &stress, const double depth) const
+  {
+    // Jacobi: eigenvalues to round-off (the closed-form cubic of
+    // eigenvalues() loses about 1e-9 relative), the same as return_map.
+    const auto eigen =
+      eigenvectors(to_tensor(stress), SymmetricTensorEigenvectorMethod::jacobi);
+    const double s1 = eigen[0].first, s3 = eigen[2].first;
+    if (kind == Kind::tresca)
+      return s1 - s3 - 2. * undrained_strength(depth);
+    return (s1 - s3) + (s1 + s3) * std::sin(friction) -
+           2. * cohesion * std::cos(friction);
+  }
+
+  SoilReturn
+  SoilLaw::return_map(const StrainVector &trial,
+                      const double        G,
+                      const double        K,
+                      const double        depth) const
+  {
+    SoilReturn result;
+    result.stress = trial;
+    if (yield_function(trial, depth) <= 0.)
+      return result;
+
+    // Principal stresses s1 >= s2 >= s3 and directions of the trial.
+    const auto eigen =
+      eigenvectors(to_tensor(trial), SymmetricTensorEigenvectorMethod::jacobi);
+    Principal s = {{eigen[0].first, eigen[1].first, eigen[2].first}};
+
+    // Tresca is Mohr-Coulomb with phi = psi = 0, c = s_u.
+    const bool   tresca = kind == Kind::tresca;
+    const double sf     = tresca ? 0. : std::sin(friction),
+                 sp     = tresca ? 0. : std::sin(dilation);
+    const double k      = tresca ? 2. * undrained_strength(depth) :
+                                   2. * cohesion * std::cos(friction);
+    const Plane  main{{{1. + sf, 0., -(1. - sf)}},
+                     {{1. + sp, 0., -(1. - sp)}},
+                     k};
+    // s1 = s2 (right edge): the plane of (s2, s3); s2 = s3 (left edge): the
+    // plane of (s1, s2).
+    const Plane right{{{0., 1. + sf, -(1. - sf)}},
+                      {{0., 1. + sp, -(1. - sp)}},
+                      k};
+    const Plane left{{{1. + sf, -(1. - sf), 0.}},
+                     {{1. + sp, -(1. - sp), 0.}},
+                     k};
+
+    Principal returned;
+    if (return_to_planes(s, {main}, G, K, returned) && ordered(returned, s))
+      result.state = SoilState::plane;
+    else
+      {
+        // The main-plane return crossed an edge: s2 overtook s1 (right
+        // edge, s1 = s2) or fell below s3 (left edge, s2 = s3); on Tresca's
+        // right edge dgamma_2 > 0 iff s2' > s1' [soil_return_mapping.py 3].
+        const bool   to_right = returned[1] > returned[0];
+        const Plane &second   = to_right ? right : left;
+        if (return_to_planes(s, {main, second}, G, K, returned) &&
+            ordered(returned, s))
+          result.state = SoilState::edge;
+        else
+          {
+            // Only Mohr-Coulomb has an apex: the hydrostatic stress
+            // c cot phi where all planes meet.
+            AssertThrow(!tresca,
+                        ExcMessage("Tresca return mapping: no admissible "
+                                   "edge return (internal error)"));
+            const double apex = cohesion / std::tan(friction);
+            returned          = {{apex, apex, apex}};
+            result.state      = SoilState::apex;
+          }
+      }
+
+    // Back to (r, z, theta) with the trial's principal directions.
+    SymmetricTensor<2, 3> stress;
+    for (unsigned int i = 0; i < 3; ++i)
+      stress += returned[i] *
+                symmetrize(outer_product(eigen[i].second, eigen[i].second));
+    result.stress = to_vector(stress);
+    return result;
+  }
+
+  void
+  SoilPlasticityParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Soil plasticity");
+    prm.declare_entry(
+      "Laws",
+      "",
+      Patterns::Anything(),
+      "Perfectly plastic laws by material id, separated by ';' (a material "
+      "without a law stays linear elastic): 'id: tresca, su=S[, k=K]' with "
+      "the undrained strength s_u = S + K depth [kPa, kPa/m], or "
+      "'id: mohr-coulomb, c=C, phi=PHI[, psi=PSI]' with c' [kPa], phi' and "
+      "the dilation angle psi [degrees, 0 < phi < 90, 0 <= psi <= phi]. "
+      "The loading and the iteration are set in 'Nonlinear interfaces'.");
+    prm.declare_entry(
+      "Stiffness",
+      "tangent",
+      Patterns::Selection("elastic|tangent"),
+      "What the out-of-balance iteration solves with. elastic: the kept "
+      "elastic factorization of every harmonic (initial stiffness, hundreds "
+      "of iterations per step near the limit load); tangent: Newton on all "
+      "harmonics together, their coupling through the plastic points "
+      "included (the tangent of the return mapping, theta-integrated for "
+      "every pair of harmonics, refactorized at every update; "
+      "benchmarks/soil-plasticity). Under mpirun only elastic: the "
+      "harmonics and the soil points are distributed over the ranks "
+      "(doc/soil-plasticity.md 3c).");
+    prm.leave_subsection();
+  }
+
+  void
+  SoilPlasticityParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Soil plasticity");
+    parse_law_list(prm.get("Laws"));
+    tangent = prm.get("Stiffness") == "tangent";
+    prm.leave_subsection();
+  }
+
+  void
+  SoilPlasticityParameters::parse_law_list(const std::string &text)
+  {
+    laws.clear();
+    const auto fail = [&](const std::string &what) {
+      AssertThrow(false,
+                  ExcMessage(entry + ": " + what + " in '" + text + "'"));
+    };
+    for (const std::string &item : Utilities::split_string_list(text, ';'))
+      {
+        const auto colon = item.find(':');
+        if (colon == std::string::npos)
+          fail("entry '" + item + "' lacks 'id:'");
+        const types::material_id id =
+          boundary_id_in_entry(item.substr(0, colon), entry);
+        const std::vector<std::string> words =
+          Utilities::split_string_list(item.substr(colon + 1), ',');
+        const std::string where = "material " + std::to_string(id) + ": ";
+        if (words.empty())
+          fail(where + "no law");
+        SoilLaw law;
+        if (words[0] == "tresca")
+          law.kind = SoilLaw::Kind::tresca;
+        else if (words[0] == "mohr-coulomb")
+          law.kind = SoilLaw::Kind::mohr_coulomb;
+        else
+          fail(where + "unknown law '" + words[0] +
+               "' (expected tresca or mohr-coulomb)");
+        bool has_su = false, has_c = false, has_phi = false;
+        for (unsigned int w = 1; w < words.size(); ++w)
+          {
+            const auto eq = words[w].find('=');
+            if (eq == std::string::npos)
+              fail(where + "'" + words[w] + "' is not key=value");
+            const std::string key = Utilities::trim(words[w].substr(0, eq));
+            const double      value =
+              number_in_entry(words[w].substr(eq + 1), entry);
+            const bool is_tresca = law.kind == SoilLaw::Kind::tresca;
+            if (is_tresca && key == "su")
+              law.su0 = value, has_su = true;
+            else if (is_tresca && key == "k")
+              law.su_gradient = value;
+            else if (!is_tresca && key == "c")
+              law.cohesion = value, has_c = true;
+            else if (!is_tresca && key == "phi")
+              law.friction = value * numbers::PI / 180., has_phi = true;
+            else if (!is_tresca && key == "psi")
+              law.dilation = value * numbers::PI / 180.;
+            else
+              fail(where + "unknown key '" + key + "' (expected " +
+                   (is_tresca ? "su, k" : "c, phi, psi") + ")");
+          }
+        std::ostringstream values;
+        if (law.kind == SoilLaw::Kind::tresca)
+          {
+            values << "su = " << law.su0 << " kPa";
+            if (!has_su || !(law.su0 > 0.))
+              fail(where + (has_su ? values.str() + " must be > 0" :
+                                     std::string("su is missing")));
+            if (!(law.su_gradient >= 0.))
+              fail(where + "k must be >= 0 kPa/m");
+          }
+        else
+          {
+            const double phi = law.friction * 180. / numbers::PI,
+                         psi = law.dilation * 180. / numbers::PI;
+            values << "phi = " << phi << " degrees";
+            if (!has_c || !(law.cohesion >= 0.))
+              fail(where + (has_c ? "c must be >= 0 kPa" : "c is missing"));
+            if (!has_phi || !(phi > 0. && phi < 90.))
+              fail(where +
+                   (has_phi ? values.str() + " must satisfy 0 < phi < 90" :
+                              std::string("phi is missing")) +
+                   " (phi = 0: use tresca)");
+            if (!(psi >= 0. && psi <= phi))
+              fail(where + "psi must satisfy 0 <= psi <= phi");
+          }
+        if (laws.count(id))
+          fail(where + "defined twice");
+        laws[id] = law;
+      }
+  }
+} // namespace FourierSSI

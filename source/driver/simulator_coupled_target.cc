@@ -1,0 +1,369 @@
+// Discretization/Target accuracy for the coupled scenes (plastic soil,
+// coulomb interfaces): the goal value of the load path (the capacity, or
+// the load at the end of the path) on nested members of the scene's own
+// mesh, with its error from the members, the harmonic truncation and the
+// plateau (doc/soil-plasticity.md section 8c). The solver-specific parts
+// come as a CoupledCurveRun (simulator_soil.cc, simulator_nonlinear.cc).
+#include <algorithm>
+#include <cmath>
+#include <deal.II/base/timer.h>
+#include <fourier_ssi/mesh/discretization_design.h>
+#include <fourier_ssi/input/messages.h>
+#include <fourier_ssi/driver/simulator.h>
+#include <fourier_ssi/fourier/theta_sampling.h>
+#include <iomanip>
+#include <limits>
+#include <map>
+#include <sstream>
+
+namespace FourierSSI
+{
+  namespace
+  {
+    /**
+     * The ratio of the goal's changes per doubling of n_max where fewer
+     * than three values cannot show it; the capacity studies measured
+     * 0.27-0.46 (doc/soil-plasticity.md 8b).
+     */
+    constexpr double harmonic_doubling_ratio = 0.5;
+
+    /**
+     * The truncated sets n <= n_max / 4 and n_max / 2 whose goal values,
+     * with the scene's, give the truncation error: those that keep the
+     * loaded harmonics (n <= 1) and differ from the scene's.
+     */
+    std::vector<unsigned int>
+    truncations(const std::vector<Harmonic> &harmonics)
+    {
+      const unsigned int        n_max = highest_harmonic(harmonics);
+      std::vector<unsigned int> result;
+      for (const unsigned int n : {n_max / 4, n_max / 2})
+        if (n >= 1 && n < n_max && (result.empty() || result.back() != n))
+          result.push_back(n);
+      return result;
+    }
+
+    /** "capacity V", "end load H": the goal as the log names it. */
+    std::string
+    label(const std::string &prefix, const std::string &name)
+    {
+      std::string text = prefix + name;
+      std::replace(text.begin(), text.end(), '_', ' ');
+      return text;
+    }
+
+    /** The values of a map in the order of its keys. */
+    std::vector<double>
+    values_of(const std::map<unsigned int, double> &known)
+    {
+      std::vector<double> values;
+      for (const auto &[n_max, value] : known)
+        values.push_back(value);
+      return values;
+    }
+
+    std::string
+    number(const double value)
+    {
+      std::ostringstream out;
+      out << std::setprecision(2) << value;
+      return out.str();
+    }
+  } // namespace
+
+  void
+  Simulator::solve_fewer_harmonics(CoupledCurveRun                &run,
+                                   std::map<unsigned int, double> &known,
+                                   std::ostream                   &log)
+  {
+    const std::vector<Harmonic> all = plan.harmonics;
+    for (const unsigned int n_max : truncations(all))
+      {
+        if (known.count(n_max) > 0)
+          continue; // solved before the last doubling
+        plan.harmonics.clear();
+        for (const Harmonic &h : all)
+          if (h.n <= n_max)
+            plan.harmonics.push_back(h);
+        // Its own log: the study's curves are not the answer's.
+        std::ostringstream study_log;
+        CoupledGoal        goal;
+        try
+          {
+            goal = run.solve(study_log);
+          }
+        catch (const std::exception &e)
+          {
+            // Say which run failed: the answer's harmonics are not these.
+            plan.harmonics = all;
+            AssertThrow(false,
+                        ExcMessage(
+                          one_line_message(e) +
+                          " (in the run with n <= " + std::to_string(n_max) +
+                          " that Discretization/Target accuracy "
+                          "makes for the harmonic truncation)"));
+          }
+        known[n_max]   = goal.value;
+        plan.harmonics = all;
+        run.release();
+        harmonic_set.reset();
+        log << "  harmonics n <= " << n_max << ": " << goal.name << " = "
+            << goal.value << " " << goal.unit << std::endl;
+      }
+  }
+
+  double
+  Simulator::coupled_dofs() const
+  {
+    double dofs = 0.;
+    for (unsigned int h = 0; h < harmonic_set->size(); ++h)
+      dofs += harmonic_set->problem(h).get_dof_handler().n_dofs();
+    return dofs;
+  }
+
+  void
+  Simulator::target_unmet(const double       target,
+                          const std::string &why,
+                          std::ostream      &log)
+  {
+    target_not_reached = "Discretization/Target accuracy " + number(target) +
+                         " not reached: " + why;
+    log << target_not_reached << std::endl;
+  }
+
+  bool
+  Simulator::double_harmonics(CoupledCurveRun &run,
+                              const double     target,
+                              const double     truncation,
+                              std::ostream    &log)
+  {
+    // The DoFs of all harmonics grow with their number (one coupled LU).
+    const double       dofs  = coupled_dofs();
+    const unsigned int n_max = highest_harmonic(plan.harmonics);
+    const double       more  = (2. * n_max + 1.) / (n_max + 1.);
+    if (more * dofs > parameters.adaptivity.maximum_dofs || 2 * n_max > 1024)
+      {
+        std::ostringstream why;
+        why << "the harmonic truncation (n <= " << n_max << ") alone is "
+            << number(truncation) << "; doubling the harmonics (about "
+            << static_cast<long long>(more * dofs)
+            << " DoFs) would exceed Adaptivity/Maximum DoFs = "
+            << parameters.adaptivity.maximum_dofs;
+        target_unmet(target, why.str(), log);
+        return false;
+      }
+    std::vector<Harmonic> doubled;
+    for (unsigned int n = 0; n <= 2 * n_max; ++n)
+      for (const Family family : {Family::symmetric, Family::antisymmetric})
+        if (std::any_of(plan.harmonics.begin(),
+                        plan.harmonics.end(),
+                        [&](const Harmonic &h) { return h.family == family; }))
+          doubled.push_back({n, family});
+    plan.harmonics = doubled;
+    run.release();
+    harmonic_set.reset();
+    log << "target accuracy " << number(target) << ": the harmonic truncation "
+        << number(truncation)
+        << " is more than half of it: harmonics doubled to n <= " << 2 * n_max
+        << std::endl;
+    return true;
+  }
+
+  void
+  Simulator::solve_coupled_to_target(std::ostream &log, CoupledCurveRun &run)
+  {
+    // Members: the scene's mesh and element, 2^k cells per segment
+    // (build_plastic_member); on member 0 the harmonic truncation (n_max /
+    // 4, n_max / 2, n_max); on every member the plateau's error (capacity
+    // runs). The answer is the last member's value.
+    const double target = parameters.discretization.target_accuracy;
+    const bool   growth = parameters.nonlinear_interfaces.maximum_harmonic >
+                        highest_harmonic(plan.harmonics);
+    Timer               run_timer;
+    double              last_member_time = 0.;
+    std::vector<double> mesh_values;
+    // Member 0's goal value for each n_max solved, ascending n: the
+    // truncation sequence (doubling adds to it).
+    std::map<unsigned int, double> known;
+    CoupledGoal                    goal;
+    double                         harmonic_error = 0., mesh_error = 0.;
+    const auto                     relative = [&](const double error) {
+      return error / std::abs(goal.value);
+    };
+    for (int member = 0;; ++member)
+      {
+        if (member > 0)
+          {
+            // Newton's coupled tangent is one LU over all harmonics: their
+            // DoFs together are what Maximum DoFs bounds here.
+            const double     dofs = coupled_dofs();
+            Triangulation<2> next;
+            DiscretizationDesign::build_plastic_member(parameters,
+                                                       member,
+                                                       interface_ids,
+                                                       next);
+            const double more = cell_growth(next);
+            if (more * dofs > parameters.adaptivity.maximum_dofs)
+              {
+                std::ostringstream why;
+                why << "estimated relative error of the "
+                    << label(run.goal_prefix, goal.name) << " "
+                    << (mesh_values.size() >= 2 ?
+                          number(relative(mesh_error + harmonic_error +
+                                          goal.plateau_error)) :
+                          std::string("unknown (one mesh solved)"))
+                    << " with " << static_cast<long long>(dofs)
+                    << " DoFs (all harmonics); the next mesh (about "
+                    << static_cast<long long>(more * dofs)
+                    << ") exceeds Adaptivity/Maximum DoFs = "
+                    << parameters.adaptivity.maximum_dofs;
+                target_unmet(target, why.str(), log);
+                break;
+              }
+            run.release();
+            reconstruction = FieldReconstruction();
+            harmonic_set.reset();
+            outcomes.clear();
+            DiscretizationDesign::build_plastic_member(parameters,
+                                                       member,
+                                                       interface_ids,
+                                                       *triangulation);
+          }
+        Timer member_timer;
+        log << "target accuracy " << target << ": mesh " << member << ", "
+            << triangulation->n_active_cells() << " cells" << std::endl;
+        // The truncation on the coarsest mesh: cheap, and the harmonics'
+        // share of the error changes little with the mesh
+        // (doc/soil-plasticity.md 8b).
+        if (member == 0 && !growth)
+          solve_fewer_harmonics(run, known, log);
+        goal = run.solve(log);
+        mesh_values.push_back(goal.value);
+        last_member_time = member_timer.wall_time();
+        if (!std::isfinite(goal.plateau_error))
+          {
+            target_unmet(target,
+                         "the curve does not bend over by its end (no "
+                         "plateau: raise Nonlinear interfaces/Target)",
+                         log);
+            break;
+          }
+        if (member == 0)
+          {
+            if (!growth)
+              known[highest_harmonic(plan.harmonics)] = goal.value;
+            if (known.size() >= 2)
+              harmonic_error = estimate_sequence_error(values_of(known),
+                                                       harmonic_doubling_ratio)
+                                 .absolute;
+            // The truncation takes more than half the target: double the
+            // harmonics and solve this (the cheapest) mesh again, the
+            // values of fewer harmonics kept.
+            if (known.size() >= 2 && relative(harmonic_error) > 0.5 * target)
+              {
+                if (!double_harmonics(
+                      run, target, relative(harmonic_error), log))
+                  break;
+                mesh_values.clear();
+                --member; // member 0 again (the loop's ++ brings it back)
+              }
+            continue; // two meshes are needed for the mesh error
+          }
+        mesh_error =
+          estimate_sequence_error(mesh_values, one_halving_ratio).absolute;
+        const double total =
+          relative(mesh_error + harmonic_error + goal.plateau_error);
+        log << "target accuracy " << target << ": mesh " << member
+            << ", estimated relative error of the "
+            << label(run.goal_prefix, goal.name) << " " << number(total)
+            << std::endl;
+        if (total <= target)
+          break;
+        // What a finer mesh cannot lower: stop, saying which.
+        if (relative(harmonic_error + goal.plateau_error) > target)
+          {
+            target_unmet(
+              target,
+              "estimated relative error of the " +
+                label(run.goal_prefix, goal.name) + " " + number(total) +
+                ", of which the harmonic truncation (n <= " +
+                std::to_string(highest_harmonic(plan.harmonics)) + ") " +
+                number(relative(harmonic_error)) + " and the plateau " +
+                number(relative(goal.plateau_error)) +
+                " do not fall with the mesh: list more harmonics "
+                "(Discretization/Harmonics) or take the path further "
+                "(Nonlinear interfaces/Target)",
+              log);
+            break;
+          }
+      }
+    estimate_wall_time = run_timer.wall_time() - last_member_time;
+    // Not estimated: NaN; n = 0 alone is axisymmetric, no truncation.
+    const double harmonics = known.size() >= 2 ? harmonic_error :
+                             highest_harmonic(plan.harmonics) == 0 ?
+                                                 0. :
+                                                 std::nan("");
+    report_coupled_error(
+      run, goal, mesh_values.size(), mesh_error, harmonics, growth, log);
+    run.write_files(log);
+  }
+
+  void
+  Simulator::report_coupled_error(CoupledCurveRun   &run,
+                                  const CoupledGoal &goal,
+                                  const unsigned int n_meshes,
+                                  const double       mesh_error,
+                                  const double       harmonic_error,
+                                  const bool         growth,
+                                  std::ostream      &log)
+  {
+    const double target = parameters.discretization.target_accuracy;
+    const double scale  = std::abs(goal.value);
+    const double nan    = std::numeric_limits<double>::quiet_NaN();
+    // A part not estimated counts as zero in the total but is said so.
+    const double harmonics =
+      std::isfinite(harmonic_error) ? harmonic_error : 0.;
+    const double total =
+      n_meshes >= 2 ? (mesh_error + harmonics + goal.plateau_error) / scale :
+                      nan;
+    const bool         reached = target_not_reached.empty() && total <= target;
+    const unsigned int n_max   = highest_harmonic(plan.harmonics);
+    run.add_rows(log);
+    log << "error estimate of the " << label(run.goal_prefix, goal.name)
+        << " (relative; the mesh from " << n_meshes
+        << " nested meshes, geometric tail; the harmonics "
+        << (n_max == 0 ? "none (n = 0 only: an axisymmetric problem)" :
+            std::isfinite(harmonic_error) ?
+                         "from n_max halved on the coarsest mesh" :
+            growth ? "NOT estimated (grown by the interface tractions)" :
+                     "NOT estimated (n_max = 1 cannot be halved)")
+        << (run.plateau ? "; the plateau" : "") << "):\n    " << goal.name
+        << " = " << std::setprecision(7) << goal.value << " " << goal.unit
+        << " \u00b1 " << std::setprecision(2) << total << " (rel): mesh "
+        << (n_meshes >= 2 ? mesh_error / scale : nan) << ", harmonics "
+        << harmonic_error / scale;
+    if (run.plateau)
+      log << ", plateau " << goal.plateau_error / scale;
+    log << std::setprecision(6) << std::endl;
+    const Harmonic     any{0, Family::symmetric};
+    const unsigned int row  = goal.steps;
+    const std::string  name = run.goal_prefix + goal.name;
+    if (run.goal_prefix != "capacity_") // the capacity has its own row
+      results.add(name, any, row, goal.value, goal.unit);
+    results.add(name + "_error", any, row, total, "-");
+    results.add(name + "_error_mesh",
+                any,
+                row,
+                n_meshes >= 2 ? mesh_error / scale : nan,
+                "-");
+    results.add(
+      name + "_error_harmonics", any, row, harmonic_error / scale, "-");
+    if (run.plateau)
+      results.add(
+        name + "_error_plateau", any, row, goal.plateau_error / scale, "-");
+    results.add(name + "_converged", any, row, reached ? 1. : 0., "-");
+    results.add("target_accuracy", any, row, target, "-");
+    results.add("target_accuracy_reached", any, row, reached ? 1. : 0., "-");
+    results.add("time_error_estimate", any, row, estimate_wall_time, "s");
+  }
+} // namespace FourierSSI

@@ -1,0 +1,173 @@
+// The driver's path for scenes with nonlinear (coulomb) interfaces: the
+// harmonics are coupled through theta, so they are solved together by
+// CoupledInterfaceSolver on one HarmonicSet (doc/nonlinear-interfaces.md).
+#include <deal.II/base/multithread_info.h>
+#include <deal.II/base/timer.h>
+#include <fourier_ssi/app/command_line.h>
+#include <fourier_ssi/coupled/coupled_interface_solver.h>
+#include <fourier_ssi/coupled/coupled_iteration.h>
+#include <fourier_ssi/linear_algebra/distributed_linear_system.h>
+#include <fourier_ssi/driver/simulator.h>
+
+namespace FourierSSI
+{
+  namespace
+  {
+    const std::string entry = "Nonlinear interfaces";
+
+    /** What the coupled path does not do yet: one line each. */
+    void
+    check_supported(const AllParameters &parameters, const MPI_Comm comm)
+    {
+      AssertThrow(parameters.discretization.refinement_cycles == 1,
+                  ExcMessage(entry + ": not yet: Discretization/Refinement "
+                                     "cycles > 1 with a coulomb interface"));
+      // Under mpirun the harmonics are distributed over the ranks (each
+      // harmonic's system serial); one harmonic's system over several ranks
+      // is the other kind of distribution.
+      (void)comm;
+      AssertThrow(!parameters.solver.distributed_always,
+                  ExcMessage(entry + ": not yet: Linear solver/Distributed = "
+                                     "always (a harmonic's system over "
+                                     "several ranks) with a coulomb "
+                                     "interface; under mpirun the harmonics "
+                                     "are distributed over the ranks"));
+      AssertThrow(!parameters.rigid_foundation.stiffness_coefficients,
+                  ExcMessage(entry + ": Rigid foundation/Stiffness "
+                                     "coefficients are linear quantities; "
+                                     "set it false with a coulomb interface"));
+    }
+
+  } // namespace
+
+  void
+  Simulator::solve_nonlinear_interfaces(std::ostream &log)
+  {
+    check_supported(parameters, communicator);
+    std::unique_ptr<CoupledInterfaceSolver> solver;
+    CoupledCurveRun                         run;
+    run.goal_prefix = "end_load_";
+    run.solve       = [&](std::ostream &out) {
+      solver.reset();
+      solver = solve_coupled_curve<CoupledInterfaceSolver>(out, false);
+      const auto &steps = solver->get_steps();
+      AssertThrow(!steps.empty(),
+                  ExcMessage("Discretization/Target accuracy: no converged "
+                                   "step"));
+      const NamedLoad load =
+        conjugate_load(solver->applied_loads(steps.back().load_factor),
+                       parameters.rigid_foundation,
+                       parameters.nonlinear_interfaces.motion);
+      return CoupledGoal{load.name,
+                         load.unit,
+                         load.value,
+                         0.,
+                         static_cast<unsigned int>(steps.size())};
+    };
+    run.release     = [&]() { solver.reset(); };
+    run.add_rows    = [&](std::ostream &) { add_interface_rows(*solver); };
+    run.write_files = [&](std::ostream &out) {
+      write_interface_files(*solver, out);
+    };
+    if (parameters.discretization.target_accuracy > 0.)
+      {
+        solve_coupled_to_target(log, run);
+        return;
+      }
+    solver = solve_coupled_curve<CoupledInterfaceSolver>(log, true);
+    run.add_rows(log);
+    run.write_files(log);
+  }
+
+  void
+  Simulator::add_interface_rows(const CoupledInterfaceSolver &solver)
+  {
+    add_load_step_rows(solver, results);
+    keep_last_step(solver);
+  }
+
+  void
+  Simulator::write_interface_files(const CoupledInterfaceSolver &solver,
+                                   std::ostream                 &log)
+  {
+    if (!writes_csv())
+      return;
+    {
+      const std::string directory = parameters.output.directory;
+      const std::string curve     = directory + "/load-displacement.csv";
+      written.push_back(curve);
+      solver.write_csv(curve);
+      log << "load-displacement curve written to " << curve << std::endl;
+      const std::string state = directory + "/interface-state.csv";
+      written.push_back(state);
+      solver.write_interface_state_csv(state);
+      log << "interface state (point x theta x step) written to " << state
+          << std::endl;
+      if (parameters.output.write_3d_vtu)
+        {
+          const std::string vtu = directory + "/interface-state-3d.vtu";
+          written.push_back(vtu);
+          solver.write_interface_state_vtu(vtu);
+          log << "interface state of the last step (3D points) written to "
+              << vtu << std::endl;
+        }
+    }
+    // Lines 3D, the revolved 3D VTU and the results, as a linear run.
+    write_output(log);
+  }
+
+  void
+  Simulator::make_distributed_harmonic_set()
+  {
+    // Every rank owns some harmonics, serial systems (MPI_COMM_SELF), and
+    // shares the cores of its node with the other ranks.
+    // (A serial run does not start MPI: no communicator to ask.)
+    const unsigned int n_ranks =
+      Utilities::MPI::job_supports_mpi() ?
+        Utilities::MPI::n_mpi_processes(communicator) :
+        1;
+    const unsigned int threads =
+      parameters.discretization.concurrent_harmonics > 0 ?
+        parameters.discretization.concurrent_harmonics :
+        std::max(1u, MultithreadInfo::n_cores() / n_ranks);
+    harmonic_set = std::make_unique<HarmonicSet>(parameters,
+                                                 plan.harmonics,
+                                                 *triangulation,
+                                                 plan.loads,
+                                                 MPI_COMM_SELF,
+                                                 threads);
+    harmonic_set->distribute_over(communicator);
+    harmonic_set->setup_and_assemble();
+    harmonic_set->factorize();
+  }
+
+  void
+  Simulator::log_harmonic_distribution(std::ostream &log) const
+  {
+    const unsigned int n_ranks = harmonic_set->n_owning_ranks();
+    if (n_ranks == 1)
+      return;
+    log << "harmonics distributed over " << n_ranks << " MPI ranks:";
+    for (unsigned int r = 0; r < n_ranks; ++r)
+      {
+        log << (r == 0 ? " rank " : "; rank ") << r;
+        for (unsigned int h = 0; h < harmonic_set->size(); ++h)
+          if (harmonic_set->owner(h) == r)
+            log << ' ' << harmonic_set->harmonic(h).name();
+      }
+    log << std::endl;
+  }
+
+  void
+  Simulator::keep_last_step(const CoupledInterfaceSolver &solver)
+  {
+    // The 3D reconstruction sums the harmonics' solutions: the converged
+    // total field of the last step, u_h = lambda u_F,h + K_h^-1 c_h.
+    reconstruction = FieldReconstruction();
+    for (unsigned int h = 0; h < harmonic_set->size(); ++h)
+      {
+        harmonic_set->problem(h).set_solution(solver.solution(h));
+        reconstruction.add(harmonic_set->shared_problem(h));
+      }
+  }
+} // namespace FourierSSI

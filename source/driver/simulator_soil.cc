@@ -1,0 +1,284 @@
+// The driver's path for scenes with plastic soil: the harmonics are coupled
+// through theta at the soil's quadrature points, so they are solved together
+// by CoupledSoilSolver on one HarmonicSet (doc/soil-plasticity.md).
+#include <cmath>
+#include <deal.II/base/timer.h>
+#include <fourier_ssi/estimation/capacity_plateau.h>
+#include <fourier_ssi/coupled/coupled_iteration.h>
+#include <fourier_ssi/coupled/coupled_soil_solver.h>
+#include <fourier_ssi/mesh/discretization_design.h>
+#include <fourier_ssi/driver/simulator.h>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace FourierSSI
+{
+  namespace
+  {
+    const std::string entry = "Soil plasticity";
+
+    /** What the plastic-soil path does not do yet: one line each. */
+    void
+    check_supported(const AllParameters &parameters, const MPI_Comm comm)
+    {
+      // Coulomb interfaces iterate with the soil (one correction load for
+      // both), on the harmonics given: no growth.
+      const NonlinearInterfaceParameters &settings =
+        parameters.nonlinear_interfaces;
+      AssertThrow(!parameters.interfaces.any_nonlinear() ||
+                    settings.maximum_harmonic <=
+                      highest_harmonic(parameters.discretization.harmonics),
+                  ExcMessage("Nonlinear interfaces/Maximum harmonic: not "
+                             "yet with plastic soil (the harmonics do not "
+                             "grow); list them in Discretization/Harmonics"));
+      AssertThrow(parameters.discretization.refinement_cycles == 1,
+                  ExcMessage(entry + ": not yet: Discretization/Refinement "
+                                     "cycles > 1 with plastic soil"));
+      // Under mpirun the harmonics are distributed over the ranks (each
+      // harmonic's system serial; Stiffness = tangent is refused by the
+      // solver); one harmonic's system over several ranks is the other kind
+      // of distribution.
+      (void)comm;
+      AssertThrow(!parameters.solver.distributed_always,
+                  ExcMessage(entry + ": not yet: Linear solver/Distributed = "
+                                     "always (a harmonic's system over "
+                                     "several ranks) with plastic soil; "
+                                     "under mpirun the harmonics are "
+                                     "distributed over the ranks"));
+      AssertThrow(parameters.output.lines.empty() &&
+                    !parameters.output.write_3d_vtu,
+                  ExcMessage(entry + ": not yet: Output/Lines 3D and Write "
+                                     "3d vtu with plastic soil"));
+      AssertThrow(!parameters.rigid_foundation.stiffness_coefficients,
+                  ExcMessage(entry + ": Rigid foundation/Stiffness "
+                                     "coefficients are linear quantities; "
+                                     "set it false with plastic soil"));
+    }
+
+    /** The plastic state of every converged step, after the common rows. */
+    void
+    add_plastic_state_rows(const CoupledSoilSolver &solver,
+                           const AllParameters     &parameters,
+                           ResultsTable            &results)
+    {
+      const Harmonic any{0, Family::symmetric};
+      const auto    &steps = solver.get_steps();
+      for (unsigned int s = 0; s < steps.size(); ++s)
+        {
+          results.add(
+            "step_plastic_samples", any, s + 1, steps[s].n_plastic, "-");
+          results.add("step_largest_yield_value",
+                      any,
+                      s + 1,
+                      steps[s].largest_yield_value,
+                      "kPa");
+          if (!parameters.interfaces.any_nonlinear())
+            continue;
+          const ContactCounts &contact = steps[s].contact;
+          results.add(
+            "step_interface_stick_samples", any, s + 1, contact[0], "-");
+          results.add(
+            "step_interface_slip_samples", any, s + 1, contact[1], "-");
+          results.add(
+            "step_interface_open_samples", any, s + 1, contact[2], "-");
+          results.add("step_interface_largest_yield_value",
+                      any,
+                      s + 1,
+                      steps[s].largest_interface_yield_value,
+                      "kPa");
+        }
+    }
+
+    /**
+     * Displacement control: the capacity as the plateau of the curve, the
+     * load that works on the controlled motion at the last step; how much
+     * it rose over the last tenth of the controlled path and the plateau's
+     * error (the rise to the asymptote of the last three steps,
+     * capacity_plateau.h). A plateau rises little; the mesh and harmonic
+     * errors need other meshes (Target accuracy, doc/soil-plasticity.md 8c).
+     */
+    struct Capacity
+    {
+      NamedLoad load;
+      double    rise = 0., plateau_error = 0.;
+    };
+
+    /** The capacity of a displacement-controlled curve of >= 2 steps. */
+    Capacity
+    capacity_of(const CoupledSoilSolver &solver,
+                const AllParameters     &parameters)
+    {
+      const NonlinearInterfaceParameters &settings =
+        parameters.nonlinear_interfaces;
+      const auto &steps   = solver.get_steps();
+      const auto  load_at = [&](const SoilStepResult &s) {
+        return conjugate_load(solver.applied_loads(s.load_factor,
+                                                   s.held_fraction),
+                              parameters.rigid_foundation,
+                              settings.motion);
+      };
+      const auto motion_at = [&](const SoilStepResult &s) {
+        return controlled_component(s.motion, settings.motion);
+      };
+      // The controlled path starts where the held loads left it.
+      double start = 0.;
+      for (const SoilStepResult &s : steps)
+        if (s.load_factor == 0.)
+          start = motion_at(s);
+      const double end     = motion_at(steps.back());
+      Capacity     result  = {load_at(steps.back()), 0., 0.};
+      double       earlier = 0.;
+      for (const SoilStepResult &s : steps)
+        if (std::abs(motion_at(s) - start) <=
+            0.9 * std::abs(end - start) * (1. + 1e-12))
+          earlier = load_at(s).value;
+      result.rise = result.load.value != 0. ?
+                      (result.load.value - earlier) / result.load.value :
+                      0.;
+      std::vector<double> motion, load;
+      for (const SoilStepResult &s : steps)
+        if (s.load_factor != 0.)
+          {
+            motion.push_back(motion_at(s) - start);
+            load.push_back(load_at(s).value);
+          }
+      result.plateau_error = plateau_error(motion, load);
+      return result;
+    }
+
+    bool
+    has_capacity(const CoupledSoilSolver &solver,
+                 const AllParameters     &parameters)
+    {
+      return parameters.nonlinear_interfaces.control ==
+               NonlinearInterfaceParameters::Control::displacement &&
+             solver.get_steps().size() >= 2;
+    }
+
+    /** The capacity's rows and log line. */
+    void
+    report_capacity(const CoupledSoilSolver &solver,
+                    const AllParameters     &parameters,
+                    std::ostream            &log,
+                    ResultsTable            &results)
+    {
+      if (!has_capacity(solver, parameters))
+        return;
+      const Capacity     c     = capacity_of(solver, parameters);
+      const NamedLoad    last  = c.load;
+      const double       rise  = c.rise;
+      const double       error = c.plateau_error;
+      const unsigned int step  = solver.get_steps().size();
+      const Harmonic     any{0, Family::symmetric};
+      results.add("capacity_" + last.name, any, step, last.value, last.unit);
+      results.add(
+        "capacity_" + last.name + "_plateau_rise", any, step, rise, "-");
+      results.add("capacity_" + last.name + "_plateau_error",
+                  any,
+                  step,
+                  error,
+                  last.unit);
+      log << "capacity (the load at the end of the controlled path): "
+          << last.name << " = " << last.value << " " << last.unit
+          << "; it rose " << 100. * rise << " % over the last tenth of the path"
+          << (std::abs(rise) < 0.01 ? " (a plateau)" :
+                                      " (not a plateau yet: go further)")
+          << (std::isfinite(error) ?
+                "; the asymptote of the last three steps lies " +
+                  (std::ostringstream() << error).str() + " " + last.unit +
+                  " beyond it (the plateau's error; the mesh and harmonic "
+                  "errors: Discretization/Target accuracy, or "
+                  "tools/capacity.py)" :
+                std::string("; the plateau's error is unbounded (the last "
+                            "three steps do not bend over, or there are "
+                            "fewer than three)"))
+          << std::endl;
+    }
+
+  } // namespace
+
+  void
+  Simulator::solve_plastic_soil(std::ostream &log)
+  {
+    check_supported(parameters, communicator);
+    if (parameters.discretization.target_accuracy > 0.)
+      {
+        solve_plastic_soil_to_target(log);
+        return;
+      }
+    const std::unique_ptr<CoupledSoilSolver> solver =
+      solve_coupled_curve<CoupledSoilSolver>(log, true);
+    add_plastic_rows(*solver, log);
+    write_plastic_files(*solver, log);
+  }
+
+  void
+  Simulator::add_plastic_rows(const CoupledSoilSolver &solver,
+                              std::ostream            &log)
+  {
+    add_load_step_rows(solver, results);
+    add_plastic_state_rows(solver, parameters, results);
+    report_capacity(solver, parameters, log, results);
+  }
+
+  void
+  Simulator::write_plastic_files(const CoupledSoilSolver &solver,
+                                 std::ostream            &log)
+  {
+    if (!writes_csv())
+      return;
+    const std::string directory = parameters.output.directory;
+    const std::string curve     = directory + "/load-displacement.csv";
+    written.push_back(curve);
+    solver.write_csv(curve);
+    log << "load-displacement curve written to " << curve << std::endl;
+    if (solver.has_coulomb_interfaces())
+      {
+        const std::string state = directory + "/interface-state.csv";
+        written.push_back(state);
+        solver.write_interface_state_csv(state);
+        log << "interface state around the circumference written to " << state
+            << std::endl;
+      }
+    const std::string name = directory + "/" + parameters.output.results_file;
+    written.push_back(name);
+    results.write_csv(name);
+    log << "results written to " << name << std::endl;
+  }
+
+  void
+  Simulator::solve_plastic_soil_to_target(std::ostream &log)
+  {
+    // Displacement control aims at the capacity; load control at the work
+    // of the loads at the end of the path (the scene's loads are reached:
+    // a load step that does not converge stops the run).
+    const bool load_control = parameters.nonlinear_interfaces.control ==
+                              NonlinearInterfaceParameters::Control::load;
+    std::unique_ptr<CoupledSoilSolver> solver;
+    CoupledCurveRun                    run;
+    run.goal_prefix = load_control ? "end_" : "capacity_";
+    run.plateau     = !load_control;
+    run.solve       = [&](std::ostream &out) {
+      solver.reset();
+      solver           = solve_coupled_curve<CoupledSoilSolver>(out, false);
+      const auto steps = static_cast<unsigned int>(solver->get_steps().size());
+      if (load_control)
+        return CoupledGoal{"work", "kJ", solver->load_work(), 0., steps};
+      AssertThrow(has_capacity(*solver, parameters),
+                  ExcMessage("Discretization/Target accuracy: the curve "
+                                   "has fewer than two steps (Nonlinear "
+                                   "interfaces/Load steps)"));
+      const Capacity c = capacity_of(*solver, parameters);
+      return CoupledGoal{
+        c.load.name, c.load.unit, c.load.value, c.plateau_error, steps};
+    };
+    run.release  = [&]() { solver.reset(); };
+    run.add_rows = [&](std::ostream &out) { add_plastic_rows(*solver, out); };
+    run.write_files = [&](std::ostream &out) {
+      write_plastic_files(*solver, out);
+    };
+    solve_coupled_to_target(log, run);
+  }
+
+} // namespace FourierSSI

@@ -1,0 +1,493 @@
+#include <array>
+#include <cmath>
+#include <deal.II/fe/fe.h>
+#include <deal.II/fe/mapping_q1.h>
+#include <fourier_ssi/harmonic/rigid_foundation.h>
+#include <map>
+
+namespace FourierSSI
+{
+  void
+  RigidFoundationParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Rigid foundation");
+    prm.declare_entry("Enabled",
+                      "false",
+                      Patterns::Bool(),
+                      "Tie DoFs to an exact rigid-body motion.");
+    prm.declare_entry("Tie",
+                      "material",
+                      Patterns::Selection("material|boundary"),
+                      "material: all DoFs of cells with material id 'Id' (a "
+                      "rigid footing or pile body); boundary: the DoFs on "
+                      "boundary id 'Id' (a rigid plate in contact).");
+    prm.declare_entry("Id", "1", Patterns::Integer(0, 254), "See 'Tie'.");
+    prm.declare_entry("Tied components",
+                      "all",
+                      Patterns::Selection("all|normal"),
+                      "all: u, v, w follow the rigid motion; normal: only "
+                      "the axial component v (frictionless horizontal "
+                      "contact).");
+    prm.declare_entry("Reference elevation",
+                      "0",
+                      Patterns::Double(),
+                      "z [m] of the point on the axis about which M and "
+                      "Theta are taken (default: ground surface z = 0).");
+    prm.declare_entry("Horizontal force",
+                      "0",
+                      Patterns::Double(),
+                      "H_x [kN] along x (harmonic 1, symmetric).");
+    prm.declare_entry("Horizontal force y",
+                      "0",
+                      Patterns::Double(),
+                      "H_y [kN] along y (harmonic 1, antisymmetric).");
+    prm.declare_entry("Moment x",
+                      "0",
+                      Patterns::Double(),
+                      "M_x [kN.m] about +x through the reference point "
+                      "(harmonic 1, antisymmetric).");
+    prm.declare_entry("Moment",
+                      "0",
+                      Patterns::Double(),
+                      "M_y [kN.m] about +y through the reference point "
+                      "(harmonic 1, symmetric).");
+    prm.declare_entry("Vertical force",
+                      "0",
+                      Patterns::Double(),
+                      "V [kN] along +z (harmonic 0, symmetric).");
+    prm.declare_entry("Torque",
+                      "0",
+                      Patterns::Double(),
+                      "T [kN.m] about +z (harmonic 0, antisymmetric).");
+    prm.declare_entry("Held vertical force",
+                      "0",
+                      Patterns::Double(),
+                      "Plastic soil: V [kN] applied first (Nonlinear "
+                      "interfaces/Held load steps) and then held while the "
+                      "loads above are scaled by the load or displacement "
+                      "control: a combined loading path (a fixed V, then H "
+                      "or M).");
+    prm.declare_entry("Held horizontal force",
+                      "0",
+                      Patterns::Double(),
+                      "Plastic soil: held H_x [kN] (see Held vertical force).");
+    prm.declare_entry("Held moment",
+                      "0",
+                      Patterns::Double(),
+                      "Plastic soil: held M_y [kN.m] about the reference "
+                      "point (see Held vertical force).");
+    prm.declare_entry("Held torque",
+                      "0",
+                      Patterns::Double(),
+                      "Plastic soil: held T [kN.m] (see Held vertical force).");
+    prm.declare_entry("Stiffness coefficients",
+                      "false",
+                      Patterns::Bool(),
+                      "For n = 1: also solve unit H and unit M and report "
+                      "I_H, I_M, I_MH and K_H, K_M, K_MH (thesis eqs 4.2-4.5), "
+                      "normalised with the two entries below.");
+    prm.declare_entry("Reference shear modulus",
+                      "1",
+                      Patterns::Double(0.),
+                      "G [kPa] of the normalisation: G at depth e for an "
+                      "embedded footing (thesis eq. 4.2), at depth L for a "
+                      "pile (eq. 6.1).");
+    prm.declare_entry("Reference length",
+                      "1",
+                      Patterns::Double(0.),
+                      "Length [m] of the normalisation: footing radius a, pile "
+                      "radius r.");
+    prm.declare_entry("Reference Poisson ratio",
+                      "-1",
+                      Patterns::Double(-1., 0.5),
+                      "nu of the soil (< 0: not given). When given, the log "
+                      "also prints the compliances with E = 2 G (1 + nu) "
+                      "(e.g. theta E a^3 / M, thesis Table 4.1) and, next to "
+                      "each computed stiffness, the closed form of a rigid "
+                      "disc on the surface of an elastic half-space with G "
+                      "and a above (vertical 4 G a / (1 - nu), rocking "
+                      "8 G a^3 / (3 (1 - nu)): Poulos & Davis 1974, thesis "
+                      "eq. 4.1; horizontal 32 (1 - nu) G a / (7 - 8 nu), "
+                      "torsion 16 G a^3 / 3: Gazetas 1991).");
+    prm.leave_subsection();
+  }
+
+  void
+  RigidFoundationParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Rigid foundation");
+    enabled               = prm.get_bool("Enabled");
+    tie                   = prm.get("Tie");
+    id                    = prm.get_integer("Id");
+    normal_only           = prm.get("Tied components") == "normal";
+    reference_elevation   = prm.get_double("Reference elevation");
+    horizontal_force      = prm.get_double("Horizontal force");
+    moment                = prm.get_double("Moment");
+    horizontal_force_y    = prm.get_double("Horizontal force y");
+    moment_x              = prm.get_double("Moment x");
+    vertical_force        = prm.get_double("Vertical force");
+    torque                = prm.get_double("Torque");
+    held_horizontal_force = prm.get_double("Held horizontal force");
+    held_moment           = prm.get_double("Held moment");
+    held_vertical_force   = prm.get_double("Held vertical force");
+    held_torque           = prm.get_double("Held torque");
+    AssertThrow(!any_held() || enabled,
+                ExcMessage("Rigid foundation/Held ...: held loads act on the "
+                           "rigid foundation; set Enabled = true"));
+    AssertThrow(!(normal_only && held_horizontal_force != 0.),
+                ExcMessage("Rigid foundation/Held horizontal force: 'Tied "
+                           "components = normal' has no horizontal stiffness"));
+    AssertThrow(!(normal_only && enabled &&
+                  (horizontal_force != 0. || horizontal_force_y != 0.)),
+                ExcMessage("Rigid foundation: 'Tied components = normal' is a "
+                           "frictionless contact with no horizontal stiffness; "
+                           "a Horizontal force makes the system singular"));
+    stiffness_coefficients  = prm.get_bool("Stiffness coefficients");
+    reference_shear_modulus = prm.get_double("Reference shear modulus");
+    reference_length        = prm.get_double("Reference length");
+    reference_poisson_ratio = prm.get_double("Reference Poisson ratio");
+    AssertThrow(reference_shear_modulus > 0. && reference_length > 0.,
+                ExcMessage("Rigid foundation: 'Reference shear modulus' and "
+                           "'Reference length' must be positive"));
+    prm.leave_subsection();
+  }
+
+  RigidFoundation::RigidFoundation(const RigidFoundationParameters &parameters,
+                                   const Harmonic                  &harmonic)
+    : parameters(parameters)
+    , harmonic(harmonic)
+  {}
+
+  void
+  RigidFoundation::add_constraints(const DoFHandler<2>       &dof_handler,
+                                   AffineConstraints<double> &constraints)
+  {
+    const FiniteElement<2> &fe = dof_handler.get_fe();
+    const MappingQ1<2>      mapping;
+    const auto             &unit_points = fe.get_unit_support_points();
+    const auto             &face_points = fe.get_unit_face_support_points();
+
+    // Tied nodes: position -> DoF of each component.
+    std::map<std::pair<double, double>, std::array<types::global_dof_index, 3>>
+                                         nodes;
+    std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
+    const auto                           record = [&](const Point<2>               &x,
+                            const unsigned int            component,
+                            const types::global_dof_index dof) {
+      auto &entry = nodes
+                      .emplace(std::make_pair(x[0], x[1]),
+                               std::array<types::global_dof_index, 3>{
+                                 {numbers::invalid_dof_index,
+                                  numbers::invalid_dof_index,
+                                  numbers::invalid_dof_index}})
+                      .first->second;
+      entry[component] = dof;
+    };
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      {
+        if (parameters.tie == "material")
+          {
+            if (cell->material_id() != parameters.id)
+              continue;
+            cell->get_dof_indices(cell_dofs);
+            for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+              record(mapping.transform_unit_to_real_cell(cell, unit_points[i]),
+                     fe.system_to_component_index(i).first,
+                     cell_dofs[i]);
+          }
+        else
+          for (const unsigned int f : cell->face_indices())
+            {
+              if (!cell->face(f)->at_boundary() ||
+                  cell->face(f)->boundary_id() != parameters.id)
+                continue;
+              cell->face(f)->get_dof_indices(face_dofs);
+              for (unsigned int i = 0; i < fe.n_dofs_per_face(); ++i)
+                {
+                  // Face support points mapped through the straight face.
+                  const Point<2> a = cell->face(f)->vertex(0),
+                                 b = cell->face(f)->vertex(1);
+                  const Point<2> x = a + face_points[i][0] * (b - a);
+                  record(x,
+                         fe.face_system_to_component_index(i).first,
+                         face_dofs[i]);
+                }
+            }
+      }
+    AssertThrow(!nodes.empty(),
+                ExcMessage("Rigid foundation: no DoFs found on " +
+                           parameters.tie + " id " +
+                           std::to_string(parameters.id)));
+
+    // Master node: the tied node farthest from the axis whose DoFs are free
+    // (r_A > 0 is needed to read the rotation from V_A = -Theta r_A).
+    double best_r = 0.;
+    for (const auto &[x, dofs] : nodes)
+      if (x.first > best_r && !constraints.is_constrained(dofs[0]) &&
+          !constraints.is_constrained(dofs[1]) &&
+          !constraints.is_constrained(dofs[2]))
+        {
+          best_r          = x.first;
+          master_position = Point<2>(x.first, x.second);
+          master_U        = dofs[0];
+          master_V        = dofs[1];
+          master_W        = dofs[2];
+        }
+    AssertThrow(best_r > 0.,
+                ExcMessage("Rigid foundation: no free tied node off the axis"));
+
+    // The components that follow the rigid motion: V always, U and W unless
+    // only the normal component is tied; for n = 0 not the component that
+    // carries no stiffness (W symmetric, U and V antisymmetric), which
+    // axis_constraints.h sets to zero.
+    const bool tie_uw = !parameters.normal_only;
+    const bool n0_symmetric =
+      harmonic.n == 0 && harmonic.family == Family::symmetric;
+    const bool n0_antisymmetric =
+      harmonic.n == 0 && harmonic.family == Family::antisymmetric;
+    const std::array<bool, 3> follows = {{tie_uw && !n0_antisymmetric,
+                                          !n0_antisymmetric,
+                                          tie_uw && !n0_symmetric}};
+    const std::array<types::global_dof_index, 3> masters = {
+      {master_U, master_V, master_W}};
+    // Column k: the rigid motion of a unit amplitude of master DoF k. The
+    // weights of a tied DoF are its displacement under these motions; a
+    // master DoF that moves the body is an unknown, not tied.
+    const std::array<MasterValues, 3> unit_master = {
+      {{{1., 0., 0.}}, {{0., 1., 0.}}, {{0., 0., 1.}}}};
+    std::array<bool, 3> moves_body;
+    for (unsigned int k = 0; k < 3; ++k)
+      {
+        const auto d  = displacement_at(master_position, unit_master[k]);
+        moves_body[k] = d[0] != 0. || d[1] != 0. || d[2] != 0.;
+      }
+    const auto tie =
+      [&](const types::global_dof_index dof,
+          const std::vector<std::pair<types::global_dof_index, double>>
+            &entries) {
+        if (dof == numbers::invalid_dof_index ||
+            constraints.is_constrained(dof))
+          return;
+        constraints.add_line(dof);
+        for (const auto &[master, weight] : entries)
+          if (weight != 0.)
+            constraints.add_entry(dof, master, weight);
+        ++n_tied;
+      };
+
+    for (const auto &[x, dofs] : nodes)
+      {
+        const Point<2> position(x.first, x.second);
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            if (!follows[c])
+              continue;
+            bool is_unknown = false;
+            for (unsigned int k = 0; k < 3; ++k)
+              is_unknown |= moves_body[k] && dofs[c] == masters[k];
+            if (is_unknown)
+              continue;
+            std::vector<std::pair<types::global_dof_index, double>> entries;
+            for (unsigned int k = 0; k < 3; ++k)
+              entries.emplace_back(masters[k],
+                                   displacement_at(position,
+                                                   unit_master[k])[c]);
+            tie(dofs[c], entries);
+          }
+      }
+    // Master DoFs that a harmonic does not move are fixed too.
+    if (harmonic.n >= 2)
+      {
+        tie(master_U, {});
+        tie(master_V, {});
+        tie(master_W, {});
+      }
+    else if (harmonic.n == 0 && harmonic.family == Family::antisymmetric)
+      {
+        if (tie_uw)
+          {
+            tie(master_U, {});
+            tie(master_V, {});
+          }
+      }
+    else if (harmonic.n == 0 && tie_uw)
+      tie(master_U, {});
+  }
+
+  std::array<double, 3>
+  RigidFoundation::displacement_at(const Point<2>     &x,
+                                   const MasterValues &master) const
+  {
+    // The rigid motions of the header, written with the master node's
+    // amplitudes as unknowns: U_h = U_A + V_A (z_A - z_ref) / r_A and
+    // Theta = -V_A / r_A (n = 1), W_v = V_A (n = 0 symmetric),
+    // Phi = W_A / r_A (n = 0 antisymmetric).
+    const double r = x[0], z = x[1];
+    const double r_A = master_position[0], z_A = master_position[1];
+    const auto &[U_A, V_A, W_A] = master;
+    std::array<double, 3> d     = {{0., 0., 0.}};
+    if (harmonic.n == 1)
+      {
+        d[0] = U_A + V_A * (z_A - z) / r_A;
+        d[1] = V_A * r / r_A;
+        d[2] = -family_sign(harmonic.family) * d[0];
+      }
+    else if (harmonic.n == 0 && harmonic.family == Family::symmetric)
+      d[1] = V_A;
+    else if (harmonic.n == 0)
+      d[2] = W_A * r / r_A;
+    return d;
+  }
+
+  RigidMotion
+  RigidFoundation::motion_of(const MasterValues &master) const
+  {
+    // Read at r = 1 on the reference elevation, where U = U_h, V = -Theta
+    // (n = 1), V = W_v and W = Phi (n = 0).
+    const auto d =
+      displacement_at(Point<2>(1., parameters.reference_elevation), master);
+    RigidMotion m;
+    if (harmonic.n == 1)
+      {
+        m.horizontal_displacement = d[0];
+        m.rotation                = -d[1];
+      }
+    else if (harmonic.n == 0 && harmonic.family == Family::symmetric)
+      m.vertical_displacement = d[1];
+    else if (harmonic.n == 0)
+      m.twist = d[2];
+    return m;
+  }
+
+  RigidFoundation::MasterValues
+  RigidFoundation::master_forces(const double horizontal_force,
+                                 const double moment,
+                                 const double vertical_force,
+                                 const double torque) const
+  {
+    // Virtual work: the force on master DoF k is the work of the resultants
+    // on the rigid motion of a unit amplitude of that DoF.
+    MasterValues forces = {{0., 0., 0.}};
+    for (unsigned int k = 0; k < 3; ++k)
+      {
+        MasterValues unit   = {{0., 0., 0.}};
+        unit[k]             = 1.;
+        const RigidMotion m = motion_of(unit);
+        forces[k]           = horizontal_force * m.horizontal_displacement +
+                    moment * m.rotation +
+                    vertical_force * m.vertical_displacement + torque * m.twist;
+      }
+    return forces;
+  }
+
+  void
+  RigidFoundation::add_held_loads(Vector<double> &rhs) const
+  {
+    // Held H and M are along x and about y: the symmetric family of n = 1.
+    const bool symmetric = harmonic.family == Family::symmetric;
+    add_master_forces(rhs,
+                      master_forces(symmetric ?
+                                      parameters.held_horizontal_force :
+                                      0.,
+                                    symmetric ? parameters.held_moment : 0.,
+                                    parameters.held_vertical_force,
+                                    parameters.held_torque));
+  }
+
+  void
+  RigidFoundation::add_master_forces(Vector<double>     &rhs,
+                                     const MasterValues &forces) const
+  {
+    const std::array<types::global_dof_index, 3> masters = {
+      {master_U, master_V, master_W}};
+    for (unsigned int k = 0; k < 3; ++k)
+      if (forces[k] != 0.)
+        rhs(masters[k]) += forces[k];
+  }
+
+  void
+  RigidFoundation::add_loads(Vector<double> &rhs) const
+  {
+    // The antisymmetric family's rigid motion is the symmetric one turned by
+    // 90 degrees: translation along y and rotation about -x, so its (H, M)
+    // are (H_y, -M_x). n = 0 has one family per load, n >= 2 none.
+    const bool   symmetric = harmonic.family == Family::symmetric;
+    const double H =
+      symmetric ? parameters.horizontal_force : parameters.horizontal_force_y;
+    const double M = symmetric ? parameters.moment : -parameters.moment_x;
+    add_master_forces(
+      rhs, master_forces(H, M, parameters.vertical_force, parameters.torque));
+  }
+
+  RigidMotion
+  RigidFoundation::motion(const Vector<double> &solution) const
+  {
+    RigidMotion m =
+      motion_of({{solution(master_U), solution(master_V), solution(master_W)}});
+    // With only the normal component tied the translation is not a
+    // rigid-body unknown; it stays 0 rather than report a soil value.
+    if (parameters.normal_only)
+      m.horizontal_displacement = 0.;
+    return m;
+  }
+
+  Vector<double>
+  RigidFoundation::unit_load(const unsigned int load_case,
+                             const unsigned int n_dofs) const
+  {
+    AssertThrow(harmonic.n == 1,
+                ExcMessage("Rigid foundation: unit H/M loads need n = 1"));
+    Vector<double>     rhs(n_dofs);
+    const MasterValues f =
+      master_forces(load_case == 0 ? 1. : 0., load_case == 1 ? 1. : 0., 0., 0.);
+    rhs(master_U) += f[0];
+    rhs(master_V) += f[1];
+    rhs(master_W) += f[2];
+    return rhs;
+  }
+
+  FoundationCoefficients
+  RigidFoundation::coefficients(const RigidMotion &under_unit_H,
+                                const RigidMotion &under_unit_M) const
+  {
+    const double           G = parameters.reference_shear_modulus;
+    const double           a = parameters.reference_length;
+    FoundationCoefficients c;
+    // Thesis eq. 4.4 with H = 1 (M = 0) and M = 1 (H = 0).
+    c.I_H         = under_unit_H.horizontal_displacement * G * a;
+    c.I_MH_from_H = under_unit_H.rotation * G * a * a;
+    c.I_MH_from_M = under_unit_M.horizontal_displacement * G * a * a;
+    c.I_M         = under_unit_M.rotation * G * a * a * a;
+    // K = I^-1 (eq. 4.5; the printed K_MH lacks the minus sign of the
+    // inverse, see doc/scenes.md).
+    const double I_MH = 0.5 * (c.I_MH_from_H + c.I_MH_from_M);
+    const double det  = c.I_H * c.I_M - I_MH * I_MH;
+    c.K_H             = c.I_M / det;
+    c.K_M             = c.I_H / det;
+    c.K_MH            = -I_MH / det;
+    return c;
+  }
+
+  void
+  RigidFoundation::check_supported(
+    const Vector<double>            &solution,
+    const AffineConstraints<double> &constraints) const
+  {
+    double foundation = 0., free = 0.;
+    for (const auto dof : {master_U, master_V, master_W})
+      if (dof != numbers::invalid_dof_index && !constraints.is_constrained(dof))
+        foundation = std::max(foundation, std::abs(solution(dof)));
+    for (unsigned int i = 0; i < solution.size(); ++i)
+      if (!constraints.is_constrained(i) && i != master_U && i != master_V &&
+          i != master_W)
+        free = std::max(free, std::abs(solution(i)));
+    AssertThrow(std::isfinite(foundation) && foundation <= 1e6 * free,
+                ExcMessage(
+                  "Rigid foundation: singular system, nothing resists "
+                  "the foundation's motion in harmonic " +
+                  harmonic.name() +
+                  " (e.g. a smooth interface or a normal-only contact "
+                  "under a horizontal load: no horizontal stiffness)"));
+  }
+} // namespace FourierSSI

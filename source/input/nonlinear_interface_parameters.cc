@@ -1,0 +1,126 @@
+#include <fourier_ssi/input/nonlinear_interface_parameters.h>
+
+namespace FourierSSI
+{
+  void
+  NonlinearInterfaceParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Nonlinear interfaces");
+    prm.declare_entry("Theta samples",
+                      "0",
+                      Patterns::Integer(0),
+                      "Angles N at which the interface law is evaluated. 0: "
+                      "4 (n_max + 1). Must exceed 2 n_max (n_max the highest "
+                      "harmonic), else a band-limited field aliases.");
+    prm.declare_entry("Load steps",
+                      "10",
+                      Patterns::Integer(1),
+                      "Equal steps from 0 to the full loads (load control) "
+                      "or to the target motion (displacement control).");
+    prm.declare_entry("Held load steps",
+                      "4",
+                      Patterns::Integer(1),
+                      "Plastic soil with Rigid foundation/Held ... loads: "
+                      "equal load-controlled steps from 0 to the held loads, "
+                      "taken before the Load steps (which then start from "
+                      "the held state).");
+    prm.declare_entry("Control",
+                      "load",
+                      Patterns::Selection("load|displacement"),
+                      "load: the Rigid foundation loads (H, M, V, T) times "
+                      "step/steps. displacement: those loads give the "
+                      "direction, their factor is found so that the "
+                      "controlled motion reaches Target (past a peak too); "
+                      "after held loads, in equal steps from the motion they "
+                      "left.");
+    prm.declare_entry("Controlled motion",
+                      "vertical",
+                      Patterns::Selection("vertical|twist|horizontal|rotation"),
+                      "Displacement control: the rigid-foundation motion "
+                      "prescribed (vertical [m], twist about z [rad], "
+                      "horizontal along x [m], rotation about y [rad]).");
+    prm.declare_entry("Target",
+                      "0",
+                      Patterns::Double(),
+                      "Displacement control: final value of the controlled "
+                      "motion [m or rad].");
+    prm.declare_entry("Tolerance",
+                      "1e-10",
+                      Patterns::Double(0.),
+                      "Converged when |out-of-balance force| <= Tolerance "
+                      "|applied load| (2-norms over all harmonics; the "
+                      "interface tractions then balance the load to it).");
+    prm.declare_entry("Maximum iterations",
+                      "2000",
+                      Patterns::Integer(1),
+                      "Out-of-balance solves per step before it is cut.");
+    prm.declare_entry("Acceleration",
+                      "aitken",
+                      Patterns::Selection("aitken|anderson|none"),
+                      "aitken: Aitken's Delta^2 relaxation of the "
+                      "out-of-balance load (one previous residual); "
+                      "anderson: Anderson (multisecant) update from the last "
+                      "Anderson depth residuals (fewer iterations, about the "
+                      "same time, a worse worst case: "
+                      "benchmarks/nonlinear-interfaces); none: plain initial "
+                      "stiffness.");
+    prm.declare_entry("Anderson depth",
+                      "10",
+                      Patterns::Integer(1, 50),
+                      "Acceleration = anderson: how many previous residuals "
+                      "(m) the update combines.");
+    prm.declare_entry("Maximum step cuts",
+                      "4",
+                      Patterns::Integer(0),
+                      "Halvings of a step that does not converge before "
+                      "the run stops with an error (plastic soil: of each "
+                      "step, and a cut step size doubles back after two "
+                      "converged steps, twice as many after a doubling "
+                      "that failed; interfaces: over the run).");
+    prm.declare_entry("Maximum harmonic",
+                      "0",
+                      Patterns::Integer(0),
+                      "Harmonics chosen by the solution: after each "
+                      "converged step, every harmonic n <= Maximum harmonic "
+                      "not solved yet whose amplitude in the interface "
+                      "traction exceeds Harmonic tolerance times the largest "
+                      "is added (its own factorization) and the step solved "
+                      "again. 0, or not above the highest listed harmonic: "
+                      "only the listed harmonics.");
+    prm.declare_entry("Harmonic tolerance",
+                      "1e-3",
+                      Patterns::Double(0.),
+                      "Maximum harmonic > highest listed: the relative "
+                      "amplitude of the interface-traction spectrum above "
+                      "which a harmonic is added.");
+    prm.leave_subsection();
+  }
+
+  void
+  NonlinearInterfaceParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Nonlinear interfaces");
+    theta_samples   = prm.get_integer("Theta samples");
+    load_steps      = prm.get_integer("Load steps");
+    held_load_steps = prm.get_integer("Held load steps");
+    control =
+      prm.get("Control") == "load" ? Control::load : Control::displacement;
+    const std::string m = prm.get("Controlled motion");
+    motion              = m == "vertical"   ? Motion::vertical :
+                          m == "twist"      ? Motion::twist :
+                          m == "horizontal" ? Motion::horizontal :
+                                              Motion::rotation;
+    target              = prm.get_double("Target");
+    tolerance           = prm.get_double("Tolerance");
+    maximum_iterations  = prm.get_integer("Maximum iterations");
+    const std::string a = prm.get("Acceleration");
+    acceleration        = a == "anderson" ? Acceleration::anderson :
+                          a == "aitken"   ? Acceleration::aitken :
+                                            Acceleration::none;
+    anderson_depth      = prm.get_integer("Anderson depth");
+    maximum_step_cuts   = prm.get_integer("Maximum step cuts");
+    maximum_harmonic    = prm.get_integer("Maximum harmonic");
+    harmonic_tolerance  = prm.get_double("Harmonic tolerance");
+    prm.leave_subsection();
+  }
+} // namespace FourierSSI

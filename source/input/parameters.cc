@@ -1,0 +1,453 @@
+#include <deal.II/base/utilities.h>
+#include <filesystem>
+#include <fourier_ssi/driver/input_checks.h>
+#include <fourier_ssi/input/messages.h>
+#include <fourier_ssi/input/parameters.h>
+#include <fstream>
+#include <sstream>
+
+namespace FourierSSI
+{
+  void
+  DiscretizationParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Discretization");
+    prm.declare_entry("Harmonics",
+                      "auto",
+                      Patterns::Anything(),
+                      "Fourier harmonics n to solve: 'auto' (those the loads "
+                      "contain: foundation resultants and the Loads "
+                      "subsection, decomposed in theta) or a list such as "
+                      "'0, 1, 3' (with Family).");
+    prm.declare_entry("Family",
+                      "symmetric",
+                      Patterns::Selection("symmetric|antisymmetric|both"),
+                      "symmetric: u, v ~ cos n t, w ~ sin n t; "
+                      "antisymmetric: u, v ~ sin n t, w ~ cos n t "
+                      "(thesis eq. 3.2). For n = 0 symmetric is the "
+                      "axisymmetric (u, v) problem, antisymmetric is torsion.");
+    prm.declare_entry("Polynomial degree",
+                      "2",
+                      Patterns::Selection("2|4"),
+                      "FE_Q degree of the solid elements: 2 (pairs with the "
+                      "6-node interface element) or 4 (equidistant nodes, "
+                      "pairs with the 10-node interface element).");
+    prm.declare_entry("Volumetric strain",
+                      "auto",
+                      Patterns::Selection("auto|standard|bbar"),
+                      "standard: full integration of the dilatation; bbar: "
+                      "the dilatation projected onto linear polynomials per "
+                      "cell (B-bar, the Q2-P1disc volumetric space), free "
+                      "of volumetric locking as nu -> 0.5, Polynomial "
+                      "degree 2 only (FE_Q(4) does not lock); auto: bbar "
+                      "for Polynomial degree 2 when a material has nu >= "
+                      "0.45, standard otherwise (standard with degree 2 and "
+                      "nu >= 0.45 is solved as asked, with a warning: it "
+                      "overestimates K_M of the embedded footing by 5.6 % "
+                      "at nu = 0.499, doc/robustness.md).");
+    prm.declare_entry("Concurrent harmonics",
+                      "0",
+                      Patterns::Integer(0, 256),
+                      "Harmonics solved at the same time in threads (they "
+                      "are independent systems); 0: one per core.");
+    prm.declare_entry("Refinement cycles",
+                      "1",
+                      Patterns::Integer(1, 40),
+                      "Solve, refine globally, solve again ... (convergence "
+                      "studies). Replaced by Target accuracy when that is "
+                      "set (the log says so).");
+    prm.declare_entry("Target accuracy",
+                      "",
+                      Patterns::Anything(),
+                      "Relative accuracy asked of the goal values: K_H, K_M, "
+                      "K_MH when Rigid foundation/Stiffness coefficients is "
+                      "set, else the rigid foundation's motion, else the "
+                      "reactions of the supports. When set (0 < target < "
+                      "1, e.g. 1e-4) the program designs the "
+                      "discretization: FE_Q(4), the scene's mesh graded "
+                      "toward its singular points (interface line ends, "
+                      "corners of material and removed regions, the edge of "
+                      "a surface patch), surface layers where G ~ "
+                      "depth^alpha, and nested global refinements until the "
+                      "estimated error is below the target or the next mesh "
+                      "would exceed Adaptivity/Maximum DoFs (then the run "
+                      "says so and exits non-zero, unless Adaptivity/Allow "
+                      "unconverged). Replaces Polynomial degree, "
+                      "Refinement cycles and Mesh/Global refinements; Point, "
+                      "Box and Layer refinement "
+                      "are applied in addition. With plastic soil or a "
+                      "coulomb interface (displacement control) the goal is "
+                      "the load at the end of the path (with plastic soil "
+                      "the capacity; with plastic soil under load control "
+                      "the work of the loads): the scene's own mesh and "
+                      "element with "
+                      "the cells doubled per member, until the mesh, "
+                      "harmonic-truncation and plateau errors together are "
+                      "below the target (doc/soil-plasticity.md section "
+                      "8c). Empty: the mesh as given "
+                      "(doc/accuracy-vs-time.md).");
+    prm.leave_subsection();
+  }
+
+  void
+  DiscretizationParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Discretization");
+    const std::string family = prm.get("Family");
+    harmonics.clear();
+    const std::string list = Utilities::trim(prm.get("Harmonics"));
+    automatic              = list == "auto";
+    for (const std::string &s : automatic ? std::vector<std::string>() :
+                                            Utilities::split_string_list(list))
+      {
+        int n = -1;
+        try
+          {
+            n = Utilities::string_to_int(s);
+          }
+        catch (...)
+          {}
+        AssertThrow(n >= 0 && n <= 1024,
+                    ExcMessage("Discretization/Harmonics: '" + s +
+                               "' is not 'auto' or a harmonic number 0..1024"));
+        // A repeated n would be solved twice and give duplicate rows.
+        for (const Harmonic &h : harmonics)
+          AssertThrow(h.n != static_cast<unsigned int>(n),
+                      ExcMessage("Discretization/Harmonics: n = " + s +
+                                 " is listed twice"));
+        if (family != "antisymmetric")
+          harmonics.push_back(
+            {static_cast<unsigned int>(n), Family::symmetric});
+        if (family != "symmetric")
+          harmonics.push_back(
+            {static_cast<unsigned int>(n), Family::antisymmetric});
+      }
+    AssertThrow(automatic || !harmonics.empty(),
+                ExcMessage("Discretization/Harmonics: empty; write 'auto' or "
+                           "a list such as '0, 1'"));
+    degree     = prm.get_integer("Polynomial degree");
+    volumetric = prm.get("Volumetric strain");
+    AssertThrow(volumetric != "bbar" || degree == 2,
+                ExcMessage("Discretization/Volumetric strain = bbar needs "
+                           "Polynomial degree = 2"));
+    refinement_cycles        = prm.get_integer("Refinement cycles");
+    concurrent_harmonics     = prm.get_integer("Concurrent harmonics");
+    const std::string target = Utilities::trim(prm.get("Target accuracy"));
+    target_accuracy          = 0.;
+    if (!target.empty())
+      {
+        const std::string error =
+          "Discretization/Target accuracy: '" + target +
+          "' is not a relative accuracy between 0 and 1 (e.g. 1e-4)";
+        try
+          {
+            target_accuracy = Utilities::string_to_double(target);
+          }
+        catch (...)
+          {
+            AssertThrow(false, ExcMessage(error));
+          }
+        AssertThrow(target_accuracy > 0. && target_accuracy < 1.,
+                    ExcMessage(error));
+        // The element the target designs with is chosen with the scene's
+        // laws known (AllParameters::parse_parameters).
+      }
+    prm.leave_subsection();
+  }
+
+  void
+  ExactSolutionParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Exact solution");
+    prm.declare_entry("Enabled",
+                      "false",
+                      Patterns::Bool(),
+                      "Compute error norms against the amplitudes below.");
+    prm.declare_entry("U", "0", Patterns::Anything(), "Radial amplitude [m].");
+    prm.declare_entry("V", "0", Patterns::Anything(), "Axial amplitude [m].");
+    prm.declare_entry("W",
+                      "0",
+                      Patterns::Anything(),
+                      "Circumferential amplitude [m].");
+    prm.leave_subsection();
+  }
+
+  void
+  ExactSolutionParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Exact solution");
+    enabled               = prm.get_bool("Enabled");
+    amplitudes.expression = {{prm.get("U"), prm.get("V"), prm.get("W")}};
+    amplitudes.given      = {{true, true, true}};
+    prm.leave_subsection();
+    if (enabled)
+      BoundaryConditions::make_function(amplitudes, 1, "Exact solution");
+  }
+
+  void
+  OutputParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    prm.declare_entry("Directory",
+                      "output",
+                      Patterns::DirectoryName(),
+                      "Where results go (created if missing).");
+    prm.declare_entry("Results file",
+                      "results.csv",
+                      Patterns::FileName(),
+                      "CSV of scalar results: one row per quantity, harmonic "
+                      "and cycle, with units.");
+    prm.declare_entry("Write vtu",
+                      "true",
+                      Patterns::Bool(),
+                      "Write the displacement amplitudes of each harmonic "
+                      "as VTU.");
+    prm.declare_entry("Write stresses",
+                      "true",
+                      Patterns::Bool(),
+                      "Add the six stress amplitudes to the VTU (stress "
+                      "recovery is skipped otherwise).");
+    prm.declare_entry("Write interface tractions",
+                      "true",
+                      Patterns::Bool(),
+                      "Write relative displacements and tractions per "
+                      "interface node pair (CSV per interface and harmonic).");
+    prm.declare_entry("Lines 3D",
+                      "",
+                      Patterns::Anything(),
+                      "3D reconstruction (sum of the harmonics) along "
+                      "straight lines: 'r0, z0 -> r1, z1 : points; ...'; "
+                      "written to lines-3d.csv at the angles below. At most "
+                      "100000 points per line, every point inside the mesh "
+                      "(both checked before the solve).");
+    prm.declare_entry("Theta values",
+                      "0",
+                      Patterns::List(Patterns::Double()),
+                      "Angles [degrees] of the Lines 3D output.");
+    prm.declare_entry("Write 3D vtu",
+                      "false",
+                      Patterns::Bool(),
+                      "Write the mesh revolved about the axis with the 3D "
+                      "displacement (solution-3d.vtu, for ParaView).");
+    prm.declare_entry("Theta divisions",
+                      "36",
+                      Patterns::Integer(3, 720),
+                      "Sectors of the revolved 3D VTU.");
+    prm.leave_subsection();
+  }
+
+  void
+  OutputParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Output");
+    directory                 = prm.get("Directory");
+    results_file              = prm.get("Results file");
+    write_vtu                 = prm.get_bool("Write vtu");
+    write_stresses            = prm.get_bool("Write stresses");
+    write_interface_tractions = prm.get_bool("Write interface tractions");
+    write_3d_vtu              = prm.get_bool("Write 3D vtu");
+    theta_divisions           = prm.get_integer("Theta divisions");
+    theta_degrees.clear();
+    for (const std::string &t :
+         Utilities::split_string_list(prm.get("Theta values")))
+      theta_degrees.push_back(Utilities::string_to_double(t));
+    lines.clear();
+    for (const std::string &item : split_top_level(prm.get("Lines 3D"), ';'))
+      {
+        const auto fail = [&]() {
+          AssertThrow(false,
+                      ExcMessage("Output/Lines 3D: '" + item +
+                                 "' is not 'r0, z0 -> r1, z1 : points'"));
+        };
+        const auto arrow = item.find("->");
+        const auto colon = item.find(':');
+        if (arrow == std::string::npos || colon == std::string::npos ||
+            colon < arrow)
+          fail();
+        OutputLine line;
+        try
+          {
+            const auto a = Utilities::split_string_list(item.substr(0, arrow));
+            const auto b = Utilities::split_string_list(
+              item.substr(arrow + 2, colon - arrow - 2));
+            if (a.size() != 2 || b.size() != 2)
+              fail();
+            line.start = Point<2>(Utilities::string_to_double(a[0]),
+                                  Utilities::string_to_double(a[1]));
+            line.end   = Point<2>(Utilities::string_to_double(b[0]),
+                                Utilities::string_to_double(b[1]));
+            line.n_points =
+              Utilities::string_to_int(Utilities::trim(item.substr(colon + 1)));
+          }
+        catch (...)
+          {
+            fail();
+          }
+        if (line.n_points < 1)
+          fail();
+        AssertThrow(line.n_points <= max_points_per_line,
+                    ExcMessage("Output/Lines 3D: '" + item + "' asks for " +
+                               std::to_string(line.n_points) +
+                               " points, above the limit of " +
+                               std::to_string(max_points_per_line) +
+                               " points per line"));
+        lines.push_back(line);
+      }
+    prm.leave_subsection();
+  }
+
+  AllParameters::AllParameters() = default;
+
+  void
+  AllParameters::declare_parameters(ParameterHandler &prm)
+  {
+    DiscretizationParameters::declare_parameters(prm);
+    MeshBuilder::declare_parameters(prm);
+    MaterialLibrary::declare_parameters(prm);
+    BoundaryConditions::declare_parameters(prm);
+    LinearSolver::declare_parameters(prm);
+    ExactSolutionParameters::declare_parameters(prm);
+    OutputParameters::declare_parameters(prm);
+    InterfaceParameters::declare_parameters(prm);
+    RigidFoundationParameters::declare_parameters(prm);
+    AdaptivityParameters::declare_parameters(prm);
+    LoadParameters::declare_parameters(prm);
+    InitialStressParameters::declare_parameters(prm);
+    NonlinearInterfaceParameters::declare_parameters(prm);
+    SoilPlasticityParameters::declare_parameters(prm);
+  }
+
+  void
+  AllParameters::parse_parameters(ParameterHandler &prm)
+  {
+    discretization.parse_parameters(prm);
+    mesh.parse_parameters(prm);
+    materials.parse_parameters(prm);
+    boundary_conditions.parse_parameters(prm);
+    solver.parse_parameters(prm);
+    exact_solution.parse_parameters(prm);
+    output.parse_parameters(prm);
+    interfaces.parse_parameters(prm);
+    rigid_foundation.parse_parameters(prm);
+    adaptivity.parse_parameters(prm);
+    loads.parse_parameters(prm);
+    // The target's element: the linear scenes' design is FE_Q(4) (its
+    // grading pairs with the 10-node interface element; FE_Q(4) does not
+    // lock); a coupled scene (plastic soil, coulomb interfaces) keeps its
+    // own, on its own mesh refined (FE_Q(2) with B-bar for undrained soil,
+    // section 4 of doc/soil-plasticity.md).
+    soil_plasticity.parse_parameters(prm);
+    if (discretization.target_accuracy > 0. && !coupled())
+      {
+        AssertThrow(discretization.volumetric != "bbar",
+                    ExcMessage("Discretization/Target accuracy: designs "
+                               "FE_Q(4) meshes, and Volumetric strain = bbar "
+                               "needs degree 2 (write auto or standard)"));
+        discretization.degree = 4;
+      }
+    mesh.degree                         = discretization.degree;
+    discretization.volumetric_automatic = discretization.volumetric == "auto";
+    if (discretization.volumetric_automatic)
+      discretization.volumetric =
+        discretization.degree == 2 &&
+            largest_poisson_ratio(materials) >= locking_poisson_ratio ?
+          "bbar" :
+          "standard";
+    initial_stress.parse_parameters(prm);
+    nonlinear_interfaces.parse_parameters(prm);
+    for (const auto &law : soil_plasticity.laws)
+      AssertThrow(materials.has(law.first),
+                  ExcMessage("Soil plasticity/Laws: material " +
+                             std::to_string(law.first) +
+                             " is not in Materials/Materials"));
+    if (discretization.target_accuracy > 0.)
+      {
+        AssertThrow(rigid_foundation.enabled ||
+                      !boundary_conditions.dirichlet.empty(),
+                    ExcMessage("Discretization/Target accuracy: the scene "
+                               "has no goal quantity (no rigid foundation, "
+                               "no supports whose reactions to measure)"));
+        AssertThrow(adaptivity.strategy == RefinementStrategy::global,
+                    ExcMessage("Discretization/Target accuracy: refines by "
+                               "its own design; leave Adaptivity/Strategy = "
+                               "global"));
+        // Load control's goal is the work of the loads (plastic soil):
+        // the condensed load vector is the work's only with homogeneous
+        // constraints.
+        const bool load_control =
+          coupled() && nonlinear_interfaces.control ==
+                         NonlinearInterfaceParameters::Control::load;
+        AssertThrow(!load_control || soil_plasticity.any(),
+                    ExcMessage("Discretization/Target accuracy: with a "
+                               "coulomb interface on elastic soil the goal "
+                               "is the load at the end of the controlled "
+                               "path, which needs Nonlinear "
+                               "interfaces/Control = displacement"));
+        bool prescribed_motion = !loads.displacement.empty();
+        for (const auto &[id, e] : boundary_conditions.dirichlet)
+          prescribed_motion |= !e.is_zero();
+        AssertThrow(!load_control || !prescribed_motion,
+                    ExcMessage("Discretization/Target accuracy: under load "
+                               "control the goal is the work of the loads, "
+                               "which needs every prescribed displacement "
+                               "(Boundary conditions/Dirichlet, Loads/"
+                               "Prescribed displacement) to be zero"));
+      }
+    for (const auto &[id, e] : loads.displacement)
+      AssertThrow(boundary_conditions.dirichlet.count(id) == 0,
+                  ExcMessage("Loads/Prescribed displacement: boundary id " +
+                             std::to_string(id) +
+                             " is also in Boundary conditions/Dirichlet"));
+  }
+
+
+  void
+  AllParameters::read_file(const std::string &filename)
+  {
+    // An ifstream opens a directory and reads nothing: it would run as an
+    // empty .prm.
+    AssertThrow(!std::filesystem::is_directory(filename),
+                ExcMessage(filename +
+                           ": is a directory, not a parameter file"));
+    std::ifstream in(filename);
+    AssertThrow(in, ExcMessage(filename + ": cannot open parameter file"));
+    std::stringstream text;
+    text << in.rdbuf();
+    std::string content = text.str();
+    // Editors on some systems start UTF-8 files with a byte-order mark; it
+    // carries no meaning here.
+    const std::string byte_order_mark = "\xEF\xBB\xBF";
+    if (content.compare(0, byte_order_mark.size(), byte_order_mark) == 0)
+      content.erase(0, byte_order_mark.size());
+    std::istringstream input(content);
+    ParameterHandler   prm;
+    declare_parameters(prm);
+    try
+      {
+        prm.parse_input(input, filename);
+        parse_parameters(prm);
+        // A relative Mesh file is relative to the folder of the .prm, so
+        // that a scene runs from any working directory.
+        const std::filesystem::path mesh_file(mesh.mesh_file);
+        if (mesh.type == "gmsh" && !mesh.mesh_file.empty() &&
+            mesh_file.is_relative())
+          mesh.mesh_file =
+            (std::filesystem::path(filename).parent_path() / mesh_file)
+              .lexically_normal()
+              .string();
+      }
+    catch (const std::exception &e)
+      {
+        AssertThrow(false, ExcMessage(filename + ": " + one_line_message(e)));
+      }
+  }
+
+  void
+  AllParameters::read_string(const std::string &text)
+  {
+    ParameterHandler prm;
+    declare_parameters(prm);
+    prm.parse_input_from_string(text, "input");
+    parse_parameters(prm);
+  }
+} // namespace FourierSSI

@@ -1,0 +1,30 @@
+#include <cmath>
+#include <cstdlib>
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+#include <fourier_ssi/input/prm_values.h>
+
+namespace FourierSSI
+{
+  double
+  number_in_entry(const std::string &text, const std::string &entry)
+  {
+    const std::string t   = dealii::Utilities::trim(text);
+    char             *end = nullptr;
+    const double      v   = std::strtod(t.c_str(), &end);
+    AssertThrow(!t.empty() && end == t.c_str() + t.size() && std::isfinite(v),
+                dealii::ExcMessage(entry + ": '" + t + "' is not a number"));
+    return v;
+  }
+
+  dealii::types::boundary_id
+  boundary_id_in_entry(const std::string &text, const std::string &entry)
+  {
+    const double v = number_in_entry(text, entry);
+    AssertThrow(v >= 0. && v < 255. && v == std::floor(v),
+                dealii::ExcMessage(entry + ": boundary id '" +
+                                   dealii::Utilities::trim(text) +
+                                   "' is not an integer in [0, 254]"));
+    return static_cast<dealii::types::boundary_id>(v);
+  }
+} // namespace FourierSSI

@@ -1,0 +1,288 @@
+#include <algorithm>
+#include <cmath>
+#include <deal.II/base/utilities.h>
+#include <fourier_ssi/interfaces/interface_integrator.h>
+#include <fstream>
+#include <iomanip>
+#include <set>
+
+namespace FourierSSI
+{
+  InterfaceIntegrator::InterfaceIntegrator(
+    const InterfaceParameters &parameters,
+    const MaterialLibrary     &materials,
+    const Harmonic            &harmonic)
+    : parameters(parameters)
+    , materials(materials)
+    , harmonic(harmonic)
+  {}
+
+  std::vector<types::boundary_id>
+  InterfaceIntegrator::boundary_ids() const
+  {
+    std::vector<types::boundary_id> ids;
+    for (const auto &[id, law] : parameters.laws)
+      ids.push_back(id);
+    return ids;
+  }
+
+  void
+  InterfaceIntegrator::setup(const DoFHandler<2> &dof_handler)
+  {
+    pairs = pair_interface_faces(dof_handler,
+                                 boundary_ids(),
+                                 parameters.pairing_tolerance);
+    // Mean face length per interface (Van Langen & Vermeer's l).
+    std::map<types::boundary_id, std::pair<double, unsigned int>> lengths;
+    for (const InterfacePair &pair : pairs)
+      {
+        lengths[pair.boundary_id].first += pair.length;
+        ++lengths[pair.boundary_id].second;
+      }
+    stiffness.clear();
+    matrices.clear();
+    for (const InterfacePair &pair : pairs)
+      {
+        const InterfaceLaw &law = parameters.laws.at(pair.boundary_id);
+        // Tied laws are constraints, not springs.
+        InterfaceStiffness k{law.tied || law.tied_normal ? 0. : law.normal,
+                             law.tied || law.tied_normal ? 0. : law.shear};
+        if (law.vermeer)
+          {
+            // G, nu of the soil side at the face centre's depth.
+            const double depth = materials.depth(pair.center[1]);
+            const auto   check = [&](const int id) -> const ElasticMaterial   &{
+              AssertThrow(materials.has(id),
+                          ExcMessage("Interfaces/Interfaces: material " +
+                                     std::to_string(id) + " of interface " +
+                                     std::to_string(pair.boundary_id) +
+                                     " is not defined"));
+              return materials.get(id);
+            };
+            const ElasticMaterial *soil = nullptr;
+            if (law.material >= 0)
+              soil = &check(law.material);
+            else
+              {
+                const ElasticMaterial &a = check(pair.material_a);
+                const ElasticMaterial &b = check(pair.material_b);
+                soil =
+                  a.shear_modulus(depth) <= b.shear_modulus(depth) ? &a : &b;
+              }
+            const auto &[sum, count] = lengths[pair.boundary_id];
+            const double l           = sum / count;
+            const double G           = soil->shear_modulus(depth);
+            k.shear                  = law.mu * G / l;
+            k.normal = law.mu * G / ((1. - 2. * soil->poisson_ratio) * l);
+          }
+        stiffness.push_back(k);
+        matrices.push_back(
+          interface_matrix(pair.nodes.size() - 1, pair.nodes, k, harmonic));
+      }
+  }
+
+  unsigned int
+  InterfaceIntegrator::add_tie_constraints(
+    AffineConstraints<double>               &constraints,
+    const std::set<types::global_dof_index> &keep_free) const
+  {
+    unsigned int n_added = 0;
+    std::set<std::pair<types::global_dof_index, types::global_dof_index>> done;
+    // Does the constraint chain of `dof` reach `target`? (A twin may already
+    // follow its partner through another interface, e.g. where two
+    // interfaces cross: tying the partner back would close a cycle.)
+    const auto reaches = [&](types::global_dof_index       dof,
+                             const types::global_dof_index target) {
+      for (unsigned int step = 0; step < 64; ++step)
+        {
+          if (dof == target)
+            return true;
+          if (!constraints.is_constrained(dof))
+            return false;
+          const auto *entries = constraints.get_constraint_entries(dof);
+          if (entries == nullptr || entries->size() != 1)
+            return false;
+          dof = (*entries)[0].first;
+        }
+      return false;
+    };
+    // Constrain `slave` = sum of `terms` unless it is already constrained.
+    const auto tie =
+      [&](
+        const types::global_dof_index                                  slave,
+        const std::vector<std::pair<types::global_dof_index, double>> &terms) {
+        if (constraints.is_constrained(slave) || keep_free.count(slave) > 0)
+          return false;
+        constraints.add_line(slave);
+        constraints.add_entries(slave, terms);
+        ++n_added;
+        return true;
+      };
+    for (const InterfacePair &pair : pairs)
+      {
+        const InterfaceLaw &law = parameters.laws.at(pair.boundary_id);
+        if (!law.tied && !law.tied_normal)
+          continue;
+        const unsigned int n_nodes = pair.nodes.size();
+        for (unsigned int k = 0; k < n_nodes; ++k)
+          {
+            const auto a = [&](const unsigned int c) {
+              return pair.dof_indices[3 * k + c];
+            };
+            const auto b = [&](const unsigned int c) {
+              return pair.dof_indices[3 * (n_nodes + k) + c];
+            };
+            // Face ends belong to two pairs: tie each node pair once.
+            if (!done.insert({a(0), b(0)}).second)
+              continue;
+            if (law.tied)
+              for (unsigned int c = 0; c < 3; ++c)
+                {
+                  if (a(c) == b(c) || reaches(a(c), b(c)) ||
+                      reaches(b(c), a(c)) ||
+                      (constraints.is_constrained(a(c)) &&
+                       constraints.is_constrained(b(c))))
+                    continue;
+                  if (!tie(b(c), {{a(c), 1.}}))
+                    tie(a(c), {{b(c), 1.}});
+                }
+            else
+              {
+                // n . (u_B - u_A) = 0 with n = (n_r, n_z): solve for the
+                // component along the larger normal entry.
+                const unsigned int m =
+                  std::abs(pair.normal[0]) >= std::abs(pair.normal[1]) ? 0 : 1;
+                const unsigned int o     = 1 - m;
+                const double       ratio = pair.normal[o] / pair.normal[m];
+                std::vector<std::pair<types::global_dof_index, double>> from_a =
+                  {{a(m), 1.}};
+                std::vector<std::pair<types::global_dof_index, double>> from_b =
+                  {{b(m), 1.}};
+                if (ratio != 0.)
+                  {
+                    from_a.push_back({a(o), ratio});
+                    from_a.push_back({b(o), -ratio});
+                    from_b.push_back({b(o), ratio});
+                    from_b.push_back({a(o), -ratio});
+                  }
+                if (a(m) != b(m) && !tie(b(m), from_a))
+                  tie(a(m), from_b);
+              }
+          }
+      }
+    return n_added;
+  }
+
+  void
+  InterfaceIntegrator::add_sparsity(
+    const AffineConstraints<double> &constraints,
+    DynamicSparsityPattern          &dsp) const
+  {
+    for (const InterfacePair &pair : pairs)
+      {
+        // Distinct indices only: deal.II's sorted insertion assumes them
+        // (an interface line ending inside the mesh repeats its end node).
+        std::vector<types::global_dof_index> dofs(pair.dof_indices);
+        std::sort(dofs.begin(), dofs.end());
+        dofs.erase(std::unique(dofs.begin(), dofs.end()), dofs.end());
+        constraints.add_entries_local_to_global(
+          dofs,
+          dsp,
+          /*keep_constrained_dofs=*/false);
+      }
+  }
+
+  void
+  InterfaceIntegrator::merged_matrix(
+    const unsigned int                    i,
+    FullMatrix<double>                   &merged,
+    std::vector<types::global_dof_index> &unique_dofs) const
+  {
+    // Where an interface line ends inside the mesh the last node pair is
+    // one shared DoF set (the "crack tip" is closed): merge repeated
+    // indices, since distribute_local_to_global expects distinct ones
+    // (repeated ones corrupted the sparse matrix in release builds).
+    const std::vector<types::global_dof_index> &dofs = pairs[i].dof_indices;
+    unique_dofs                                      = dofs;
+    std::sort(unique_dofs.begin(), unique_dofs.end());
+    unique_dofs.erase(std::unique(unique_dofs.begin(), unique_dofs.end()),
+                      unique_dofs.end());
+    std::vector<unsigned int> position(dofs.size());
+    for (unsigned int k = 0; k < dofs.size(); ++k)
+      position[k] =
+        std::lower_bound(unique_dofs.begin(), unique_dofs.end(), dofs[k]) -
+        unique_dofs.begin();
+    merged.reinit(unique_dofs.size(), unique_dofs.size());
+    for (unsigned int a = 0; a < dofs.size(); ++a)
+      for (unsigned int b = 0; b < dofs.size(); ++b)
+        merged(position[a], position[b]) += matrices[i](a, b);
+  }
+
+  void
+  InterfaceIntegrator::add_reactions(const Vector<double> &u,
+                                     Vector<double>       &reactions) const
+  {
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      {
+        const auto    &dofs = pairs[i].dof_indices;
+        Vector<double> local(dofs.size()), product(dofs.size());
+        for (unsigned int k = 0; k < dofs.size(); ++k)
+          local(k) = u(dofs[k]);
+        matrices[i].vmult(product, local);
+        for (unsigned int k = 0; k < dofs.size(); ++k)
+          reactions(dofs[k]) += product(k);
+      }
+  }
+
+  double
+  InterfaceIntegrator::energy(const Vector<double> &u) const
+  {
+    double energy = 0.;
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      {
+        const auto    &dofs = pairs[i].dof_indices;
+        Vector<double> local(dofs.size());
+        for (unsigned int k = 0; k < dofs.size(); ++k)
+          local(k) = u(dofs[k]);
+        energy += 0.5 * matrices[i].matrix_norm_square(local);
+      }
+    return energy;
+  }
+
+  void
+  InterfaceIntegrator::write_csv(const types::boundary_id boundary_id,
+                                 const Vector<double>    &u,
+                                 const std::string       &filename) const
+  {
+    std::ofstream out(filename);
+    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+    out << "face,node,r,z,relative_s,relative_n,relative_theta,traction_n,"
+           "traction_s,traction_theta\n"
+        << std::setprecision(12);
+    unsigned int face = 0;
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      {
+        const InterfacePair &pair = pairs[i];
+        if (pair.boundary_id != boundary_id)
+          continue;
+        const unsigned int n_nodes = pair.nodes.size();
+        for (unsigned int k = 0; k < n_nodes; ++k)
+          {
+            Tensor<1, 2> jump;
+            for (unsigned int c = 0; c < 2; ++c)
+              jump[c] = u(pair.dof_indices[3 * (n_nodes + k) + c]) -
+                        u(pair.dof_indices[3 * k + c]);
+            const double d_s = jump * pair.tangent, d_n = jump * pair.normal;
+            const double d_t = u(pair.dof_indices[3 * (n_nodes + k) + 2]) -
+                               u(pair.dof_indices[3 * k + 2]);
+            out << face << ',' << k << ',' << pair.nodes[k][0] << ','
+                << pair.nodes[k][1] << ',' << d_s << ',' << d_n << ',' << d_t
+                << ',' << stiffness[i].normal * d_n << ','
+                << stiffness[i].shear * d_s << ',' << stiffness[i].shear * d_t
+                << '\n';
+          }
+        ++face;
+      }
+    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+  }
+} // namespace FourierSSI

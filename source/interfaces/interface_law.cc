@@ -1,0 +1,288 @@
+#include <algorithm>
+#include <cmath>
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/numbers.h>
+#include <deal.II/base/utilities.h>
+#include <fourier_ssi/interfaces/interface_law.h>
+#include <fourier_ssi/input/prm_values.h>
+
+namespace FourierSSI
+{
+  namespace
+  {
+    /**
+     * The coulomb law's admissible data: kn, ks > 0 (the elastic part and
+     * the iteration matrix), 0 <= psi <= phi < 90 degrees, and a cut-off
+     * no higher than the apex c / tan(phi) of the slip cone (above it a
+     * tensile t_n would have no admissible shear).
+     */
+    void
+    check_coulomb(const InterfaceLaw &law,
+                  const bool          complete,
+                  const std::string  &entry,
+                  const std::string  &where)
+    {
+      AssertThrow(complete,
+                  ExcMessage(entry + " coulomb needs kn, ks and phi" + where));
+      AssertThrow(law.normal > 0. && law.shear > 0.,
+                  ExcMessage(entry + " coulomb needs kn > 0 and ks > 0" +
+                             where));
+      AssertThrow(law.friction_angle < 90.,
+                  ExcMessage(entry + " phi must be below 90 degrees" + where));
+      AssertThrow(law.dilation_angle <= law.friction_angle,
+                  ExcMessage(entry + " psi must not exceed phi" + where));
+      const double apex =
+        law.friction_angle > 0. ?
+          law.cohesion / std::tan(law.friction_angle * numbers::PI / 180.) :
+          std::numeric_limits<double>::infinity();
+      AssertThrow(!std::isfinite(law.tension_cutoff) ||
+                    law.tension_cutoff <= apex,
+                  ExcMessage(entry +
+                             " sigma_t must not exceed the apex c/tan(phi) "
+                             "of the slip surface" +
+                             where));
+      AssertThrow(std::isfinite(law.tension_cutoff) || law.friction_angle == 0.,
+                  ExcMessage(entry +
+                             " sigma_t=none needs phi=0 (a cone with "
+                             "friction has its apex as cut-off)" +
+                             where));
+    }
+  } // namespace
+
+  void
+  InterfaceParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Interfaces");
+    prm.declare_entry(
+      "Interfaces",
+      "",
+      Patterns::Anything(),
+      "Zero-thickness interfaces by boundary id (the id carried by the faces "
+      "on both sides of a double-node line), separated by ';': 'id: rough' "
+      "(kn = ks = 1e10 kPa/m), 'id: smooth' (kn = 1e10, ks = 0), "
+      "'id: kn=1e8, ks=0', or 'id: vermeer, mu=50[, material=m]' (Van Langen "
+      "& Vermeer 1991: ks = mu G/l, kn = mu G/((1-2nu) l), G and nu of "
+      "material m or of the side with the lower G, l the mean face length). "
+      "Exact limits without penalty (constraints, no conditioning cost): "
+      "'id: tied' (kn = ks = infinity) and 'id: tied-normal' (kn = infinity, "
+      "ks = 0). Nonlinear Mohr-Coulomb slip with a tension cut-off: "
+      "'id: coulomb, kn=1e6, ks=1e6, c=0, phi=25[, psi=0][, sigma_t=0]' "
+      "(kn, ks > 0 [kPa/m] elastic; c [kPa] cohesion; phi, psi [degrees] "
+      "friction and dilation angles, 0 <= psi <= phi < 90; sigma_t [kPa] "
+      "largest tension, 0 = tensionless (default), 'none' = no cut-off; "
+      "doc/nonlinear-interfaces.md). Empty: no interface.");
+    prm.declare_entry("Pairing tolerance",
+                      "1e-8",
+                      Patterns::Double(0.),
+                      "Twin faces and nodes must coincide within this "
+                      "fraction of the face length.");
+    prm.leave_subsection();
+  }
+
+  void
+  InterfaceParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Interfaces");
+    laws              = parse_list(prm.get("Interfaces"));
+    pairing_tolerance = prm.get_double("Pairing tolerance");
+    prm.leave_subsection();
+  }
+
+  std::map<types::boundary_id, InterfaceLaw>
+  InterfaceParameters::parse_list(const std::string &text)
+  {
+    const std::string                          entry = "Interfaces/Interfaces";
+    std::map<types::boundary_id, InterfaceLaw> result;
+    for (const std::string &item : Utilities::split_string_list(text, ';'))
+      {
+        const auto colon = item.find(':');
+        AssertThrow(colon != std::string::npos,
+                    ExcMessage(entry + ": '" + item + "' lacks 'id:'"));
+        const types::boundary_id id =
+          boundary_id_in_entry(item.substr(0, colon), entry);
+        AssertThrow(result.count(id) == 0,
+                    ExcMessage(entry + ": boundary id " + std::to_string(id) +
+                               " given twice"));
+        InterfaceLaw law;
+        bool preset = false, has_kn = false, has_ks = false, has_mu = false,
+             has_material = false, has_strength = false, has_phi = false;
+        for (const std::string &token :
+             Utilities::split_string_list(item.substr(colon + 1), ','))
+          {
+            const auto eq = token.find('=');
+            if (eq == std::string::npos)
+              {
+                AssertThrow(!preset,
+                            ExcMessage(entry + ": two laws for boundary id " +
+                                       std::to_string(id)));
+                preset = true;
+                if (token == "rough")
+                  law.normal = law.shear = 1e10;
+                else if (token == "smooth")
+                  law.normal = 1e10, law.shear = 0.;
+                else if (token == "vermeer")
+                  law.vermeer = true;
+                else if (token == "tied")
+                  law.tied = true;
+                else if (token == "tied-normal")
+                  law.tied_normal = true;
+                else if (token == "coulomb")
+                  law.coulomb = true;
+                else
+                  AssertThrow(false,
+                              ExcMessage(entry + ": unknown law '" + token +
+                                         "' (expected rough, smooth, tied, "
+                                         "tied-normal, vermeer, coulomb or "
+                                         "kn=..., ks=...)"));
+                continue;
+              }
+            const std::string key = Utilities::trim(token.substr(0, eq));
+            if (key == "sigma_t" &&
+                Utilities::trim(token.substr(eq + 1)) == "none")
+              {
+                law.tension_cutoff = std::numeric_limits<double>::infinity();
+                has_strength       = true;
+                continue;
+              }
+            const double value = number_in_entry(token.substr(eq + 1), entry);
+            AssertThrow(value >= 0.,
+                        ExcMessage(entry + ": " + key + " must be >= 0 in '" +
+                                   item + "'"));
+            if (key == "kn")
+              law.normal = value, has_kn = true;
+            else if (key == "ks")
+              law.shear = value, has_ks = true;
+            else if (key == "mu")
+              law.mu = value, has_mu = true;
+            else if (key == "material")
+              law.material = static_cast<int>(value), has_material = true;
+            else if (key == "c")
+              law.cohesion = value, has_strength = true;
+            else if (key == "phi")
+              law.friction_angle = value, has_strength = has_phi = true;
+            else if (key == "psi")
+              law.dilation_angle = value, has_strength = true;
+            else if (key == "sigma_t")
+              law.tension_cutoff = value, has_strength = true;
+            else
+              AssertThrow(false,
+                          ExcMessage(entry + ": unknown key '" + key +
+                                     "' (expected kn, ks, mu, material, c, "
+                                     "phi, psi or sigma_t)"));
+          }
+        const std::string where = " for boundary id " + std::to_string(id);
+        AssertThrow(law.coulomb || !has_strength,
+                    ExcMessage(entry +
+                               ": c, phi, psi and sigma_t belong to the "
+                               "coulomb law" +
+                               where));
+        if (law.coulomb)
+          check_coulomb(law, has_kn && has_ks && has_phi, entry + ":", where);
+        else if (law.vermeer)
+          {
+            AssertThrow(has_mu && law.mu > 0. && !has_kn && !has_ks,
+                        ExcMessage(entry +
+                                   ": vermeer needs mu > 0 and no kn/ks" +
+                                   where));
+          }
+        else if (preset)
+          {
+            AssertThrow(!has_kn && !has_ks && !has_mu && !has_material,
+                        ExcMessage(entry + ": a preset takes no kn/ks/mu" +
+                                   where));
+          }
+        else
+          {
+            AssertThrow(has_kn && has_ks && !has_mu && !has_material,
+                        ExcMessage(entry +
+                                   ": give both kn and ks (or rough, "
+                                   "smooth, vermeer)" +
+                                   where));
+          }
+        result[id] = law;
+      }
+    return result;
+  }
+
+  bool
+  InterfaceParameters::any_nonlinear() const
+  {
+    return std::any_of(laws.begin(), laws.end(), [](const auto &entry) {
+      return entry.second.is_nonlinear();
+    });
+  }
+
+  MohrCoulombInterface::MohrCoulombInterface(const InterfaceLaw &law)
+    : kn(law.normal)
+    , ks(law.shear)
+    , cohesion(law.cohesion)
+    , tan_phi(std::tan(law.friction_angle * numbers::PI / 180.))
+    , tan_psi(std::tan(law.dilation_angle * numbers::PI / 180.))
+    , tension_cutoff(law.tension_cutoff)
+  {}
+
+  double
+  MohrCoulombInterface::yield_function(const LocalVector &t) const
+  {
+    return std::hypot(t[0], t[2]) + t[1] * tan_phi - cohesion;
+  }
+
+  ReturnMappingResult
+  MohrCoulombInterface::return_map(const LocalVector &d,
+                                   const LocalVector &t0,
+                                   const LocalVector &old_plastic) const
+  {
+    const LocalVector   stiffness = {{ks, kn, ks}};
+    ReturnMappingResult result;
+    result.plastic = old_plastic;
+    for (unsigned int c = 0; c < 3; ++c)
+      result.traction[c] = t0[c] + stiffness[c] * (d[c] - old_plastic[c]);
+    const LocalVector trial = result.traction;
+
+    // Open (decollement): no force across the gap; the plastic part takes
+    // the whole relative displacement beyond the unloaded state, so that
+    // re-closing starts from t = 0.
+    if (trial[1] > tension_cutoff)
+      {
+        result.state    = ContactState::open;
+        result.traction = {{0., 0., 0.}};
+        for (unsigned int c = 0; c < 3; ++c)
+          result.plastic[c] = d[c] + t0[c] / stiffness[c];
+        return result;
+      }
+
+    const double f_trial = yield_function(trial);
+    if (f_trial <= 0.)
+      return result; // stick
+
+    // Slip: one multiplier dl on the plastic potential
+    // g = tau + t_n tan(psi): d_p += dl (tau-direction, tan(psi), ...).
+    result.state        = ContactState::slip;
+    const double tau_tr = std::hypot(trial[0], trial[2]);
+    const double dl     = f_trial / (ks + kn * tan_phi * tan_psi);
+    const double tau    = tau_tr - ks * dl;
+    const double scale  = tau / tau_tr;
+    result.traction[0]  = scale * trial[0];
+    result.traction[2]  = scale * trial[2];
+    result.traction[1]  = trial[1] - kn * tan_psi * dl;
+    result.plastic[0] += dl * trial[0] / tau_tr;
+    result.plastic[2] += dl * trial[2] / tau_tr;
+    result.plastic[1] += dl * tan_psi;
+    return result;
+  }
+
+  std::string
+  to_string(const ContactState state)
+  {
+    switch (state)
+      {
+        case ContactState::stick:
+          return "stick";
+        case ContactState::slip:
+          return "slip";
+        case ContactState::open:
+          return "open";
+      }
+    return "";
+  }
+} // namespace FourierSSI

@@ -1,0 +1,422 @@
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/lac/full_matrix.h>
+#include <fourier_ssi/fourier/harmonic_pair_integral.h>
+#include <fourier_ssi/interfaces/nonlinear_interface_points.h>
+#include <fstream>
+#include <iomanip>
+#include <limits>
+#include <map>
+
+namespace FourierSSI
+{
+  namespace
+  {
+    const std::string entry = "Nonlinear interfaces";
+
+    /** Lagrange basis of the equidistant nodes k / p at xi. */
+    std::vector<double>
+    lagrange_values(const unsigned int p, const double xi)
+    {
+      std::vector<double> values(p + 1, 1.);
+      for (unsigned int k = 0; k <= p; ++k)
+        for (unsigned int m = 0; m <= p; ++m)
+          if (m != k)
+            values[k] *= (xi - double(m) / p) / (double(k) - double(m)) * p;
+      return values;
+    }
+
+    const std::vector<InterfacePair> &
+    pairs_of(const HarmonicProblem &problem)
+    {
+      AssertThrow(problem.get_interfaces() != nullptr,
+                  ExcMessage(entry + ": the scene has no interfaces"));
+      return problem.get_interfaces()->get_pairs();
+    }
+
+    ThetaFactor
+    factor_of(const unsigned int c)
+    {
+      return c == 2 ? ThetaFactor::circumferential : ThetaFactor::in_plane;
+    }
+  } // namespace
+
+  NonlinearInterfacePoints::NonlinearInterfacePoints(
+    const HarmonicSet   &set,
+    const AllParameters &parameters)
+    : set(set)
+  {
+    const std::vector<InterfacePair>          &pairs = pairs_of(set.problem(0));
+    std::map<types::boundary_id, unsigned int> law_index;
+    for (const auto &[id, law] : parameters.interfaces.laws)
+      if (law.is_nonlinear())
+        {
+          law_index[id] = laws.size();
+          laws.emplace_back(law);
+          stiffness.push_back({{law.shear, law.normal, law.shear}});
+          if (law.cohesion == 0. && !parameters.initial_stress.enabled())
+            strengthless = true;
+        }
+    for (unsigned int i = 0; i < pairs.size(); ++i)
+      {
+        const auto law = law_index.find(pairs[i].boundary_id);
+        if (law == law_index.end())
+          continue;
+        nonlinear_pairs.push_back(i);
+        const unsigned int p = pairs[i].nodes.size() - 1;
+        // Gauss p + 1 points: exact for the elastic part N_i N_j r (degree
+        // 2p + 1), so a sticking interface gives exactly no correction.
+        const QGauss<1> gauss(p + 1);
+        for (unsigned int q = 0; q < gauss.size(); ++q)
+          {
+            InterfacePoint point;
+            point.pair  = i;
+            point.law   = law->second;
+            point.shape = lagrange_values(p, gauss.point(q)[0]);
+            for (unsigned int k = 0; k <= p; ++k)
+              for (unsigned int d = 0; d < 2; ++d)
+                point.position[d] += point.shape[k] * pairs[i].nodes[k][d];
+            point.area_per_radian =
+              gauss.weight(q) * pairs[i].length * point.position[0];
+            point.initial_traction =
+              parameters.initial_stress.interface_traction(
+                pairs[i].tangent,
+                pairs[i].normal,
+                parameters.materials.depth(point.position[1]));
+            points.push_back(point);
+          }
+      }
+    AssertThrow(!points.empty(),
+                ExcMessage(entry + ": no face of a coulomb interface"));
+  }
+
+  const InterfacePair &
+  NonlinearInterfacePoints::pair_of(const InterfacePoint &point) const
+  {
+    return pairs_of(set.problem(0))[point.pair];
+  }
+
+  std::vector<LocalVector>
+  NonlinearInterfacePoints::relative_displacements(
+    const std::vector<Vector<double>> &fields,
+    const ThetaSampling               &sampling) const
+  {
+    const unsigned int N = sampling.n_samples(), H = set.size();
+    // 1. The amplitudes of (d_s, d_n, d_theta) at every point, index
+    //    (i * 3 + c) * H + h, of the harmonics this rank owns (zero for the
+    //    others).
+    std::vector<double> amplitudes(points.size() * 3 * H, 0.);
+    for (unsigned int i = 0; i < points.size(); ++i)
+      {
+        const InterfacePoint &point        = points[i];
+        double *const         amplitude[3] = {&amplitudes[(i * 3 + 0) * H],
+                                              &amplitudes[(i * 3 + 1) * H],
+                                              &amplitudes[(i * 3 + 2) * H]};
+        for (unsigned int h = 0; h < H; ++h)
+          {
+            if (!set.owns(h))
+              continue;
+            const InterfacePair &pair    = pairs_of(set.problem(h))[point.pair];
+            const unsigned int   n_nodes = pair.nodes.size();
+            for (unsigned int k = 0; k < n_nodes; ++k)
+              {
+                double jump[3];
+                for (unsigned int c = 0; c < 3; ++c)
+                  jump[c] = fields[h](pair.dof_indices[3 * (n_nodes + k) + c]) -
+                            fields[h](pair.dof_indices[3 * k + c]);
+                const double N_k = point.shape[k];
+                amplitude[0][h] +=
+                  N_k * (jump[0] * pair.tangent[0] + jump[1] * pair.tangent[1]);
+                amplitude[1][h] +=
+                  N_k * (jump[0] * pair.normal[0] + jump[1] * pair.normal[1]);
+                amplitude[2][h] += N_k * jump[2];
+              }
+          }
+      }
+    // 2. Every harmonic's amplitudes on every rank: each entry is non-zero
+    //    on its owner only, so the sum is exact and the same bits on every
+    //    rank, whatever the reduction order.
+    set.sum_over_ranks(amplitudes);
+    // 3. The samples at every theta_j, summed over the harmonics.
+    std::vector<LocalVector> result(points.size() * N, {{0., 0., 0.}});
+    std::vector<double>      amplitude(H), samples;
+    for (unsigned int i = 0; i < points.size(); ++i)
+      for (unsigned int c = 0; c < 3; ++c)
+        {
+          std::copy(amplitudes.begin() + (i * 3 + c) * H,
+                    amplitudes.begin() + (i * 3 + c + 1) * H,
+                    amplitude.begin());
+          sampling.evaluate(amplitude, factor_of(c), samples);
+          for (unsigned int j = 0; j < N; ++j)
+            result[i * N + j][c] = samples[j];
+        }
+    return result;
+  }
+
+  ContactCounts
+  NonlinearInterfacePoints::return_map(
+    const std::vector<LocalVector> &relative,
+    const std::vector<LocalVector> &committed_plastic,
+    std::vector<LocalVector>       &plastic,
+    std::vector<LocalVector>       &traction,
+    std::vector<ContactState>      &state) const
+  {
+    const unsigned int N      = relative.size() / std::max<size_t>(size(), 1);
+    ContactCounts      counts = {{0, 0, 0}};
+    plastic.resize(relative.size());
+    traction.resize(relative.size());
+    state.resize(relative.size());
+    for (unsigned int i = 0; i < points.size(); ++i)
+      for (unsigned int j = 0; j < N; ++j)
+        {
+          const unsigned int        k = i * N + j;
+          const ReturnMappingResult r =
+            laws[points[i].law].return_map(relative[k],
+                                           points[i].initial_traction,
+                                           committed_plastic[k]);
+          plastic[k]  = r.plastic;
+          traction[k] = r.traction;
+          state[k]    = r.state;
+          ++counts[static_cast<int>(r.state)];
+        }
+    return counts;
+  }
+
+  double
+  NonlinearInterfacePoints::largest_yield_value(
+    const std::vector<LocalVector> &traction) const
+  {
+    const unsigned int N       = traction.size() / std::max<size_t>(size(), 1);
+    double             largest = -std::numeric_limits<double>::max();
+    for (unsigned int i = 0; i < points.size(); ++i)
+      for (unsigned int j = 0; j < N; ++j)
+        largest =
+          std::max(largest,
+                   laws[points[i].law].yield_function(traction[i * N + j]));
+    return largest;
+  }
+
+  std::vector<Vector<double>>
+  NonlinearInterfacePoints::load_of(const std::vector<LocalVector> &plastic,
+                                    const ThetaSampling &sampling) const
+  {
+    const unsigned int          N = sampling.n_samples(), H = set.size();
+    std::vector<Vector<double>> load(H);
+    for (unsigned int h = 0; h < H; ++h)
+      load[h].reinit(set.problem(h).get_dof_handler().n_dofs());
+    std::vector<double> samples(N), coefficient[3];
+    for (unsigned int i = 0; i < points.size(); ++i)
+      {
+        const InterfacePoint &point = points[i];
+        bool                  any   = false;
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            for (unsigned int j = 0; j < N; ++j)
+              {
+                samples[j] = stiffness[point.law][c] * plastic[i * N + j][c];
+                any        = any || samples[j] != 0.;
+              }
+            // The theta part of the virtual work against each harmonic.
+            sampling.integrate(samples, factor_of(c), coefficient[c]);
+          }
+        if (!any)
+          continue;
+        for (unsigned int h = 0; h < H; ++h)
+          {
+            const InterfacePair &pair    = pairs_of(set.problem(h))[point.pair];
+            const unsigned int   n_nodes = pair.nodes.size();
+            Vector<double>       local(pair.dof_indices.size());
+            for (unsigned int k = 0; k < n_nodes; ++k)
+              {
+                // B^T: local (s, n, theta) forces rotated back to (r, z,
+                // theta) (eq. 3.13, T^T), + on face B and - on face A.
+                const double w    = point.area_per_radian * point.shape[k];
+                const double f_s  = w * coefficient[0][h],
+                             f_n  = w * coefficient[1][h],
+                             f_t  = w * coefficient[2][h];
+                const double f[3] = {f_s * pair.tangent[0] +
+                                       f_n * pair.normal[0],
+                                     f_s * pair.tangent[1] +
+                                       f_n * pair.normal[1],
+                                     f_t};
+                for (unsigned int c = 0; c < 3; ++c)
+                  {
+                    local(3 * (n_nodes + k) + c) += f[c];
+                    local(3 * k + c) -= f[c];
+                  }
+              }
+            set.problem(h)
+              .get_homogeneous_constraints()
+              .distribute_local_to_global(local, pair.dof_indices, load[h]);
+          }
+      }
+    return load;
+  }
+
+  void
+  NonlinearInterfacePoints::write_state_csv(
+    const std::string                    &filename,
+    const std::vector<InterfaceSnapshot> &snapshots,
+    const ThetaSampling                  &sampling) const
+  {
+    std::ofstream out(filename);
+    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+    // t_n > 0 is tension, d_n > 0 opening (section 1 of the doc); the
+    // traction is the total one, initial (geostatic) stress included.
+    out << "step,interface_id,point,r_m,z_m,normal_r,normal_z,theta_deg,"
+           "state,t_s_kPa,t_n_kPa,t_theta_kPa,d_s_m,d_n_m,d_theta_m\n"
+        << std::setprecision(10);
+    const std::vector<InterfacePair> &pairs = pairs_of(set.problem(0));
+    const unsigned int                N     = sampling.n_samples();
+    for (unsigned int s = 0; s < snapshots.size(); ++s)
+      for (unsigned int i = 0; i < points.size(); ++i)
+        {
+          const InterfacePair &pair = pairs[points[i].pair];
+          for (unsigned int j = 0; j < N; ++j)
+            {
+              const unsigned int k = i * N + j;
+              const LocalVector &t = snapshots[s].traction[k];
+              const LocalVector &d = snapshots[s].relative[k];
+              out << s + 1 << ',' << pair.boundary_id << ',' << i << ','
+                  << points[i].position[0] << ',' << points[i].position[1]
+                  << ',' << pair.normal[0] << ',' << pair.normal[1] << ','
+                  << sampling.angle(j) * 180. / numbers::PI << ','
+                  << to_string(snapshots[s].state[k]) << ',' << t[0] << ','
+                  << t[1] << ',' << t[2] << ',' << d[0] << ',' << d[1] << ','
+                  << d[2] << '\n';
+            }
+        }
+    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+  }
+
+  std::vector<std::vector<std::vector<types::global_dof_index>>>
+  NonlinearInterfacePoints::pair_dofs() const
+  {
+    std::vector<std::vector<std::vector<types::global_dof_index>>> dofs;
+    for (const unsigned int i : nonlinear_pairs)
+      {
+        dofs.emplace_back();
+        for (unsigned int h = 0; h < set.size(); ++h)
+          dofs.back().push_back(pairs_of(set.problem(h))[i].dof_indices);
+      }
+    return dofs;
+  }
+
+  bool
+  NonlinearInterfacePoints::softening_at(const InterfacePoint &point,
+                                         const LocalVector    &relative,
+                                         const LocalVector &committed_plastic,
+                                         std::array<double, 9> &softening) const
+  {
+    const MohrCoulombInterface &law = laws[point.law];
+    const ReturnMappingResult   at =
+      law.return_map(relative, point.initial_traction, committed_plastic);
+    if (at.state == ContactState::stick)
+      return false;
+    // A step small next to the relative displacement but far above
+    // round-off: the forward difference is exact where the return is
+    // linear (open; slip at phi = psi = 0 along the slip direction) and
+    // first-order accurate in the step on the curved part.
+    double size = 0.;
+    for (const double d : relative)
+      size = std::max(size, std::abs(d));
+    const double step = 1e-6 * std::max(size, 1e-12);
+    for (unsigned int b = 0; b < 3; ++b)
+      {
+        LocalVector plus = relative;
+        plus[b] += step;
+        const LocalVector t_plus =
+          law.return_map(plus, point.initial_traction, committed_plastic)
+            .traction;
+        for (unsigned int a = 0; a < 3; ++a)
+          softening[a * 3 + b] = (a == b ? stiffness[point.law][a] : 0.) -
+                                 (t_plus[a] - at.traction[a]) / step;
+      }
+    return true;
+  }
+
+  void
+  NonlinearInterfacePoints::relative_displacement_operator(
+    const InterfacePoint &point,
+    const InterfacePair  &pair,
+    FullMatrix<double>   &B) const
+  {
+    const unsigned int n_nodes = pair.nodes.size();
+    B.reinit(3, pair.dof_indices.size());
+    for (unsigned int k = 0; k < n_nodes; ++k)
+      {
+        const double N_k = point.shape[k];
+        // d = sum_k N_k (u_B,k - u_A,k) rotated to (s, n, theta).
+        const double rows[3][3] = {{pair.tangent[0], pair.tangent[1], 0.},
+                                   {pair.normal[0], pair.normal[1], 0.},
+                                   {0., 0., 1.}};
+        for (unsigned int a = 0; a < 3; ++a)
+          for (unsigned int c = 0; c < 3; ++c)
+            {
+              B(a, 3 * (n_nodes + k) + c) += N_k * rows[a][c];
+              B(a, 3 * k + c) -= N_k * rows[a][c];
+            }
+      }
+  }
+
+  unsigned int
+  NonlinearInterfacePoints::add_softening(
+    const std::vector<LocalVector> &relative,
+    const std::vector<LocalVector> &committed_plastic,
+    const ThetaSampling            &sampling,
+    CoupledTangent                 &tangent) const
+  {
+    const unsigned int    N = sampling.n_samples(), H = set.size(), HH = H * H;
+    HarmonicPairIntegral  integral(set.get_harmonics(), sampling, 3, 2);
+    std::array<double, 9> c;
+    std::vector<double>   S;
+    FullMatrix<double>    B, local;
+    unsigned int          n_softening = 0;
+    for (const InterfacePoint &point : points)
+      {
+        const unsigned int i       = &point - points.data();
+        bool               softens = false;
+        for (unsigned int j = 0; j < N; ++j)
+          {
+            if (!softening_at(
+                  point, relative[i * N + j], committed_plastic[i * N + j], c))
+              continue;
+            if (!softens)
+              integral.clear();
+            softens = true;
+            ++n_softening;
+            integral.add_sample(j, c.data());
+          }
+        if (!softens)
+          continue;
+        integral.integrals(S);
+        // B is the same for every harmonic (the theta factors are in S);
+        // only the DoF numbers differ.
+        relative_displacement_operator(point, pair_of(point), B);
+        const unsigned int n_dofs = B.n();
+        local.reinit(n_dofs, n_dofs);
+        for (unsigned int h = 0; h < H; ++h)
+          for (unsigned int g = 0; g < H; ++g)
+            {
+              for (unsigned int a = 0; a < 3; ++a)
+                for (unsigned int b = 0; b < 3; ++b)
+                  {
+                    const double s =
+                      point.area_per_radian * S[(a * 3 + b) * HH + h * H + g];
+                    if (s == 0.)
+                      continue;
+                    for (unsigned int x = 0; x < n_dofs; ++x)
+                      if (B(a, x) != 0.)
+                        for (unsigned int y = 0; y < n_dofs; ++y)
+                          local(x, y) -= B(a, x) * s * B(b, y);
+                  }
+              tangent.add(h,
+                          g,
+                          local,
+                          pairs_of(set.problem(h))[point.pair].dof_indices,
+                          pairs_of(set.problem(g))[point.pair].dof_indices);
+              local = 0.;
+            }
+      }
+    return n_softening;
+  }
+} // namespace FourierSSI

@@ -1,0 +1,395 @@
+#include <cmath>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/grid/grid_refinement.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/numerics/error_estimator.h>
+#include <fourier_ssi/mesh/adaptivity.h>
+#include <fourier_ssi/mesh/mesh_builder.h>
+#include <map>
+
+namespace FourierSSI
+{
+  void
+  AdaptivityParameters::declare_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Adaptivity");
+    prm.declare_entry("Strategy",
+                      "global",
+                      Patterns::Selection("global|kelly|goal"),
+                      "Refinement between cycles: global (uniform), kelly "
+                      "(Kelly indicators summed over the harmonics) or goal "
+                      "(dual-weighted residual for the rigid-foundation "
+                      "stiffness named by 'Goal': needs Rigid foundation/"
+                      "Stiffness coefficients = true, harmonic n = 1 "
+                      "symmetric and Polynomial degree = 2; the error is "
+                      "estimated with an FE_Q(4) solve on the same mesh, "
+                      "doc/accuracy-vs-time.md). Both sides of an interface "
+                      "are refined alike.");
+    prm.declare_entry("Refine fraction",
+                      "0.3",
+                      Patterns::Double(0., 1.),
+                      "kelly, goal: the cells holding this fraction of the "
+                      "summed indicator are refined per cycle (deal.II fixed "
+                      "fraction; goal indicators are squared quantities, so "
+                      "a larger fraction, e.g. 0.8, suits them).");
+    prm.declare_entry("Goal",
+                      "all",
+                      Patterns::Selection("K_H|K_M|K_MH|all"),
+                      "goal: the stiffness coefficient whose error steers "
+                      "the mesh and stops the cycles (all: the largest "
+                      "relative error of K_H, K_M, K_MH).");
+    prm.declare_entry("Goal tolerance",
+                      "0",
+                      Patterns::Double(0.),
+                      "goal: stop refining once the estimated relative error "
+                      "of the goal is below this value (0: run every "
+                      "Refinement cycle).");
+    prm.declare_entry("Maximum DoFs",
+                      "5e5",
+                      Patterns::Double(1.),
+                      "Discretization/Target accuracy: the work bound, in "
+                      "DoFs per harmonic. When the next designed mesh would "
+                      "exceed it, the refinement stops: the run prints the "
+                      "accuracy reached and this limit, results.csv has "
+                      "target_accuracy_reached = 0, and the exit code is "
+                      "non-zero (unless Allow unconverged). 5e5 is about 2 "
+                      "GB with the direct solver. Mesh/Maximum DoFs stays "
+                      "the hard memory guard of every run.");
+    prm.declare_entry("Allow unconverged",
+                      "false",
+                      Patterns::Bool(),
+                      "Discretization/Target accuracy: true makes a run "
+                      "that stops at Maximum DoFs before the target exit "
+                      "with 0 (the line and the results.csv rows "
+                      "target_accuracy_reached = 0, <goal>_converged = 0 "
+                      "stay), for sweeps that want every case's best "
+                      "value.");
+    prm.declare_entry("Point refinement",
+                      "",
+                      Patterns::Anything(),
+                      "A priori grading toward singular points, before the "
+                      "first cycle: 'r, z: levels; ...' refines the cells "
+                      "touching each point (a vertex of the mesh, e.g. a "
+                      "foundation edge) that many times, halving their size "
+                      "each time (at most 25 levels: a cell 3e-8 times its "
+                      "coarse size; much beyond, the vertex positions reach "
+                      "round-off). Empty: none.");
+    prm.declare_entry("Box refinement",
+                      "",
+                      Patterns::Anything(),
+                      "A priori, before the point refinement: 'r0, r1, z0, "
+                      "z1: levels; ...' refines the cells whose centre lies "
+                      "in each box that many times (e.g. the near field of a "
+                      "footing), in the order given. Empty: none.");
+    prm.declare_entry("Layer refinement",
+                      "",
+                      Patterns::Anything(),
+                      "A priori, after the point refinement: 'z=0, r=1..20: "
+                      "levels; r=..., z=a..b: levels' cuts the cells with a "
+                      "face on each straight segment across the segment only "
+                      "(anisotropic), that many times, as long as they are "
+                      "wider along it than across: thin layers graded toward "
+                      "a ground surface where G(depth) vanishes (square "
+                      "cells, e.g. of a corner grading on square base cells, "
+                      "are left alone). Empty: none.");
+    prm.leave_subsection();
+  }
+
+  void
+  AdaptivityParameters::parse_parameters(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Adaptivity");
+    const std::string strategy_name = prm.get("Strategy");
+    strategy          = strategy_name == "kelly" ? RefinementStrategy::kelly :
+                        strategy_name == "goal"  ? RefinementStrategy::goal :
+                                                   RefinementStrategy::global;
+    refine_fraction   = prm.get_double("Refine fraction");
+    goal              = prm.get("Goal");
+    goal_tolerance    = prm.get_double("Goal tolerance");
+    maximum_dofs      = prm.get_double("Maximum DoFs");
+    allow_unconverged = prm.get_bool("Allow unconverged");
+    point_refinements.clear();
+    for (const std::string &item :
+         Utilities::split_string_list(prm.get("Point refinement"), ';'))
+      {
+        const std::vector<std::string> parts =
+          Utilities::split_string_list(item, ':');
+        const std::vector<std::string> coordinates =
+          parts.size() == 2 ? Utilities::split_string_list(parts[0], ',') :
+                              std::vector<std::string>();
+        AssertThrow(coordinates.size() == 2,
+                    ExcMessage("Adaptivity/Point refinement: '" + item +
+                               "' is not 'r, z: levels'"));
+        int      levels = -1;
+        Point<2> point;
+        try
+          {
+            levels = Utilities::string_to_int(parts[1]);
+            point  = Point<2>(Utilities::string_to_double(coordinates[0]),
+                             Utilities::string_to_double(coordinates[1]));
+          }
+        catch (...)
+          {
+            levels = -1;
+          }
+        AssertThrow(levels >= 0,
+                    ExcMessage("Adaptivity/Point refinement: '" + item +
+                               "' is not 'r, z: levels' with numbers "
+                               "and levels >= 0"));
+        AssertThrow(levels <= int(max_point_refinement_levels),
+                    ExcMessage("Adaptivity/Point refinement: '" + item +
+                               "' asks for " + std::to_string(levels) +
+                               " levels, above the limit of " +
+                               std::to_string(max_point_refinement_levels)));
+        point_refinements.emplace_back(point,
+                                       static_cast<unsigned int>(levels));
+      }
+    box_refinements.clear();
+    for (const std::string &item :
+         Utilities::split_string_list(prm.get("Box refinement"), ';'))
+      {
+        const auto colon = item.rfind(':');
+        AssertThrow(colon != std::string::npos,
+                    ExcMessage("Adaptivity/Box refinement: '" + item +
+                               "' is not 'r0, r1, z0, z1: levels'"));
+        int levels = -1;
+        try
+          {
+            levels =
+              Utilities::string_to_int(Utilities::trim(item.substr(colon + 1)));
+          }
+        catch (...)
+          {}
+        AssertThrow(levels >= 0,
+                    ExcMessage("Adaptivity/Box refinement: '" + item +
+                               "' needs levels >= 0 after ':'"));
+        box_refinements.emplace_back(parse_box(item.substr(0, colon),
+                                               "Adaptivity/Box refinement"),
+                                     levels);
+      }
+    layer_refinements.clear();
+    for (const std::string &item :
+         Utilities::split_string_list(prm.get("Layer refinement"), ';'))
+      {
+        const std::string error = "Adaptivity/Layer refinement: '" + item +
+                                  "' is not 'z=value, r=from..to: levels' "
+                                  "or 'r=value, z=from..to: levels'";
+        LayerRefinement layer{};
+        bool            ok    = false;
+        const auto      colon = item.rfind(':');
+        const auto      parts =
+          Utilities::split_string_list(item.substr(0, colon), ',');
+        try
+          {
+            if (colon != std::string::npos && parts.size() == 2 &&
+                parts[0].size() > 2 && parts[1].size() > 2 &&
+                parts[0][1] == '=' && parts[1][1] == '=')
+              {
+                const char fixed = parts[0][0], along = parts[1][0];
+                const auto dots = parts[1].find("..");
+                if (((fixed == 'z' && along == 'r') ||
+                     (fixed == 'r' && along == 'z')) &&
+                    dots != std::string::npos)
+                  {
+                    layer.fixed_coordinate = fixed == 'r' ? 0 : 1;
+                    layer.value =
+                      Utilities::string_to_double(parts[0].substr(2));
+                    layer.from =
+                      Utilities::string_to_double(parts[1].substr(2, dots - 2));
+                    layer.to =
+                      Utilities::string_to_double(parts[1].substr(dots + 2));
+                    const int levels = Utilities::string_to_int(
+                      Utilities::trim(item.substr(colon + 1)));
+                    layer.levels = levels;
+                    ok           = levels >= 0 && layer.from < layer.to;
+                  }
+              }
+          }
+        catch (...)
+          {
+            ok = false;
+          }
+        AssertThrow(ok, ExcMessage(error));
+        layer_refinements.push_back(layer);
+      }
+    prm.leave_subsection();
+  }
+
+  RefinementIndicator::RefinementIndicator(
+    const Triangulation<2> &triangulation)
+    : indicators(triangulation.n_active_cells())
+  {}
+
+  void
+  RefinementIndicator::add_kelly(const DoFHandler<2>  &dof_handler,
+                                 const Vector<double> &solution)
+  {
+    Vector<float> kelly(indicators.size());
+    // Interface faces are boundary faces of the mesh: no jump across them
+    // is counted, as it should (the interface allows a jump).
+    KellyErrorEstimator<2>::estimate(dof_handler,
+                                     QGauss<1>(dof_handler.get_fe().degree + 1),
+                                     {},
+                                     solution,
+                                     kelly);
+    const double norm = kelly.l2_norm();
+    if (norm > 0.)
+      for (unsigned int i = 0; i < kelly.size(); ++i)
+        indicators(i) += kelly(i) / norm;
+  }
+
+  void
+  RefinementIndicator::add(const Vector<float> &cell_indicators)
+  {
+    AssertDimension(cell_indicators.size(), indicators.size());
+    indicators += cell_indicators;
+  }
+
+  void
+  RefinementIndicator::refine(
+    Triangulation<2>                   &triangulation,
+    const double                        fraction,
+    const std::set<types::boundary_id> &interface_ids) const
+  {
+    GridRefinement::refine_and_coarsen_fixed_fraction(triangulation,
+                                                      indicators,
+                                                      fraction,
+                                                      0.);
+    execute_refinement_keeping_interface_twins(triangulation, interface_ids);
+  }
+
+  void
+  execute_refinement_keeping_interface_twins(
+    Triangulation<2>                   &triangulation,
+    const std::set<types::boundary_id> &interface_ids)
+  {
+    // Twin interface faces, matched by their centres (rounded to a grid far
+    // below the smallest face length).
+    std::map<std::pair<long long, long long>,
+             std::vector<Triangulation<2>::active_cell_iterator>>
+                 cells_at_face;
+    const double scale = 1e-9 * GridTools::minimal_cell_diameter(triangulation);
+    for (const auto &cell : triangulation.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() && interface_ids.count(face->boundary_id()))
+          cells_at_face[{std::llround(face->center()[0] / scale),
+                         std::llround(face->center()[1] / scale)}]
+            .push_back(cell);
+    // Mesh smoothing (2:1 rule) may flag more cells: repeat until the two
+    // sides of every interface agree.
+    for (bool changed = true; changed;)
+      {
+        triangulation.prepare_coarsening_and_refinement();
+        changed = false;
+        for (auto &[key, cells] : cells_at_face)
+          {
+            bool any = false;
+            for (const auto &cell : cells)
+              any |= cell->refine_flag_set();
+            if (any)
+              for (const auto &cell : cells)
+                if (!cell->refine_flag_set())
+                  {
+                    cell->set_refine_flag();
+                    changed = true;
+                  }
+          }
+      }
+    triangulation.execute_coarsening_and_refinement();
+  }
+
+  void
+  refine_toward_points(
+    Triangulation<2>                                     &triangulation,
+    const std::vector<std::pair<Point<2>, unsigned int>> &point_refinements,
+    const std::set<types::boundary_id>                   &interface_ids)
+  {
+    unsigned int max_levels = 0;
+    for (const auto &[point, levels] : point_refinements)
+      max_levels = std::max(max_levels, levels);
+    for (unsigned int pass = 0; pass < max_levels; ++pass)
+      {
+        const double tolerance =
+          1e-6 * GridTools::minimal_cell_diameter(triangulation);
+        for (const auto &[point, levels] : point_refinements)
+          {
+            if (pass >= levels)
+              continue;
+            bool touched = false;
+            for (const auto &cell : triangulation.active_cell_iterators())
+              for (const unsigned int v : cell->vertex_indices())
+                if (cell->vertex(v).distance(point) < tolerance)
+                  {
+                    cell->set_refine_flag();
+                    touched = true;
+                  }
+            AssertThrow(touched,
+                        ExcMessage("Adaptivity/Point refinement: no mesh "
+                                   "vertex at (" +
+                                   std::to_string(point[0]) + ", " +
+                                   std::to_string(point[1]) + ")"));
+          }
+        execute_refinement_keeping_interface_twins(triangulation,
+                                                   interface_ids);
+      }
+  }
+
+  void
+  refine_a_priori(Triangulation<2>                   &triangulation,
+                  const AdaptivityParameters         &parameters,
+                  const std::set<types::boundary_id> &interface_ids)
+  {
+    for (const auto &[box, levels] : parameters.box_refinements)
+      for (unsigned int pass = 0; pass < levels; ++pass)
+        {
+          for (const auto &cell : triangulation.active_cell_iterators())
+            if (box.point_inside(cell->center()))
+              cell->set_refine_flag();
+          execute_refinement_keeping_interface_twins(triangulation,
+                                                     interface_ids);
+        }
+    refine_toward_points(triangulation,
+                         parameters.point_refinements,
+                         interface_ids);
+    for (const auto &layer : parameters.layer_refinements)
+      {
+        const unsigned int fixed = layer.fixed_coordinate, along = 1 - fixed;
+        // A cut across a line z = c halves the cell in z (cut_y).
+        const RefinementCase<2> across =
+          fixed == 1 ? RefinementCase<2>::cut_y : RefinementCase<2>::cut_x;
+        bool touched = false;
+        for (unsigned int pass = 0; pass < layer.levels; ++pass)
+          {
+            for (const auto &cell : triangulation.active_cell_iterators())
+              for (const auto &face : cell->face_iterators())
+                {
+                  // Relative to the face itself: a tolerance from the
+                  // smallest cell of a mesh graded 24 levels deep (1e-6 of
+                  // 2^-24 of a cell) fell below the round-off of the
+                  // surface's own coordinates, and no face was found.
+                  const double   tolerance = 1e-6 * face->diameter();
+                  const Point<2> c         = face->center();
+                  if (std::abs(face->vertex(0)[fixed] - layer.value) >
+                        tolerance ||
+                      std::abs(face->vertex(1)[fixed] - layer.value) >
+                        tolerance ||
+                      c[along] < layer.from || c[along] > layer.to)
+                    continue;
+                  touched = true;
+                  // Only cells wider along the line than across it: the
+                  // layer thins geometrically, square (graded) cells stay.
+                  if (cell->extent_in_direction(along) >
+                      1.01 * cell->extent_in_direction(fixed))
+                    cell->set_refine_flag(across);
+                }
+            execute_refinement_keeping_interface_twins(triangulation,
+                                                       interface_ids);
+          }
+        AssertThrow(touched || layer.levels == 0,
+                    ExcMessage("Adaptivity/Layer refinement: no cell face on "
+                               "the segment " +
+                               std::string(fixed == 0 ? "r" : "z") + " = " +
+                               std::to_string(layer.value)));
+      }
+  }
+} // namespace FourierSSI
