@@ -210,6 +210,14 @@ namespace FourierSSI
                 "Stiffness coefficients (unit H and M)",
                 1,
                 Family::symmetric);
+        require(foundation.stiffness_matrix ? 1. : 0.,
+                "Stiffness matrix (unit V)",
+                0,
+                Family::symmetric);
+        require(foundation.stiffness_matrix ? 1. : 0.,
+                "Stiffness matrix (unit T)",
+                0,
+                Family::antisymmetric);
         require(foundation.held_vertical_force,
                 "Held vertical force",
                 0,

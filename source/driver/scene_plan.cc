@@ -191,6 +191,13 @@ namespace FourierSSI
           if (foundation.stiffness_coefficients)
             reasons[{1, Family::symmetric}].push_back(
               "unit H and M for the stiffness coefficients");
+          if (foundation.stiffness_matrix)
+            {
+              reasons[{0, Family::symmetric}].push_back(
+                "unit V for the stiffness matrix");
+              reasons[{0, Family::antisymmetric}].push_back(
+                "unit T for the stiffness matrix");
+            }
         }
     }
 
@@ -324,6 +331,11 @@ namespace FourierSSI
       else
         plan.log_lines.push_back("stiffness coefficients: unit-H and unit-M "
                                  "solves on n = 1 symmetric");
+      if (foundation.enabled && foundation.stiffness_matrix)
+        plan.log_lines.push_back(
+          "stiffness matrix: unit-V and unit-T solves on n = 0 symmetric and "
+          "antisymmetric; 6x6 matrix written to foundation-stiffness.csv and "
+          "foundation-stiffness-subdyn.txt");
       const OutputParameters &output = parameters.output;
       plan.log_lines.push_back(
         std::string("VTU per harmonic: ") +

@@ -1,9 +1,9 @@
 #include <deal.II/base/timer.h>
 #include <filesystem>
-#include <fourier_ssi/mesh/discretization_design.h>
 #include <fourier_ssi/driver/input_checks.h>
-#include <fourier_ssi/input/messages.h>
 #include <fourier_ssi/driver/simulator.h>
+#include <fourier_ssi/input/messages.h>
+#include <fourier_ssi/mesh/discretization_design.h>
 #include <iomanip>
 #include <regex>
 
@@ -66,6 +66,7 @@ namespace FourierSSI
               std::min(cycle, parameters.discretization.refinement_cycles - 1),
               log);
           }
+        report_foundation_stiffness(log);
         write_output(log);
       }
     catch (...)
@@ -122,7 +123,8 @@ namespace FourierSSI
           "solution-n[0-9]+-(symmetric|antisymmetric)-cycle[0-9]+"
           "(\\.rank[0-9]+)?\\.p?vtu|interface-[0-9]+-n[0-9]+-"
           "(symmetric|antisymmetric)-cycle[0-9]+\\.csv|lines-3d\\.csv|"
-          "solution-3d\\.vtu|load-displacement(-incomplete)?\\.csv");
+          "solution-3d\\.vtu|load-displacement(-incomplete)?\\.csv|"
+          "foundation-stiffness(\\.csv|-subdyn\\.txt)");
         for (const auto &entry : std::filesystem::directory_iterator(directory))
           {
             const std::string name = entry.path().filename().string();
@@ -312,11 +314,16 @@ namespace FourierSSI
       parameters.rigid_foundation.enabled &&
       parameters.rigid_foundation.stiffness_coefficients && harmonic.n == 1 &&
       harmonic.family == Family::symmetric;
+    solution.has_axial_stiffness =
+      parameters.rigid_foundation.enabled &&
+      parameters.rigid_foundation.stiffness_matrix && harmonic.n == 0;
     solution.report =
       solution.has_coefficients ?
         problem.solve_with_unit_loads(solution.coefficients,
                                       &solution.unit_solutions) :
         problem.solve();
+    if (solution.has_axial_stiffness)
+      solution.axial_stiffness = problem.foundation_axial_stiffness();
     return solution;
   }
 

@@ -5,13 +5,13 @@
 #include <algorithm>
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
-#include <fourier_ssi/mesh/discretization_design.h>
-#include <fourier_ssi/linear_algebra/distributed_linear_system.h>
-#include <fourier_ssi/harmonic/harmonic_problem.h>
 #include <fourier_ssi/driver/input_checks.h>
-#include <fourier_ssi/input/messages.h>
-#include <fourier_ssi/linear_algebra/serial_blas.h>
 #include <fourier_ssi/driver/simulator.h>
+#include <fourier_ssi/harmonic/harmonic_problem.h>
+#include <fourier_ssi/input/messages.h>
+#include <fourier_ssi/linear_algebra/distributed_linear_system.h>
+#include <fourier_ssi/linear_algebra/serial_blas.h>
+#include <fourier_ssi/mesh/discretization_design.h>
 #include <iomanip>
 #include <sstream>
 #include <thread>
@@ -22,13 +22,14 @@ namespace FourierSSI
   {
     /**
      * The goal values among a harmonic's rows: K_H, K_M, K_MH on the
-     * stiffness harmonic; else the rigid foundation's motions; else the
+     * stiffness harmonic, K_V or K_T on the n = 0 harmonics of a
+     * stiffness-matrix scene; else the rigid foundation's motions; else the
      * reactions of the supports. Values at round-off next to the largest
      * of their group (a motion or reaction zero by symmetry) have no
      * relative error and are left out.
      */
     std::vector<HarmonicReport::Row>
-    goal_rows(const HarmonicReport &report, const bool has_coefficients)
+    goal_rows(const HarmonicReport &report, const bool has_stiffness)
     {
       auto picked = [&](auto &&predicate) {
         std::vector<HarmonicReport::Row> rows;
@@ -48,9 +49,10 @@ namespace FourierSSI
                    rows.end());
         return rows;
       };
-      if (has_coefficients)
+      if (has_stiffness)
         return picked([](const std::string &q) {
-          return q == "K_H" || q == "K_M" || q == "K_MH";
+          return q == "K_H" || q == "K_M" || q == "K_MH" || q == "K_V" ||
+                 q == "K_T";
         });
       auto motions = picked([](const std::string &q) {
         return q == "foundation_horizontal_displacement" ||
@@ -85,7 +87,8 @@ namespace FourierSSI
         const Harmonic &harmonic = harmonic_set->harmonic(i);
         for (const HarmonicReport::Row &row :
              goal_rows(outcomes[i].report,
-                       outcomes[i].solution.has_coefficients))
+                       outcomes[i].solution.has_coefficients ||
+                         outcomes[i].solution.has_axial_stiffness))
           {
             auto history =
               std::find_if(goal_histories.begin(),

@@ -6,8 +6,8 @@
 #include <fourier_ssi/app/command_line.h>
 #include <fourier_ssi/coupled/coupled_interface_solver.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
-#include <fourier_ssi/linear_algebra/distributed_linear_system.h>
 #include <fourier_ssi/driver/simulator.h>
+#include <fourier_ssi/linear_algebra/distributed_linear_system.h>
 
 namespace FourierSSI
 {
@@ -34,8 +34,9 @@ namespace FourierSSI
                                      "are distributed over the ranks"));
       AssertThrow(!parameters.rigid_foundation.stiffness_coefficients,
                   ExcMessage(entry + ": Rigid foundation/Stiffness "
-                                     "coefficients are linear quantities; "
-                                     "set it false with a coulomb interface"));
+                                     "coefficients and Stiffness matrix "
+                                     "are linear quantities; set them false "
+                                     "with a coulomb interface"));
     }
 
   } // namespace

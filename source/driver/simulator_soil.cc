@@ -3,11 +3,11 @@
 // by CoupledSoilSolver on one HarmonicSet (doc/soil-plasticity.md).
 #include <cmath>
 #include <deal.II/base/timer.h>
-#include <fourier_ssi/estimation/capacity_plateau.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/coupled_soil_solver.h>
-#include <fourier_ssi/mesh/discretization_design.h>
 #include <fourier_ssi/driver/simulator.h>
+#include <fourier_ssi/estimation/capacity_plateau.h>
+#include <fourier_ssi/mesh/discretization_design.h>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -52,8 +52,9 @@ namespace FourierSSI
                                      "3d vtu with plastic soil"));
       AssertThrow(!parameters.rigid_foundation.stiffness_coefficients,
                   ExcMessage(entry + ": Rigid foundation/Stiffness "
-                                     "coefficients are linear quantities; "
-                                     "set it false with plastic soil"));
+                                     "coefficients and Stiffness matrix "
+                                     "are linear quantities; set them false "
+                                     "with plastic soil"));
     }
 
     /** The plastic state of every converged step, after the common rows. */

@@ -180,6 +180,21 @@ namespace FourierSSI
                             solution.problem->get_operator().get_harmonic(),
                             m,
                             report);
+      if (solution.has_axial_stiffness)
+        {
+          // The stiffness matrix's V or T term, from its unit load.
+          const bool vertical =
+            solution.problem->get_operator().get_harmonic().family ==
+            Family::symmetric;
+          report.add(vertical ? "K_V" : "K_T",
+                     solution.axial_stiffness,
+                     vertical ? "kN/m" : "kN.m/rad");
+          report.log << "\n    stiffness matrix term (unit "
+                     << (vertical ? "V" : "T")
+                     << "): " << (vertical ? "K_V = V/W = " : "K_T = T/Phi = ")
+                     << std::setprecision(7) << solution.axial_stiffness
+                     << (vertical ? " kN/m" : " kN.m/rad");
+        }
       if (solution.has_coefficients)
         {
           const FoundationCoefficients &c = solution.coefficients;

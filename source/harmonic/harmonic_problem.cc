@@ -17,8 +17,8 @@
 #include <fourier_ssi/harmonic/assembly_loop.h>
 #include <fourier_ssi/harmonic/axis_constraints.h>
 #include <fourier_ssi/harmonic/harmonic_problem.h>
-#include <fourier_ssi/linear_algebra/sparse_direct.h>
 #include <fourier_ssi/harmonic/stress_postprocessor.h>
+#include <fourier_ssi/linear_algebra/sparse_direct.h>
 #include <fstream>
 
 namespace FourierSSI
@@ -437,6 +437,35 @@ namespace FourierSSI
         return unit_load_coefficients(direct, unit_solutions);
       }
     return unit_load_coefficients(*factorization, unit_solutions);
+  }
+
+  double
+  HarmonicProblem::foundation_axial_stiffness()
+  {
+    AssertThrow(foundation, ExcMessage("Rigid foundation is not enabled"));
+    std::vector<Vector<double>> x = {
+      foundation->unit_axial_load(dof_handler.n_dofs())};
+    if (distributed)
+      {
+        const Vector<double> load(x[0]);
+        x[0] = 0.; // the CG initial guess
+        distributed->solve(x[0], load);
+      }
+    else
+      {
+        factorize();
+        if (factorization)
+          factorization->solve(x);
+        else
+          {
+            SparseDirect direct(parameters.solver.direct_backend());
+            direct.initialize(system_matrix, cell_interior_dofs(dof_handler));
+            direct.solve(x);
+          }
+      }
+    // The master DoFs are unconstrained: their values are final.
+    foundation->check_supported(x[0], constraints);
+    return 1. / foundation->axial_motion(foundation->motion(x[0]));
   }
 
   void

@@ -86,6 +86,17 @@ namespace FourierSSI
                       "For n = 1: also solve unit H and unit M and report "
                       "I_H, I_M, I_MH and K_H, K_M, K_MH (thesis eqs 4.2-4.5), "
                       "normalised with the two entries below.");
+    prm.declare_entry("Stiffness matrix",
+                      "false",
+                      Patterns::Bool(),
+                      "Also solve a unit V (n = 0 symmetric) and a unit T "
+                      "(n = 0 antisymmetric), and write the 6x6 stiffness "
+                      "matrix at the reference point (axis, Reference "
+                      "elevation) in SI units with its error bars: "
+                      "foundation-stiffness.csv and the SubDyn SSI file "
+                      "foundation-stiffness-subdyn.txt in Output/Directory "
+                      "(doc/foundation-stiffness.md). Implies Stiffness "
+                      "coefficients.");
     prm.declare_entry("Reference shear modulus",
                       "1",
                       Patterns::Double(0.),
@@ -142,7 +153,15 @@ namespace FourierSSI
                 ExcMessage("Rigid foundation: 'Tied components = normal' is a "
                            "frictionless contact with no horizontal stiffness; "
                            "a Horizontal force makes the system singular"));
-    stiffness_coefficients  = prm.get_bool("Stiffness coefficients");
+    stiffness_matrix = prm.get_bool("Stiffness matrix");
+    // The matrix's H-M block is the unit H and unit M solves.
+    stiffness_coefficients =
+      prm.get_bool("Stiffness coefficients") || stiffness_matrix;
+    AssertThrow(!(normal_only && stiffness_matrix),
+                ExcMessage("Rigid foundation/Stiffness matrix: 'Tied "
+                           "components = normal' is a frictionless contact "
+                           "with no horizontal or torsional stiffness; tie "
+                           "all components"));
     reference_shear_modulus = prm.get_double("Reference shear modulus");
     reference_length        = prm.get_double("Reference length");
     reference_poisson_ratio = prm.get_double("Reference Poisson ratio");
@@ -445,6 +464,25 @@ namespace FourierSSI
     rhs(master_V) += f[1];
     rhs(master_W) += f[2];
     return rhs;
+  }
+
+  Vector<double>
+  RigidFoundation::unit_axial_load(const unsigned int n_dofs) const
+  {
+    AssertThrow(harmonic.n == 0,
+                ExcMessage("Rigid foundation: unit V/T loads need n = 0"));
+    const bool     symmetric = harmonic.family == Family::symmetric;
+    Vector<double> rhs(n_dofs);
+    add_master_forces(
+      rhs, master_forces(0., 0., symmetric ? 1. : 0., symmetric ? 0. : 1.));
+    return rhs;
+  }
+
+  double
+  RigidFoundation::axial_motion(const RigidMotion &m) const
+  {
+    return harmonic.family == Family::symmetric ? m.vertical_displacement :
+                                                  m.twist;
   }
 
   FoundationCoefficients

@@ -14,16 +14,16 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/grid/tria.h>
-#include <fourier_ssi/mesh/adaptivity.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
-#include <fourier_ssi/postprocess/field_reconstruction.h>
+#include <fourier_ssi/driver/scene_plan.h>
 #include <fourier_ssi/estimation/goal_estimator.h>
+#include <fourier_ssi/estimation/sequence_error_estimate.h>
 #include <fourier_ssi/harmonic/harmonic_postprocessors.h>
 #include <fourier_ssi/harmonic/harmonic_set.h>
 #include <fourier_ssi/input/parameters.h>
+#include <fourier_ssi/mesh/adaptivity.h>
+#include <fourier_ssi/postprocess/field_reconstruction.h>
 #include <fourier_ssi/postprocess/results_table.h>
-#include <fourier_ssi/driver/scene_plan.h>
-#include <fourier_ssi/estimation/sequence_error_estimate.h>
 #include <functional>
 #include <map>
 #include <memory>
@@ -442,6 +442,24 @@ namespace FourierSSI
     /** True if the goal strategy's estimate meets its tolerance. */
     bool
     goal_tolerance_reached(const unsigned int cycle, std::ostream &log) const;
+
+    /**
+     * Rigid foundation/Stiffness matrix: the 6x6 matrix at the reference
+     * point from the last mesh's K_V, K_T, K_H, K_M, K_MH with their error
+     * estimates; logged and written (foundation-stiffness.csv, the SubDyn
+     * SSI file; simulator_stiffness.cc).
+     */
+    void
+    report_foundation_stiffness(std::ostream &log);
+
+    /** The last mesh's value of a goal row of `harmonic`; throws if none. */
+    double
+    last_value(const std::string &quantity, const Harmonic &harmonic) const;
+
+    /** Its estimated relative error; NaN if not estimated. */
+    double
+    estimated_error(const std::string &quantity,
+                    const Harmonic    &harmonic) const;
 
     void
     write_output(std::ostream &log);

@@ -12,10 +12,10 @@
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/estimation/goal_estimator.h>
 #include <fourier_ssi/harmonic/harmonic_problem.h>
-#include <fourier_ssi/linear_algebra/linear_solver.h>
-#include <fourier_ssi/input/parameters.h>
-#include <fourier_ssi/postprocess/results_table.h>
 #include <fourier_ssi/harmonic/rigid_foundation.h>
+#include <fourier_ssi/input/parameters.h>
+#include <fourier_ssi/linear_algebra/linear_solver.h>
+#include <fourier_ssi/postprocess/results_table.h>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -34,6 +34,12 @@ namespace FourierSSI
     FoundationCoefficients coefficients;
     /** Its unit-H and unit-M fields (constraints distributed). */
     std::vector<Vector<double>> unit_solutions;
+    /**
+     * An n = 0 harmonic of a stiffness-matrix scene: K_V (symmetric, kN/m)
+     * or K_T (antisymmetric, kN.m/rad) from a unit V or T.
+     */
+    bool   has_axial_stiffness = false;
+    double axial_stiffness     = 0.;
   };
 
   /** Rows and log text one harmonic produced. */

@@ -19,16 +19,16 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_out.h>
-#include <fourier_ssi/harmonic/assembly_loop.h>
-#include <fourier_ssi/linear_algebra/distributed_linear_system.h>
 #include <fourier_ssi/fourier/harmonic_operator.h>
-#include <fourier_ssi/interfaces/interface_integrator.h>
-#include <fourier_ssi/linear_algebra/linear_solver.h>
 #include <fourier_ssi/fourier/load_decomposition.h>
-#include <fourier_ssi/input/parameters.h>
+#include <fourier_ssi/harmonic/assembly_loop.h>
 #include <fourier_ssi/harmonic/rigid_foundation.h>
-#include <fourier_ssi/linear_algebra/sparse_direct.h>
 #include <fourier_ssi/harmonic/stress_postprocessor.h>
+#include <fourier_ssi/input/parameters.h>
+#include <fourier_ssi/interfaces/interface_integrator.h>
+#include <fourier_ssi/linear_algebra/distributed_linear_system.h>
+#include <fourier_ssi/linear_algebra/linear_solver.h>
+#include <fourier_ssi/linear_algebra/sparse_direct.h>
 #include <map>
 #include <memory>
 
@@ -165,6 +165,15 @@ namespace FourierSSI
     FoundationCoefficients
     foundation_coefficients(
       std::vector<Vector<double>> *unit_solutions = nullptr);
+
+    /**
+     * The rigid foundation's stiffness along the n = 0 motion of this
+     * harmonic: 1 / W_v under a unit V (symmetric, kN/m) or 1 / Phi under a
+     * unit T (antisymmetric, kN.m/rad), with the kept factorization (built
+     * here if the scene solve did not need one).
+     */
+    double
+    foundation_axial_stiffness();
 
     /**
      * solve() and foundation_coefficients() with ONE factorization of the

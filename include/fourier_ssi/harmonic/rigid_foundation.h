@@ -68,7 +68,13 @@ namespace FourierSSI
              held_vertical_force != 0. || held_torque != 0.;
     }
     /** Also solve the unit H and unit M cases (thesis eqs 4.2-4.5). */
-    bool   stiffness_coefficients  = false;
+    bool stiffness_coefficients = false;
+    /**
+     * The 6x6 stiffness matrix at the reference point: also solve a unit V
+     * (n = 0 symmetric) and a unit T (n = 0 antisymmetric); implies
+     * stiffness_coefficients (doc/foundation-stiffness.md).
+     */
+    bool   stiffness_matrix        = false;
     double reference_shear_modulus = 1.; // G_se (footing) or G_L (pile)
     double reference_length        = 1.; // a (footing radius) or r (pile)
     /**
@@ -136,6 +142,20 @@ namespace FourierSSI
      */
     Vector<double>
     unit_load(const unsigned int load_case, const unsigned int n_dofs) const;
+
+    /**
+     * The load vector of a unit vertical force (n = 0 symmetric) or a unit
+     * torque (n = 0 antisymmetric); n = 0 only.
+     */
+    Vector<double>
+    unit_axial_load(const unsigned int n_dofs) const;
+
+    /**
+     * The motion along the unit axial load: W_v under a unit V (n = 0
+     * symmetric), Phi under a unit T (n = 0 antisymmetric).
+     */
+    double
+    axial_motion(const RigidMotion &m) const;
 
     /**
      * Influence and stiffness coefficients from the motions (U_h, Theta) under
