@@ -56,36 +56,37 @@ namespace FourierSSI
                       "Solve, refine globally, solve again ... (convergence "
                       "studies). Replaced by Target accuracy when that is "
                       "set (the log says so).");
-    prm.declare_entry("Target accuracy",
-                      "",
-                      Patterns::Anything(),
-                      "Relative accuracy asked of the goal values: K_H, K_M, "
-                      "K_MH when Rigid foundation/Stiffness coefficients is "
-                      "set, else the rigid foundation's motion, else the "
-                      "reactions of the supports. When set (0 < target < "
-                      "1, e.g. 1e-4) the program designs the "
-                      "discretization: FE_Q(4), the scene's mesh graded "
-                      "toward its singular points (interface line ends, "
-                      "corners of material and removed regions, the edge of "
-                      "a surface patch), surface layers where G ~ "
-                      "depth^alpha, and nested global refinements until the "
-                      "estimated error is below the target or the next mesh "
-                      "would exceed Adaptivity/Maximum DoFs (then the run "
-                      "says so and exits non-zero, unless Adaptivity/Allow "
-                      "unconverged). Replaces Polynomial degree, "
-                      "Refinement cycles and Mesh/Global refinements; Point, "
-                      "Box and Layer refinement "
-                      "are applied in addition. With plastic soil or a "
-                      "coulomb interface (displacement control) the goal is "
-                      "the load at the end of the path (with plastic soil "
-                      "the capacity; with plastic soil under load control "
-                      "the work of the loads): the scene's own mesh and "
-                      "element with "
-                      "the cells doubled per member, until the mesh, "
-                      "harmonic-truncation and plateau errors together are "
-                      "below the target (doc/soil-plasticity.md section "
-                      "8c). Empty: the mesh as given "
-                      "(doc/accuracy-vs-time.md).");
+    prm.declare_entry(
+      "Target accuracy",
+      "",
+      Patterns::Anything(),
+      "Relative accuracy asked of the goal values: K_H, K_M, "
+      "K_MH when Rigid foundation/Stiffness coefficients is "
+      "set (and K_V, K_T with Stiffness matrix), else the rigid foundation's motion, else the "
+      "reactions of the supports. When set (0 < target < "
+      "1, e.g. 1e-4) the program designs the "
+      "discretization: FE_Q(4), the scene's mesh graded "
+      "toward its singular points (interface line ends, "
+      "corners of material and removed regions, the edge of "
+      "a surface patch), surface layers where G ~ "
+      "depth^alpha, and nested global refinements until the "
+      "estimated error is below the target or the next mesh "
+      "would exceed Adaptivity/Maximum DoFs (then the run "
+      "says so and exits non-zero, unless Adaptivity/Allow "
+      "unconverged). Replaces Polynomial degree, "
+      "Refinement cycles and Mesh/Global refinements; Point, "
+      "Box and Layer refinement "
+      "are applied in addition. With plastic soil or a "
+      "coulomb interface (displacement control) the goal is "
+      "the load at the end of the path (with plastic soil "
+      "the capacity; with plastic soil under load control "
+      "the work of the loads): the scene's own mesh and "
+      "element with "
+      "the cells doubled per member, until the mesh, "
+      "harmonic-truncation and plateau errors together are "
+      "below the target (doc/soil-plasticity.md section "
+      "8c). Empty: the mesh as given "
+      "(doc/accuracy-vs-time.md).");
     prm.leave_subsection();
   }
 
