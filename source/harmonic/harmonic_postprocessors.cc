@@ -1,5 +1,6 @@
 #include <cmath>
 #include <fourier_ssi/harmonic/harmonic_postprocessors.h>
+#include <fourier_ssi/postprocess/pile_head_formulas.h>
 #include <iomanip>
 
 namespace FourierSSI
@@ -98,6 +99,39 @@ namespace FourierSSI
                          << " (E = 2 G (1 + nu), nu = " << nu << ")";
             }
         }
+    }
+
+    /**
+     * Randolph's (1981) flexible-pile formula beside the computed K_H, K_M,
+     * K_MH, normalised as they are (pile_head_formulas.h).
+     */
+    void
+    pile_formula(const AllParameters          &parameters,
+                 const FoundationCoefficients &c,
+                 HarmonicReport               &report)
+    {
+      const RigidFoundationParameters &f    = parameters.rigid_foundation;
+      const ElasticMaterial           &soil = parameters.materials.get(0);
+      const PileHeadStiffness          k =
+        randolph_flexible_pile(f.pile_diameter,
+                               f.pile_modulus,
+                               soil.poisson_ratio,
+                               [&](double z) { return soil.shear_modulus(z); });
+      const double G = f.reference_shear_modulus, a = f.reference_length;
+      const double K_H = k.K_H / (G * a), K_M = k.K_M / (G * a * a * a),
+                   K_MH = k.K_MH / (G * a * a);
+      report.add("randolph_K_H", K_H, "H/(G.a.u)");
+      report.add("randolph_K_M", K_M, "M/(G.a^3.theta)");
+      report.add("randolph_K_MH", K_MH, "H/(G.a^2.theta)");
+      report.add("randolph_critical_length", k.critical_length, "m");
+      report.log << "\n    Randolph (1981) flexible pile (l_c = "
+                 << std::setprecision(4) << k.critical_length
+                 << " m, L/l_c = " << f.pile_length / k.critical_length
+                 << ", rho_c = " << k.homogeneity_factor
+                 << "; the formula holds for L >= l_c): K_H = " << K_H
+                 << ", K_M = " << K_M << ", K_MH = " << K_MH
+                 << "; computed / formula: K_H " << c.K_H / K_H << ", K_M "
+                 << c.K_M / K_M << ", K_MH " << c.K_MH / K_MH;
     }
   } // namespace
 
@@ -215,6 +249,8 @@ namespace FourierSSI
                      << ", K_MH = H/(G a^2 theta) = " << c.K_MH
                      << " (I_MH from H " << c.I_MH_from_H << ", from M "
                      << c.I_MH_from_M << ")";
+          if (parameters.rigid_foundation.pile_diameter > 0.)
+            pile_formula(parameters, c, report);
         }
       report.log << "\n    foundation at (r, z) = (0, " << z_ref << ") m: U_h "
                  << std::setprecision(6) << m.horizontal_displacement

@@ -120,6 +120,22 @@ namespace FourierSSI
                       "8 G a^3 / (3 (1 - nu)): Poulos & Davis 1974, thesis "
                       "eq. 4.1; horizontal 32 (1 - nu) G a / (7 - 8 nu), "
                       "torsion 16 G a^3 / 3: Gazetas 1991).");
+    prm.declare_entry("Pile diameter",
+                      "0",
+                      Patterns::Double(0.),
+                      "D [m] of a pile for the formula printed beside K_H, "
+                      "K_M, K_MH (Randolph 1981, flexible pile; soil: "
+                      "material 0). 0: no formula.");
+    prm.declare_entry("Pile length",
+                      "0",
+                      Patterns::Double(0.),
+                      "L [m] of that pile (the formula holds for L >= its "
+                      "critical length l_c, printed).");
+    prm.declare_entry("Pile Young modulus",
+                      "0",
+                      Patterns::Double(0.),
+                      "E_p [kPa] of the solid circular pile with the same "
+                      "bending stiffness as that pile: E I / (pi D^4 / 64).");
     prm.leave_subsection();
   }
 
@@ -168,6 +184,14 @@ namespace FourierSSI
     AssertThrow(reference_shear_modulus > 0. && reference_length > 0.,
                 ExcMessage("Rigid foundation: 'Reference shear modulus' and "
                            "'Reference length' must be positive"));
+    pile_diameter = prm.get_double("Pile diameter");
+    pile_length   = prm.get_double("Pile length");
+    pile_modulus  = prm.get_double("Pile Young modulus");
+    AssertThrow(pile_diameter == 0. || (pile_length > 0. && pile_modulus > 0. &&
+                                        stiffness_coefficients),
+                ExcMessage("Rigid foundation/Pile diameter: the pile formula "
+                           "needs Pile length > 0, Pile Young modulus > 0 and "
+                           "Stiffness coefficients (or Stiffness matrix)"));
     prm.leave_subsection();
   }
 

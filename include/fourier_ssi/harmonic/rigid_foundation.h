@@ -82,6 +82,15 @@ namespace FourierSSI
      * for the half-space closed forms of a rigid disc; < 0: not given.
      */
     double reference_poisson_ratio = -1.;
+    /**
+     * A pile for the published formula printed beside K_H, K_M, K_MH
+     * (Randolph 1981, pile_head_formulas.h): diameter [m] (0: none),
+     * length [m] and the Young's modulus [kPa] of the solid pile of the
+     * same bending stiffness; the soil is material 0.
+     */
+    double pile_diameter = 0.;
+    double pile_length   = 0.;
+    double pile_modulus  = 0.;
   };
 
   /**
