@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """
 Manufactured solutions for high harmonics n = 8 and n = 16 (symmetric family)
-for tests/robust_high_harmonics.cc (issue 5, hard-case stability suite).
+for tests/robust_high_harmonics.cc (hard-case stability suite, doc/robustness.md).
 
 Run:   /usr/bin/python3 doc/derivations/high_harmonics.py
 Writes tests/mms_high_harmonics.h (or the path given as first argument) and
