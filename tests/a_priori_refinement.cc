@@ -1,5 +1,5 @@
 // A priori refinements of the Adaptivity subsection (doc/accuracy-vs-time.md,
-// third version), on the bundled footing recipes:
+// "A priori refinement"), on the bundled footing recipes:
 //  - Layer refinement 'z=0, r=1..20: k' cuts the surface cells in z only:
 //    after k passes the thinnest cell on the ground surface beyond the
 //    footing is the base top-layer height times 2^-k (exact), and the

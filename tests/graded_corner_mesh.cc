@@ -12,7 +12,7 @@
 //  - accuracy: at L = 6, K_H, K_M, K_MH within 1e-4 of the converged
 //    10.7991035 / 18.9791563 / -8.76923033 (graded FE_Q(4) meshes G = 0, 1, 2
 //    extrapolated, uncertainty <= 1.6e-6, confirmed by a 431k-DoF run:
-//    doc/accuracy-vs-time.md, third version); measured 3.6e-5 / 5.8e-5 /
+//    doc/accuracy-vs-time.md, "The converged references"); measured 3.6e-5 / 5.8e-5 /
 //    4.9e-5; the bound is 1.7x the largest of them.
 //    Without grading (L = 0) the same mesh is at 1.9e-3 / 6.8e-3 / 4.9e-3:
 //    the check also fails if the grading is skipped.
