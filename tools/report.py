@@ -206,14 +206,28 @@ def goal_values(rows):
     return goals + stiffness_goals(rows, goals) + capacity_goals(rows, goals)
 
 
-def bar_note(goal):
+def bar_parts(goal, rows):
+    """The parts of a total bar that results.csv gives (relative):
+    <goal>_error_mesh, _harmonics, _plateau (Target accuracy runs)."""
+    r = goal.row
+    parts = []
+    for part in ("mesh", "harmonics", "plateau"):
+        row = find_row(rows, goal.bar_from + "_" + part, r["n"], r["family"],
+                       r["cycle"])
+        if row is not None:
+            parts.append("%s %s" % (part, BAR_FORMAT % float(row["value"])))
+    return ", ".join(parts)
+
+
+def bar_note(goal, rows=()):
     if not goal.bar_from:
         return "no estimate in results.csv"
     if goal.bar_from.endswith("_plateau_error"):
         return "plateau only"
     if goal.bar_from != goal.row["quantity"] + "_error":
         return "its motion's (K = F/u)"
-    return "estimate"
+    parts = bar_parts(goal, rows)
+    return parts if parts else "estimate"
 
 
 # ---------------------------------------------------------------- geometry
@@ -266,19 +280,20 @@ def foundation_outline(prm, regions):
     if tie == "material":
         boxes = [box for mid, box in regions if mid == tied]
         return ("material", boxes)
+    if tied != 4:  # only the surface patch's faces are known here
+        return None
     return ("boundary", float(prm.get("Mesh/Surface patch radius", "0")))
 
 
-def fixed_sides(prm, r_edges, z_edges):
-    """Boundary ids 1 (far side) and 2 (bottom) with all of u, v, w held."""
+def dirichlet_sides(prm, r_edges, z_edges):
+    """The rectangle's sides 1 (far), 2 (bottom) and 3 (top) that have a
+    Boundary conditions/Dirichlet entry, as (r, z) end points."""
     sides = {1: ([r_edges[-1]] * 2, [z_edges[0], z_edges[-1]]),
              2: ([r_edges[0], r_edges[-1]], [z_edges[0]] * 2),
              3: ([r_edges[0], r_edges[-1]], [z_edges[-1]] * 2)}
-    held = []
-    for bid, spec in id_items(prm.get("Boundary conditions/Dirichlet", "")):
-        if bid in sides:
-            held.append((sides[bid], spec))
-    return held
+    return [sides[side] for side, _ in
+            id_items(prm.get("Boundary conditions/Dirichlet", ""))
+            if side in sides]
 
 
 def mesh_edges(prm, direction):
@@ -305,7 +320,7 @@ def draw_geometry(ax, prm, window, zoomed):
                                    ec="0.5", hatch="////", lw=0.5))
     ax.vlines(r, z[0], z[-1], colors="0.55", lw=0.25)
     ax.hlines(z, r[0], r[-1], colors="0.55", lw=0.25)
-    for (rs, zs), spec in fixed_sides(prm, r, z):
+    for rs, zs in dirichlet_sides(prm, r, z):
         ax.plot(rs, zs, color="#2a9d8f", lw=3, solid_capstyle="butt")
     for interface, rs, zs in interface_segments(
             prm.get("Mesh/Interface lines", "")):
@@ -456,7 +471,9 @@ def draw_plateau(ax, goal, sign, u_last, rows, unit):
                    label="plateau's error (asymptote)")
     if math.isfinite(goal.bar):
         ax.errorbar([sign * u_last], [value], yerr=[goal.bar], color="k",
-                    capsize=4, lw=1.2, label="error bar (%s)" % bar_note(goal))
+                    capsize=4, lw=1.2, label="error bar (%s)" % (
+                        "plateau only" if "plateau" in goal.bar_from
+                        else "total"))
     name = "capacity" if is_capacity else "end load"
     return "%s %s = %s ± %s %s" % (name, goal.row["quantity"][-1],
                                    VALUE_FORMAT % goal.value,
@@ -507,8 +524,8 @@ def draw_interface_state(ax, rows):
     ax.tick_params(labelsize=6)
     ax.set_xlabel("theta [deg]", fontsize=7)
     ax.legend(handles=[Patch(fc=STATE_COLOURS[s], label=s) for s in STATES],
-              fontsize=6, ncol=3, loc="upper center",
-              bbox_to_anchor=(0.5, -0.25), frameon=False)
+              fontsize=6, ncol=3, loc="upper right",
+              bbox_to_anchor=(1.0, -0.08), frameon=False)
     ax.set_title("Interface state around the circumference at the last step "
                  "(%d); interface id: position of the sample row" % step,
                  fontsize=8)
@@ -539,24 +556,26 @@ def draw_yielding(ax, history):
 # ----------------------------------------------------------------- table
 
 
-def goal_table_cells(goals):
+def goal_table_cells(goals, rows):
     cells = []
     for g in goals:
         r = g.row
         cells.append([r["quantity"], "%s %s" % (r["n"], r["family"][:4]),
                       r["cycle"], VALUE_FORMAT % g.value,
                       BAR_FORMAT % g.bar if math.isfinite(g.bar) else "-",
-                      r["unit"], bar_note(g)])
+                      r["unit"], bar_note(g, rows)])
     return cells
 
 
 def draw_goal_table(ax, goals, rows):
     ax.axis("off")
     columns = ["quantity", "n family", "cycle/step", "value", "± (abs)",
-               "unit", "bar"]
-    table = ax.table(cellText=goal_table_cells(goals), colLabels=columns,
+               "unit", "bar (its relative parts)"]
+    table = ax.table(cellText=goal_table_cells(goals, rows), colLabels=columns,
                      loc="upper center", cellLoc="left",
-                     colWidths=[0.34, 0.07, 0.07, 0.12, 0.08, 0.13, 0.19])
+                     colWidths=[0.27, 0.07, 0.07, 0.1, 0.07, 0.1, 0.32])
+    for cell in table.get_celld().values():
+        cell.PAD = 0.03
     table.auto_set_font_size(False)
     table.set_fontsize(6.5)
     target = find_row(rows, "target_accuracy_reached", "0", "symmetric")
@@ -643,7 +662,7 @@ def draw_page(directory, prm, prm_path, rows, out):
     fig = plt.figure(figsize=PAGE_INCHES)
     spots = layout(fig, shown, len(goals))
     fig.text(0.05, 0.985, "fourier-ssi run report: %s%s" % (
-        os.path.abspath(directory),
+        directory,
         "  (prm: %s)" % prm_path if prm_path else ""), fontsize=9,
         weight="bold", va="top")
     extra = {}
