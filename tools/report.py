@@ -215,7 +215,8 @@ def bar_parts(goal, rows):
         row = find_row(rows, goal.bar_from + "_" + part, r["n"], r["family"],
                        r["cycle"])
         if row is not None:
-            parts.append("%s %s" % (part, BAR_FORMAT % float(row["value"])))
+            name = "harm." if part == "harmonics" else part
+            parts.append("%s %s" % (name, BAR_FORMAT % float(row["value"])))
     return ", ".join(parts)
 
 
@@ -403,12 +404,12 @@ def geometry_panel(fig, spec, prm):
     window = zoom_window(prm, r_edges, z_edges)
     if window is not None:
         draw_geometry(fig.add_subplot(inner[0, 1]), prm, window, True)
-    else:
-        ax.set_aspect("equal")
     geometry_legend(fig.add_subplot(inner[0, 2]), prm, regions)
-    ax.text(0., 1.12, "Geometry (the prm's mesh, %s global refinements; "
-            "lines: cell edges)" % prm.get("Mesh/Global refinements", "0"),
-            transform=ax.transAxes, fontsize=9, weight="bold")
+    top = spec.get_position(fig)
+    fig.text(top.x0, top.y1 + 0.02, "Geometry (the prm's mesh, %s global "
+             "refinements; lines: cell edges)"
+             % prm.get("Mesh/Global refinements", "0"), fontsize=9,
+             weight="bold")
 
 
 # ---------------------------------------------------- load-displacement
@@ -573,11 +574,11 @@ def draw_goal_table(ax, goals, rows):
                "unit", "bar (its relative parts)"]
     table = ax.table(cellText=goal_table_cells(goals, rows), colLabels=columns,
                      loc="upper center", cellLoc="left",
-                     colWidths=[0.27, 0.07, 0.07, 0.1, 0.07, 0.1, 0.32])
+                     colWidths=[0.31, 0.07, 0.07, 0.1, 0.07, 0.12, 0.26])
     for cell in table.get_celld().values():
         cell.PAD = 0.03
     table.auto_set_font_size(False)
-    table.set_fontsize(6.5)
+    table.set_fontsize(6)
     target = find_row(rows, "target_accuracy_reached", "0", "symmetric")
     note = ""
     if target is not None:
@@ -611,11 +612,15 @@ def choose_panels(directory, prm, rows, goals):
     else:
         shown.append("geometry")
     curve = os.path.join(directory, "load-displacement.csv")
-    if os.path.isfile(curve):
-        shown.append("load-displacement")
-    else:
+    if not os.path.isfile(curve):
         missing.append("load-displacement: no load-displacement.csv "
                        "(a linear run)")
+    elif not moves_foundation(read_csv(curve)):
+        missing.append("load-displacement: no rigid-foundation load or "
+                       "motion in load-displacement.csv (loads on "
+                       "boundaries only; its load_factor column has them)")
+    else:
+        shown.append("load-displacement")
     state = os.path.join(directory, "interface-state.csv")
     if os.path.isfile(state):
         shown.append("interface-state")
@@ -650,6 +655,10 @@ def layout(fig, shown, n_goals):
     if "goals" in shown:
         plan.append(("goals", 0.6 + 0.19 * n_goals))
     plan.append(("footer", 0.5))
+    # Every panel keeps its size on every page: the space of the panels
+    # left out stays blank at the bottom.
+    full_page = 0.05 + 3.2 + 2.6 + 2.0 + 1.2 + 0.5
+    plan.append(("blank", max(0., full_page - sum(h for _, h in plan))))
     grid = GridSpec(len(plan), 1, figure=fig,
                     height_ratios=[h for _, h in plan], hspace=0.6,
                     left=0.13, right=0.96, top=0.96, bottom=0.02)
@@ -700,6 +709,12 @@ def draw_curves_row(fig, spec, shown, directory, prm, rows, goals):
         k += 1
     if "yielding" in shown:
         draw_yielding(fig.add_subplot(inner[0, k]), yield_history(rows))
+
+
+def moves_foundation(curve):
+    """Whether any step has a rigid-foundation load or motion."""
+    return any(float(s[c]) != 0. for s in curve
+               for columns in CURVE_COLUMNS.values() for c in columns[1:3])
 
 
 def largest_motion(curve):
