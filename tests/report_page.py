@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""The run report page (tools/report.py, doc/report.md) on three bundled
-scenes of the three kinds:
+"""The run report page (tools/report.py, doc/report.md) on four bundled
+scenes of four kinds:
 
   stiffness  prm/default.prm (linear, rigid footing, error estimates of the
              motions from 2 nested meshes);
@@ -8,7 +8,11 @@ scenes of the three kinds:
              (coulomb interface on elastic soil: curve, interface state,
              the end load with its error bar);
   plastic    prm/triaxial-mohr-coulomb.prm (plastic soil: curve to a
-             plateau, capacity with its plateau's error, yielding).
+             plateau, capacity with its plateau's error, yielding);
+  boundary load  prm/cylinder-mohr-coulomb.prm (plastic soil under a
+             pressure on a boundary, no rigid foundation, no target: its
+             curve has no foundation load or motion and there is no goal
+             value, so both panels are left out and named).
 
 For each it checks:
 (1) the PNG is written, a PNG of one A4 page (827 x 1169 px at 100 dpi);
@@ -55,6 +59,8 @@ SCENES = {
                    "goals"]),
     "plastic": ("prm/triaxial-mohr-coulomb.prm", "",
                 ["geometry", "load-displacement", "yielding", "goals"]),
+    "boundary load": ("prm/cylinder-mohr-coulomb.prm", "",
+                      ["geometry", "yielding"]),
 }
 # Half a unit in the 6th significant digit is at most 5e-6 of the value;
 # half a unit in the 2nd is at most 5 % of the bar.
@@ -69,7 +75,7 @@ def check(what, ok):
 
 def run_scene(name, prm, appended):
     """The scene with its output in WORK/name/out."""
-    folder = os.path.join(work, name)
+    folder = os.path.join(work, name.replace(" ", "-"))
     os.makedirs(folder)
     text = open(os.path.join(source_dir, prm)).read() + appended
     text += "\nsubsection Output\n  set Directory = out\nend\n"
@@ -166,7 +172,7 @@ def check_goals(name, out, goals):
 
 def check_scene(name, prm, appended, panels_expected):
     scene, out = run_scene(name, prm, appended)
-    png = os.path.join(work, name + ".png")
+    png = os.path.join(work, name.replace(" ", "-") + ".png")
     result = run_report(out, png, scene)
     check("%s: report.py exits 0 (%s)" % (name, result.stderr.strip()[-200:]),
           result.returncode == 0)
