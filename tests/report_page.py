@@ -153,7 +153,8 @@ def check_goals(name, out, goals):
     expected = expected_goals(rows)
     shown = {key: fields for key, fields in goals}
     check("%s: goal rows on the page %s = expected %s"
-          % (name, sorted(k[0] for k in shown), sorted(k[0] for k in expected)),
+          % (name, sorted(k[0] for k in shown),
+             sorted(k[0] for k in expected)),
           set(shown) == set(expected))
     for key, fields in shown.items():
         if key not in rows:

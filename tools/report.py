@@ -244,7 +244,8 @@ def graded_edges(breakpoints, cells, growth, refinements):
         h = length / (m if q == 1. else (q ** m - 1.) / (q - 1.))
         for _ in range(m):
             step = h / 2 ** refinements
-            edges += [edges[-1] + step * (k + 1) for k in range(2 ** refinements)]
+            start = edges[-1]
+            edges += [start + step * (k + 1) for k in range(2 ** refinements)]
             h *= q
     return np.array(edges)
 
@@ -305,6 +306,9 @@ def mesh_edges(prm, direction):
 
 
 def draw_geometry(ax, prm, window, zoomed):
+    """Materials, removed regions, cell edges, Dirichlet sides, interface
+    lines and the foundation in the (r, z) window; returns the edges and
+    the material regions."""
     r, z = mesh_edges(prm, "R"), mesh_edges(prm, "Z")
     regions = [(mid, numbers(box)) for mid, box in
                id_items(prm.get("Mesh/Material regions", ""))]
@@ -423,7 +427,8 @@ def controlled_motion(prm, rows):
     for row in rows:
         m = re.fullmatch(r"(?:capacity|end_load)_([VHMT])", row["quantity"])
         if m:
-            return [k for k, v in CURVE_COLUMNS.items() if v[0] == m.group(1)][0]
+            return next(k for k, v in CURVE_COLUMNS.items()
+                        if v[0] == m.group(1))
     return None
 
 
@@ -435,13 +440,17 @@ def curve_goal(goals, letter):
 
 
 def draw_curve(ax, curve, motion, goals, rows):
-    letter, load_col, motion_col, load_unit, motion_unit = CURVE_COLUMNS[motion]
+    """The controlled motion's load against it, from zero, with the
+    capacity or end load of results.csv and its bars."""
+    letter, load_col, motion_col, load_unit, motion_unit = \
+        CURVE_COLUMNS[motion]
     u = np.array([0.] + [float(s[motion_col]) for s in curve])
     p = np.array([0.] + [float(s[load_col]) for s in curve])
     sign = -1. if p[-1] < 0. else 1.
     prefix = "-" if sign < 0. else ""
     ax.plot(sign * u, sign * p, "o-", ms=3, color="#4c72b0", label="steps")
-    bad = [i + 1 for i, s in enumerate(curve) if s.get("converged", "1") != "1"]
+    bad = [i + 1 for i, s in enumerate(curve)
+           if s.get("converged", "1") != "1"]
     if bad:
         ax.plot(sign * u[bad], sign * p[bad], "x", color="r", ms=6,
                 label="not converged")
@@ -466,7 +475,8 @@ def draw_plateau(ax, goal, sign, u_last, rows, unit):
                        goal.row["n"], goal.row["family"], goal.row["cycle"])
     is_capacity = goal.row["quantity"].startswith("capacity_")
     if is_capacity:
-        ax.axhline(value, ls="--", lw=0.8, color="k", label="capacity (plateau)")
+        ax.axhline(value, ls="--", lw=0.8, color="k",
+                   label="capacity (plateau)")
     if plateau is not None and math.isfinite(float(plateau["value"])):
         ax.axhspan(value, value + float(plateau["value"]), color="0.8",
                    label="plateau's error (asymptote)")
@@ -509,6 +519,8 @@ def interface_bands(rows, per_line=4):
 
 
 def draw_interface_state(ax, rows):
+    """One band of stick / slip / open samples over theta per position;
+    returns the step and the positions' labels."""
     step, bands = interface_bands(rows)
     for k, (label, thetas, states) in enumerate(bands):
         width = 360. / len(thetas)
@@ -569,6 +581,7 @@ def goal_table_cells(goals, rows):
 
 
 def draw_goal_table(ax, goals, rows):
+    """The goal rows as a table, with whether the target was reached."""
     ax.axis("off")
     columns = ["quantity", "n family", "cycle/step", "value", "± (abs)",
                "unit", "bar (its relative parts)"]
@@ -666,6 +679,9 @@ def layout(fig, shown, n_goals):
 
 
 def draw_page(directory, prm, prm_path, rows, out):
+    """The page, written to out; returns the panels drawn, the reasons for
+    those left out, the goals, the goal table's texts as drawn, and what
+    the interface-state panel showed."""
     goals = goal_values(rows)
     shown, missing = choose_panels(directory, prm, rows, goals)
     fig = plt.figure(figsize=PAGE_INCHES)
@@ -745,8 +761,9 @@ def main():
         print("interface-state: step %d; %s" % (step, "; ".join(labels)))
     for g, t in zip(goals, texts):
         print("goal: %s,%s,%s,%s | value=%r | page_value=%s | page_bar=%s | "
-              "unit=%s | bar_from=%s" % (t[0], g.row["n"], g.row["family"], t[2],
-                               g.value, t[3], t[4], t[5], g.bar_from or "-"))
+              "unit=%s | bar_from=%s"
+              % (t[0], g.row["n"], g.row["family"], t[2], g.value, t[3],
+                 t[4], t[5], g.bar_from or "-"))
     print("wrote " + args.output)
 
 
