@@ -1,7 +1,7 @@
 // Hard-case stability (doc/robustness.md): elements of aspect ratio 100 on
 // both sides of a zero-thickness interface. Pure bending of a solid circular
 // cylinder (r in [0, 1], z in [0, 2], n = 1, both families; the exact
-// solution of tests/exact_solutions.cc, quadratic amplitudes, exact for any
+// solution of tests/fourier/exact_solutions.cc, quadratic amplitudes, exact for any
 // mesh) cut at z = 1 by a stiff interface (kn = ks = 1e14 kPa/m, id 5). The
 // layers 0.99 < z < 1 and 1 < z < 1.01 are split into 4 cells of 0.0025 m
 // height against a radial width of 0.25 m (aspect ratio 100), graded away

@@ -4,7 +4,7 @@
 // change the wall time only: the embedded footing of the accuracy benchmark
 // (rough, alpha = 0.5; one stiffness harmonic) on 2 cores gives the same
 // results.csv rows, bit for bit, as on 1 core (the assembly's sum does not
-// depend on its thread count, tests/assembly_threads.cc), in the same order,
+// depend on its thread count, tests/harmonic/assembly_threads.cc), in the same order,
 // and the same log apart from the timings and the side-by-side line. The
 // same at target 2e-6, where mesh 2 follows the pair in sequence. With
 // Adaptivity/Maximum DoFs between the sizes of meshes 0 and 1 the pair is not

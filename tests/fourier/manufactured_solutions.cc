@@ -1,6 +1,6 @@
 // Manufactured solutions for n = 0, 1, 2, 3 in both families, on the unit
 // square r in [0,1], z in [0,1] that touches the axis.
-// The amplitudes and body forces come from tests/mms_solutions.h, generated
+// The amplitudes and body forces come from tests/support/mms_solutions.h, generated
 // by doc/derivations/manufactured_solutions.py from the full 3D equilibrium
 // in cylindrical coordinates (independent of the B operator in the code).
 // The exact amplitudes are prescribed on r = 1, z = 0, z = 1; on the axis

@@ -76,7 +76,7 @@ namespace test_support
    * The .prm text of a manufactured-solution run on the distorted unit square
    * r, z in [0, 1] (E = 1e5, nu = 0.3): exact amplitudes on r = 1, z = 0 and
    * z = 1, the body force that makes them a solution, and the error norms.
-   * Solution: a struct of tests/mms_solutions.h or tests/mms_high_harmonics.h
+   * Solution: a struct of tests/support/mms_solutions.h or tests/support/mms_high_harmonics.h
    * (generated; their fields n, U, V, W, f_r, f_z, f_theta).
    */
   template <typename Solution>

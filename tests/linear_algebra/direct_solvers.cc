@@ -7,7 +7,7 @@
 // and interface constraints together).
 // Both solvers are backward stable, so each result carries a round-off
 // error that grows with the condition number, cond ~ 0.28 kn (measured in
-// tests/robust_penalty.cc): a forward-error bound cond * eps = 6e-7 at
+// tests/harmonic/robust_penalty.cc): a forward-error bound cond * eps = 6e-7 at
 // kn = 1e10. Measured: 1e-9 ... 1e-8. Two checks, on K_H, K_M, K_MH and the
 // foundation motion under the scene load:
 //  - kn = 1e10 (the scene): Cholesky vs LU within the bound 6e-7;

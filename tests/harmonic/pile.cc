@@ -4,7 +4,7 @@
 //  - K_H, K_M, K_MH converge under refinement (last relative increment
 //    below 0.5%, an engineering accuracy; measured 0.02%);
 //  - I_MH from unit H equals I_MH from unit M to 1e-6 (Maxwell-Betti,
-//    same reasoning as tests/embedded_footing.cc);
+//    same reasoning as tests/harmonic/embedded_footing.cc);
 //  - smooth (ks = 0) gives a smaller K_H than rough.
 // This scene also exercises interface lines that meet the axis and an
 // L-shaped interface around a flexible body (a regression test: repeated
