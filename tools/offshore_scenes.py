@@ -13,6 +13,9 @@ its own temporary folder; the script reads the last cycle of results.csv.
 
 Cases:
   shipped        the scene as shipped (Target accuracy 1e-4), timed;
+  monopile only: the base mesh of long wall cells (0.11 m x 3.5 m, 12 along
+                 the pile, no grading at the wall's ends), to show the error
+                 that the nested members do not see;
   finer          every segment of the base mesh with twice the cells (the
                  growth ratios square-rooted: the same grading), Target
                  accuracy 1e-6, the harmonics one after the other
@@ -39,7 +42,9 @@ References:
     (nu = 0.5), as quoted by a third party (the paper itself could not be
     read here; doc/offshore-foundations.md says so).
 
-Writes OUT/offshore-scenes.csv and OUT/offshore-scenes.md; prints both.
+Writes OUT/offshore-scenes-monopile.{csv,md} and
+OUT/offshore-scenes-caisson.{csv,md} (--only: that group only); prints the
+tables and the total wall time.
 """
 import argparse
 import csv
@@ -186,6 +191,64 @@ def fmt(value, error=None):
     return text
 
 
+LONG_WALL_CELLS = mesh_entries(
+    [3, 1, 22], [1, 1, 1.3], [18, 12, 1], [0.75, 1, 1],
+    extra="  set Z breakpoints = -2000, -42, 0, 0.11\n")
+
+
+def scene_cases(group):
+    """(case label, scene, appended entries) of one group."""
+    if group == "monopile":
+        scene = "prm/monopile.prm"
+        return [("shipped", scene, ""),
+                ("finer", scene, doubled(*MONOPILE_MESH) + FINER_RUN),
+                ("wall cells 0.11 m x 3.5 m", scene, LONG_WALL_CELLS)]
+    scene = "prm/suction-caisson.prm"
+    cases = [("nu=0.499 shipped", scene, ""),
+             ("nu=0.499 finer", scene, doubled(*CAISSON_MESH) + FINER_RUN),
+             ("nu=0.2 shipped geometry", scene, NU_02),
+             ("nu=0.2 skirt 0.02 m", scene, NU_02 + skirt(0.02)),
+             ("nu=0.2 skirt 0.01 m", scene, NU_02 + skirt(0.01))]
+    for size in (2000, 8000, 16000):
+        cases.append((f"nu=0.2 domain {size} m", scene, NU_02 + caisson_domain(size)))
+    return cases
+
+
+def reference_lines(group):
+    """The published or closed-form values printed under the table."""
+    if group == "monopile":
+        K, facts = randolph_flexible()
+        return [f"Randolph (1981) flexible pile: K_H = {K['K_H']:.4g}, "
+                f"K_M = {K['K_M']:.4g}, K_MH = {K['K_MH']:.4g}; "
+                f"E_p = {facts['E_p'] / 1e9:.2f} GPa (the solid pile of the tube's EI), "
+                f"E_p/G* = {facts['E_p/G*']:.0f}, l_c = {facts['l_c']:.1f} m, "
+                f"L/l_c = {facts['L/l_c']:.2f}"]
+    return [f"Doherty et al. (2005), rigid, L/D = 0.5, nu = {nu} (as quoted): "
+            f"K_H = {values['K_H']}, K_M = {values['K_M']}"
+            for nu, values in DOHERTY_2005.items()]
+
+
+def write_group(out, group, table):
+    """OUT/offshore-scenes-<group>.csv and .md; returns the markdown."""
+    with open(os.path.join(out, f"offshore-scenes-{group}.csv"), "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(["case", "wall_s", "dofs_per_harmonic"]
+                        + [c for g in GOALS for c in (g, g + "_error")])
+        for label, wall, dofs, result in table:
+            writer.writerow([label, f"{wall:.1f}", dofs]
+                            + [f"{x:.8g}" for g in GOALS for x in result[g]])
+    lines = [f"| {group} | wall [s] | DoFs/harmonic | K_V | K_H | K_M | K_MH |",
+             "|---|---|---|---|---|---|---|"]
+    for label, wall, dofs, result in table:
+        lines.append(f"| {label} | {wall:.0f} | {dofs} | "
+                     + " | ".join(fmt(*result[g]) for g in GOALS) + " |")
+    lines += [""] + reference_lines(group)
+    text = "\n".join(lines) + "\n"
+    with open(os.path.join(out, f"offshore-scenes-{group}.md"), "w") as f:
+        f.write(text)
+    return text
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--exe", default=os.path.join(ROOT, "build", "fourier-ssi"))
@@ -193,61 +256,19 @@ def main():
     parser.add_argument("--only", choices=["monopile", "caisson"])
     args = parser.parse_args()
     exe = os.path.abspath(args.exe)
-
-    cases = []  # (scene label, case label, scene, appended)
-    if args.only in (None, "monopile"):
-        cases += [("monopile", "shipped", "prm/monopile.prm", ""),
-                  ("monopile", "finer", "prm/monopile.prm",
-                   doubled(*MONOPILE_MESH) + FINER_RUN)]
-    if args.only in (None, "caisson"):
-        caisson = "prm/suction-caisson.prm"
-        cases += [("caisson nu=0.499", "shipped", caisson, ""),
-                  ("caisson nu=0.499", "finer", caisson, doubled(*CAISSON_MESH) + FINER_RUN),
-                  ("caisson nu=0.2", "shipped", caisson, NU_02),
-                  ("caisson nu=0.2", "skirt 0.02 m", caisson, NU_02 + skirt(0.02)),
-                  ("caisson nu=0.2", "skirt 0.01 m", caisson, NU_02 + skirt(0.01))]
-        for size in (2000, 8000, 16000):
-            cases.append(("caisson nu=0.2", f"domain {size} m", caisson,
-                          NU_02 + caisson_domain(size)))
-
-    table = []
-    for scene_label, case_label, scene, appended in cases:
-        result, wall, dofs = run_case(exe, scene, appended, f"{scene_label} {case_label}")
-        print(f"{scene_label}, {case_label}: {wall:.1f} s, {dofs} DoFs per harmonic: "
-              + ", ".join(f"{g} {fmt(*result[g])}" for g in GOALS), flush=True)
-        table.append((scene_label, case_label, wall, dofs, result))
-
     os.makedirs(args.out, exist_ok=True)
-    with open(os.path.join(args.out, "offshore-scenes.csv"), "w", newline="") as f:
-        writer = csv.writer(f)
-        writer.writerow(["scene", "case", "wall_s", "dofs_per_harmonic"]
-                        + [c for g in GOALS for c in (g, g + "_error")])
-        for scene_label, case_label, wall, dofs, result in table:
-            writer.writerow([scene_label, case_label, f"{wall:.1f}", dofs]
-                            + [f"{x:.8g}" for g in GOALS for x in result[g]])
-
-    lines = ["| scene | case | wall [s] | DoFs/harmonic | K_V | K_H | K_M | K_MH |",
-             "|---|---|---|---|---|---|---|---|"]
-    for scene_label, case_label, wall, dofs, result in table:
-        lines.append(f"| {scene_label} | {case_label} | {wall:.0f} | {dofs} | "
-                     + " | ".join(fmt(*result[g]) for g in GOALS) + " |")
-    if args.only in (None, "monopile"):
-        K, facts = randolph_flexible()
-        lines.append(f"| monopile | Randolph (1981) flexible | – | – | – | "
-                     f"{K['K_H']:.4g} | {K['K_M']:.4g} | {K['K_MH']:.4g} |")
-        lines.append("")
-        lines.append(f"E_p = {facts['E_p'] / 1e9:.2f} GPa (the solid pile of the tube's EI), "
-                     f"E_p/G* = {facts['E_p/G*']:.0f}, l_c = {facts['l_c']:.1f} m, "
-                     f"L/l_c = {facts['L/l_c']:.2f}")
-    if args.only in (None, "caisson"):
-        lines.append("")
-        for nu, values in DOHERTY_2005.items():
-            lines.append(f"Doherty et al. (2005), rigid, L/D = 0.5, nu = {nu} (as quoted): "
-                         f"K_H = {values['K_H']}, K_M = {values['K_M']}")
-    text = "\n".join(lines) + "\n"
-    with open(os.path.join(args.out, "offshore-scenes.md"), "w") as f:
-        f.write(text)
-    print(text)
+    start = time.time()
+    for group in ["monopile", "caisson"]:
+        if args.only not in (None, group):
+            continue
+        table = []
+        for label, scene, appended in scene_cases(group):
+            result, wall, dofs = run_case(exe, scene, appended, f"{group} {label}")
+            print(f"{group}, {label}: {wall:.1f} s, {dofs} DoFs per harmonic: "
+                  + ", ".join(f"{g} {fmt(*result[g])}" for g in GOALS), flush=True)
+            table.append((label, wall, dofs, result))
+        print(write_group(args.out, group, table))
+    print(f"total {time.time() - start:.0f} s")
 
 
 if __name__ == "__main__":
