@@ -23,7 +23,10 @@ Cases:
                  the hard guard Mesh/Maximum DoFs (an error, exit 1) before
                  Adaptivity/Maximum DoFs could stop the family as
                  unconverged (doc/offshore-foundations.md, "Limits");
-  caisson only:  nu = 0.2 (Doherty et al.'s other Poisson ratio); for
+  caisson only:  FE_Q(2) with B-bar on the shipped base mesh refined once,
+                 the skirt's corners graded by hand (another element for
+                 nu = 0.499: no volumetric locking in the answer);
+                 nu = 0.2 (Doherty et al.'s other Poisson ratio); for
                  nu = 0.2 the skirt 0.02 and 0.01 m thick instead of
                  0.04 m, and the domain 2000, 8000, 16000 m instead of
                  4000 m.
@@ -128,6 +131,22 @@ def caisson_domain(size):
                f"  set Removed regions = 4, {size}, 0, 0.04\n"))
 
 
+# Another element for the incompressible limit: FE_Q(2) with B-bar instead
+# of the target's FE_Q(4), the skirt's four corners graded 10 times by hand.
+BBAR = """subsection Discretization
+  set Target accuracy   =
+  set Polynomial degree = 2
+  set Volumetric strain = bbar
+end
+subsection Mesh
+  set Global refinements = 1
+end
+subsection Adaptivity
+  set Point refinement = 3.96, -4: 10; 4, -4: 10; 3.96, 0: 10; 4, 0: 10
+end
+"""
+
+
 def skirt(thickness):
     """The skirt `thickness` [m] thick (shipped: 0.04 m), its outer face
     at r = R."""
@@ -208,6 +227,7 @@ def scene_cases(group):
     scene = "prm/suction-caisson.prm"
     cases = [("nu=0.499 shipped", scene, ""),
              ("nu=0.499 finer", scene, doubled(*CAISSON_MESH) + FINER_RUN),
+             ("nu=0.499 FE_Q(2) B-bar", scene, BBAR),
              ("nu=0.2 shipped geometry", scene, NU_02),
              ("nu=0.2 skirt 0.02 m", scene, NU_02 + skirt(0.02)),
              ("nu=0.2 skirt 0.01 m", scene, NU_02 + skirt(0.01))]
