@@ -4,6 +4,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/numerics/error_estimator.h>
 #include <fourier_ssi/mesh/adaptivity.h>
+#include <fourier_ssi/mesh/coordinate_tolerance.h>
 #include <fourier_ssi/mesh/mesh_builder.h>
 #include <map>
 
@@ -307,10 +308,18 @@ namespace FourierSSI
     unsigned int max_levels = 0;
     for (const auto &[point, levels] : point_refinements)
       max_levels = std::max(max_levels, levels);
+    // The vertex coordinates carry the round-off of the mesh's extent: on
+    // a domain of 3e4 m a vertex at r = 1 m is off by more than 1e-6 of
+    // the smallest cell (coordinate_tolerance.h).
+    const auto corners =
+      GridTools::compute_bounding_box(triangulation).get_boundary_points();
+    const double extent = std::max(corners.first.norm(), corners.second.norm());
     for (unsigned int pass = 0; pass < max_levels; ++pass)
       {
         const double tolerance =
-          1e-6 * GridTools::minimal_cell_diameter(triangulation);
+          coincidence_tolerance(1e-6,
+                                GridTools::minimal_cell_diameter(triangulation),
+                                extent);
         for (const auto &[point, levels] : point_refinements)
           {
             if (pass >= levels)
