@@ -1,9 +1,9 @@
 #include <deal.II/base/timer.h>
 #include <filesystem>
-#include <fourier_ssi/mesh/discretization_design.h>
 #include <fourier_ssi/driver/input_checks.h>
-#include <fourier_ssi/input/messages.h>
 #include <fourier_ssi/driver/simulator.h>
+#include <fourier_ssi/input/messages.h>
+#include <fourier_ssi/mesh/discretization_design.h>
 #include <iomanip>
 #include <regex>
 
@@ -18,9 +18,9 @@ namespace FourierSSI
   ResultsTable
   Simulator::run(std::ostream &log, const bool write_files_)
   {
-    write_files = write_files_;
-    results     = ResultsTable();
-    written.clear();
+    write_files  = write_files_;
+    results      = ResultsTable();
+    result_files = write_files ? ResultFiles(parameters.output) : ResultFiles();
     // A failed run leaves no output folder it created itself (the README's
     // promise: no output at all for bad input).
     const std::filesystem::path directory     = parameters.output.directory;
@@ -28,8 +28,12 @@ namespace FourierSSI
       [&]() { return !write_files || std::filesystem::exists(directory); });
     try
       {
-        check_output_paths();
+        // An earlier run's results go first, also if this input is
+        // refused.
         remove_stale_results();
+        check_output_paths();
+        if (write_files)
+          std::filesystem::create_directories(directory);
         goal_histories.clear();
         estimate_wall_time = 0.;
         target_not_reached.clear();
@@ -70,8 +74,7 @@ namespace FourierSSI
       }
     catch (...)
       {
-        for (const std::string &file : written)
-          std::filesystem::remove(file);
+        result_files.remove_claimed();
         std::error_code ignored;
         if (!had_directory && std::filesystem::is_empty(directory, ignored))
           std::filesystem::remove(directory, ignored);
@@ -113,27 +116,12 @@ namespace FourierSSI
   {
     if (!write_files)
       return;
-    const std::filesystem::path directory = parameters.output.directory;
-    if (writes_csv() && std::filesystem::is_directory(directory))
-      {
-        // The files a run writes (names below): an earlier run's must not
-        // pass for this run's result if this one fails.
-        const std::regex ours(
-          "solution-n[0-9]+-(symmetric|antisymmetric)-cycle[0-9]+"
-          "(\\.rank[0-9]+)?\\.p?vtu|interface-[0-9]+-n[0-9]+-"
-          "(symmetric|antisymmetric)-cycle[0-9]+\\.csv|lines-3d\\.csv|"
-          "solution-3d\\.vtu|load-displacement(-incomplete)?\\.csv");
-        for (const auto &entry : std::filesystem::directory_iterator(directory))
-          {
-            const std::string name = entry.path().filename().string();
-            if (name == parameters.output.results_file ||
-                std::regex_match(name, ours))
-              std::filesystem::remove(entry.path());
-          }
-      }
+    // Rank 0 clears the folder (every rank's VTU pieces), the others wait
+    // before they write theirs.
+    if (writes_csv())
+      result_files.remove_stale();
     if (uses_distributed_solve(parameters.solver, communicator))
       MPI_Barrier(communicator);
-    std::filesystem::create_directories(directory);
   }
 
   void
@@ -239,7 +227,7 @@ namespace FourierSSI
   {
     // The harmonics that succeeded wrote files: removed by run().
     for (const HarmonicOutcome &outcome : solved)
-      written.insert(written.end(), outcome.files.begin(), outcome.files.end());
+      result_files.claim_paths(outcome.files);
     AssertThrow(false,
                 ExcMessage("cycle " + std::to_string(cycle) + ", " +
                            one_line_message(e)));
@@ -329,10 +317,6 @@ namespace FourierSSI
       return files;
     const HarmonicProblem &problem  = *solution.problem;
     const Harmonic        &harmonic = problem.get_operator().get_harmonic();
-    const std::string      suffix   = "-n" + std::to_string(harmonic.n) + "-" +
-                               to_string(harmonic.family) + "-cycle" +
-                               std::to_string(cycle);
-    const std::string &directory = parameters.output.directory;
     if (parameters.output.write_vtu)
       {
         // A stiffness scene's fields are its unit-H and unit-M solutions.
@@ -340,9 +324,10 @@ namespace FourierSSI
         if (solution.unit_solutions.size() == 2)
           extra = {{"unit_H_", &solution.unit_solutions[0]},
                    {"unit_M_", &solution.unit_solutions[1]}};
-        for (const std::string &file :
-             problem.write_vtu(directory + "/solution" + suffix + ".vtu",
-                               extra))
+        for (const std::string &file : problem.write_vtu(
+               result_files.path_of(ResultFiles::fill(
+                 "solution-n{n}-{family}-cycle{cycle}.vtu", harmonic, cycle)),
+               extra))
           files.push_back(file);
       }
     if (writes_csv() && problem.get_interfaces() &&
@@ -350,8 +335,11 @@ namespace FourierSSI
       for (const types::boundary_id id :
            problem.get_interfaces()->boundary_ids())
         {
-          const std::string name =
-            directory + "/interface-" + std::to_string(id) + suffix + ".csv";
+          const std::string name = result_files.path_of(
+            ResultFiles::fill("interface-{id}-n{n}-{family}-cycle{cycle}.csv",
+                              harmonic,
+                              cycle,
+                              id));
           files.push_back(name);
           problem.get_interfaces()->write_csv(id, problem.get_solution(), name);
         }
@@ -377,9 +365,7 @@ namespace FourierSSI
         HarmonicOutcome &outcome  = outcomes[i];
         const Harmonic  &harmonic = harmonic_set->harmonic(i);
         const auto      &problem  = harmonic_set->problem(i);
-        written.insert(written.end(),
-                       outcome.files.begin(),
-                       outcome.files.end());
+        result_files.claim_paths(outcome.files);
         for (const auto &row : outcome.report.rows)
           results.add(row.quantity, harmonic, cycle, row.value, row.unit);
         log << outcome.report.log.str() << std::endl;
@@ -449,11 +435,9 @@ namespace FourierSSI
   {
     if (!writes_csv())
       return;
-    const std::string &directory = parameters.output.directory;
     if (!parameters.output.lines.empty())
       {
-        const std::string name = directory + "/lines-3d.csv";
-        written.push_back(name);
+        const std::string name = result_files.claim("lines-3d.csv");
         reconstruction.write_lines_csv(parameters.output.lines,
                                        parameters.output.theta_degrees,
                                        name);
@@ -462,14 +446,12 @@ namespace FourierSSI
       }
     if (parameters.output.write_3d_vtu)
       {
-        const std::string name = directory + "/solution-3d.vtu";
-        written.push_back(name);
+        const std::string name = result_files.claim("solution-3d.vtu");
         reconstruction.write_revolved_vtu(parameters.output.theta_divisions,
                                           name);
         log << "revolved 3D field written to " << name << std::endl;
       }
-    const std::string name = directory + "/" + parameters.output.results_file;
-    written.push_back(name);
+    const std::string name = result_files.claim_results_file();
     results.write_csv(name);
     log << "results written to " << name << std::endl;
   }

@@ -13,9 +13,10 @@
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/coupled/anderson_acceleration.h>
 #include <fourier_ssi/fourier/harmonic.h>
+#include <fourier_ssi/harmonic/rigid_foundation.h>
+#include <fourier_ssi/input/atomic_file.h>
 #include <fourier_ssi/input/nonlinear_interface_parameters.h>
 #include <fourier_ssi/postprocess/results_table.h>
-#include <fourier_ssi/harmonic/rigid_foundation.h>
 #include <fstream>
 #include <iomanip>
 #include <ostream>
@@ -116,8 +117,8 @@ namespace FourierSSI
                       const std::string               &extra_header,
                       const ExtraColumns              &write_extra)
   {
-    std::ofstream out(filename);
-    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+    AtomicFile    file(filename);
+    std::ostream &out = file.stream();
     out << load_step_csv_header << ',' << extra_header << ",converged\n"
         << std::setprecision(12);
     for (unsigned int s = 0; s < steps.size(); ++s)
@@ -135,7 +136,7 @@ namespace FourierSSI
         write_extra(out, r);
         out << ",1\n";
       }
-    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+    file.commit();
   }
 
   /**
