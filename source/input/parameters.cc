@@ -201,7 +201,10 @@ namespace FourierSSI
                       "true",
                       Patterns::Bool(),
                       "Write the displacement amplitudes of each harmonic "
-                      "as VTU.");
+                      "as VTU (solution-n<n>-<family>-cycle<c>.vtu); with a "
+                      "coulomb interface or plastic soil those of the last "
+                      "converged step, with plastic soil without stresses "
+                      "(doc/output-files.md).");
     prm.declare_entry("Write stresses",
                       "true",
                       Patterns::Bool(),
