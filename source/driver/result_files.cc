@@ -83,10 +83,10 @@ namespace FourierSSI
       // Per harmonic and cycle: the displacement and stress amplitudes
       // (HarmonicProblem::write_vtu; one piece per rank and the .pvtu
       // record under mpirun) and the linear interfaces' tractions.
-      "solution-n{n}-{family}-cycle{cycle}.vtu",
+      harmonic_vtu,
       "solution-n{n}-{family}-cycle{cycle}.pvtu",
       "solution-n{n}-{family}-cycle{cycle}.rank{rank}.vtu",
-      "interface-{id}-n{n}-{family}-cycle{cycle}.csv",
+      interface_tractions_csv,
       // The 3D reconstruction (FieldReconstruction).
       "lines-3d.csv",
       "solution-3d.vtu",

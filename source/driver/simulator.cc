@@ -324,10 +324,10 @@ namespace FourierSSI
         if (solution.unit_solutions.size() == 2)
           extra = {{"unit_H_", &solution.unit_solutions[0]},
                    {"unit_M_", &solution.unit_solutions[1]}};
-        for (const std::string &file : problem.write_vtu(
-               result_files.path_of(ResultFiles::fill(
-                 "solution-n{n}-{family}-cycle{cycle}.vtu", harmonic, cycle)),
-               extra))
+        for (const std::string &file :
+             problem.write_vtu(result_files.path_of(ResultFiles::fill(
+                                 ResultFiles::harmonic_vtu, harmonic, cycle)),
+                               extra))
           files.push_back(file);
       }
     if (writes_csv() && problem.get_interfaces() &&
@@ -335,11 +335,8 @@ namespace FourierSSI
       for (const types::boundary_id id :
            problem.get_interfaces()->boundary_ids())
         {
-          const std::string name = result_files.path_of(
-            ResultFiles::fill("interface-{id}-n{n}-{family}-cycle{cycle}.csv",
-                              harmonic,
-                              cycle,
-                              id));
+          const std::string name = result_files.path_of(ResultFiles::fill(
+            ResultFiles::interface_tractions_csv, harmonic, cycle, id));
           files.push_back(name);
           problem.get_interfaces()->write_csv(id, problem.get_solution(), name);
         }

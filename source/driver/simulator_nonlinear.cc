@@ -162,10 +162,8 @@ namespace FourierSSI
       return;
     for (unsigned int h = 0; h < harmonic_set->size(); ++h)
       {
-        const std::string name = result_files.claim(
-          ResultFiles::fill("solution-n{n}-{family}-cycle{cycle}.vtu",
-                            harmonic_set->harmonic(h),
-                            0));
+        const std::string name = result_files.claim(ResultFiles::fill(
+          ResultFiles::harmonic_vtu, harmonic_set->harmonic(h), 0));
         harmonic_set->problem(h).write_vtu(name, {}, elastic_stresses);
       }
     log << "VTU per harmonic of the last converged step ("

@@ -43,6 +43,15 @@ namespace FourierSSI
     static const std::vector<std::string> &
     catalogue();
 
+    /** The catalogue's template of a harmonic's VTU
+     * (HarmonicProblem::write_vtu). */
+    inline static const std::string harmonic_vtu =
+      "solution-n{n}-{family}-cycle{cycle}.vtu";
+
+    /** The catalogue's template of a linear interface's tractions. */
+    inline static const std::string interface_tractions_csv =
+      "interface-{id}-n{n}-{family}-cycle{cycle}.csv";
+
     /** A catalogue template with its fields filled in. */
     static std::string
     fill(const std::string &file_template,

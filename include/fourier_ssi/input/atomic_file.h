@@ -41,8 +41,8 @@ namespace FourierSSI
     /**
      * Flush, check that every byte was written, and rename the temporary
      * file to its name (replacing an earlier file of that name). Throws
-     * "Output: cannot write 'NAME'" if anything failed; then neither name
-     * is left.
+     * "Output: cannot write 'NAME'" if anything failed; then the temporary
+     * file is removed and NAME is as it was.
      */
     void
     commit();
