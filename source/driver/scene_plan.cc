@@ -380,11 +380,24 @@ namespace FourierSSI
     }
   } // namespace
 
+  RunMode
+  run_mode_of(const AllParameters &parameters)
+  {
+    if (parameters.soil_plasticity.any())
+      return RunMode::plastic_soil;
+    if (parameters.interfaces.any_nonlinear())
+      return RunMode::nonlinear_interfaces;
+    if (parameters.discretization.target_accuracy > 0.)
+      return RunMode::linear_target;
+    return RunMode::linear_cycles;
+  }
+
   ScenePlan
   plan_scene(const AllParameters    &parameters,
              const Triangulation<2> &triangulation)
   {
-    ScenePlan       plan;
+    ScenePlan plan;
+    plan.run_mode = run_mode_of(parameters);
     HarmonicReasons reasons;
     decompose_loads(parameters, triangulation, plan, reasons);
     map_foundation_resultants(parameters, reasons);

@@ -18,70 +18,102 @@ namespace FourierSSI
   ResultsTable
   Simulator::run(std::ostream &log, const bool write_files_)
   {
-    write_files  = write_files_;
-    results      = ResultsTable();
-    result_files = write_files ? ResultFiles(parameters.output) : ResultFiles();
-    // A failed run leaves no output folder it created itself (the README's
-    // promise: no output at all for bad input).
-    const std::filesystem::path directory     = parameters.output.directory;
-    const bool                  had_directory = decided_on_rank_0<bool>(
-      [&]() { return !write_files || std::filesystem::exists(directory); });
+    start_run(write_files_);
+    const bool had_directory = output_directory_exists();
     try
       {
         // An earlier run's results go first, also if this input is
         // refused.
         remove_stale_results();
-        check_output_paths();
-        if (write_files)
-          std::filesystem::create_directories(directory);
-        goal_histories.clear();
-        estimate_wall_time = 0.;
-        target_not_reached.clear();
+        prepare_output_directory();
         make_mesh();
         make_plan(log);
-        if (parameters.soil_plasticity.any())
+        switch (plan.run_mode)
           {
-            solve_plastic_soil(log);
-            return results;
+            case RunMode::plastic_soil:
+              solve_plastic_soil(log);
+              break;
+            case RunMode::nonlinear_interfaces:
+              solve_nonlinear_interfaces(log);
+              break;
+            case RunMode::linear_target:
+              solve_to_target(log);
+              write_output(log);
+              break;
+            case RunMode::linear_cycles:
+              solve_refinement_cycles(log);
+              write_output(log);
+              break;
           }
-        if (parameters.interfaces.any_nonlinear())
-          {
-            solve_nonlinear_interfaces(log);
-            return results;
-          }
-        if (parameters.discretization.target_accuracy > 0.)
-          solve_to_target(log);
-        else
-          {
-            if (parameters.discretization.refinement_cycles == 1)
-              solve_coarser_member(log);
-            unsigned int cycle = 0;
-            for (; cycle < parameters.discretization.refinement_cycles; ++cycle)
-              {
-                if (cycle > 0)
-                  refine_mesh();
-                solve_harmonics(cycle);
-                collect_cycle(cycle, log);
-                record_goal_values();
-                if (goal_tolerance_reached(cycle, log))
-                  break;
-              }
-            report_error_estimates(
-              std::min(cycle, parameters.discretization.refinement_cycles - 1),
-              log);
-          }
-        write_output(log);
       }
     catch (...)
       {
-        result_files.remove_claimed();
-        std::error_code ignored;
-        if (!had_directory && std::filesystem::is_empty(directory, ignored))
-          std::filesystem::remove(directory, ignored);
+        discard_results(had_directory);
         throw;
       }
     return results;
   }
+
+  void
+  Simulator::start_run(const bool write_files_)
+  {
+    write_files  = write_files_;
+    results      = ResultsTable();
+    result_files = write_files ? ResultFiles(parameters.output) : ResultFiles();
+    goal_histories.clear();
+    estimate_wall_time = 0.;
+    target_not_reached.clear();
+  }
+
+  bool
+  Simulator::output_directory_exists() const
+  {
+    return decided_on_rank_0<bool>([&]() {
+      return !write_files ||
+             std::filesystem::exists(parameters.output.directory);
+    });
+  }
+
+  void
+  Simulator::prepare_output_directory() const
+  {
+    check_output_paths();
+    if (write_files)
+      std::filesystem::create_directories(parameters.output.directory);
+  }
+
+  void
+  Simulator::solve_refinement_cycles(std::ostream &log)
+  {
+    const unsigned int n_cycles = parameters.discretization.refinement_cycles;
+    if (n_cycles == 1)
+      solve_coarser_member(log);
+    unsigned int cycle = 0;
+    for (; cycle < n_cycles; ++cycle)
+      {
+        if (cycle > 0)
+          refine_mesh();
+        solve_harmonics(cycle);
+        collect_cycle(cycle, log);
+        record_goal_values();
+        if (goal_tolerance_reached(cycle, log))
+          break;
+      }
+    report_error_estimates(std::min(cycle, n_cycles - 1), log);
+  }
+
+  void
+  Simulator::discard_results(const bool had_directory)
+  {
+    // A failed run leaves no result file and no output folder it created
+    // itself (the README's promise: no output at all for bad input).
+    result_files.remove_claimed();
+    const std::filesystem::path directory = parameters.output.directory;
+    std::error_code             ignored;
+    if (!had_directory && std::filesystem::is_empty(directory, ignored))
+      std::filesystem::remove(directory, ignored);
+  }
+
 
   bool
   Simulator::writes_csv() const

@@ -132,8 +132,35 @@ namespace FourierSSI
       std::vector<double> values;
     };
 
+    /** Resets what a run accumulates and opens its catalogue of files. */
+    void
+    start_run(const bool write_files);
+
+    /** The output folder exists before the run (decided on rank 0). */
+    bool
+    output_directory_exists() const;
+
     void
     remove_stale_results() const;
+
+    /** Checks the output paths and creates the folder. */
+    void
+    prepare_output_directory() const;
+
+    /**
+     * A linear scene on Refinement cycles meshes (the coarser member first
+     * for an error bar when there is one cycle); stops early where the goal
+     * tolerance is met.
+     */
+    void
+    solve_refinement_cycles(std::ostream &log);
+
+    /**
+     * After a failure: removes the result files the run claimed and the
+     * output folder if the run created it and left it empty.
+     */
+    void
+    discard_results(const bool had_directory);
 
     void
     make_mesh();
