@@ -49,7 +49,9 @@ namespace FourierSSI
                       Patterns::Double(0.),
                       "Converged when |out-of-balance force| <= Tolerance "
                       "|applied load| (2-norms over all harmonics; the "
-                      "interface tractions then balance the load to it).");
+                      "interface tractions then balance the load to it). "
+                      "0 < Tolerance < 1e-2: a larger one accepts steps "
+                      "that have not iterated (the elastic answer).");
     prm.declare_entry("Maximum iterations",
                       "2000",
                       Patterns::Integer(1),
@@ -112,6 +114,12 @@ namespace FourierSSI
                                               Motion::rotation;
     target              = prm.get_double("Target");
     tolerance           = prm.get_double("Tolerance");
+    AssertThrow(tolerance > 0. && tolerance < largest_tolerance,
+                ExcMessage(
+                  "Nonlinear interfaces/Tolerance: " + prm.get("Tolerance") +
+                  " is outside 0 < Tolerance < 1e-2 (a step would "
+                  "be accepted with that fraction of the load out "
+                  "of balance, at 1 without iterating)"));
     maximum_iterations  = prm.get_integer("Maximum iterations");
     const std::string a = prm.get("Acceleration");
     acceleration        = a == "anderson" ? Acceleration::anderson :

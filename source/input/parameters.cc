@@ -398,6 +398,7 @@ namespace FourierSSI
                   ExcMessage("Loads/Prescribed displacement: boundary id " +
                              std::to_string(id) +
                              " is also in Boundary conditions/Dirichlet"));
+    check_problem_is_meaningful(*this);
   }
 
 

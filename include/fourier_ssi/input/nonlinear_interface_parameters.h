@@ -50,10 +50,18 @@ namespace FourierSSI
     };
 
     /** Final value of the controlled motion [m or rad]. */
-    double       target             = 0.;
-    double       tolerance          = 1e-10;
-    unsigned int maximum_iterations = 2000;
-    Acceleration acceleration       = Acceleration::aitken;
+    double target = 0.;
+    /**
+     * Relative out-of-balance force at which a step has converged. Bounded
+     * below `largest_tolerance`: at 1e-2 a step may stop with a percent of
+     * the load unbalanced, and at Tolerance = 1 the elastic trial of every
+     * step is accepted before any iteration (the elastic answer, reported
+     * with slipping and open samples).
+     */
+    double                  tolerance          = 1e-10;
+    static constexpr double largest_tolerance  = 1e-2;
+    unsigned int            maximum_iterations = 2000;
+    Acceleration            acceleration       = Acceleration::aitken;
     /** Previous residuals an Anderson update uses (m). */
     unsigned int anderson_depth    = 5;
     unsigned int maximum_step_cuts = 4;
