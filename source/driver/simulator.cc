@@ -1,9 +1,10 @@
 #include <deal.II/base/timer.h>
 #include <filesystem>
-#include <fourier_ssi/mesh/discretization_design.h>
 #include <fourier_ssi/driver/input_checks.h>
-#include <fourier_ssi/input/messages.h>
+#include <fourier_ssi/driver/memory_estimate.h>
 #include <fourier_ssi/driver/simulator.h>
+#include <fourier_ssi/input/messages.h>
+#include <fourier_ssi/mesh/discretization_design.h>
 #include <iomanip>
 #include <regex>
 
@@ -35,6 +36,10 @@ namespace FourierSSI
         target_not_reached.clear();
         make_mesh();
         make_plan(log);
+        // A run that cannot fit stops here, not after minutes of swapping.
+        check_memory_fits(estimate_run_memory(parameters, *triangulation, plan),
+                          decided_on_rank_0<double>(
+                            []() { return available_memory(); }));
         if (parameters.soil_plasticity.any())
           {
             solve_plastic_soil(log);

@@ -34,6 +34,20 @@ namespace FourierSSI
       rotation
     };
 
+    /**
+     * Upper bounds of the counts of this subsection: a typo (1e9 load
+     * steps, a million harmonics) is refused when the file is read instead
+     * of running for hours or ending in std::bad_alloc. Each is far above
+     * what a scene needs: the harmonics are those of
+     * Discretization/Harmonics (n <= 1024), whose alias-free sampling needs
+     * 2049 angles; a step cut 20 times is a millionth of the step.
+     */
+    static constexpr unsigned int largest_harmonic   = 1024;
+    static constexpr unsigned int most_theta_samples = 8192;
+    static constexpr unsigned int most_load_steps    = 10000;
+    static constexpr unsigned int most_step_cuts     = 20;
+    static constexpr unsigned int most_iterations    = 100000;
+
     /** 0: automatic, 4 (n_max + 1), at least 2 n_max + 1 (no aliasing). */
     unsigned int theta_samples = 0;
     unsigned int load_steps    = 10;
