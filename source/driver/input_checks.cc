@@ -1,4 +1,6 @@
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_tools.h>
@@ -8,6 +10,7 @@
 #include <fourier_ssi/driver/input_checks.h>
 #include <set>
 #include <sstream>
+#include <unistd.h>
 
 namespace FourierSSI
 {
@@ -156,6 +159,29 @@ namespace FourierSSI
                           "the supports; only the free components load the "
                           "body");
         }
+    }
+
+    /**
+     * A Mohr-Coulomb soil with c = 0 has no strength at zero stress: a
+     * path that starts from the unstressed state (no Initial stress) can
+     * only converge under all-round compression, and otherwise fails with
+     * the generic "did not converge" after its step cuts. Said up front,
+     * as for a coulomb interface without strength.
+     */
+    void
+    warn_cohesionless_soil(const AllParameters      &parameters,
+                           std::vector<std::string> &notes)
+    {
+      if (parameters.initial_stress.enabled())
+        return;
+      for (const auto &[id, law] : parameters.soil_plasticity.laws)
+        if (law.kind == SoilLaw::Kind::mohr_coulomb && law.cohesion == 0.)
+          notes.push_back(
+            "warning: Soil plasticity/Laws: material " + std::to_string(id) +
+            ": mohr-coulomb with c = 0 and no Initial stress has no strength "
+            "at the start of the path; unless the loads compress it all "
+            "round the first step will not converge (give c > 0 or Initial "
+            "stress)");
     }
   } // namespace
 
@@ -376,6 +402,8 @@ namespace FourierSSI
             }
       }
 
+    warn_cohesionless_soil(parameters, notes);
+
     // Volumetric locking of FE_Q(2) near incompressibility.
     const double nu = largest_poisson_ratio(materials);
     if (discretization.degree == 2 && nu >= locking_poisson_ratio)
@@ -484,6 +512,38 @@ namespace FourierSSI
     check_exact_solution_linear(parameters);
   }
 
+  namespace
+  {
+    /**
+     * Why `directory` cannot be created or written, on one line (the
+     * file system's exception would name neither the entry nor the
+     * cause in words); empty if it can. The folder or, if it does not
+     * exist yet, its nearest existing ancestor must be a directory the
+     * user may write to.
+     */
+    std::string
+    unwritable_directory_error(const std::string &directory)
+    {
+      std::error_code       ignored;
+      std::filesystem::path existing =
+        std::filesystem::absolute(directory, ignored);
+      while (!std::filesystem::exists(existing, ignored) &&
+             existing.has_relative_path())
+        existing = existing.parent_path();
+      const std::string what = "Output/Directory: '" + directory + "' ";
+      if (!std::filesystem::is_directory(existing, ignored))
+        return what + "cannot be created: '" + existing.string() +
+               "' is a file";
+      if (access(existing.c_str(), W_OK | X_OK) != 0)
+        return what + "cannot be " +
+               (existing == std::filesystem::absolute(directory, ignored) ?
+                  "written" :
+                  "created") +
+               ": '" + existing.string() + "': " + std::strerror(errno);
+      return "";
+    }
+  } // namespace
+
   std::string
   output_path_error(const OutputParameters &output)
   {
@@ -506,6 +566,9 @@ namespace FourierSSI
         !std::filesystem::is_directory(output.directory))
       return "Output/Directory: '" + output.directory +
              "' exists and is not a directory";
+    const std::string unwritable = unwritable_directory_error(directory);
+    if (!unwritable.empty())
+      return unwritable;
     // Checked before the output folder is created: a name that can only
     // be a folder ("." , "..", "sub/") counts as one even if it does not
     // exist yet.

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <deal.II/base/utilities.h>
 #include <filesystem>
 #include <fourier_ssi/driver/input_checks.h>
@@ -415,6 +416,15 @@ namespace FourierSSI
     std::stringstream text;
     text << in.rdbuf();
     std::string content = text.str();
+    // The parser reads up to the first NUL byte and would silently run the
+    // rest of the file's entries at their defaults.
+    const auto nul = content.find('\0');
+    AssertThrow(nul == std::string::npos,
+                ExcMessage(filename + ": line " +
+                           std::to_string(1 + std::count(content.begin(),
+                                                         content.begin() + nul,
+                                                         '\n')) +
+                           " contains a NUL byte: not a text parameter file"));
     // Editors on some systems start UTF-8 files with a byte-order mark; it
     // carries no meaning here.
     const std::string byte_order_mark = "\xEF\xBB\xBF";
