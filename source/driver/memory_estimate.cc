@@ -26,13 +26,15 @@ namespace FourierSSI
     /**
      * The coupled tangent over all harmonics (plastic soil, Stiffness =
      * tangent) couples every pair of harmonics at the plastic points: its
-     * LU grows like H^2 N. Fitted, with the term above, to the peak resident
-     * size of prm/pile-capacity.prm (N = 477 DoFs per harmonic) with 9 and
-     * 17 harmonics: 311 and 538 MB; the model gives 0.7 and 0.9 of the
-     * measured increments over the program, a little low on purpose (a run
-     * that fits must not be refused).
+     * LU grows like H^2 N. Measured on prm/pile-capacity.prm (N = 312 DoFs
+     * per harmonic counted as below, 3 p^2 per cell) with 9 and 17
+     * harmonics: peak resident 311 and 538 MB, 138 and 365 MB above the
+     * program. A fit a H^2 N + b H N to the two gives a = 2.4 kB (b = 27
+     * kB, the small-problem overhead of each harmonic); with the 4 kB of
+     * large factorizations for b the model gives 0.52 and 0.65 of the
+     * measured growth, low on purpose: a run that fits must not be refused.
      */
-    constexpr double tangent_bytes_per_dof_and_pair = 1.6e3;
+    constexpr double tangent_bytes_per_dof_and_pair = 2.4e3;
 
     /**
      * One theta sample of one soil quadrature point: strain, committed and
