@@ -7,10 +7,10 @@
 #include <algorithm>
 #include <cmath>
 #include <deal.II/base/timer.h>
-#include <fourier_ssi/mesh/discretization_design.h>
-#include <fourier_ssi/input/messages.h>
 #include <fourier_ssi/driver/simulator.h>
 #include <fourier_ssi/fourier/theta_sampling.h>
+#include <fourier_ssi/input/messages.h>
+#include <fourier_ssi/mesh/discretization_design.h>
 #include <iomanip>
 #include <limits>
 #include <map>
@@ -112,6 +112,49 @@ namespace FourierSSI
       }
   }
 
+  namespace
+  {
+    /**
+     * The wall time of the next member, from the last one's: times the
+     * growth of the last two members' times where two were solved on these
+     * harmonics, else as the factorization of a 2D sparse system grows
+     * with nested dissection, N^1.5 (an estimate, printed as such).
+     */
+    double
+    next_member_time(const std::vector<double> &member_times,
+                     const double               cell_growth)
+    {
+      if (member_times.empty())
+        return std::nan("");
+      const std::size_t n      = member_times.size();
+      const double      growth = n >= 2 && member_times[n - 2] > 0. ?
+                                   member_times[n - 1] / member_times[n - 2] :
+                                   std::pow(cell_growth, 1.5);
+      return member_times.back() * growth;
+    }
+
+    /**
+     * The line before a member of the coupled target starts: its size and
+     * the estimate of its time, so that a run that grows for minutes says
+     * so before each member.
+     */
+    void
+    announce_member(const int          member,
+                    const unsigned int n_cells,
+                    const double       dofs,
+                    const double       estimated_time,
+                    std::ostream      &log)
+    {
+      log << "target accuracy: starting mesh " << member << ", " << n_cells
+          << " cells, about " << static_cast<long long>(dofs)
+          << " DoFs over all harmonics";
+      if (std::isfinite(estimated_time))
+        log << ", estimated " << std::setprecision(2) << estimated_time
+            << std::setprecision(6) << " s";
+      log << std::endl;
+    }
+  } // namespace
+
   double
   Simulator::coupled_dofs() const
   {
@@ -182,6 +225,9 @@ namespace FourierSSI
     Timer               run_timer;
     double              last_member_time = 0.;
     std::vector<double> mesh_values;
+    // Wall time of each member solved on this set of harmonics (cleared
+    // with mesh_values when the harmonics double): the next one's estimate.
+    std::vector<double> member_times;
     // Member 0's goal value for each n_max solved, ascending n: the
     // truncation sequence (doubling adds to it).
     std::map<unsigned int, double> known;
@@ -220,6 +266,11 @@ namespace FourierSSI
                 target_unmet(target, why.str(), log);
                 break;
               }
+            announce_member(member,
+                            next.n_active_cells(),
+                            more * dofs,
+                            next_member_time(member_times, more),
+                            log);
             run.release();
             reconstruction = FieldReconstruction();
             harmonic_set.reset();
@@ -240,6 +291,7 @@ namespace FourierSSI
         goal = run.solve(log);
         mesh_values.push_back(goal.value);
         last_member_time = member_timer.wall_time();
+        member_times.push_back(last_member_time);
         if (!std::isfinite(goal.plateau_error))
           {
             target_unmet(target,
@@ -265,6 +317,7 @@ namespace FourierSSI
                       run, target, relative(harmonic_error), log))
                   break;
                 mesh_values.clear();
+                member_times.clear();
                 --member; // member 0 again (the loop's ++ brings it back)
               }
             continue; // two meshes are needed for the mesh error
