@@ -141,9 +141,11 @@ namespace FourierSSI
       }
     else
       {
-        estimate.driving_entry =
-          held > 1. ? "Discretization/Harmonics" : "the mesh (Mesh cells)";
-        estimate.largest_part = gigabytes(factorizations) + " for " +
+        estimate.driving_entry = held > 1. ? "Discretization/Harmonics" :
+                                 parameters.mesh.type == "gmsh" ?
+                                             "Mesh/Mesh file" :
+                                             "Mesh/R cells, Z cells";
+        estimate.largest_part  = gigabytes(factorizations) + " for " +
                                 std::to_string(static_cast<long long>(held)) +
                                 " factorizations held together x " + dofs.str();
       }

@@ -192,7 +192,10 @@ namespace FourierSSI
     prm.declare_entry("Directory",
                       "output",
                       Patterns::DirectoryName(),
-                      "Where results go (created if missing).");
+                      "Where results go (created if missing). The value "
+                      "is taken literally: not empty, no quotes; the folder "
+                      "(or its nearest existing parent) must be writable, "
+                      "checked before the run.");
     prm.declare_entry("Results file",
                       "results.csv",
                       Patterns::FileName(),

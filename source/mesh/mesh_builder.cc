@@ -97,7 +97,9 @@ namespace FourierSSI
     prm.declare_entry("R cells",
                       "4",
                       Patterns::List(Patterns::Integer(1)),
-                      "Cells per radial segment.");
+                      "Cells per radial segment. All radial cells times "
+                      "all Z cells times 3 p^2 must stay within Maximum "
+                      "DoFs (checked before the mesh is made).");
     prm.declare_entry("R growth",
                       "1",
                       Patterns::List(Patterns::Double(0.)),
@@ -110,7 +112,7 @@ namespace FourierSSI
     prm.declare_entry("Z cells",
                       "4",
                       Patterns::List(Patterns::Integer(1)),
-                      "Cells per vertical segment.");
+                      "Cells per vertical segment (bounded with R cells).");
     prm.declare_entry("Z growth",
                       "1",
                       Patterns::List(Patterns::Double(0.)),
