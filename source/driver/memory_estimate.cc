@@ -165,14 +165,30 @@ namespace FourierSSI
     return 0.;
   }
 
+  double
+  available_memory_on_all_ranks(const MPI_Comm communicator)
+  {
+    const double here = available_memory();
+    return Utilities::MPI::job_supports_mpi() ?
+             Utilities::MPI::min(here, communicator) :
+             here;
+  }
+
+  std::string
+  memory_shortfall(const MemoryEstimate &estimate, const double available)
+  {
+    if (available <= 0. || estimate.bytes <= available)
+      return "";
+    return estimate.driving_entry + ": the run needs about " +
+           gigabytes(estimate.bytes) + " (" + estimate.largest_part +
+           "), more than the free memory, " + gigabytes(available) +
+           " (MemAvailable in /proc/meminfo)";
+  }
+
   void
   check_memory_fits(const MemoryEstimate &estimate, const double available)
   {
-    AssertThrow(available <= 0. || estimate.bytes <= available,
-                ExcMessage(
-                  estimate.driving_entry + ": the run needs about " +
-                  gigabytes(estimate.bytes) + " (" + estimate.largest_part +
-                  "), more than the free memory, " + gigabytes(available) +
-                  " (MemAvailable in /proc/meminfo)"));
+    const std::string shortfall = memory_shortfall(estimate, available);
+    AssertThrow(shortfall.empty(), ExcMessage(shortfall));
   }
 } // namespace FourierSSI

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deal.II/base/timer.h>
+#include <fourier_ssi/driver/memory_estimate.h>
 #include <fourier_ssi/driver/simulator.h>
 #include <fourier_ssi/fourier/theta_sampling.h>
 #include <fourier_ssi/input/messages.h>
@@ -155,6 +156,26 @@ namespace FourierSSI
     }
   } // namespace
 
+  namespace
+  {
+    /** n = 0 .. 2 n_max in each family of `harmonics`. */
+    std::vector<Harmonic>
+    doubled_harmonics(const std::vector<Harmonic> &harmonics)
+    {
+      const unsigned int    n_max = highest_harmonic(harmonics);
+      std::vector<Harmonic> doubled;
+      for (unsigned int n = 0; n <= 2 * n_max; ++n)
+        for (const Family family : {Family::symmetric, Family::antisymmetric})
+          if (std::any_of(harmonics.begin(),
+                          harmonics.end(),
+                          [&](const Harmonic &h) {
+                            return h.family == family;
+                          }))
+            doubled.push_back({n, family});
+      return doubled;
+    }
+  } // namespace
+
   double
   Simulator::coupled_dofs() const
   {
@@ -184,6 +205,22 @@ namespace FourierSSI
     const double       dofs  = coupled_dofs();
     const unsigned int n_max = highest_harmonic(plan.harmonics);
     const double       more  = (2. * n_max + 1.) / (n_max + 1.);
+    // The doubled set must also fit in memory: its theta samples and its
+    // coupled tangent grow with the harmonics, faster than their DoFs.
+    ScenePlan doubled_plan      = plan;
+    doubled_plan.harmonics      = doubled_harmonics(plan.harmonics);
+    const std::string shortfall = memory_shortfall(
+      estimate_run_memory(parameters, *triangulation, doubled_plan),
+      available_memory_on_all_ranks(communicator));
+    if (!shortfall.empty())
+      {
+        target_unmet(target,
+                     "the harmonic truncation (n <= " + std::to_string(n_max) +
+                       ") alone is " + number(truncation) +
+                       "; doubling the harmonics: " + shortfall,
+                     log);
+        return false;
+      }
     if (more * dofs > parameters.adaptivity.maximum_dofs || 2 * n_max > 1024)
       {
         std::ostringstream why;
@@ -195,14 +232,7 @@ namespace FourierSSI
         target_unmet(target, why.str(), log);
         return false;
       }
-    std::vector<Harmonic> doubled;
-    for (unsigned int n = 0; n <= 2 * n_max; ++n)
-      for (const Family family : {Family::symmetric, Family::antisymmetric})
-        if (std::any_of(plan.harmonics.begin(),
-                        plan.harmonics.end(),
-                        [&](const Harmonic &h) { return h.family == family; }))
-          doubled.push_back({n, family});
-    plan.harmonics = doubled;
+    plan.harmonics = doubled_plan.harmonics;
     run.release();
     harmonic_set.reset();
     log << "target accuracy " << number(target) << ": the harmonic truncation "
@@ -264,6 +294,18 @@ namespace FourierSSI
                     << ") exceeds Adaptivity/Maximum DoFs = "
                     << parameters.adaptivity.maximum_dofs;
                 target_unmet(target, why.str(), log);
+                break;
+              }
+            const std::string shortfall =
+              memory_shortfall(estimate_run_memory(parameters, next, plan),
+                               available_memory_on_all_ranks(communicator));
+            if (!shortfall.empty())
+              {
+                target_unmet(target,
+                             "the next mesh (" +
+                               std::to_string(next.n_active_cells()) +
+                               " cells): " + shortfall,
+                             log);
                 break;
               }
             announce_member(member,

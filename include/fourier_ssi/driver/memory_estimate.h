@@ -10,6 +10,7 @@
 #ifndef fourier_ssi_memory_estimate_h
 #define fourier_ssi_memory_estimate_h
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/grid/tria.h>
 #include <fourier_ssi/driver/scene_plan.h>
 #include <fourier_ssi/input/parameters.h>
@@ -47,6 +48,21 @@ namespace FourierSSI
    */
   double
   available_memory();
+
+  /**
+   * The smallest available_memory() over the ranks of `communicator` (the
+   * value itself without MPI): every rank takes the same decision with it.
+   * Collective.
+   */
+  double
+  available_memory_on_all_ranks(const MPI_Comm communicator);
+
+  /**
+   * Why a run of `estimate` cannot fit in `available` (> 0), on one line
+   * naming the driving entry; empty if it fits or `available` is unknown.
+   */
+  std::string
+  memory_shortfall(const MemoryEstimate &estimate, const double available);
 
   /**
    * Throw one line naming the estimate, the free memory and the driving
