@@ -424,6 +424,7 @@ namespace FourierSSI
       }
     return notes;
   }
+
   namespace
   {
     /**
