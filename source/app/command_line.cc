@@ -191,6 +191,11 @@ namespace FourierSSI
           }
         if (argc == 2)
           prm_file = argv[1];
+        // A misspelt option would otherwise be read as a file name ("cannot
+        // open parameter file").
+        AssertThrow(prm_file.rfind("-", 0) != 0,
+                    ExcMessage("unknown option '" + prm_file +
+                               "' (fourier-ssi --help lists the options)"));
 
         // The output folder's earlier results go as soon as the folder is
         // known, before the input is checked: a refused input must not

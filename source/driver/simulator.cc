@@ -1,6 +1,7 @@
 #include <deal.II/base/timer.h>
 #include <filesystem>
 #include <fourier_ssi/driver/input_checks.h>
+#include <fourier_ssi/driver/memory_estimate.h>
 #include <fourier_ssi/driver/simulator.h>
 #include <fourier_ssi/input/messages.h>
 #include <fourier_ssi/mesh/discretization_design.h>
@@ -28,6 +29,7 @@ namespace FourierSSI
         prepare_output_directory();
         make_mesh();
         make_plan(log);
+        check_run_fits_in_memory();
         switch (plan.run_mode)
           {
             case RunMode::plastic_soil:
@@ -80,6 +82,15 @@ namespace FourierSSI
     check_output_paths();
     if (write_files)
       std::filesystem::create_directories(parameters.output.directory);
+  }
+
+  void
+  Simulator::check_run_fits_in_memory() const
+  {
+    // A run that cannot fit stops here, not after minutes of swapping.
+    check_memory_fits(estimate_run_memory(parameters, *triangulation, plan),
+                      decided_on_rank_0<double>(
+                        []() { return available_memory(); }));
   }
 
   void

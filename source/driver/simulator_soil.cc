@@ -22,13 +22,13 @@ namespace FourierSSI
     void
     check_supported(const AllParameters &parameters, const MPI_Comm comm)
     {
-      // Coulomb interfaces iterate with the soil (one correction load for
-      // both), on the harmonics given: no growth.
+      // The plastic soil iterates on the harmonics given (with or without
+      // coulomb interfaces, one correction load for both): no growth, so a
+      // Maximum harmonic above them would be ignored.
       const NonlinearInterfaceParameters &settings =
         parameters.nonlinear_interfaces;
-      AssertThrow(!parameters.interfaces.any_nonlinear() ||
-                    settings.maximum_harmonic <=
-                      highest_harmonic(parameters.discretization.harmonics),
+      AssertThrow(settings.maximum_harmonic <=
+                    highest_harmonic(parameters.discretization.harmonics),
                   ExcMessage("Nonlinear interfaces/Maximum harmonic: not "
                              "yet with plastic soil (the harmonics do not "
                              "grow); list them in Discretization/Harmonics"));

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <deal.II/base/utilities.h>
 #include <filesystem>
 #include <fourier_ssi/driver/input_checks.h>
@@ -191,7 +192,10 @@ namespace FourierSSI
     prm.declare_entry("Directory",
                       "output",
                       Patterns::DirectoryName(),
-                      "Where results go (created if missing).");
+                      "Where results go (created if missing). The value "
+                      "is taken literally: not empty, no quotes; the folder "
+                      "(or its nearest existing parent) must be writable, "
+                      "checked before the run.");
     prm.declare_entry("Results file",
                       "results.csv",
                       Patterns::FileName(),
@@ -401,6 +405,7 @@ namespace FourierSSI
                   ExcMessage("Loads/Prescribed displacement: boundary id " +
                              std::to_string(id) +
                              " is also in Boundary conditions/Dirichlet"));
+    check_problem_is_meaningful(*this);
   }
 
 
@@ -422,7 +427,20 @@ namespace FourierSSI
       AssertThrow(in, ExcMessage(filename + ": cannot open parameter file"));
       std::stringstream text;
       text << in.rdbuf();
-      std::string       content         = text.str();
+      std::string content = text.str();
+      // The parser reads up to the first NUL byte and would silently run the
+      // rest of the file's entries at their defaults.
+      const auto nul = content.find('\0');
+      AssertThrow(nul == std::string::npos,
+                  ExcMessage(
+                    filename + ": line " +
+                    std::to_string(1 + std::count(content.begin(),
+                                                  content.begin() + nul,
+                                                  '\n')) +
+                    " contains a NUL byte: not a text parameter "
+                    "file"));
+      // Editors on some systems start UTF-8 files with a byte-order mark;
+      // it carries no meaning here.
       const std::string byte_order_mark = "\xEF\xBB\xBF";
       if (content.compare(0, byte_order_mark.size(), byte_order_mark) == 0)
         content.erase(0, byte_order_mark.size());

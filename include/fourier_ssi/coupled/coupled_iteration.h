@@ -183,10 +183,17 @@ namespace FourierSSI
 
   /**
    * The one line of a load step that did not converge even after the
-   * allowed step cuts (`entry` names the solver's parameter section).
+   * allowed step cuts (`entry` names the solver's parameter section). The
+   * step is numbered as the user counts them, "load step 2 of 2 (after 4
+   * cuts)": the one of the `n_steps` equal steps that the path was in
+   * (`done`, the fraction of the stage completed), not the count of
+   * converged cut steps; `held` says it is a step of the held loads.
    */
   std::string
   unconverged_step_message(const std::string                  &entry,
+                           const double                        done,
+                           const unsigned int                  n_steps,
+                           const bool                          held,
                            const unsigned int                  converged_steps,
                            const NonlinearInterfaceParameters &settings);
 

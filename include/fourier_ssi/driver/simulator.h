@@ -147,6 +147,10 @@ namespace FourierSSI
     void
     prepare_output_directory() const;
 
+    /** Stops with one line if the run's estimated memory exceeds the free. */
+    void
+    check_run_fits_in_memory() const;
+
     /**
      * A linear scene on Refinement cycles meshes (the coarser member first
      * for an error bar when there is one cycle); stops early where the goal
