@@ -310,9 +310,7 @@ namespace FourierSSI
         if (!error)
           collect_cycle(0, log); // as member 0 would be before member 1
         for (const HarmonicOutcome &outcome : next_outcomes)
-          written.insert(written.end(),
-                         outcome.files.begin(),
-                         outcome.files.end());
+          result_files.claim_paths(outcome.files);
         try
           {
             std::rethrow_exception(error ? error : next_error);

@@ -72,13 +72,10 @@ namespace FourierSSI
           << std::endl;
     if (!writes_csv())
       return;
-    const std::string csv =
-      parameters.output.directory + "/foundation-stiffness.csv";
-    const std::string ssi =
-      parameters.output.directory + "/foundation-stiffness-subdyn.txt";
-    written.push_back(csv);
+    const std::string csv = result_files.claim("foundation-stiffness.csv");
     write_stiffness_csv(K, csv);
-    written.push_back(ssi);
+    const std::string ssi =
+      result_files.claim("foundation-stiffness-subdyn.txt");
     write_subdyn_ssi(K, ssi);
     log << "foundation stiffness written to " << csv << " and " << ssi
         << " (OpenFAST SubDyn SSI file)" << std::endl;

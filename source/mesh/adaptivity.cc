@@ -49,7 +49,11 @@ namespace FourierSSI
                       "5e5",
                       Patterns::Double(1.),
                       "Discretization/Target accuracy: the work bound, in "
-                      "DoFs per harmonic. When the next designed mesh would "
+                      "DoFs per harmonic (linear scenes: the harmonics are "
+                      "solved one by one); with plastic soil or a coulomb "
+                      "interface in DoFs of all harmonics together (they "
+                      "are solved together), so that doubling the harmonics "
+                      "is bounded too. When the next designed mesh would "
                       "exceed it, the refinement stops: the run prints the "
                       "accuracy reached and this limit, results.csv has "
                       "target_accuracy_reached = 0, and the exit code is "

@@ -1,8 +1,8 @@
 #include <algorithm>
 #include <cmath>
 #include <deal.II/base/exceptions.h>
+#include <fourier_ssi/input/atomic_file.h>
 #include <fourier_ssi/postprocess/foundation_stiffness.h>
-#include <fstream>
 #include <iomanip>
 #include <ostream>
 
@@ -27,15 +27,6 @@ namespace FourierSSI
     cross_product_matrix(const Point3 &d)
     {
       return {{{{0., -d[2], d[1]}}, {{d[2], 0., -d[0]}}, {{-d[1], d[0], 0.}}}};
-    }
-
-    /** The open file, or a one-line error naming it. */
-    std::ofstream
-    open_output(const std::string &filename)
-    {
-      std::ofstream out(filename);
-      AssertThrow(out, dealii::ExcMessage("cannot write " + filename));
-      return out;
     }
   } // namespace
 
@@ -149,19 +140,23 @@ namespace FourierSSI
   void
   write_stiffness_csv(const FoundationStiffness &K, const std::string &filename)
   {
-    std::ofstream out = open_output(filename);
+    // Complete or absent (AtomicFile), like every result file.
+    AtomicFile    file(filename);
+    std::ostream &out = file.stream();
     out << "term,value,unit,error_bar\n" << std::setprecision(10);
     for (unsigned int i = 0; i < 6; ++i)
       for (unsigned int j = i; j < 6; ++j)
         out << "K_" << dof_name(i) << "_" << dof_name(j) << ","
             << K.stiffness[i][j] << "," << stiffness_unit(i, j) << ","
             << K.error_bar[i][j] << "\n";
+    file.commit();
   }
 
   void
   write_subdyn_ssi(const FoundationStiffness &K, const std::string &filename)
   {
-    std::ofstream out = open_output(filename);
+    AtomicFile    file(filename);
+    std::ostream &out = file.stream();
     out << "! fourier-ssi: rigid foundation stiffness at (x, y, z) = ("
         << K.reference_point[0] << ", " << K.reference_point[1] << ", "
         << K.reference_point[2] << ") m\n"
@@ -173,6 +168,7 @@ namespace FourierSSI
       for (unsigned int i = 0; i <= j; ++i)
         out << std::setw(17) << K.stiffness[i][j] << "   " << subdyn_label(i, j)
             << "\n";
+    file.commit();
   }
 
   void

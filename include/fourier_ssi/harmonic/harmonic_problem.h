@@ -231,12 +231,16 @@ namespace FourierSSI
      * displacement amplitudes of the `extra` fields (e.g. a stiffness
      * scene's unit-H and unit-M solutions) named by prefix; on a
      * distributed system this rank's piece and, on rank 0, the .pvtu record.
-     * Returns the files this rank wrote (removed again if the run fails).
+     * The stresses are C eps(u) (Output/Write stresses), unless
+     * `elastic_stresses` is false: the stress of plastic soil is not
+     * C eps(u). Returns the files this rank wrote (removed again if the run
+     * fails).
      */
     std::vector<std::string>
     write_vtu(const std::string &filename,
               const std::vector<std::pair<std::string, const Vector<double> *>>
-                &extra = {}) const;
+                        &extra            = {},
+              const bool elastic_stresses = true) const;
 
     /**
      * The strain of the solution at x in cell, as the stresses are output:
