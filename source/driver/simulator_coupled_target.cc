@@ -440,6 +440,14 @@ namespace FourierSSI
     if (run.plateau)
       log << ", plateau " << goal.plateau_error / scale;
     log << std::setprecision(6) << std::endl;
+    if (run.goal_prefix == "capacity_")
+      report_normalised_capacity(goal.name,
+                                 goal.value,
+                                 goal.unit,
+                                 total,
+                                 "mesh, harmonics and plateau",
+                                 goal.steps,
+                                 log);
     const Harmonic     any{0, Family::symmetric};
     const unsigned int row  = goal.steps;
     const std::string  name = run.goal_prefix + goal.name;
@@ -460,5 +468,36 @@ namespace FourierSSI
     results.add("target_accuracy", any, row, target, "-");
     results.add("target_accuracy_reached", any, row, reached ? 1. : 0., "-");
     results.add("time_error_estimate", any, row, estimate_wall_time, "s");
+  }
+
+  void
+  Simulator::report_normalised_capacity(const std::string &name,
+                                        const double       value,
+                                        const std::string &unit,
+                                        const double       relative_error,
+                                        const std::string &error_parts,
+                                        const unsigned int row,
+                                        std::ostream      &log)
+  {
+    const RigidFoundationParameters &foundation = parameters.rigid_foundation;
+    if (foundation.capacity_name.empty())
+      return;
+    // A capacity is a magnitude (a downward V is negative).
+    const double normalised = std::abs(value) / foundation.capacity_reference;
+    log << "    " << foundation.capacity_name << " = |" << name << "| / ("
+        << foundation.capacity_reference << " " << unit
+        << ") = " << std::setprecision(7) << normalised;
+    if (std::isfinite(relative_error))
+      log << " \u00b1 " << std::setprecision(2)
+          << relative_error * std::abs(normalised) << " (" << error_parts
+          << ")";
+    log << std::setprecision(6) << std::endl;
+    const Harmonic any{0, Family::symmetric};
+    results.add("capacity_normalised", any, row, normalised, "-");
+    results.add("capacity_normalised_error",
+                any,
+                row,
+                relative_error * std::abs(normalised),
+                "-");
   }
 } // namespace FourierSSI

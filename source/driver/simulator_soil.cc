@@ -196,7 +196,6 @@ namespace FourierSSI
                             "fewer than three)"))
           << std::endl;
     }
-
   } // namespace
 
   void
@@ -222,6 +221,18 @@ namespace FourierSSI
     add_plastic_state_rows(solver, parameters, results);
     keep_last_step(solver);
     report_capacity(solver, parameters, log, results);
+    // Without a target the capacity's error bar is the plateau's alone.
+    if (has_capacity(solver, parameters))
+      {
+        const Capacity c = capacity_of(solver, parameters);
+        report_normalised_capacity(c.load.name,
+                                   c.load.value,
+                                   c.load.unit,
+                                   c.plateau_error / std::abs(c.load.value),
+                                   "the plateau's error only",
+                                   solver.get_steps().size(),
+                                   log);
+      }
   }
 
   void

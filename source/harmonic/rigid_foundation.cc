@@ -7,6 +7,43 @@
 
 namespace FourierSSI
 {
+  namespace
+  {
+    /** 'NAME = FORCE' -> (NAME, FORCE); empty text -> ("", 0). */
+    std::pair<std::string, double>
+    capacity_normalisation(const std::string &text)
+    {
+      std::string capacity_name;
+      double      capacity_reference = 0.;
+      if (Utilities::trim(text).empty())
+        return {capacity_name, capacity_reference};
+      const std::string entry  = "Rigid foundation/Capacity normalisation";
+      const auto        equals = text.find('=');
+      AssertThrow(equals != std::string::npos,
+                  ExcMessage(entry + ": '" + text +
+                             "' is not 'NAME = FORCE' (e.g. 'N_p = 100')"));
+      capacity_name = Utilities::trim(text.substr(0, equals));
+      AssertThrow(!capacity_name.empty(),
+                  ExcMessage(entry + ": '" + text + "' has no NAME"));
+      const std::string force = Utilities::trim(text.substr(equals + 1));
+      std::size_t       used  = 0;
+      try
+        {
+          capacity_reference = std::stod(force, &used);
+        }
+      catch (const std::exception &)
+        {
+          used = 0;
+        }
+      AssertThrow(used > 0 && used == force.size() &&
+                    std::isfinite(capacity_reference) &&
+                    capacity_reference > 0.,
+                  ExcMessage(entry + ": FORCE '" + force +
+                             "' is not a positive number"));
+      return {capacity_name, capacity_reference};
+    }
+  } // namespace
+
   void
   RigidFoundationParameters::declare_parameters(ParameterHandler &prm)
   {
@@ -136,6 +173,17 @@ namespace FourierSSI
                       Patterns::Double(0.),
                       "E_p [kPa] of the solid circular pile with the same "
                       "bending stiffness as that pile: E I / (pi D^4 / 64).");
+    prm.declare_entry("Capacity normalisation",
+                      "",
+                      Patterns::Anything(),
+                      "'NAME = FORCE': a plastic run under displacement "
+                      "control also prints its capacity as NAME = |capacity| "
+                      "/ FORCE with the same relative error bar, and writes "
+                      "the row capacity_normalised. FORCE [kN, or kN m for a "
+                      "moment] is the product the literature divides by, e.g. "
+                      "'N_p = 100' for a pile's s_u d L = 10 kPa x 1 m x 10 m, "
+                      "'N_c = 31.4159' for a footing's s_u pi a^2. Empty: "
+                      "not printed.");
     prm.leave_subsection();
   }
 
@@ -192,8 +240,11 @@ namespace FourierSSI
                 ExcMessage("Rigid foundation/Pile diameter: the pile formula "
                            "needs Pile length > 0, Pile Young modulus > 0 and "
                            "Stiffness coefficients (or Stiffness matrix)"));
+    std::tie(capacity_name, capacity_reference) =
+      capacity_normalisation(prm.get("Capacity normalisation"));
     prm.leave_subsection();
   }
+
 
   RigidFoundation::RigidFoundation(const RigidFoundationParameters &parameters,
                                    const Harmonic                  &harmonic)

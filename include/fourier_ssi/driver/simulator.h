@@ -147,6 +147,21 @@ namespace FourierSSI
     void
     prepare_output_directory() const;
 
+    /**
+     * Rigid foundation/Capacity normalisation: the capacity `name` =
+     * `value` [unit] as NAME = |value| / FORCE, with its relative error bar
+     * and what the bar contains (log line, rows capacity_normalised and
+     * capacity_normalised_error).
+     */
+    void
+    report_normalised_capacity(const std::string &name,
+                               const double       value,
+                               const std::string &unit,
+                               const double       relative_error,
+                               const std::string &error_parts,
+                               const unsigned int row,
+                               std::ostream      &log);
+
     /** Stops with one line if the run's estimated memory exceeds the free. */
     void
     check_run_fits_in_memory() const;

@@ -91,6 +91,13 @@ namespace FourierSSI
     double pile_diameter = 0.;
     double pile_length   = 0.;
     double pile_modulus  = 0.;
+    /**
+     * The capacity's normalisation, 'NAME = FORCE': NAME = capacity / FORCE
+     * [kN or kN m] is printed beside a capacity (N_p = H / (s_u d L) for a
+     * pile, N_c = V / (s_u A) for a footing). Empty: not printed.
+     */
+    std::string capacity_name;
+    double      capacity_reference = 0.;
   };
 
   /**
