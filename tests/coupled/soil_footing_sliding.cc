@@ -21,7 +21,7 @@
 //    band), the error falls by at least 1.8x from the coarse to the shipped
 //    mesh (first order at the footing edge, as in torsion: measured 2.18x);
 //  - Richardson's extrapolation with order 1, 2 H_h - H_2h, within 2 % of
-//    A s_u (the tolerance);
+//    A s_u (the required tolerance);
 //  - every converged step in equilibrium to 1e-8 and inside the yield
 //    surface; V stays 0.
 #include "soil_test_support.h"

@@ -14,7 +14,7 @@
 //  - the error falls by at least 1.8x from the coarse to the shipped mesh:
 //    at least first order at the footing edge (measured 2.24x);
 //  - Richardson's extrapolation with order 1, 2 T_h - T_2h, within 2 % of
-//    T_ult (the tolerance; measured -1.67 %; with the order 1.22
+//    T_ult (the required tolerance; measured -1.67 %; with the order 1.22
 //    observed on three meshes the extrapolation is +0.43 %);
 //  - every converged step in equilibrium to 1e-8 and on or inside the
 //    yield surface.

@@ -12,7 +12,7 @@
 //    rho = e_1/e_0 measured on each side of the threshold nu = 0.45
 //    (benchmarks/accuracy-on-demand/effectivity.md, "member ratios"): on a
 //    geometric sequence with ratio rho, the two-value estimate must be at
-//    least 0.8 of the true error (the reliability bound of issue 14: at
+//    least 0.8 of the true error (the reliability bound: at
 //    most 20 % under-reported); round-off only, so the bound is exact.
 #include "check.h"
 
@@ -118,7 +118,7 @@ main()
   {
     // The fastest smooth class under the slip-wedge ratio 0.6: the smooth
     // embedded footing (rho = 0.20 on K_M) is over-reported 6.0x, above
-    // the issue's sharpness goal of 5x (doc/accuracy-vs-time.md, "The slip
+    // the sharpness goal of 5x (doc/accuracy-vs-time.md, "The slip
     // wedge graded deeper"): only its reliability is asserted here, and
     // the over-report itself, (0.6/0.4)/(0.2/0.8) = 6, to round-off.
     const std::vector<double>   q = geometric(10., 0.5, 0.20, 2);

@@ -1,4 +1,4 @@
-// Exact elasticity solutions per family (issue #2, verify 3); derivations in
+// Exact elasticity solutions per family; derivations in
 // doc/theory.md.
 //
 // 1. Pure bending of a circular cylinder (Saint-Venant; Timoshenko & Goodier

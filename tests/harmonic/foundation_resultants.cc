@@ -1,6 +1,6 @@
-// Resultants on a rigid foundation map exactly to harmonics (issue #6,
-// verify 2), on the bundled embedded footing (prm/embedded-footing.prm,
-// coarse mesh, Harmonics = auto):
+// Resultants on a rigid foundation map exactly to harmonics, on the bundled
+// embedded footing (prm/embedded-footing.prm, coarse mesh, Harmonics =
+// auto):
 //  - V + H_x + M_y + T together solve n = 0 symmetric, n = 0 antisymmetric
 //    and n = 1 symmetric only, and their 3D field equals the sum of the four
 //    separate runs to 1e-8 relative. Same matrices, so the only difference

@@ -1,4 +1,4 @@
-// Bonded interfaces (issue 3, test a): a hollow block r in [0.5, 1],
+// Bonded interfaces: a hollow block r in [0.5, 1],
 // z in [0, 1] split with double nodes along z = 0.5 (interface 5) and
 // r = 0.75 (interface 6, crossing the first one), joined by stiff springs,
 // must reproduce the monolithic mesh (shared nodes, no interface).

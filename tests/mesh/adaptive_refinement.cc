@@ -1,6 +1,5 @@
 // Kelly adaptive refinement on the embedded footing (prm/embedded-footing.prm,
-// rough interface on base and side, rigid footing by constraints): issue #5,
-// adaptive refinement items 1-2. The run exercises, together, hanging nodes,
+// rough interface on base and side, rigid footing by constraints). The run exercises, together, hanging nodes,
 // interface pairs refined alike on both sides (a pairing error would abort
 // the run) and the rigid-body constraints. The unit-H and unit-M solutions
 // steer the mesh.

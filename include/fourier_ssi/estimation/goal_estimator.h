@@ -1,6 +1,6 @@
 /**
  * Goal-oriented (dual-weighted residual) error estimate for the stiffness
- * coefficients K_H, K_M, K_MH of a rigid foundation (issue 5; derivation in
+ * coefficients K_H, K_M, K_MH of a rigid foundation (derivation in
  * doc/accuracy-vs-time.md, section "Goal-oriented refinement").
  *
  * The goals are compliances. With f_H, f_M the unit-H and unit-M load
