@@ -157,8 +157,8 @@ namespace FourierSSI
     /**
      * Adds the interface part of the coupled tangent at the relative
      * displacements given (return mapping from committed_plastic) to every
-     * block (h, g) of `tangent`; D - D_t by forward differences of the
-     * return mapping (exact on the slip surface's planes, as for the soil).
+     * block (h, g) of `tangent`; D - D_t with D_t the closed-form
+     * consistent tangent of the return mapping (interface_law.h).
      * Returns the number of samples that slip or open.
      */
     unsigned int
