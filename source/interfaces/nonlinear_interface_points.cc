@@ -181,6 +181,31 @@ namespace FourierSSI
     return counts;
   }
 
+  std::vector<LocalTangent>
+  NonlinearInterfacePoints::plastic_tangents(
+    const std::vector<LocalVector> &relative,
+    const std::vector<LocalVector> &committed_plastic) const
+  {
+    const unsigned int        N = relative.size() / std::max<size_t>(size(), 1);
+    std::vector<LocalTangent> result(relative.size());
+    for (unsigned int i = 0; i < points.size(); ++i)
+      for (unsigned int j = 0; j < N; ++j)
+        {
+          const unsigned int        k = i * N + j;
+          const ReturnMappingResult r =
+            laws[points[i].law].return_map(relative[k],
+                                           points[i].initial_traction,
+                                           committed_plastic[k]);
+          // d_p = d - D^-1 (t - t0 - D d_p,old): dd_p = (I - D^-1 D_t) dd.
+          for (unsigned int a = 0; a < 3; ++a)
+            for (unsigned int b = 0; b < 3; ++b)
+              result[k][a * 3 + b] =
+                (a == b ? 1. : 0.) -
+                r.tangent[a * 3 + b] / stiffness[points[i].law][a];
+        }
+    return result;
+  }
+
   double
   NonlinearInterfacePoints::largest_yield_value(
     const std::vector<LocalVector> &traction) const

@@ -54,6 +54,11 @@ namespace FourierSSI
     double       tolerance          = 1e-10;
     unsigned int maximum_iterations = 2000;
     Acceleration acceleration       = Acceleration::aitken;
+    /**
+     * Interface-only scenes: Newton with the consistent tangent and a line
+     * search (Stiffness = tangent) instead of the initial stiffness.
+     */
+    bool tangent_stiffness = false;
     /** Previous residuals an Anderson update uses (m). */
     unsigned int anderson_depth    = 5;
     unsigned int maximum_step_cuts = 4;
