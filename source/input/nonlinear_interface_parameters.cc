@@ -75,10 +75,12 @@ namespace FourierSSI
                       "factorizations, accelerated as Acceleration says; "
                       "tangent = Newton on the interface DoFs with the "
                       "closed-form consistent tangent of the coulomb return "
-                      "mapping and a backtracking line search on the "
-                      "residual norm (few iterations at any kn; one process "
-                      "only; doc/nonlinear-interfaces.md). Plastic soil "
-                      "takes Soil plasticity/Stiffness.");
+                      "mapping, safeguarded by a line search on the "
+                      "residual norm (tens of updates where initial needs "
+                      "thousands of iterations, kappa = kn r0 / G of 1e4 "
+                      "to 1e5; not converging yet above; one process only; "
+                      "doc/nonlinear-interfaces.md section 5b). Plastic "
+                      "soil takes Soil plasticity/Stiffness.");
     prm.declare_entry("Anderson depth",
                       "10",
                       Patterns::Integer(1, 50),
