@@ -447,7 +447,19 @@ namespace FourierSSI
         if (!std::isfinite(e.residual_norm))
           return false;
         if (e.scale.converged(e.residual_norm, settings.tolerance))
-          return accept(target, e, iteration, state, result, snapshot);
+          {
+            if (!settings.tangent_stiffness)
+              return accept(target, e, iteration, state, result, snapshot);
+            // Newton: the iterate from the full solve K^-1 c, checked again.
+            // The flexibility blocks carry the round-off of K^-1, which a
+            // stiff interface (kappa >= 1e6) amplifies in G by kn; the next
+            // updates then start from the exact field (iterative
+            // refinement).
+            complete(state);
+            e = evaluate(target, state);
+            if (e.scale.converged(e.residual_norm, settings.tolerance))
+              return accept(target, e, iteration, state, result, snapshot);
+          }
         // Newton on the interface DoFs, safeguarded by a watchdog line
         // search (coupled_interface_newton.cc); where no step along the
         // Newton direction lowers |R| (a kink of the return mapping right
