@@ -76,9 +76,11 @@ namespace FourierSSI
                       "tangent = Newton on the interface DoFs with the "
                       "closed-form consistent tangent of the coulomb return "
                       "mapping, safeguarded by a line search on the "
-                      "residual norm (tens of updates where initial needs "
-                      "thousands of iterations, kappa = kn r0 / G of 1e4 "
-                      "to 1e5; not converging yet above; one process only; "
+                      "residual norm (2-3 updates at kappa = kn r0 / G up "
+                      "to 1e6 with Theta samples = 2 n_max + 1; with more "
+                      "samples a stiff penalty over-constrains the "
+                      "band-limited gap: tens of updates at 1e4-1e5, no "
+                      "convergence above; one process only; "
                       "doc/nonlinear-interfaces.md section 5b). Plastic "
                       "soil takes Soil plasticity/Stiffness.");
     prm.declare_entry("Anderson depth",
