@@ -67,7 +67,7 @@ set_tests_properties(program_disc_gap PROPERTIES
 add_test(NAME input_nonconverging_coulomb_step
   COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi>
           -DPRM=${CMAKE_CURRENT_SOURCE_DIR}/prm/nonconverging_coulomb_step.prm
-          "-DEXPECTED=Nonlinear interfaces: load step 1 did not converge"
+          "-DEXPECTED=Nonlinear interfaces: load step 1 of 1 \\(after 1 cuts\\) did not converge"
           -DOUTPUT_DIR=${CMAKE_CURRENT_BINARY_DIR}/bad_output
           -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}
           -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_failure.cmake)
@@ -113,7 +113,7 @@ add_test(NAME program_capacity_target_dofs_unreachable
 add_test(NAME input_nonconverging_soil_step
   COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi>
           -DPRM=${CMAKE_CURRENT_SOURCE_DIR}/prm/nonconverging_soil_step.prm
-          "-DEXPECTED=Soil plasticity: load step 1 did not converge"
+          "-DEXPECTED=Soil plasticity: load step 1 of 1 \\(after 0 cuts\\) did not converge"
           -DOUTPUT_DIR=${CMAKE_CURRENT_BINARY_DIR}/bad_output
           -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}
           -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_failure.cmake)
@@ -127,9 +127,66 @@ set_tests_properties(input_nonconverging_soil_step PROPERTIES
 add_test(NAME input_cylinder_mohr_coulomb_above_limit
   COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi>
           -DPRM=${CMAKE_CURRENT_SOURCE_DIR}/prm/cylinder_mohr_coulomb_above_limit.prm
-          "-DEXPECTED=Soil plasticity: load step 1 did not converge"
+          "-DEXPECTED=Soil plasticity: load step 1 of 1 \\(after 0 cuts\\) did not converge"
           -DOUTPUT_DIR=${CMAKE_CURRENT_BINARY_DIR}/bad_output
           -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}
           -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_failure.cmake)
 set_tests_properties(input_cylinder_mohr_coulomb_above_limit PROPERTIES
+  RESOURCE_LOCK bad_output)
+
+# Step numbers in messages count the Load steps, not the cut steps: the
+# cylinder above its limit in two steps with four cuts fails in step 2 of 2
+# (after 19 converged cut steps: "load step 20" before).
+add_test(NAME input_step_number_counts_load_steps
+  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi>
+          -DPRM=${CMAKE_CURRENT_SOURCE_DIR}/prm/step_number_counts_load_steps.prm
+          "-DEXPECTED=Soil plasticity: load step 2 of 2 \\(after 4 cuts\\) did not converge in 3000 iterations; the [0-9]+ converged steps are kept"
+          -DOUTPUT_DIR=${CMAKE_CURRENT_BINARY_DIR}/bad_output
+          -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_incomplete_curve.cmake)
+set_tests_properties(input_step_number_counts_load_steps PROPERTIES
+  RESOURCE_LOCK bad_output)
+
+# A misspelt option is an unknown option, not a parameter file that cannot
+# be opened.
+add_test(NAME input_unknown_option
+  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi> -DPRM=--frobnicate
+          "-DEXPECTED=^fourier-ssi: error: unknown option '--frobnicate' \\(fourier-ssi --help lists the options\\)$"
+          -DOUTPUT_DIR=${CMAKE_CURRENT_BINARY_DIR}/bad_output
+          -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_failure.cmake)
+set_tests_properties(input_unknown_option PROPERTIES RESOURCE_LOCK bad_output)
+
+# A parameter file with a NUL byte (prm/nul_byte.prm: a valid scene whose
+# line 4 holds one) is refused; the parser used to stop reading there and
+# run the rest at the defaults.
+add_test(NAME input_nul_byte
+  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi>
+          -DPRM=${CMAKE_CURRENT_SOURCE_DIR}/prm/nul_byte.prm
+          "-DEXPECTED=nul_byte.prm: line 4 contains a NUL byte: not a text parameter file"
+          -DOUTPUT_DIR=${CMAKE_CURRENT_BINARY_DIR}/bad_output
+          -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_failure.cmake)
+set_tests_properties(input_nul_byte PROPERTIES RESOURCE_LOCK bad_output)
+
+# An output folder that cannot be created gets one line naming the entry
+# and the cause, not the file system's exception (prm/output_under_file.prm
+# puts it under CTestTestfile.cmake, a file in the tests' working folder).
+add_test(NAME input_output_directory_unwritable
+  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi>
+          -DPRM=${CMAKE_CURRENT_SOURCE_DIR}/prm/output_under_file.prm
+          "-DEXPECTED=Output/Directory: 'CTestTestfile.cmake/output' cannot be created: '.*CTestTestfile.cmake' is a file$"
+          -DOUTPUT_DIR=${CMAKE_CURRENT_BINARY_DIR}/bad_output
+          -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_failure.cmake)
+set_tests_properties(input_output_directory_unwritable PROPERTIES
+  RESOURCE_LOCK bad_output)
+
+# Cohesionless Mohr-Coulomb soil without Initial stress: warned before the
+# path starts (the run itself then fails to converge, as the warning says).
+add_test(NAME program_cohesionless_soil_warning
+  COMMAND fourier-ssi ${CMAKE_CURRENT_SOURCE_DIR}/prm/cohesionless_soil.prm
+  WORKING_DIRECTORY ${CMAKE_CURRENT_BINARY_DIR})
+set_tests_properties(program_cohesionless_soil_warning PROPERTIES
+  PASS_REGULAR_EXPRESSION "warning: Soil plasticity/Laws: material 0: mohr-coulomb with c = 0 and no Initial stress has no strength"
   RESOURCE_LOCK bad_output)

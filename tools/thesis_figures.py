@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Regenerate the thesis figure families with error bars (issue 14, item 5).
+"""Regenerate the thesis figure families with error bars.
 
 Usage: tools/thesis_figures.py [--exe build/fourier-ssi] [--mpi 2]
                                [--only footing,pile,table-4-1,table-7-1,disc]

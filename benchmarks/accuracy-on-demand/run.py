@@ -4,7 +4,7 @@
 The embedded footing (e/a = 1, alpha = 0.5, nu = 0.25) on the coarse base
 mesh of the hand-tuned recipes, driven only by Discretization/Target
 accuracy (no grading of its own), and the hand-tuned recipes prm/embedded-footing-graded.prm (1e-4)
-and -precise.prm (1e-6), each run --repeat times in the same session;
+and -precise.prm (1e-6), each run --repeat times in one invocation;
 medians. Per run: the process wall time, the computation (the wall time
 of the answer's mesh, its 'cycle k summary' line, plus the solves made for
 its estimate, row time_error_estimate: without start-up), the time of the solves made only for the error estimate (row
@@ -12,12 +12,12 @@ time_error_estimate: the coarsened mesh of a one-mesh run, the members
 before the answer's of a Target accuracy run) as a fraction of the
 computation, the peak resident memory of the process, the DoFs of the
 answer, its estimated and its true error (references: doc/accuracy-vs-time.md,
-third version, good to a few 1e-7 for rough; the smooth reference is the
+"The converged references", good to a few 1e-7 for rough; the smooth reference is the
 finest member of benchmarks/accuracy-on-demand/effectivity.csv).
 
 Usage: run.py --exe build/fourier-ssi [--repeat 3] [--before OLD_EXE]
 With --before, every run of a case is made with OLD_EXE first and then
-with --exe, alternately in the same session, and the table has a
+with --exe, alternately in one invocation, and the table has a
 "(before)" row above each case: before/after under the same load.
 Writes benchmark.csv and benchmark.md next to this script.
 """
@@ -178,7 +178,7 @@ def main():
         w.writeheader()
         w.writerows(lines)
     with open(HERE / "benchmark.md", "w") as f:
-        f.write("Medians of the runs of each case, one session, 2 cores "
+        f.write("Medians of the runs of each case, one invocation, 2 cores "
                 "shared with other jobs.\n\n"
                 "| case | runs | DoFs | process [s] | computation [s] | peak "
                 "memory [MiB] | estimate "

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Accuracy vs wall time with a priori graded FE_Q(4) meshes and the
-Cholesky solver (issue 5, third version of the study).
+Cholesky solver (doc/verification/accuracy-vs-time.md §8).
 
 Case: the embedded rigid footing of prm/embedded-footing.prm (e/a = 1,
 alpha = 0.5, nu = 0.25), rough and smooth interface. Mesh family: FE_Q(4)

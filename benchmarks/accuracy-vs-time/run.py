@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """Accuracy vs wall time of the stiffness coefficients K_H, K_M, K_MH
-(issue 5, first version).
+(uniform, Kelly and goal-oriented refinement;
+doc/verification/accuracy-vs-time.md §9).
 
 Cases: embedded rigid footing e/a = 1 (prm/embedded-footing.prm geometry),
 alpha = 0, 0.5, 1, nu = 0.25, rough and smooth interface; alpha = 0.5,

@@ -8,7 +8,7 @@ section 8), in one invocation:
    prm/pile-capacity.prm (the rigid pile in a Tresca layer, smooth shaft)
    shortened to 4 steps to u = 0.02 m = 0.02 d (past first yield, onto the
    plateau);
-2. the bundled capacity curves as shipped, each to its plateau (the issue's
+2. the bundled capacity curves as shipped, each to its plateau (the
    goal: 60 s each on 2 cores).
 
     /usr/bin/python3 benchmarks/soil-plasticity/run.py [BUILD_DIR] [RUNS]

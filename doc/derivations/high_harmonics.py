@@ -1,10 +1,10 @@
 #!/usr/bin/python3
 """
 Manufactured solutions for high harmonics n = 8 and n = 16 (symmetric family)
-for tests/robust_high_harmonics.cc (issue 5, hard-case stability suite).
+for tests/harmonic/robust_high_harmonics.cc (hard-case stability suite, doc/robustness.md).
 
 Run:   /usr/bin/python3 doc/derivations/high_harmonics.py
-Writes tests/mms_high_harmonics.h (or the path given as first argument) and
+Writes tests/support/mms_high_harmonics.h (or the path given as first argument) and
 prints PASS/FAIL lines; exits non-zero on failure.
 
 Reuses manufactured_solutions.py unchanged: the same amplitudes (U - W =

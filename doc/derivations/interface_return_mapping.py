@@ -7,7 +7,7 @@ exits non-zero on a failure.
     increment is dl * grad g (g = tau + t_n tan(psi)), i.e. t = t_tr - D dl grad g.
  2. The theta integral of the virtual work, trapezoidal rule with N > 2 n_max,
     equals the exact integral for products of harmonics <= n_max.
- 3. The capacities of the rigid pile used by tests/interface_coulomb_pile.cc.
+ 3. The capacities of the rigid pile used by tests/coupled/interface_coulomb_pile.cc.
  4. Gauss with p + 1 points integrates N_i N_j r (degree 2p + 1) exactly.
 """
 import sys

@@ -3,7 +3,7 @@
 Manufactured solutions for the Fourier (semi-analytical) elasticity solver.
 
 Run:   /usr/bin/python3 doc/derivations/manufactured_solutions.py
-Writes tests/mms_solutions.h (path relative to the repository root; pass
+Writes tests/support/mms_solutions.h (path relative to the repository root; pass
 another path as the first argument) and prints PASS/FAIL lines; exits
 non-zero on failure.
 

@@ -5,15 +5,16 @@
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/utilities.h>
-#include <fourier_ssi/driver/batch_runner.h>
 #include <fourier_ssi/app/command_line.h>
-#include <fourier_ssi/linear_algebra/huge_page_allocation.h>
-#include <fourier_ssi/interfaces/interface_element.h>
+#include <fourier_ssi/driver/batch_runner.h>
+#include <fourier_ssi/driver/result_files.h>
+#include <fourier_ssi/driver/simulator.h>
 #include <fourier_ssi/input/messages.h>
 #include <fourier_ssi/input/parameters.h>
 #include <fourier_ssi/input/prm_values.h>
+#include <fourier_ssi/interfaces/interface_element.h>
+#include <fourier_ssi/linear_algebra/huge_page_allocation.h>
 #include <fourier_ssi/linear_algebra/serial_blas.h>
-#include <fourier_ssi/driver/simulator.h>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -190,7 +191,17 @@ namespace FourierSSI
           }
         if (argc == 2)
           prm_file = argv[1];
+        // A misspelt option would otherwise be read as a file name ("cannot
+        // open parameter file").
+        AssertThrow(prm_file.rfind("-", 0) != 0,
+                    ExcMessage("unknown option '" + prm_file +
+                               "' (fourier-ssi --help lists the options)"));
 
+        // The output folder's earlier results go as soon as the folder is
+        // known, before the input is checked: a refused input must not
+        // leave them beside its error line.
+        if (root)
+          remove_stale_results_of(prm_file);
         AllParameters parameters;
         parameters.read_file(prm_file);
         if (!parameters.solver.is_direct() ||

@@ -690,6 +690,9 @@ namespace FourierSSI
           {
             AssertThrow(++cuts <= settings.maximum_step_cuts,
                         ExcMessage(unconverged_step_message(entry,
+                                                            done,
+                                                            settings.load_steps,
+                                                            false,
                                                             steps.size(),
                                                             settings)));
             increment /= 2.;

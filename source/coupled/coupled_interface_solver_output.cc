@@ -4,6 +4,7 @@
 #include <cmath>
 #include <fourier_ssi/coupled/coupled_interface_solver.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
+#include <fourier_ssi/input/atomic_file.h>
 #include <fstream>
 #include <iomanip>
 
@@ -42,8 +43,8 @@ namespace FourierSSI
   {
     AssertThrow(!snapshots.empty(),
                 ExcMessage(entry_name + ": no converged step to write"));
-    std::ofstream out(filename);
-    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+    AtomicFile               file(filename);
+    std::ostream            &out  = file.stream();
     const InterfaceSnapshot &last = snapshots.back();
     const unsigned int       N = sampling.n_samples(), P = points.size() * N;
     // One VTK_VERTEX (type 1) per (point, theta) sample.
@@ -87,6 +88,6 @@ namespace FourierSSI
     vectors("traction_s_n_theta_kPa", last.traction);
     vectors("relative_displacement_s_n_theta_m", last.relative);
     out << "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
-    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+    file.commit();
   }
 } // namespace FourierSSI

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <fourier_ssi/coupled/coupled_iteration.h>
 
@@ -119,13 +120,22 @@ namespace FourierSSI
 
   std::string
   unconverged_step_message(const std::string                  &entry,
+                           const double                        done,
+                           const unsigned int                  n_steps,
+                           const bool                          held,
                            const unsigned int                  converged_steps,
                            const NonlinearInterfaceParameters &settings)
   {
-    return entry + ": load step " + std::to_string(converged_steps + 1) +
-           " did not converge in " +
-           std::to_string(settings.maximum_iterations) + " iterations after " +
-           std::to_string(settings.maximum_step_cuts) + " step cuts; the " +
+    // The step whose interval [k-1, k] / n_steps the path was in; the
+    // round-off guard keeps a completed step's end out of the next.
+    const unsigned int step = std::min<unsigned int>(
+      n_steps,
+      static_cast<unsigned int>(std::floor(done * n_steps + 1e-9)) + 1);
+    return entry + ": load step " + std::to_string(step) + " of " +
+           std::to_string(n_steps) + (held ? " of the held loads" : "") +
+           " (after " + std::to_string(settings.maximum_step_cuts) +
+           " cuts) did not converge in " +
+           std::to_string(settings.maximum_iterations) + " iterations; the " +
            std::to_string(converged_steps) + " converged steps are kept";
   }
 

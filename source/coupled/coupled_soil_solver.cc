@@ -1250,10 +1250,10 @@ namespace FourierSSI
         const auto     clock = std::chrono::steady_clock::now();
         if (!solve_step(target, holding, state, result))
           {
-            AssertThrow(++cuts <= settings.maximum_step_cuts,
-                        ExcMessage(unconverged_step_message(entry,
-                                                            steps.size(),
-                                                            settings)));
+            AssertThrow(
+              ++cuts <= settings.maximum_step_cuts,
+              ExcMessage(unconverged_step_message(
+                entry, done, n_steps, holding, steps.size(), settings)));
             increment /= 2.;
             easy_steps = 0;
             if (just_grown)

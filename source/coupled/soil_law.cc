@@ -1,8 +1,9 @@
 #include <cmath>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/utilities.h>
-#include <fourier_ssi/input/prm_values.h>
 #include <fourier_ssi/coupled/soil_law.h>
+#include <fourier_ssi/input/prm_values.h>
+#include <set>
 #include <sstream>
 
 namespace FourierSSI
@@ -266,14 +267,16 @@ namespace FourierSSI
         else
           fail(where + "unknown law '" + words[0] +
                "' (expected tresca or mohr-coulomb)");
-        bool has_su = false, has_c = false, has_phi = false;
+        bool                  has_su = false, has_c = false, has_phi = false;
+        std::set<std::string> keys_given;
         for (unsigned int w = 1; w < words.size(); ++w)
           {
             const auto eq = words[w].find('=');
             if (eq == std::string::npos)
               fail(where + "'" + words[w] + "' is not key=value");
             const std::string key = Utilities::trim(words[w].substr(0, eq));
-            const double      value =
+            record_key_once(keys_given, key, entry, item);
+            const double value =
               number_in_entry(words[w].substr(eq + 1), entry);
             const bool is_tresca = law.kind == SoilLaw::Kind::tresca;
             if (is_tresca && key == "su")

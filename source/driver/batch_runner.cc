@@ -5,9 +5,11 @@
 #include <filesystem>
 #include <fourier_ssi/driver/batch_runner.h>
 #include <fourier_ssi/driver/case_queue.h>
+#include <fourier_ssi/driver/result_files.h>
+#include <fourier_ssi/driver/simulator.h>
+#include <fourier_ssi/input/atomic_file.h>
 #include <fourier_ssi/input/messages.h>
 #include <fourier_ssi/input/parameters.h>
-#include <fourier_ssi/driver/simulator.h>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -65,6 +67,9 @@ namespace FourierSSI
       std::ostringstream log;
       try
         {
+          // As a single run: the case's earlier results go before its input
+          // is checked.
+          remove_stale_results_of(file);
           AllParameters parameters;
           parameters.read_file(file);
           log << "fourier-ssi: " << file << '\n';
@@ -162,15 +167,21 @@ namespace FourierSSI
           n_ok += all_status[owner(c)][c] == "ok";
         if (n_ok > 0)
           {
-            std::ofstream file(csv_file);
-            file << csv.str();
-            if (!file)
+            bool written = false;
+            try
+              {
+                AtomicFile file(csv_file);
+                file.stream() << csv.str();
+                file.commit();
+                written = true;
+              }
+            catch (const std::exception &)
               {
                 err << "fourier-ssi: error: --batch: cannot write '" << csv_file
                     << "'" << std::endl;
                 exit_code = 1;
               }
-            else
+            if (written)
               out << n_ok << " of " << cases.size() << " cases succeeded on "
                   << n_ranks << " ranks, their results written to " << csv_file
                   << std::endl;

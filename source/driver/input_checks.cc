@@ -1,4 +1,6 @@
+#include <cerrno>
 #include <cmath>
+#include <cstring>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_tools.h>
@@ -8,6 +10,7 @@
 #include <fourier_ssi/driver/input_checks.h>
 #include <set>
 #include <sstream>
+#include <unistd.h>
 
 namespace FourierSSI
 {
@@ -156,6 +159,29 @@ namespace FourierSSI
                           "the supports; only the free components load the "
                           "body");
         }
+    }
+
+    /**
+     * A Mohr-Coulomb soil with c = 0 has no strength at zero stress: a
+     * path that starts from the unstressed state (no Initial stress) can
+     * only converge under all-round compression, and otherwise fails with
+     * the generic "did not converge" after its step cuts. Said up front,
+     * as for a coulomb interface without strength.
+     */
+    void
+    warn_cohesionless_soil(const AllParameters      &parameters,
+                           std::vector<std::string> &notes)
+    {
+      if (parameters.initial_stress.enabled())
+        return;
+      for (const auto &[id, law] : parameters.soil_plasticity.laws)
+        if (law.kind == SoilLaw::Kind::mohr_coulomb && law.cohesion == 0.)
+          notes.push_back(
+            "warning: Soil plasticity/Laws: material " + std::to_string(id) +
+            ": mohr-coulomb with c = 0 and no Initial stress has no strength "
+            "at the start of the path; unless the loads compress it all "
+            "round the first step will not converge (give c > 0 or Initial "
+            "stress)");
     }
   } // namespace
 
@@ -376,6 +402,8 @@ namespace FourierSSI
             }
       }
 
+    warn_cohesionless_soil(parameters, notes);
+
     // Volumetric locking of FE_Q(2) near incompressibility.
     const double nu = largest_poisson_ratio(materials);
     if (discretization.degree == 2 && nu >= locking_poisson_ratio)
@@ -396,9 +424,142 @@ namespace FourierSSI
       }
     return notes;
   }
+
+  namespace
+  {
+    /**
+     * Displacement control drives the controlled motion from where the
+     * held stage left it to Target: a Target of 0 is a path of zero length
+     * (every step the unloaded state, reported as converged).
+     */
+    void
+    check_displacement_target(const AllParameters &parameters)
+    {
+      const NonlinearInterfaceParameters &path =
+        parameters.nonlinear_interfaces;
+      AssertThrow(!parameters.coupled() ||
+                    path.control !=
+                      NonlinearInterfaceParameters::Control::displacement ||
+                    path.target != 0.,
+                  ExcMessage("Nonlinear interfaces/Target: 0 with Control = "
+                             "displacement, the controlled motion would not "
+                             "move; give its final value [m or rad]"));
+    }
+
+    /** True if some load of the scene is not zero. */
+    bool
+    scene_has_load(const AllParameters &parameters)
+    {
+      const RigidFoundationParameters &foundation = parameters.rigid_foundation;
+      const BoundaryConditions        &bc = parameters.boundary_conditions;
+      const auto                       any_nonzero =
+        [](const std::map<types::boundary_id, ComponentExpressions> &entries) {
+          for (const auto &[id, e] : entries)
+            if (!e.is_zero())
+              return true;
+          return false;
+        };
+      const bool foundation_load =
+        foundation.enabled &&
+        (foundation.horizontal_force != 0. || foundation.moment != 0. ||
+         foundation.horizontal_force_y != 0. || foundation.moment_x != 0. ||
+         foundation.vertical_force != 0. || foundation.torque != 0. ||
+         foundation.any_held());
+      return foundation_load || !bc.body_force.is_zero() ||
+             any_nonzero(bc.traction) || any_nonzero(bc.dirichlet) ||
+             any_nonzero(parameters.loads.traction) ||
+             any_nonzero(parameters.loads.displacement);
+    }
+
+    /**
+     * Load control scales the scene's loads along the path: with every
+     * load zero each step solves the unloaded state (displacement control
+     * refuses the same scene when the pattern solve finds no motion).
+     */
+    void
+    check_load_control_has_load(const AllParameters &parameters)
+    {
+      AssertThrow(!parameters.coupled() ||
+                    parameters.nonlinear_interfaces.control !=
+                      NonlinearInterfaceParameters::Control::load ||
+                    scene_has_load(parameters),
+                  ExcMessage("Nonlinear interfaces/Control = load: every "
+                             "load is zero (Rigid foundation, Loads, "
+                             "Boundary conditions, Body force), the path "
+                             "has nothing to scale"));
+    }
+
+    /**
+     * The error norms compare one harmonic's amplitudes with a closed form
+     * (a linear solve); the coupled paths (plastic soil, coulomb
+     * interfaces) do not compute them.
+     */
+    void
+    check_exact_solution_linear(const AllParameters &parameters)
+    {
+      AssertThrow(!parameters.exact_solution.enabled || !parameters.coupled(),
+                  ExcMessage("Exact solution/Enabled: error norms are "
+                             "computed for linear runs only, not with "
+                             "plastic soil or a coulomb interface; set it "
+                             "false"));
+    }
+  } // namespace
+
+  void
+  check_problem_is_meaningful(const AllParameters &parameters)
+  {
+    check_displacement_target(parameters);
+    check_load_control_has_load(parameters);
+    check_exact_solution_linear(parameters);
+  }
+
+  namespace
+  {
+    /**
+     * Why `directory` cannot be created or written, on one line (the
+     * file system's exception would name neither the entry nor the
+     * cause in words); empty if it can. The folder or, if it does not
+     * exist yet, its nearest existing ancestor must be a directory the
+     * user may write to.
+     */
+    std::string
+    unwritable_directory_error(const std::string &directory)
+    {
+      std::error_code       ignored;
+      std::filesystem::path existing =
+        std::filesystem::absolute(directory, ignored);
+      while (!std::filesystem::exists(existing, ignored) &&
+             existing.has_relative_path())
+        existing = existing.parent_path();
+      const std::string what = "Output/Directory: '" + directory + "' ";
+      if (!std::filesystem::is_directory(existing, ignored))
+        return what + "cannot be created: '" + existing.string() +
+               "' is a file";
+      if (access(existing.c_str(), W_OK | X_OK) != 0)
+        return what + "cannot be " +
+               (existing == std::filesystem::absolute(directory, ignored) ?
+                  "written" :
+                  "created") +
+               ": '" + existing.string() + "': " + std::strerror(errno);
+      return "";
+    }
+  } // namespace
+
   std::string
   output_path_error(const OutputParameters &output)
   {
+    // A .prm value is taken literally: 'Directory = ""' would create a
+    // folder named "" (two quote characters), an empty value has no folder
+    // to create.
+    const std::string directory = Utilities::trim(output.directory);
+    const bool        quoted =
+      directory.size() >= 2 &&
+      (directory.front() == '"' || directory.front() == '\'') &&
+      directory.back() == directory.front();
+    if (directory.empty() || quoted)
+      return "Output/Directory: '" + directory +
+             "' is not a folder name (values are taken literally, without "
+             "quotes); give one such as output, or . for the working folder";
     if (Utilities::trim(output.results_file).empty())
       return "Output/Results file: empty; give a file name such as "
              "results.csv";
@@ -406,6 +567,9 @@ namespace FourierSSI
         !std::filesystem::is_directory(output.directory))
       return "Output/Directory: '" + output.directory +
              "' exists and is not a directory";
+    const std::string unwritable = unwritable_directory_error(directory);
+    if (!unwritable.empty())
+      return unwritable;
     // Checked before the output folder is created: a name that can only
     // be a folder ("." , "..", "sub/") counts as one even if it does not
     // exist yet.

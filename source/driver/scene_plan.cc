@@ -284,6 +284,43 @@ namespace FourierSSI
         }
     }
 
+    /**
+     * What Output/Write vtu writes in this run, as the log says it: the
+     * coupled runs write the last converged step; the stress of plastic
+     * soil is not C eps(u), so only its displacements are written.
+     */
+    std::string
+    vtu_per_harmonic(const AllParameters &parameters)
+    {
+      const OutputParameters &output = parameters.output;
+      if (!output.write_vtu)
+        return "skipped (Output/Write vtu = false)";
+      if (parameters.soil_plasticity.any())
+        return "displacement amplitudes of the last converged step (stresses "
+               "not written with plastic soil: C eps(u) omits the plastic "
+               "strain)";
+      const std::string fields =
+        output.write_stresses ? "displacement and stress amplitudes" :
+                                "displacement amplitudes (stresses not asked)";
+      return parameters.interfaces.any_nonlinear() ?
+               fields + " of the last converged step" :
+               fields;
+    }
+
+    /** What Output/Write interface tractions writes in this run. */
+    std::string
+    interface_tractions_output(const AllParameters &parameters)
+    {
+      if (parameters.interfaces.any_nonlinear())
+        return "interface-state.csv (coulomb interfaces: state, tractions "
+               "and relative displacements per point, angle and step)";
+      if (parameters.soil_plasticity.any())
+        return "not written with plastic soil and linear interfaces";
+      return parameters.output.write_interface_tractions ?
+               "written" :
+               "skipped (Output/Write interface tractions = false)";
+    }
+
     /** One log line per effect: simulated, or skipped and why. */
     void
     describe_effects(const AllParameters    &parameters,
@@ -325,19 +362,11 @@ namespace FourierSSI
         plan.log_lines.push_back("stiffness coefficients: unit-H and unit-M "
                                  "solves on n = 1 symmetric");
       const OutputParameters &output = parameters.output;
-      plan.log_lines.push_back(
-        std::string("VTU per harmonic: ") +
-        (output.write_vtu ? (output.write_stresses ? "displacement and stress "
-                                                     "amplitudes" :
-                                                     "displacement amplitudes "
-                                                     "(stresses not asked)") :
-                            "skipped (Output/Write vtu = false)"));
+      plan.log_lines.push_back("VTU per harmonic: " +
+                               vtu_per_harmonic(parameters));
       if (parameters.interfaces.enabled())
-        plan.log_lines.push_back(
-          std::string("interface tractions CSV: ") +
-          (output.write_interface_tractions ?
-             "written" :
-             "skipped (Output/Write interface tractions = false)"));
+        plan.log_lines.push_back("interface tractions CSV: " +
+                                 interface_tractions_output(parameters));
       plan.log_lines.push_back(
         std::string("3D reconstruction: ") +
         (output.lines.empty() && !output.write_3d_vtu ?
@@ -351,11 +380,24 @@ namespace FourierSSI
     }
   } // namespace
 
+  RunMode
+  run_mode_of(const AllParameters &parameters)
+  {
+    if (parameters.soil_plasticity.any())
+      return RunMode::plastic_soil;
+    if (parameters.interfaces.any_nonlinear())
+      return RunMode::nonlinear_interfaces;
+    if (parameters.discretization.target_accuracy > 0.)
+      return RunMode::linear_target;
+    return RunMode::linear_cycles;
+  }
+
   ScenePlan
   plan_scene(const AllParameters    &parameters,
              const Triangulation<2> &triangulation)
   {
-    ScenePlan       plan;
+    ScenePlan plan;
+    plan.run_mode = run_mode_of(parameters);
     HarmonicReasons reasons;
     decompose_loads(parameters, triangulation, plan, reasons);
     map_foundation_resultants(parameters, reasons);

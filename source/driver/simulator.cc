@@ -1,9 +1,10 @@
 #include <deal.II/base/timer.h>
 #include <filesystem>
-#include <fourier_ssi/mesh/discretization_design.h>
 #include <fourier_ssi/driver/input_checks.h>
-#include <fourier_ssi/input/messages.h>
+#include <fourier_ssi/driver/memory_estimate.h>
 #include <fourier_ssi/driver/simulator.h>
+#include <fourier_ssi/input/messages.h>
+#include <fourier_ssi/mesh/discretization_design.h>
 #include <iomanip>
 #include <regex>
 
@@ -18,67 +19,112 @@ namespace FourierSSI
   ResultsTable
   Simulator::run(std::ostream &log, const bool write_files_)
   {
-    write_files = write_files_;
-    results     = ResultsTable();
-    written.clear();
-    // A failed run leaves no output folder it created itself (the README's
-    // promise: no output at all for bad input).
-    const std::filesystem::path directory     = parameters.output.directory;
-    const bool                  had_directory = decided_on_rank_0<bool>(
-      [&]() { return !write_files || std::filesystem::exists(directory); });
+    start_run(write_files_);
+    const bool had_directory = output_directory_exists();
     try
       {
-        check_output_paths();
+        // An earlier run's results go first, also if this input is
+        // refused.
         remove_stale_results();
-        goal_histories.clear();
-        estimate_wall_time = 0.;
-        target_not_reached.clear();
+        prepare_output_directory();
         make_mesh();
         make_plan(log);
-        if (parameters.soil_plasticity.any())
+        check_run_fits_in_memory();
+        switch (plan.run_mode)
           {
-            solve_plastic_soil(log);
-            return results;
+            case RunMode::plastic_soil:
+              solve_plastic_soil(log);
+              break;
+            case RunMode::nonlinear_interfaces:
+              solve_nonlinear_interfaces(log);
+              break;
+            case RunMode::linear_target:
+              solve_to_target(log);
+              write_output(log);
+              break;
+            case RunMode::linear_cycles:
+              solve_refinement_cycles(log);
+              write_output(log);
+              break;
           }
-        if (parameters.interfaces.any_nonlinear())
-          {
-            solve_nonlinear_interfaces(log);
-            return results;
-          }
-        if (parameters.discretization.target_accuracy > 0.)
-          solve_to_target(log);
-        else
-          {
-            if (parameters.discretization.refinement_cycles == 1)
-              solve_coarser_member(log);
-            unsigned int cycle = 0;
-            for (; cycle < parameters.discretization.refinement_cycles; ++cycle)
-              {
-                if (cycle > 0)
-                  refine_mesh();
-                solve_harmonics(cycle);
-                collect_cycle(cycle, log);
-                record_goal_values();
-                if (goal_tolerance_reached(cycle, log))
-                  break;
-              }
-            report_error_estimates(
-              std::min(cycle, parameters.discretization.refinement_cycles - 1),
-              log);
-          }
-        write_output(log);
       }
     catch (...)
       {
-        for (const std::string &file : written)
-          std::filesystem::remove(file);
-        std::error_code ignored;
-        if (!had_directory && std::filesystem::is_empty(directory, ignored))
-          std::filesystem::remove(directory, ignored);
+        discard_results(had_directory);
         throw;
       }
     return results;
   }
+
+  void
+  Simulator::start_run(const bool write_files_)
+  {
+    write_files  = write_files_;
+    results      = ResultsTable();
+    result_files = write_files ? ResultFiles(parameters.output) : ResultFiles();
+    goal_histories.clear();
+    estimate_wall_time = 0.;
+    target_not_reached.clear();
+  }
+
+  bool
+  Simulator::output_directory_exists() const
+  {
+    return decided_on_rank_0<bool>([&]() {
+      return !write_files ||
+             std::filesystem::exists(parameters.output.directory);
+    });
+  }
+
+  void
+  Simulator::prepare_output_directory() const
+  {
+    check_output_paths();
+    if (write_files)
+      std::filesystem::create_directories(parameters.output.directory);
+  }
+
+  void
+  Simulator::check_run_fits_in_memory() const
+  {
+    // A run that cannot fit stops here, not after minutes of swapping.
+    check_memory_fits(estimate_run_memory(parameters, *triangulation, plan),
+                      decided_on_rank_0<double>(
+                        []() { return available_memory(); }));
+  }
+
+  void
+  Simulator::solve_refinement_cycles(std::ostream &log)
+  {
+    const unsigned int n_cycles = parameters.discretization.refinement_cycles;
+    if (n_cycles == 1)
+      solve_coarser_member(log);
+    unsigned int cycle = 0;
+    for (; cycle < n_cycles; ++cycle)
+      {
+        if (cycle > 0)
+          refine_mesh();
+        solve_harmonics(cycle);
+        collect_cycle(cycle, log);
+        record_goal_values();
+        if (goal_tolerance_reached(cycle, log))
+          break;
+      }
+    report_error_estimates(std::min(cycle, n_cycles - 1), log);
+  }
+
+  void
+  Simulator::discard_results(const bool had_directory)
+  {
+    // A failed run leaves no result file and no output folder it created
+    // itself (the README's promise: no output at all for bad input).
+    result_files.remove_claimed();
+    const std::filesystem::path directory = parameters.output.directory;
+    std::error_code             ignored;
+    if (!had_directory && std::filesystem::is_empty(directory, ignored))
+      std::filesystem::remove(directory, ignored);
+  }
+
 
   bool
   Simulator::writes_csv() const
@@ -113,27 +159,12 @@ namespace FourierSSI
   {
     if (!write_files)
       return;
-    const std::filesystem::path directory = parameters.output.directory;
-    if (writes_csv() && std::filesystem::is_directory(directory))
-      {
-        // The files a run writes (names below): an earlier run's must not
-        // pass for this run's result if this one fails.
-        const std::regex ours(
-          "solution-n[0-9]+-(symmetric|antisymmetric)-cycle[0-9]+"
-          "(\\.rank[0-9]+)?\\.p?vtu|interface-[0-9]+-n[0-9]+-"
-          "(symmetric|antisymmetric)-cycle[0-9]+\\.csv|lines-3d\\.csv|"
-          "solution-3d\\.vtu|load-displacement(-incomplete)?\\.csv");
-        for (const auto &entry : std::filesystem::directory_iterator(directory))
-          {
-            const std::string name = entry.path().filename().string();
-            if (name == parameters.output.results_file ||
-                std::regex_match(name, ours))
-              std::filesystem::remove(entry.path());
-          }
-      }
+    // Rank 0 clears the folder (every rank's VTU pieces), the others wait
+    // before they write theirs.
+    if (writes_csv())
+      result_files.remove_stale();
     if (uses_distributed_solve(parameters.solver, communicator))
       MPI_Barrier(communicator);
-    std::filesystem::create_directories(directory);
   }
 
   void
@@ -239,7 +270,7 @@ namespace FourierSSI
   {
     // The harmonics that succeeded wrote files: removed by run().
     for (const HarmonicOutcome &outcome : solved)
-      written.insert(written.end(), outcome.files.begin(), outcome.files.end());
+      result_files.claim_paths(outcome.files);
     AssertThrow(false,
                 ExcMessage("cycle " + std::to_string(cycle) + ", " +
                            one_line_message(e)));
@@ -329,10 +360,6 @@ namespace FourierSSI
       return files;
     const HarmonicProblem &problem  = *solution.problem;
     const Harmonic        &harmonic = problem.get_operator().get_harmonic();
-    const std::string      suffix   = "-n" + std::to_string(harmonic.n) + "-" +
-                               to_string(harmonic.family) + "-cycle" +
-                               std::to_string(cycle);
-    const std::string &directory = parameters.output.directory;
     if (parameters.output.write_vtu)
       {
         // A stiffness scene's fields are its unit-H and unit-M solutions.
@@ -341,7 +368,8 @@ namespace FourierSSI
           extra = {{"unit_H_", &solution.unit_solutions[0]},
                    {"unit_M_", &solution.unit_solutions[1]}};
         for (const std::string &file :
-             problem.write_vtu(directory + "/solution" + suffix + ".vtu",
+             problem.write_vtu(result_files.path_of(ResultFiles::fill(
+                                 ResultFiles::harmonic_vtu, harmonic, cycle)),
                                extra))
           files.push_back(file);
       }
@@ -350,8 +378,8 @@ namespace FourierSSI
       for (const types::boundary_id id :
            problem.get_interfaces()->boundary_ids())
         {
-          const std::string name =
-            directory + "/interface-" + std::to_string(id) + suffix + ".csv";
+          const std::string name = result_files.path_of(ResultFiles::fill(
+            ResultFiles::interface_tractions_csv, harmonic, cycle, id));
           files.push_back(name);
           problem.get_interfaces()->write_csv(id, problem.get_solution(), name);
         }
@@ -377,9 +405,7 @@ namespace FourierSSI
         HarmonicOutcome &outcome  = outcomes[i];
         const Harmonic  &harmonic = harmonic_set->harmonic(i);
         const auto      &problem  = harmonic_set->problem(i);
-        written.insert(written.end(),
-                       outcome.files.begin(),
-                       outcome.files.end());
+        result_files.claim_paths(outcome.files);
         for (const auto &row : outcome.report.rows)
           results.add(row.quantity, harmonic, cycle, row.value, row.unit);
         log << outcome.report.log.str() << std::endl;
@@ -449,11 +475,9 @@ namespace FourierSSI
   {
     if (!writes_csv())
       return;
-    const std::string &directory = parameters.output.directory;
     if (!parameters.output.lines.empty())
       {
-        const std::string name = directory + "/lines-3d.csv";
-        written.push_back(name);
+        const std::string name = result_files.claim("lines-3d.csv");
         reconstruction.write_lines_csv(parameters.output.lines,
                                        parameters.output.theta_degrees,
                                        name);
@@ -462,14 +486,12 @@ namespace FourierSSI
       }
     if (parameters.output.write_3d_vtu)
       {
-        const std::string name = directory + "/solution-3d.vtu";
-        written.push_back(name);
+        const std::string name = result_files.claim("solution-3d.vtu");
         reconstruction.write_revolved_vtu(parameters.output.theta_divisions,
                                           name);
         log << "revolved 3D field written to " << name << std::endl;
       }
-    const std::string name = directory + "/" + parameters.output.results_file;
-    written.push_back(name);
+    const std::string name = result_files.claim_results_file();
     results.write_csv(name);
     log << "results written to " << name << std::endl;
   }

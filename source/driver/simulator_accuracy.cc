@@ -5,13 +5,13 @@
 #include <algorithm>
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
-#include <fourier_ssi/mesh/discretization_design.h>
-#include <fourier_ssi/linear_algebra/distributed_linear_system.h>
-#include <fourier_ssi/harmonic/harmonic_problem.h>
 #include <fourier_ssi/driver/input_checks.h>
-#include <fourier_ssi/input/messages.h>
-#include <fourier_ssi/linear_algebra/serial_blas.h>
 #include <fourier_ssi/driver/simulator.h>
+#include <fourier_ssi/harmonic/harmonic_problem.h>
+#include <fourier_ssi/input/messages.h>
+#include <fourier_ssi/linear_algebra/distributed_linear_system.h>
+#include <fourier_ssi/linear_algebra/serial_blas.h>
+#include <fourier_ssi/mesh/discretization_design.h>
 #include <iomanip>
 #include <sstream>
 #include <thread>
@@ -307,9 +307,7 @@ namespace FourierSSI
         if (!error)
           collect_cycle(0, log); // as member 0 would be before member 1
         for (const HarmonicOutcome &outcome : next_outcomes)
-          written.insert(written.end(),
-                         outcome.files.begin(),
-                         outcome.files.end());
+          result_files.claim_paths(outcome.files);
         try
           {
             std::rethrow_exception(error ? error : next_error);

@@ -7,10 +7,11 @@
 #include <algorithm>
 #include <cmath>
 #include <deal.II/base/timer.h>
-#include <fourier_ssi/mesh/discretization_design.h>
-#include <fourier_ssi/input/messages.h>
+#include <fourier_ssi/driver/memory_estimate.h>
 #include <fourier_ssi/driver/simulator.h>
 #include <fourier_ssi/fourier/theta_sampling.h>
+#include <fourier_ssi/input/messages.h>
+#include <fourier_ssi/mesh/discretization_design.h>
 #include <iomanip>
 #include <limits>
 #include <map>
@@ -112,6 +113,69 @@ namespace FourierSSI
       }
   }
 
+  namespace
+  {
+    /**
+     * The wall time of the next member, from the last one's: times the
+     * growth of the last two members' times where two were solved on these
+     * harmonics, else as the factorization of a 2D sparse system grows
+     * with nested dissection, N^1.5 (an estimate, printed as such).
+     */
+    double
+    next_member_time(const std::vector<double> &member_times,
+                     const double               cell_growth)
+    {
+      if (member_times.empty())
+        return std::nan("");
+      const std::size_t n      = member_times.size();
+      const double      growth = n >= 2 && member_times[n - 2] > 0. ?
+                                   member_times[n - 1] / member_times[n - 2] :
+                                   std::pow(cell_growth, 1.5);
+      return member_times.back() * growth;
+    }
+
+    /**
+     * The line before a member of the coupled target starts: its size and
+     * the estimate of its time, so that a run that grows for minutes says
+     * so before each member.
+     */
+    void
+    announce_member(const int          member,
+                    const unsigned int n_cells,
+                    const double       dofs,
+                    const double       estimated_time,
+                    std::ostream      &log)
+    {
+      log << "target accuracy: starting mesh " << member << ", " << n_cells
+          << " cells, about " << static_cast<long long>(dofs)
+          << " DoFs over all harmonics";
+      if (std::isfinite(estimated_time))
+        log << ", estimated " << std::setprecision(2) << estimated_time
+            << std::setprecision(6) << " s";
+      log << std::endl;
+    }
+  } // namespace
+
+  namespace
+  {
+    /** n = 0 .. 2 n_max in each family of `harmonics`. */
+    std::vector<Harmonic>
+    doubled_harmonics(const std::vector<Harmonic> &harmonics)
+    {
+      const unsigned int    n_max = highest_harmonic(harmonics);
+      std::vector<Harmonic> doubled;
+      for (unsigned int n = 0; n <= 2 * n_max; ++n)
+        for (const Family family : {Family::symmetric, Family::antisymmetric})
+          if (std::any_of(harmonics.begin(),
+                          harmonics.end(),
+                          [&](const Harmonic &h) {
+                            return h.family == family;
+                          }))
+            doubled.push_back({n, family});
+      return doubled;
+    }
+  } // namespace
+
   double
   Simulator::coupled_dofs() const
   {
@@ -141,6 +205,22 @@ namespace FourierSSI
     const double       dofs  = coupled_dofs();
     const unsigned int n_max = highest_harmonic(plan.harmonics);
     const double       more  = (2. * n_max + 1.) / (n_max + 1.);
+    // The doubled set must also fit in memory: its theta samples and its
+    // coupled tangent grow with the harmonics, faster than their DoFs.
+    ScenePlan doubled_plan      = plan;
+    doubled_plan.harmonics      = doubled_harmonics(plan.harmonics);
+    const std::string shortfall = memory_shortfall(
+      estimate_run_memory(parameters, *triangulation, doubled_plan),
+      available_memory_on_all_ranks(communicator));
+    if (!shortfall.empty())
+      {
+        target_unmet(target,
+                     "the harmonic truncation (n <= " + std::to_string(n_max) +
+                       ") alone is " + number(truncation) +
+                       "; doubling the harmonics: " + shortfall,
+                     log);
+        return false;
+      }
     if (more * dofs > parameters.adaptivity.maximum_dofs || 2 * n_max > 1024)
       {
         std::ostringstream why;
@@ -152,14 +232,7 @@ namespace FourierSSI
         target_unmet(target, why.str(), log);
         return false;
       }
-    std::vector<Harmonic> doubled;
-    for (unsigned int n = 0; n <= 2 * n_max; ++n)
-      for (const Family family : {Family::symmetric, Family::antisymmetric})
-        if (std::any_of(plan.harmonics.begin(),
-                        plan.harmonics.end(),
-                        [&](const Harmonic &h) { return h.family == family; }))
-          doubled.push_back({n, family});
-    plan.harmonics = doubled;
+    plan.harmonics = doubled_plan.harmonics;
     run.release();
     harmonic_set.reset();
     log << "target accuracy " << number(target) << ": the harmonic truncation "
@@ -182,6 +255,9 @@ namespace FourierSSI
     Timer               run_timer;
     double              last_member_time = 0.;
     std::vector<double> mesh_values;
+    // Wall time of each member solved on this set of harmonics (cleared
+    // with mesh_values when the harmonics double): the next one's estimate.
+    std::vector<double> member_times;
     // Member 0's goal value for each n_max solved, ascending n: the
     // truncation sequence (doubling adds to it).
     std::map<unsigned int, double> known;
@@ -220,6 +296,23 @@ namespace FourierSSI
                 target_unmet(target, why.str(), log);
                 break;
               }
+            const std::string shortfall =
+              memory_shortfall(estimate_run_memory(parameters, next, plan),
+                               available_memory_on_all_ranks(communicator));
+            if (!shortfall.empty())
+              {
+                target_unmet(target,
+                             "the next mesh (" +
+                               std::to_string(next.n_active_cells()) +
+                               " cells): " + shortfall,
+                             log);
+                break;
+              }
+            announce_member(member,
+                            next.n_active_cells(),
+                            more * dofs,
+                            next_member_time(member_times, more),
+                            log);
             run.release();
             reconstruction = FieldReconstruction();
             harmonic_set.reset();
@@ -240,6 +333,7 @@ namespace FourierSSI
         goal = run.solve(log);
         mesh_values.push_back(goal.value);
         last_member_time = member_timer.wall_time();
+        member_times.push_back(last_member_time);
         if (!std::isfinite(goal.plateau_error))
           {
             target_unmet(target,
@@ -265,6 +359,7 @@ namespace FourierSSI
                       run, target, relative(harmonic_error), log))
                   break;
                 mesh_values.clear();
+                member_times.clear();
                 --member; // member 0 again (the loop's ++ brings it back)
               }
             continue; // two meshes are needed for the mesh error

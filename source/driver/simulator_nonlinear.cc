@@ -6,8 +6,8 @@
 #include <fourier_ssi/app/command_line.h>
 #include <fourier_ssi/coupled/coupled_interface_solver.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
-#include <fourier_ssi/linear_algebra/distributed_linear_system.h>
 #include <fourier_ssi/driver/simulator.h>
+#include <fourier_ssi/linear_algebra/distributed_linear_system.h>
 
 namespace FourierSSI
 {
@@ -93,20 +93,17 @@ namespace FourierSSI
     if (!writes_csv())
       return;
     {
-      const std::string directory = parameters.output.directory;
-      const std::string curve     = directory + "/load-displacement.csv";
-      written.push_back(curve);
+      const std::string curve = result_files.claim("load-displacement.csv");
       solver.write_csv(curve);
       log << "load-displacement curve written to " << curve << std::endl;
-      const std::string state = directory + "/interface-state.csv";
-      written.push_back(state);
+      const std::string state = result_files.claim("interface-state.csv");
       solver.write_interface_state_csv(state);
       log << "interface state (point x theta x step) written to " << state
           << std::endl;
+      write_last_step_vtu(true, log);
       if (parameters.output.write_3d_vtu)
         {
-          const std::string vtu = directory + "/interface-state-3d.vtu";
-          written.push_back(vtu);
+          const std::string vtu = result_files.claim("interface-state-3d.vtu");
           solver.write_interface_state_vtu(vtu);
           log << "interface state of the last step (3D points) written to "
               << vtu << std::endl;
@@ -159,15 +156,21 @@ namespace FourierSSI
   }
 
   void
-  Simulator::keep_last_step(const CoupledInterfaceSolver &solver)
+  Simulator::write_last_step_vtu(const bool elastic_stresses, std::ostream &log)
   {
-    // The 3D reconstruction sums the harmonics' solutions: the converged
-    // total field of the last step, u_h = lambda u_F,h + K_h^-1 c_h.
-    reconstruction = FieldReconstruction();
+    if (!parameters.output.write_vtu)
+      return;
     for (unsigned int h = 0; h < harmonic_set->size(); ++h)
       {
-        harmonic_set->problem(h).set_solution(solver.solution(h));
-        reconstruction.add(harmonic_set->shared_problem(h));
+        const std::string name = result_files.claim(ResultFiles::fill(
+          ResultFiles::harmonic_vtu, harmonic_set->harmonic(h), 0));
+        harmonic_set->problem(h).write_vtu(name, {}, elastic_stresses);
       }
+    log << "VTU per harmonic of the last converged step ("
+        << (parameters.output.write_stresses && elastic_stresses ?
+              "displacement and stress amplitudes" :
+              "displacement amplitudes")
+        << ") written to " << parameters.output.directory
+        << "/solution-n*-cycle0.vtu" << std::endl;
   }
 } // namespace FourierSSI

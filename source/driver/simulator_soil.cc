@@ -3,11 +3,11 @@
 // by CoupledSoilSolver on one HarmonicSet (doc/soil-plasticity.md).
 #include <cmath>
 #include <deal.II/base/timer.h>
-#include <fourier_ssi/estimation/capacity_plateau.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/coupled_soil_solver.h>
-#include <fourier_ssi/mesh/discretization_design.h>
 #include <fourier_ssi/driver/simulator.h>
+#include <fourier_ssi/estimation/capacity_plateau.h>
+#include <fourier_ssi/mesh/discretization_design.h>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -22,13 +22,13 @@ namespace FourierSSI
     void
     check_supported(const AllParameters &parameters, const MPI_Comm comm)
     {
-      // Coulomb interfaces iterate with the soil (one correction load for
-      // both), on the harmonics given: no growth.
+      // The plastic soil iterates on the harmonics given (with or without
+      // coulomb interfaces, one correction load for both): no growth, so a
+      // Maximum harmonic above them would be ignored.
       const NonlinearInterfaceParameters &settings =
         parameters.nonlinear_interfaces;
-      AssertThrow(!parameters.interfaces.any_nonlinear() ||
-                    settings.maximum_harmonic <=
-                      highest_harmonic(parameters.discretization.harmonics),
+      AssertThrow(settings.maximum_harmonic <=
+                    highest_harmonic(parameters.discretization.harmonics),
                   ExcMessage("Nonlinear interfaces/Maximum harmonic: not "
                              "yet with plastic soil (the harmonics do not "
                              "grow); list them in Discretization/Harmonics"));
@@ -219,6 +219,7 @@ namespace FourierSSI
   {
     add_load_step_rows(solver, results);
     add_plastic_state_rows(solver, parameters, results);
+    keep_last_step(solver);
     report_capacity(solver, parameters, log, results);
   }
 
@@ -228,21 +229,19 @@ namespace FourierSSI
   {
     if (!writes_csv())
       return;
-    const std::string directory = parameters.output.directory;
-    const std::string curve     = directory + "/load-displacement.csv";
-    written.push_back(curve);
+    const std::string curve = result_files.claim("load-displacement.csv");
     solver.write_csv(curve);
     log << "load-displacement curve written to " << curve << std::endl;
     if (solver.has_coulomb_interfaces())
       {
-        const std::string state = directory + "/interface-state.csv";
-        written.push_back(state);
+        const std::string state = result_files.claim("interface-state.csv");
         solver.write_interface_state_csv(state);
         log << "interface state around the circumference written to " << state
             << std::endl;
       }
-    const std::string name = directory + "/" + parameters.output.results_file;
-    written.push_back(name);
+    // The stress of plastic soil is not C eps(u): displacements only.
+    write_last_step_vtu(false, log);
+    const std::string name = result_files.claim_results_file();
     results.write_csv(name);
     log << "results written to " << name << std::endl;
   }

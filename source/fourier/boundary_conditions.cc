@@ -1,8 +1,10 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/fourier/boundary_conditions.h>
+#include <fourier_ssi/input/prm_values.h>
 #include <iostream>
 #include <mutex>
+#include <set>
 #include <sstream>
 
 namespace FourierSSI
@@ -141,7 +143,8 @@ namespace FourierSSI
           fail("negative boundary id in '" + item + "'");
         if (result.count(id))
           fail("boundary id " + std::to_string(id) + " given twice");
-        ComponentExpressions e;
+        ComponentExpressions  e;
+        std::set<std::string> keys_given;
         for (const std::string &pair :
              split_top_level(item.substr(colon + 1), ','))
           {
@@ -149,7 +152,8 @@ namespace FourierSSI
             if (eq == std::string::npos)
               fail("'" + pair + "' is not key=expression");
             const std::string key = Utilities::trim(pair.substr(0, eq));
-            unsigned int      c   = 0;
+            record_key_once(keys_given, key, entry, item);
+            unsigned int c = 0;
             while (c < 3 && keys[c] != key)
               ++c;
             if (c == 3)

@@ -1,6 +1,8 @@
 #include <cmath>
 #include <deal.II/base/utilities.h>
 #include <fourier_ssi/fourier/material.h>
+#include <fourier_ssi/input/prm_values.h>
+#include <set>
 #include <sstream>
 
 namespace FourierSSI
@@ -79,9 +81,10 @@ namespace FourierSSI
         if (id < 0 || id >= 255)
           fail("material id " + std::to_string(id) + " out of range [0,254]");
 
-        ElasticMaterial material;
-        double          E = -1., G = -1.;
-        bool            has_nu = false;
+        ElasticMaterial       material;
+        double                E = -1., G = -1.;
+        bool                  has_nu = false;
+        std::set<std::string> keys_given;
         for (const std::string &pair :
              Utilities::split_string_list(entry.substr(colon + 1), ','))
           {
@@ -89,7 +92,8 @@ namespace FourierSSI
             if (eq == std::string::npos)
               fail("'" + pair + "' is not key=value");
             const std::string key = Utilities::trim(pair.substr(0, eq));
-            double            value;
+            record_key_once(keys_given, key, "Materials/Materials", entry);
+            double value;
             try
               {
                 value = Utilities::string_to_double(

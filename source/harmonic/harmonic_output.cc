@@ -8,15 +8,15 @@
 #include <deal.II/numerics/vector_tools.h>
 #include <fourier_ssi/harmonic/harmonic_problem.h>
 #include <fourier_ssi/harmonic/stress_postprocessor.h>
-#include <fstream>
+#include <fourier_ssi/input/atomic_file.h>
 
 namespace FourierSSI
 {
   std::vector<std::string>
   HarmonicProblem::write_vtu(
     const std::string                                                 &filename,
-    const std::vector<std::pair<std::string, const Vector<double> *>> &extra)
-    const
+    const std::vector<std::pair<std::string, const Vector<double> *>> &extra,
+    const bool elastic_stresses) const
   {
     StressPostprocessor postprocessor(harmonic_operator,
                                       parameters.materials,
@@ -27,7 +27,7 @@ namespace FourierSSI
                              std::vector<std::string>{"U_radial",
                                                       "V_axial",
                                                       "W_circumferential"});
-    if (parameters.output.write_stresses)
+    if (parameters.output.write_stresses && elastic_stresses)
       data_out.add_data_vector(solution, postprocessor);
     for (const auto &[prefix, field] : extra)
       data_out.add_data_vector(*field,
@@ -43,9 +43,9 @@ namespace FourierSSI
     if (distributed)
       return write_vtu_pieces(data_out, filename);
     data_out.build_patches(fe->degree);
-    std::ofstream out(filename);
-    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
-    data_out.write_vtu(out);
+    AtomicFile file(filename);
+    data_out.write_vtu(file.stream());
+    file.commit();
     return {filename};
   }
 
@@ -77,9 +77,9 @@ namespace FourierSSI
       return base + ".rank" + std::to_string(r) + ".vtu";
     };
     std::vector<std::string> written = {piece(rank)};
-    std::ofstream            out(piece(rank));
-    AssertThrow(out, ExcMessage("Output: cannot write '" + piece(rank) + "'"));
-    data_out.write_vtu(out);
+    AtomicFile               out(piece(rank));
+    data_out.write_vtu(out.stream());
+    out.commit();
     if (rank == 0)
       {
         std::vector<std::string> pieces;
@@ -88,10 +88,9 @@ namespace FourierSSI
             const std::string p = piece(r);
             pieces.push_back(p.substr(p.find_last_of('/') + 1));
           }
-        std::ofstream record(base + ".pvtu");
-        AssertThrow(record,
-                    ExcMessage("Output: cannot write '" + base + ".pvtu'"));
-        data_out.write_pvtu_record(record, pieces);
+        AtomicFile record(base + ".pvtu");
+        data_out.write_pvtu_record(record.stream(), pieces);
+        record.commit();
         written.push_back(base + ".pvtu");
       }
     return written;

@@ -101,7 +101,7 @@ namespace FourierSSI
     // The nodal force at a hanging DoF acts on the DoFs it hangs from
     // (C^T r), some of which may be supports: move it there, or the support
     // reactions miss it (0.3 % of F_z with a corner grading next to fixed
-    // boundaries, tests/reaction_equilibrium.cc). A separate set of only
+    // boundaries, tests/harmonic/reaction_equilibrium.cc). A separate set of only
     // the hanging-node constraints keeps supports as masters (the full set
     // eliminates Dirichlet DoFs from the lines).
     AffineConstraints<double> hanging_nodes;

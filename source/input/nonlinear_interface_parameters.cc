@@ -8,22 +8,26 @@ namespace FourierSSI
     prm.enter_subsection("Nonlinear interfaces");
     prm.declare_entry("Theta samples",
                       "0",
-                      Patterns::Integer(0),
+                      Patterns::Integer(0, most_theta_samples),
                       "Angles N at which the interface law is evaluated. 0: "
                       "4 (n_max + 1). Must exceed 2 n_max (n_max the highest "
-                      "harmonic), else a band-limited field aliases.");
+                      "harmonic), else a band-limited field aliases. At "
+                      "most 8192; the memory of the coupled state (N times "
+                      "the soil's quadrature points) is checked against the "
+                      "free memory before the run.");
     prm.declare_entry("Load steps",
                       "10",
-                      Patterns::Integer(1),
+                      Patterns::Integer(1, most_load_steps),
                       "Equal steps from 0 to the full loads (load control) "
-                      "or to the target motion (displacement control).");
+                      "or to the target motion (displacement control). At "
+                      "most 10000.");
     prm.declare_entry("Held load steps",
                       "4",
-                      Patterns::Integer(1),
+                      Patterns::Integer(1, most_load_steps),
                       "Plastic soil with Rigid foundation/Held ... loads: "
                       "equal load-controlled steps from 0 to the held loads, "
                       "taken before the Load steps (which then start from "
-                      "the held state).");
+                      "the held state). At most 10000.");
     prm.declare_entry("Control",
                       "load",
                       Patterns::Selection("load|displacement"),
@@ -53,11 +57,14 @@ namespace FourierSSI
                       "(slip, gaps, plastic strain) that the iteration "
                       "balances (2-norms over all harmonics). With a stiff "
                       "interface G ~ kn gap dwarfs the load, and a test "
-                      "against the load alone asks for round-off.");
+                      "against the load alone asks for round-off. "
+                      "0 < Tolerance < 1e-2: a larger one accepts steps "
+                      "that have not iterated (the elastic answer).");
     prm.declare_entry("Maximum iterations",
                       "2000",
-                      Patterns::Integer(1),
-                      "Out-of-balance solves per step before it is cut.");
+                      Patterns::Integer(1, most_iterations),
+                      "Out-of-balance solves per step before it is cut. At "
+                      "most 100000.");
     prm.declare_entry("Acceleration",
                       "aitken",
                       Patterns::Selection("aitken|anderson|none"),
@@ -90,22 +97,24 @@ namespace FourierSSI
                       "(m) the update combines.");
     prm.declare_entry("Maximum step cuts",
                       "4",
-                      Patterns::Integer(0),
+                      Patterns::Integer(0, most_step_cuts),
                       "Halvings of a step that does not converge before "
                       "the run stops with an error (plastic soil: of each "
                       "step, and a cut step size doubles back after two "
                       "converged steps, twice as many after a doubling "
-                      "that failed; interfaces: over the run).");
+                      "that failed; interfaces: over the run). At most 20 "
+                      "(a millionth of the step).");
     prm.declare_entry("Maximum harmonic",
                       "0",
-                      Patterns::Integer(0),
+                      Patterns::Integer(0, largest_harmonic),
                       "Harmonics chosen by the solution: after each "
                       "converged step, every harmonic n <= Maximum harmonic "
                       "not solved yet whose amplitude in the interface "
                       "traction exceeds Harmonic tolerance times the largest "
                       "is added (its own factorization) and the step solved "
                       "again. 0, or not above the highest listed harmonic: "
-                      "only the listed harmonics.");
+                      "only the listed harmonics. At most 1024 (as "
+                      "Discretization/Harmonics); interface runs only.");
     prm.declare_entry("Harmonic tolerance",
                       "1e-3",
                       Patterns::Double(0.),
@@ -131,6 +140,12 @@ namespace FourierSSI
                                               Motion::rotation;
     target              = prm.get_double("Target");
     tolerance           = prm.get_double("Tolerance");
+    AssertThrow(tolerance > 0. && tolerance < largest_tolerance,
+                ExcMessage(
+                  "Nonlinear interfaces/Tolerance: " + prm.get("Tolerance") +
+                  " is outside 0 < Tolerance < 1e-2 (a step would "
+                  "be accepted with that fraction of the load out "
+                  "of balance, at 1 without iterating)"));
     maximum_iterations  = prm.get_integer("Maximum iterations");
     const std::string a = prm.get("Acceleration");
     acceleration        = a == "anderson" ? Acceleration::anderson :

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <deal.II/base/utilities.h>
 #include <filesystem>
 #include <fourier_ssi/driver/input_checks.h>
@@ -191,7 +192,10 @@ namespace FourierSSI
     prm.declare_entry("Directory",
                       "output",
                       Patterns::DirectoryName(),
-                      "Where results go (created if missing).");
+                      "Where results go (created if missing). The value "
+                      "is taken literally: not empty, no quotes; the folder "
+                      "(or its nearest existing parent) must be writable, "
+                      "checked before the run.");
     prm.declare_entry("Results file",
                       "results.csv",
                       Patterns::FileName(),
@@ -201,7 +205,10 @@ namespace FourierSSI
                       "true",
                       Patterns::Bool(),
                       "Write the displacement amplitudes of each harmonic "
-                      "as VTU.");
+                      "as VTU (solution-n<n>-<family>-cycle<c>.vtu); with a "
+                      "coulomb interface or plastic soil those of the last "
+                      "converged step, with plastic soil without stresses "
+                      "(doc/output-files.md).");
     prm.declare_entry("Write stresses",
                       "true",
                       Patterns::Bool(),
@@ -398,28 +405,101 @@ namespace FourierSSI
                   ExcMessage("Loads/Prescribed displacement: boundary id " +
                              std::to_string(id) +
                              " is also in Boundary conditions/Dirichlet"));
+    check_problem_is_meaningful(*this);
   }
 
+
+  namespace
+  {
+    /**
+     * The text of a parameter file, without a UTF-8 byte-order mark (editors
+     * on some systems start files with one; it carries no meaning here).
+     */
+    std::string
+    parameter_text(const std::string &filename)
+    {
+      // An ifstream opens a directory and reads nothing: it would run as an
+      // empty .prm.
+      AssertThrow(!std::filesystem::is_directory(filename),
+                  ExcMessage(filename +
+                             ": is a directory, not a parameter file"));
+      std::ifstream in(filename);
+      AssertThrow(in, ExcMessage(filename + ": cannot open parameter file"));
+      std::stringstream text;
+      text << in.rdbuf();
+      std::string content = text.str();
+      // The parser reads up to the first NUL byte and would silently run the
+      // rest of the file's entries at their defaults.
+      const auto nul = content.find('\0');
+      AssertThrow(nul == std::string::npos,
+                  ExcMessage(
+                    filename + ": line " +
+                    std::to_string(1 + std::count(content.begin(),
+                                                  content.begin() + nul,
+                                                  '\n')) +
+                    " contains a NUL byte: not a text parameter "
+                    "file"));
+      // Editors on some systems start UTF-8 files with a byte-order mark;
+      // it carries no meaning here.
+      const std::string byte_order_mark = "\xEF\xBB\xBF";
+      if (content.compare(0, byte_order_mark.size(), byte_order_mark) == 0)
+        content.erase(0, byte_order_mark.size());
+      return content;
+    }
+
+    /**
+     * The lines of a parameter file that ParameterHandler's grammar knows
+     * (set, subsection, end); any other line is dropped, so that a line
+     * the full read refuses cannot hide the output folder.
+     */
+    std::string
+    structure_lines(const std::string &content)
+    {
+      std::istringstream lines(content);
+      std::string        kept, line;
+      while (std::getline(lines, line))
+        {
+          std::istringstream words(line);
+          std::string        word;
+          words >> word;
+          for (char &c : word)
+            c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+          if (word == "set" || word == "subsection" || word == "end")
+            kept += line + "\n";
+        }
+      return kept;
+    }
+  } // namespace
+
+  std::optional<OutputParameters>
+  OutputParameters::read_folder_of(const std::string &prm_file)
+  {
+    try
+      {
+        ParameterHandler prm;
+        prm.enter_subsection("Output");
+        prm.declare_entry("Directory", "output", Patterns::Anything());
+        prm.declare_entry("Results file", "results.csv", Patterns::Anything());
+        prm.leave_subsection();
+        std::istringstream input(structure_lines(parameter_text(prm_file)));
+        prm.parse_input(input, prm_file, "", /*skip_undefined=*/true);
+        OutputParameters output;
+        prm.enter_subsection("Output");
+        output.directory    = prm.get("Directory");
+        output.results_file = prm.get("Results file");
+        prm.leave_subsection();
+        return output;
+      }
+    catch (...)
+      {
+        return std::nullopt;
+      }
+  }
 
   void
   AllParameters::read_file(const std::string &filename)
   {
-    // An ifstream opens a directory and reads nothing: it would run as an
-    // empty .prm.
-    AssertThrow(!std::filesystem::is_directory(filename),
-                ExcMessage(filename +
-                           ": is a directory, not a parameter file"));
-    std::ifstream in(filename);
-    AssertThrow(in, ExcMessage(filename + ": cannot open parameter file"));
-    std::stringstream text;
-    text << in.rdbuf();
-    std::string content = text.str();
-    // Editors on some systems start UTF-8 files with a byte-order mark; it
-    // carries no meaning here.
-    const std::string byte_order_mark = "\xEF\xBB\xBF";
-    if (content.compare(0, byte_order_mark.size(), byte_order_mark) == 0)
-      content.erase(0, byte_order_mark.size());
-    std::istringstream input(content);
+    std::istringstream input(parameter_text(filename));
     ParameterHandler   prm;
     declare_parameters(prm);
     try

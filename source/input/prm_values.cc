@@ -20,11 +20,26 @@ namespace FourierSSI
   dealii::types::boundary_id
   boundary_id_in_entry(const std::string &text, const std::string &entry)
   {
+    // ": coulomb, ..." (the id forgotten) would otherwise read as "'' is
+    // not a number", which does not say what is missing.
+    AssertThrow(!dealii::Utilities::trim(text).empty(),
+                dealii::ExcMessage(entry + ": an item has no id before ':'"));
     const double v = number_in_entry(text, entry);
     AssertThrow(v >= 0. && v < 255. && v == std::floor(v),
                 dealii::ExcMessage(entry + ": boundary id '" +
                                    dealii::Utilities::trim(text) +
                                    "' is not an integer in [0, 254]"));
     return static_cast<dealii::types::boundary_id>(v);
+  }
+
+  void
+  record_key_once(std::set<std::string> &keys_given,
+                  const std::string     &key,
+                  const std::string     &entry,
+                  const std::string     &item)
+  {
+    AssertThrow(keys_given.insert(key).second,
+                dealii::ExcMessage(entry + ": '" + key + "' given twice in '" +
+                                   dealii::Utilities::trim(item) + "'"));
   }
 } // namespace FourierSSI

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deal.II/base/utilities.h>
+#include <fourier_ssi/input/atomic_file.h>
 #include <fourier_ssi/interfaces/interface_integrator.h>
 #include <fstream>
 #include <iomanip>
@@ -254,8 +255,8 @@ namespace FourierSSI
                                  const Vector<double>    &u,
                                  const std::string       &filename) const
   {
-    std::ofstream out(filename);
-    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+    AtomicFile    file(filename);
+    std::ostream &out = file.stream();
     out << "face,node,r,z,relative_s,relative_n,relative_theta,traction_n,"
            "traction_s,traction_theta\n"
         << std::setprecision(12);
@@ -283,6 +284,6 @@ namespace FourierSSI
           }
         ++face;
       }
-    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+    file.commit();
   }
 } // namespace FourierSSI

@@ -5,6 +5,7 @@
 #include <deal.II/base/utilities.h>
 #include <fourier_ssi/input/prm_values.h>
 #include <fourier_ssi/interfaces/interface_law.h>
+#include <set>
 
 namespace FourierSSI
 {
@@ -106,6 +107,7 @@ namespace FourierSSI
         InterfaceLaw law;
         bool preset = false, has_kn = false, has_ks = false, has_mu = false,
              has_material = false, has_strength = false, has_phi = false;
+        std::set<std::string> keys_given;
         for (const std::string &token :
              Utilities::split_string_list(item.substr(colon + 1), ','))
           {
@@ -137,6 +139,7 @@ namespace FourierSSI
                 continue;
               }
             const std::string key = Utilities::trim(token.substr(0, eq));
+            record_key_once(keys_given, key, entry, item);
             if (key == "sigma_t" &&
                 Utilities::trim(token.substr(eq + 1)) == "none")
               {
@@ -177,7 +180,14 @@ namespace FourierSSI
                                "coulomb law" +
                                where));
         if (law.coulomb)
-          check_coulomb(law, has_kn && has_ks && has_phi, entry + ":", where);
+          {
+            AssertThrow(!has_mu && !has_material,
+                        ExcMessage(entry +
+                                   ": mu and material belong to the vermeer "
+                                   "law, not to coulomb (give kn and ks)" +
+                                   where));
+            check_coulomb(law, has_kn && has_ks && has_phi, entry + ":", where);
+          }
         else if (law.vermeer)
           {
             AssertThrow(has_mu && law.mu > 0. && !has_kn && !has_ks,

@@ -4,6 +4,7 @@
 #include <deal.II/fe/fe.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <fourier_ssi/interfaces/interface_pairing.h>
+#include <fourier_ssi/mesh/coordinate_tolerance.h>
 #include <limits>
 #include <numeric>
 #include <sstream>
@@ -15,18 +16,15 @@ namespace FourierSSI
     /**
      * Two points of a face of length `length` near `center` coincide within
      * `relative` of the length, but never closer than the round-off of the
-     * coordinates themselves: a face 24 grading levels deep (5e-9 m at
-     * r = 1 m) had a relative tolerance below one ulp of its coordinates,
-     * and its nodes, mapped from the unit cell, failed the check
-     * (tests/accuracy/graded_25_levels.prm).
+     * coordinates themselves (coordinate_tolerance.h;
+     * tests/accuracy/graded_25_levels.prm).
      */
     double
     match_tolerance(const double    relative,
                     const double    length,
                     const Point<2> &center)
     {
-      return relative * length + 64. * std::numeric_limits<double>::epsilon() *
-                                   (1. + center.norm());
+      return coincidence_tolerance(relative, length, center.norm());
     }
   } // namespace
 

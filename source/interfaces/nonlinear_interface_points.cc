@@ -1,6 +1,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/lac/full_matrix.h>
 #include <fourier_ssi/fourier/harmonic_pair_integral.h>
+#include <fourier_ssi/input/atomic_file.h>
 #include <fourier_ssi/interfaces/nonlinear_interface_points.h>
 #include <fstream>
 #include <iomanip>
@@ -283,8 +284,8 @@ namespace FourierSSI
     const std::vector<InterfaceSnapshot> &snapshots,
     const ThetaSampling                  &sampling) const
   {
-    std::ofstream out(filename);
-    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+    AtomicFile    file(filename);
+    std::ostream &out = file.stream();
     // t_n > 0 is tension, d_n > 0 opening (section 1 of the doc); the
     // traction is the total one, initial (geostatic) stress included.
     out << "step,interface_id,point,r_m,z_m,normal_r,normal_z,theta_deg,"
@@ -310,7 +311,7 @@ namespace FourierSSI
                   << d[2] << '\n';
             }
         }
-    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+    file.commit();
   }
 
   std::vector<std::vector<std::vector<types::global_dof_index>>>

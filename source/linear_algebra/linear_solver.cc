@@ -28,7 +28,7 @@ namespace FourierSSI
                       "Relative residual reduction for cg-amg.");
     prm.declare_entry("Max iterations",
                       "2000",
-                      Patterns::Integer(1),
+                      Patterns::Integer(1, 1000000),
                       "Iteration limit for cg-amg; reaching it is an error.");
     prm.declare_entry("Residual check",
                       "1e-6",

@@ -4,6 +4,7 @@
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/numerics/error_estimator.h>
 #include <fourier_ssi/mesh/adaptivity.h>
+#include <fourier_ssi/mesh/coordinate_tolerance.h>
 #include <fourier_ssi/mesh/mesh_builder.h>
 #include <map>
 
@@ -48,7 +49,11 @@ namespace FourierSSI
                       "5e5",
                       Patterns::Double(1.),
                       "Discretization/Target accuracy: the work bound, in "
-                      "DoFs per harmonic. When the next designed mesh would "
+                      "DoFs per harmonic (linear scenes: the harmonics are "
+                      "solved one by one); with plastic soil or a coulomb "
+                      "interface in DoFs of all harmonics together (they "
+                      "are solved together), so that doubling the harmonics "
+                      "is bounded too. When the next designed mesh would "
                       "exceed it, the refinement stops: the run prints the "
                       "accuracy reached and this limit, results.csv has "
                       "target_accuracy_reached = 0, and the exit code is "
@@ -307,10 +312,18 @@ namespace FourierSSI
     unsigned int max_levels = 0;
     for (const auto &[point, levels] : point_refinements)
       max_levels = std::max(max_levels, levels);
+    // The vertex coordinates carry the round-off of the mesh's extent: on
+    // a domain of 3e4 m a vertex at r = 1 m is off by more than 1e-6 of
+    // the smallest cell (coordinate_tolerance.h).
+    const auto corners =
+      GridTools::compute_bounding_box(triangulation).get_boundary_points();
+    const double extent = std::max(corners.first.norm(), corners.second.norm());
     for (unsigned int pass = 0; pass < max_levels; ++pass)
       {
         const double tolerance =
-          1e-6 * GridTools::minimal_cell_diameter(triangulation);
+          coincidence_tolerance(1e-6,
+                                GridTools::minimal_cell_diameter(triangulation),
+                                extent);
         for (const auto &[point, levels] : point_refinements)
           {
             if (pass >= levels)

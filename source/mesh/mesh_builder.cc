@@ -9,6 +9,7 @@
 #include <fourier_ssi/mesh/mesh_builder.h>
 #include <fstream>
 #include <memory>
+#include <numeric>
 #include <set>
 #include <sstream>
 
@@ -96,7 +97,9 @@ namespace FourierSSI
     prm.declare_entry("R cells",
                       "4",
                       Patterns::List(Patterns::Integer(1)),
-                      "Cells per radial segment.");
+                      "Cells per radial segment. All radial cells times "
+                      "all Z cells times 3 p^2 must stay within Maximum "
+                      "DoFs (checked before the mesh is made).");
     prm.declare_entry("R growth",
                       "1",
                       Patterns::List(Patterns::Double(0.)),
@@ -109,7 +112,7 @@ namespace FourierSSI
     prm.declare_entry("Z cells",
                       "4",
                       Patterns::List(Patterns::Integer(1)),
-                      "Cells per vertical segment.");
+                      "Cells per vertical segment (bounded with R cells).");
     prm.declare_entry("Z growth",
                       "1",
                       Patterns::List(Patterns::Double(0.)),
@@ -271,6 +274,20 @@ namespace FourierSSI
       }
     else
       {
+        // Refuse a typo such as R cells = 1e6 before the cell sizes (one
+        // number per cell) and the cells themselves are allocated; the
+        // same estimate as for Global refinements below.
+        const double n_r = std::accumulate(r_cells.begin(), r_cells.end(), 0.);
+        const double n_z = std::accumulate(z_cells.begin(), z_cells.end(), 0.);
+        const double cell_dofs = n_r * n_z * 3. * degree * degree;
+        AssertThrow(cell_dofs <= maximum_dofs,
+                    ExcMessage("Mesh/R cells, Z cells: " + format_count(n_r) +
+                               " x " + format_count(n_z) +
+                               " cells would give about " +
+                               format_count(cell_dofs) +
+                               " DoFs per harmonic, above Mesh/Maximum DoFs "
+                               "= " +
+                               format_count(maximum_dofs)));
         const std::vector<std::vector<double>> steps = {
           graded_steps(r_breakpoints, r_cells, r_growth, "Mesh/R"),
           graded_steps(z_breakpoints, z_cells, z_growth, "Mesh/Z")};

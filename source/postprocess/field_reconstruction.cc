@@ -3,8 +3,9 @@
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <deal.II/grid/grid_tools.h>
-#include <fourier_ssi/postprocess/field_reconstruction.h>
 #include <fourier_ssi/harmonic/stress_postprocessor.h>
+#include <fourier_ssi/input/atomic_file.h>
+#include <fourier_ssi/postprocess/field_reconstruction.h>
 #include <fstream>
 #include <iomanip>
 
@@ -95,8 +96,8 @@ namespace FourierSSI
                                        const std::vector<double> &theta_degrees,
                                        const std::string &filename) const
   {
-    std::ofstream out(filename);
-    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+    AtomicFile    file(filename);
+    std::ostream &out = file.stream();
     out << "line,point,r,z,theta_deg,x,y,u_r,u_z,u_theta,u_x,u_y,sigma_r,"
            "sigma_z,sigma_theta,tau_rz,tau_ztheta,tau_rtheta\n";
     out << std::setprecision(12);
@@ -138,6 +139,7 @@ namespace FourierSSI
               out << '\n';
             }
         }
+    file.commit();
   }
 
   void
@@ -159,8 +161,8 @@ namespace FourierSSI
             amplitude[h][cell->vertex_index(v)][c] =
               problems[h]->get_solution()(cell->vertex_dof_index(v, c));
 
-    std::ofstream out(filename);
-    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+    AtomicFile    file(filename);
+    std::ostream &out = file.stream();
     out << std::setprecision(9);
     const unsigned int n_points = n_vertices * divisions;
     const unsigned int n_cells  = tria.n_active_cells() * divisions;
@@ -242,5 +244,6 @@ namespace FourierSSI
         out << "</DataArray>\n";
       }
     out << "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
+    file.commit();
   }
 } // namespace FourierSSI

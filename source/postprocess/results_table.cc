@@ -1,4 +1,5 @@
 #include <deal.II/base/exceptions.h>
+#include <fourier_ssi/input/atomic_file.h>
 #include <fourier_ssi/postprocess/results_table.h>
 #include <fstream>
 #include <iomanip>
@@ -33,13 +34,13 @@ namespace FourierSSI
   void
   ResultsTable::write_csv(const std::string &filename) const
   {
-    std::ofstream out(filename);
-    AssertThrow(out,
-                dealii::ExcMessage("Output: cannot write '" + filename + "'"));
+    AtomicFile    file(filename);
+    std::ostream &out = file.stream();
     out << "quantity,n,family,cycle,value,unit\n" << std::setprecision(12);
     for (const ResultRow &row : table)
       out << row.quantity << ',' << row.harmonic.n << ','
           << to_string(row.harmonic.family) << ',' << row.cycle << ','
           << row.value << ',' << row.unit << '\n';
+    file.commit();
   }
 } // namespace FourierSSI

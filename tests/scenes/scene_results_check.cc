@@ -3,7 +3,7 @@
 // only: it reads text, so it does not link deal.II.
 //
 // Usage: scene_results_check FILE.checks RESULTS.csv
-#include "../check.h"
+#include "../support/check.h"
 
 #include <cmath>
 #include <fstream>

@@ -16,6 +16,7 @@
 #include <fourier_ssi/coupled/anderson_acceleration.h>
 #include <fourier_ssi/fourier/harmonic.h>
 #include <fourier_ssi/harmonic/rigid_foundation.h>
+#include <fourier_ssi/input/atomic_file.h>
 #include <fourier_ssi/input/nonlinear_interface_parameters.h>
 #include <fourier_ssi/postprocess/results_table.h>
 #include <fstream>
@@ -160,8 +161,8 @@ namespace FourierSSI
                       const std::string               &extra_header,
                       const ExtraColumns              &write_extra)
   {
-    std::ofstream out(filename);
-    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+    AtomicFile    file(filename);
+    std::ostream &out = file.stream();
     out << load_step_csv_header << ',' << extra_header << ",converged\n"
         << std::setprecision(12);
     for (unsigned int s = 0; s < steps.size(); ++s)
@@ -179,7 +180,7 @@ namespace FourierSSI
         write_extra(out, r);
         out << ",1\n";
       }
-    AssertThrow(out, ExcMessage("Output: cannot write '" + filename + "'"));
+    file.commit();
   }
 
   /**
@@ -226,10 +227,17 @@ namespace FourierSSI
 
   /**
    * The one line of a load step that did not converge even after the
-   * allowed step cuts (`entry` names the solver's parameter section).
+   * allowed step cuts (`entry` names the solver's parameter section). The
+   * step is numbered as the user counts them, "load step 2 of 2 (after 4
+   * cuts)": the one of the `n_steps` equal steps that the path was in
+   * (`done`, the fraction of the stage completed), not the count of
+   * converged cut steps; `held` says it is a step of the held loads.
    */
   std::string
   unconverged_step_message(const std::string                  &entry,
+                           const double                        done,
+                           const unsigned int                  n_steps,
+                           const bool                          held,
                            const unsigned int                  converged_steps,
                            const NonlinearInterfaceParameters &settings);
 

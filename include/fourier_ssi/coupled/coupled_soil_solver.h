@@ -147,7 +147,7 @@ namespace FourierSSI
      * K_t(u) x: the coupled tangent (Stiffness = tangent) built at the
      * fields u and applied to x; K u - G(u) is the internal force, so
      * K_t x = K x - dG/du x (checked against differences of
-     * out_of_balance_load in tests/soil_coupled_tangent.cc).
+     * out_of_balance_load in tests/coupled/soil_coupled_tangent.cc).
      */
     std::vector<Vector<double>>
     tangent_product(const std::vector<Vector<double>> &fields,

@@ -11,8 +11,8 @@
 #define fourier_ssi_input_checks_h
 
 #include <deal.II/grid/tria.h>
-#include <fourier_ssi/input/parameters.h>
 #include <fourier_ssi/driver/scene_plan.h>
+#include <fourier_ssi/input/parameters.h>
 #include <string>
 #include <vector>
 
@@ -29,6 +29,17 @@ namespace FourierSSI
   check_scene_before_solve(const AllParameters    &parameters,
                            const Triangulation<2> &triangulation,
                            const ScenePlan        &plan);
+
+  /**
+   * Throw a one-line error, naming the entry, for parameters that are legal
+   * one by one but together describe no problem to solve (a displacement-
+   * controlled path to a target of 0, a load-controlled path with every load
+   * zero, error norms a coupled run never computes). Called by
+   * AllParameters::parse_parameters once every subsection is read, so that
+   * the refusal comes before any output is touched.
+   */
+  void
+  check_problem_is_meaningful(const AllParameters &parameters);
 
   /**
    * Why the output paths cannot be written (Output/Directory exists and is

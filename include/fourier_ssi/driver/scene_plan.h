@@ -20,8 +20,30 @@ namespace FourierSSI
 {
   using namespace dealii;
 
+  /**
+   * How a scene is solved, decided once from the effects it calls for:
+   * plastic soil couples the harmonics through its points (the coupled soil
+   * load path, with any coulomb interfaces in it); coulomb interfaces alone
+   * couple them through the interface points; a linear scene solves each
+   * harmonic once per mesh, on the cycles of Refinement cycles or on the
+   * nested meshes a Target accuracy designs.
+   */
+  enum class RunMode
+  {
+    linear_cycles,
+    linear_target,
+    nonlinear_interfaces,
+    plastic_soil
+  };
+
+  /** The run mode of a scene (ScenePlan::run_mode). */
+  RunMode
+  run_mode_of(const AllParameters &parameters);
+
   struct ScenePlan
   {
+    /** How the scene is solved. */
+    RunMode run_mode = RunMode::linear_cycles;
     /** Harmonics to solve, n ascending, symmetric before antisymmetric. */
     std::vector<Harmonic> harmonics;
     /** The theta-dependent loads with their sampling chosen. */

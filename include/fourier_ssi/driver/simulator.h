@@ -14,16 +14,17 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 #include <deal.II/grid/tria.h>
-#include <fourier_ssi/mesh/adaptivity.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
-#include <fourier_ssi/postprocess/field_reconstruction.h>
+#include <fourier_ssi/driver/result_files.h>
+#include <fourier_ssi/driver/scene_plan.h>
 #include <fourier_ssi/estimation/goal_estimator.h>
+#include <fourier_ssi/estimation/sequence_error_estimate.h>
 #include <fourier_ssi/harmonic/harmonic_postprocessors.h>
 #include <fourier_ssi/harmonic/harmonic_set.h>
 #include <fourier_ssi/input/parameters.h>
+#include <fourier_ssi/mesh/adaptivity.h>
+#include <fourier_ssi/postprocess/field_reconstruction.h>
 #include <fourier_ssi/postprocess/results_table.h>
-#include <fourier_ssi/driver/scene_plan.h>
-#include <fourier_ssi/estimation/sequence_error_estimate.h>
 #include <functional>
 #include <map>
 #include <memory>
@@ -131,8 +132,39 @@ namespace FourierSSI
       std::vector<double> values;
     };
 
+    /** Resets what a run accumulates and opens its catalogue of files. */
+    void
+    start_run(const bool write_files);
+
+    /** The output folder exists before the run (decided on rank 0). */
+    bool
+    output_directory_exists() const;
+
     void
     remove_stale_results() const;
+
+    /** Checks the output paths and creates the folder. */
+    void
+    prepare_output_directory() const;
+
+    /** Stops with one line if the run's estimated memory exceeds the free. */
+    void
+    check_run_fits_in_memory() const;
+
+    /**
+     * A linear scene on Refinement cycles meshes (the coarser member first
+     * for an error bar when there is one cycle); stops early where the goal
+     * tolerance is met.
+     */
+    void
+    solve_refinement_cycles(std::ostream &log);
+
+    /**
+     * After a failure: removes the result files the run claimed and the
+     * output folder if the run created it and left it empty.
+     */
+    void
+    discard_results(const bool had_directory);
 
     void
     make_mesh();
@@ -150,9 +182,32 @@ namespace FourierSSI
      */
     void
     solve_nonlinear_interfaces(std::ostream &log);
-    /** The last converged step as every harmonic's solution (3D output). */
+    /**
+     * The last converged step of a coupled solver as every harmonic's
+     * solution (3D and per-harmonic output). Collective under mpirun: the
+     * owner of each harmonic sends its field.
+     */
+    template <class Solver>
     void
-    keep_last_step(const CoupledInterfaceSolver &solver);
+    keep_last_step(const Solver &solver)
+    {
+      // The 3D reconstruction sums the harmonics' solutions: the converged
+      // total field of the last step, u_h = lambda u_F,h + K_h^-1 c_h.
+      reconstruction = FieldReconstruction();
+      for (unsigned int h = 0; h < harmonic_set->size(); ++h)
+        {
+          harmonic_set->problem(h).set_solution(solver.solution(h));
+          reconstruction.add(harmonic_set->shared_problem(h));
+        }
+    }
+
+    /**
+     * Output/Write vtu of a coupled run: each harmonic's amplitudes of the
+     * last converged step (keep_last_step()) through the per-harmonic
+     * writer, with the stresses C eps(u) if `elastic_stresses`.
+     */
+    void
+    write_last_step_vtu(const bool elastic_stresses, std::ostream &log);
 
     /**
      * The HarmonicSet of a coupled solve (coulomb interface, plastic soil),
@@ -178,7 +233,7 @@ namespace FourierSSI
      * path of a coupled Solver (CoupledSoilSolver, CoupledInterfaceSolver)
      * on it; with keep_incomplete, the converged steps of a path that fails
      * are written to load-displacement-incomplete.csv (marked by the name;
-     * not in `written`: a failed run removes its results, not this record).
+     * not claimed: a failed run removes its results, not this record).
      */
     template <class Solver>
     std::unique_ptr<Solver>
@@ -193,8 +248,8 @@ namespace FourierSSI
       run_keeping_converged_steps(*solver,
                                   log,
                                   keep_incomplete && writes_csv() ?
-                                    parameters.output.directory +
-                                      "/load-displacement-incomplete.csv" :
+                                    result_files.path_of(
+                                      "load-displacement-incomplete.csv") :
                                     "");
       log << "coupled solve: " << solver->get_steps().size() << " steps in "
           << timer.wall_time() << " s" << std::endl;
@@ -477,8 +532,8 @@ namespace FourierSSI
     double                               cycle_wall_time = 0.;
     ResultsTable                         results;
     FieldReconstruction                  reconstruction;
-    /** Files this run wrote (removed again if it fails). */
-    std::vector<std::string> written;
+    /** The result files of this run (removed again if it fails). */
+    ResultFiles result_files;
   };
 } // namespace FourierSSI
 

@@ -19,16 +19,16 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/data_out.h>
-#include <fourier_ssi/harmonic/assembly_loop.h>
-#include <fourier_ssi/linear_algebra/distributed_linear_system.h>
 #include <fourier_ssi/fourier/harmonic_operator.h>
-#include <fourier_ssi/interfaces/interface_integrator.h>
-#include <fourier_ssi/linear_algebra/linear_solver.h>
 #include <fourier_ssi/fourier/load_decomposition.h>
-#include <fourier_ssi/input/parameters.h>
+#include <fourier_ssi/harmonic/assembly_loop.h>
 #include <fourier_ssi/harmonic/rigid_foundation.h>
-#include <fourier_ssi/linear_algebra/sparse_direct.h>
 #include <fourier_ssi/harmonic/stress_postprocessor.h>
+#include <fourier_ssi/input/parameters.h>
+#include <fourier_ssi/interfaces/interface_integrator.h>
+#include <fourier_ssi/linear_algebra/distributed_linear_system.h>
+#include <fourier_ssi/linear_algebra/linear_solver.h>
+#include <fourier_ssi/linear_algebra/sparse_direct.h>
 #include <map>
 #include <memory>
 
@@ -222,12 +222,16 @@ namespace FourierSSI
      * displacement amplitudes of the `extra` fields (e.g. a stiffness
      * scene's unit-H and unit-M solutions) named by prefix; on a
      * distributed system this rank's piece and, on rank 0, the .pvtu record.
-     * Returns the files this rank wrote (removed again if the run fails).
+     * The stresses are C eps(u) (Output/Write stresses), unless
+     * `elastic_stresses` is false: the stress of plastic soil is not
+     * C eps(u). Returns the files this rank wrote (removed again if the run
+     * fails).
      */
     std::vector<std::string>
     write_vtu(const std::string &filename,
               const std::vector<std::pair<std::string, const Vector<double> *>>
-                &extra = {}) const;
+                        &extra            = {},
+              const bool elastic_stresses = true) const;
 
     /**
      * The strain of the solution at x in cell, as the stresses are output:

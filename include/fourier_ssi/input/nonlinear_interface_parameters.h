@@ -34,6 +34,20 @@ namespace FourierSSI
       rotation
     };
 
+    /**
+     * Upper bounds of the counts of this subsection: a typo (1e9 load
+     * steps, a million harmonics) is refused when the file is read instead
+     * of running for hours or ending in std::bad_alloc. Each is far above
+     * what a scene needs: the harmonics are those of
+     * Discretization/Harmonics (n <= 1024), whose alias-free sampling needs
+     * 2049 angles; a step cut 20 times is a millionth of the step.
+     */
+    static constexpr unsigned int largest_harmonic   = 1024;
+    static constexpr unsigned int most_theta_samples = 8192;
+    static constexpr unsigned int most_load_steps    = 10000;
+    static constexpr unsigned int most_step_cuts     = 20;
+    static constexpr unsigned int most_iterations    = 100000;
+
     /** 0: automatic, 4 (n_max + 1), at least 2 n_max + 1 (no aliasing). */
     unsigned int theta_samples = 0;
     unsigned int load_steps    = 10;
@@ -50,10 +64,18 @@ namespace FourierSSI
     };
 
     /** Final value of the controlled motion [m or rad]. */
-    double       target             = 0.;
-    double       tolerance          = 1e-10;
-    unsigned int maximum_iterations = 2000;
-    Acceleration acceleration       = Acceleration::aitken;
+    double target = 0.;
+    /**
+     * Relative out-of-balance force at which a step has converged. Bounded
+     * below `largest_tolerance`: at 1e-2 a step may stop with a percent of
+     * the load unbalanced, and at Tolerance = 1 the elastic trial of every
+     * step is accepted before any iteration (the elastic answer, reported
+     * with slipping and open samples).
+     */
+    double                  tolerance          = 1e-10;
+    static constexpr double largest_tolerance  = 1e-2;
+    unsigned int            maximum_iterations = 2000;
+    Acceleration            acceleration       = Acceleration::aitken;
     /**
      * Interface-only scenes: Newton with the consistent tangent and a line
      * search (Stiffness = tangent) instead of the initial stiffness.

@@ -6,18 +6,19 @@
 #define fourier_ssi_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
-#include <fourier_ssi/mesh/adaptivity.h>
+#include <fourier_ssi/coupled/initial_stress.h>
+#include <fourier_ssi/coupled/soil_law.h>
 #include <fourier_ssi/fourier/boundary_conditions.h>
 #include <fourier_ssi/fourier/harmonic.h>
-#include <fourier_ssi/coupled/initial_stress.h>
-#include <fourier_ssi/interfaces/interface_pairing.h>
-#include <fourier_ssi/linear_algebra/linear_solver.h>
 #include <fourier_ssi/fourier/load_decomposition.h>
 #include <fourier_ssi/fourier/material.h>
-#include <fourier_ssi/mesh/mesh_builder.h>
-#include <fourier_ssi/input/nonlinear_interface_parameters.h>
 #include <fourier_ssi/harmonic/rigid_foundation.h>
-#include <fourier_ssi/coupled/soil_law.h>
+#include <fourier_ssi/input/nonlinear_interface_parameters.h>
+#include <fourier_ssi/interfaces/interface_pairing.h>
+#include <fourier_ssi/linear_algebra/linear_solver.h>
+#include <fourier_ssi/mesh/adaptivity.h>
+#include <fourier_ssi/mesh/mesh_builder.h>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -102,6 +103,16 @@ namespace FourierSSI
     /** The mesh revolved about the axis with the 3D displacement. */
     bool         write_3d_vtu    = false;
     unsigned int theta_divisions = 36;
+
+    /**
+     * Only Output/Directory and Output/Results file of a parameter file,
+     * read before (and whatever) the rest of the file is refused: every
+     * other entry, unknown ones included, is skipped and no value is
+     * checked. Empty if the file cannot be read or its subsection
+     * structure is broken (then its output folder is not known).
+     */
+    static std::optional<OutputParameters>
+    read_folder_of(const std::string &prm_file);
   };
 
   struct AllParameters

@@ -1,0 +1,194 @@
+#include <algorithm>
+#include <cmath>
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/multithread_info.h>
+#include <fourier_ssi/driver/memory_estimate.h>
+#include <fourier_ssi/fourier/theta_sampling.h>
+#include <fstream>
+#include <sstream>
+
+namespace FourierSSI
+{
+  namespace
+  {
+    /**
+     * Resident size of a small run (the program, deal.II, UMFPACK, MPI
+     * libraries): 173 MB measured for a 24-cell linear scene.
+     */
+    constexpr double program_bytes = 180e6;
+
+    /**
+     * A sparse LU of one harmonic, per DoF: 4 kB (doc/scaling.md, the
+     * figure Mesh/Maximum DoFs is documented with).
+     */
+    constexpr double factorization_bytes_per_dof = 4e3;
+
+    /**
+     * The coupled tangent over all harmonics (plastic soil, Stiffness =
+     * tangent) couples every pair of harmonics at the plastic points: its
+     * LU grows like H^2 N. Measured on prm/pile-capacity.prm (N = 312 DoFs
+     * per harmonic counted as below, 3 p^2 per cell) with 9 and 17
+     * harmonics: peak resident 311 and 538 MB, 138 and 365 MB above the
+     * program. A fit a H^2 N + b H N to the two gives a = 2.4 kB (b = 27
+     * kB, the small-problem overhead of each harmonic); with the 4 kB of
+     * large factorizations for b the model gives 0.52 and 0.65 of the
+     * measured growth, low on purpose: a run that fits must not be refused.
+     */
+    constexpr double tangent_bytes_per_dof_and_pair = 2.4e3;
+
+    /**
+     * One theta sample of one soil quadrature point: strain, committed and
+     * trial plastic strain and the iteration's working copies. Measured:
+     * prm/pile-capacity.prm with n <= 1 and Theta samples = 4096 (384 x
+     * 4096 samples) peaked at 1.43 GB, 1.25 GB above the same run with 36
+     * samples (0.18 GB): 800 bytes per sample.
+     */
+    constexpr double bytes_per_theta_sample = 800.;
+
+    std::string
+    gigabytes(const double bytes)
+    {
+      std::ostringstream s;
+      s.precision(bytes < 1e10 ? 2 : 3);
+      s << bytes / 1e9 << " GB";
+      return s.str();
+    }
+
+    /** DoFs per harmonic, estimated as Mesh/Maximum DoFs does: 3 p^2. */
+    double
+    dofs_per_harmonic(const AllParameters    &parameters,
+                      const Triangulation<2> &triangulation)
+    {
+      const double p = parameters.discretization.degree;
+      return 3. * p * p * triangulation.n_active_cells();
+    }
+
+    /** Soil quadrature points with a plastic law: (p + 2)^2 per cell. */
+    double
+    plastic_points(const AllParameters    &parameters,
+                   const Triangulation<2> &triangulation)
+    {
+      const double p     = parameters.discretization.degree;
+      double       cells = 0.;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        cells += parameters.soil_plasticity.laws.count(cell->material_id());
+      return cells * (p + 2.) * (p + 2.);
+    }
+
+    /** Factorizations held at the same time in a linear run. */
+    double
+    concurrent_factorizations(const AllParameters &parameters,
+                              const unsigned int   n_harmonics)
+    {
+      const unsigned int threads =
+        parameters.discretization.concurrent_harmonics > 0 ?
+          parameters.discretization.concurrent_harmonics :
+          MultithreadInfo::n_cores();
+      return std::min(n_harmonics, std::max(threads, 1u));
+    }
+  } // namespace
+
+  MemoryEstimate
+  estimate_run_memory(const AllParameters    &parameters,
+                      const Triangulation<2> &triangulation,
+                      const ScenePlan        &plan)
+  {
+    const double n_dofs      = dofs_per_harmonic(parameters, triangulation);
+    const double n_harmonics = plan.harmonics.size();
+    const bool   coupled     = parameters.coupled();
+    // Every harmonic's factorization is kept along a coupled load path; a
+    // linear run holds one per harmonic solved at the same time.
+    const double held =
+      coupled ? n_harmonics :
+                concurrent_factorizations(parameters, plan.harmonics.size());
+    const double factorizations = held * n_dofs * factorization_bytes_per_dof;
+    const bool   tangent =
+      parameters.soil_plasticity.any() && parameters.soil_plasticity.tangent;
+    const double coupled_tangent =
+      tangent ?
+        tangent_bytes_per_dof_and_pair * n_harmonics * n_harmonics * n_dofs :
+        0.;
+    const unsigned int samples =
+      parameters.soil_plasticity.any() ?
+        theta_samples_for(highest_harmonic(plan.harmonics),
+                          parameters.nonlinear_interfaces.theta_samples) :
+        0;
+    const double theta_state = samples *
+                               plastic_points(parameters, triangulation) *
+                               bytes_per_theta_sample;
+
+    MemoryEstimate estimate;
+    estimate.bytes =
+      program_bytes + factorizations + coupled_tangent + theta_state;
+    std::ostringstream dofs;
+    dofs << static_cast<long long>(n_dofs) << " DoFs per harmonic";
+    if (theta_state >= std::max(factorizations, coupled_tangent))
+      {
+        estimate.driving_entry = "Nonlinear interfaces/Theta samples";
+        estimate.largest_part =
+          gigabytes(theta_state) + " for the plastic state, " +
+          std::to_string(samples) + " theta samples x " +
+          std::to_string(
+            static_cast<long long>(plastic_points(parameters, triangulation))) +
+          " soil points";
+      }
+    else if (coupled_tangent >= factorizations)
+      {
+        estimate.driving_entry = "Discretization/Harmonics";
+        estimate.largest_part =
+          gigabytes(coupled_tangent) + " for the coupled tangent of " +
+          std::to_string(plan.harmonics.size()) + " harmonics x " + dofs.str();
+      }
+    else
+      {
+        estimate.driving_entry = held > 1. ? "Discretization/Harmonics" :
+                                 parameters.mesh.type == "gmsh" ?
+                                             "Mesh/Mesh file" :
+                                             "Mesh/R cells, Z cells";
+        estimate.largest_part  = gigabytes(factorizations) + " for " +
+                                std::to_string(static_cast<long long>(held)) +
+                                " factorizations held together x " + dofs.str();
+      }
+    return estimate;
+  }
+
+  double
+  available_memory()
+  {
+    std::ifstream meminfo("/proc/meminfo");
+    std::string   key;
+    double        kilobytes = 0.;
+    std::string   unit;
+    while (meminfo >> key >> kilobytes >> unit)
+      if (key == "MemAvailable:")
+        return kilobytes * 1024.;
+    return 0.;
+  }
+
+  double
+  available_memory_on_all_ranks(const MPI_Comm communicator)
+  {
+    const double here = available_memory();
+    return Utilities::MPI::job_supports_mpi() ?
+             Utilities::MPI::min(here, communicator) :
+             here;
+  }
+
+  std::string
+  memory_shortfall(const MemoryEstimate &estimate, const double available)
+  {
+    if (available <= 0. || estimate.bytes <= available)
+      return "";
+    return estimate.driving_entry + ": the run needs about " +
+           gigabytes(estimate.bytes) + " (" + estimate.largest_part +
+           "), more than the free memory, " + gigabytes(available) +
+           " (MemAvailable in /proc/meminfo)";
+  }
+
+  void
+  check_memory_fits(const MemoryEstimate &estimate, const double available)
+  {
+    const std::string shortfall = memory_shortfall(estimate, available);
+    AssertThrow(shortfall.empty(), ExcMessage(shortfall));
+  }
+} // namespace FourierSSI

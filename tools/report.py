@@ -1,0 +1,771 @@
+#!/usr/bin/python3
+"""One A4 page per run, read at a glance (doc/report.md): the geometry, the
+load-displacement curve with its plateau and error bar, the interface state
+around the circumference, the yielding of the soil, and the goal values with
+their units and error bars.
+
+    /usr/bin/python3 tools/report.py OUTPUT_DIR [--prm PRM] [-o report.png]
+
+It reads what the run left in OUTPUT_DIR (results.csv; load-displacement.csv
+of a nonlinear run; interface-state.csv of a run with coulomb interfaces)
+and, with --prm, the scene's Mesh, Materials, Interfaces, Rigid foundation
+and Boundary conditions entries for the geometry. A panel whose data the run
+did not write is left out and named under "not shown" with the reason.
+
+Besides the PNG it prints, one line each, the panels drawn, the panels left
+out, and every goal value as it stands on the page next to the full value
+read from results.csv (tests/report_page.py compares them).
+
+Needs Debian's python3-matplotlib and python3-numpy (under /usr/bin/python3).
+"""
+import argparse
+import csv
+import math
+import os
+import re
+import sys
+import textwrap
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+import numpy as np  # noqa: E402
+from matplotlib.gridspec import GridSpec  # noqa: E402
+from matplotlib.patches import Patch, Rectangle  # noqa: E402
+
+STATES = ["stick", "slip", "open"]
+STATE_COLOURS = {"stick": "#4c72b0", "slip": "#dd8452", "open": "#c44e52"}
+# load-displacement.csv: the load column and the motion column of each
+# controllable motion (Nonlinear interfaces/Controlled motion).
+CURVE_COLUMNS = {"vertical": ("V", "V_kN", "vertical_m", "kN", "m"),
+                 "horizontal": ("H", "H_kN", "horizontal_m", "kN", "m"),
+                 "rotation": ("M", "M_kNm", "rotation_rad", "kN.m", "rad"),
+                 "twist": ("T", "T_kNm", "twist_rad", "kN.m", "rad")}
+# A stiffness K = F / u is computed at a prescribed load F, so its relative
+# error is the relative error of its motion u (first order).
+MOTION_OF_STIFFNESS = {"vertical": "foundation_vertical_displacement",
+                       "horizontal": "foundation_horizontal_displacement",
+                       "rocking": "foundation_rotation",
+                       "torsional": "foundation_twist"}
+PAGE_INCHES = (8.27, 11.69)  # A4 portrait
+VALUE_FORMAT, BAR_FORMAT = "%.6g", "%.2g"
+
+
+def fail(message):
+    sys.exit("report.py: " + message)
+
+
+# ---------------------------------------------------------------- reading
+
+
+def read_csv(path):
+    with open(path) as f:
+        return list(csv.DictReader(f))
+
+
+def read_results(directory):
+    path = os.path.join(directory, "results.csv")
+    if not os.path.isfile(path):
+        fail(path + ": missing (not an output folder of a finished run?)")
+    rows = read_csv(path)
+    if not rows or "quantity" not in rows[0]:
+        fail(path + ": no rows quantity,n,family,cycle,value,unit")
+    return rows
+
+
+def read_prm(path):
+    """The prm's entries as {"Subsection/Key": value} (innermost subsection
+    names joined by '/'), comments and line continuations handled."""
+    entries, sections, pending = {}, [], ""
+    with open(path) as f:
+        for raw in f:
+            line = pending + raw.split("#", 1)[0].rstrip()
+            pending = ""
+            if line.endswith("\\"):
+                pending = line[:-1] + " "
+                continue
+            words = line.split()
+            if not words:
+                continue
+            if words[0] == "subsection":
+                sections.append(" ".join(words[1:]))
+            elif words[0] == "end":
+                sections.pop()
+            elif words[0] == "set" and "=" in line:
+                key, value = line.split("=", 1)
+                key = " ".join(key.split()[1:])
+                entries["/".join(sections + [key])] = value.strip()
+    return entries
+
+
+# The Mesh entries' defaults (doc/parameters.prm), for a prm that omits them.
+MESH_DEFAULTS = {"Mesh/R breakpoints": "0, 1", "Mesh/R cells": "4",
+                 "Mesh/R growth": "1", "Mesh/Z breakpoints": "0, 1",
+                 "Mesh/Z cells": "4", "Mesh/Z growth": "1"}
+
+
+def mesh_entry(prm, key):
+    return numbers(prm.get(key, MESH_DEFAULTS[key]))
+
+
+def numbers(text):
+    return [float(v) for v in text.split(",") if v.strip()]
+
+
+def id_items(text):
+    """'1: a, b; 2: c' -> [(1, 'a, b'), (2, 'c')]."""
+    items = []
+    for part in text.split(";"):
+        if ":" in part:
+            key, value = part.split(":", 1)
+            items.append((int(key), value.strip()))
+    return items
+
+
+# ------------------------------------------------------------- goal values
+
+
+class Goal:
+    """One row of the goal table: a value from results.csv with its
+    absolute error bar and where the bar comes from."""
+
+    def __init__(self, row, bar, bar_from):
+        self.row, self.bar, self.bar_from = row, bar, bar_from
+        self.value = float(row["value"])
+
+
+def row_key(row):
+    return (row["quantity"], row["n"], row["family"], row["cycle"])
+
+
+def find_row(rows, quantity, n, family, cycle=None):
+    """The row of quantity at (n, family) and cycle, else its last one."""
+    found = [r for r in rows if r["quantity"] == quantity and r["n"] == n
+             and r["family"] == family
+             and (cycle is None or r["cycle"] == cycle)]
+    return found[-1] if found else None
+
+
+def goals_with_own_bar(rows):
+    """Every quantity Q with a row Q_error (relative; the program's error
+    estimate under Refinement cycles or Target accuracy)."""
+    goals = []
+    for e in rows:
+        q = e["quantity"]
+        if not q.endswith("_error"):
+            continue
+        row = find_row(rows, q[:-len("_error")], e["n"], e["family"],
+                       e["cycle"])
+        if row is not None:
+            relative = float(e["value"])
+            goals.append(Goal(row, relative * abs(float(row["value"])), q))
+    return goals
+
+
+def stiffness_goals(rows, goals):
+    """foundation_<case>_stiffness[_normalised]: the bar of its motion."""
+    bars = {(g.row["quantity"], g.row["n"], g.row["family"]): g for g in goals}
+    found = []
+    for row in rows:
+        m = re.fullmatch(r"foundation_(\w+?)_stiffness(_normalised)?",
+                         row["quantity"])
+        if not m or m.group(1) not in MOTION_OF_STIFFNESS:
+            continue
+        motion = bars.get((MOTION_OF_STIFFNESS[m.group(1)], row["n"],
+                           row["family"]))
+        if motion is not None and motion.row["cycle"] != row["cycle"]:
+            continue  # the stiffness of another cycle than the answer's
+        if motion is None and row is not find_row(rows, row["quantity"],
+                                                  row["n"], row["family"]):
+            continue  # no bar: show the last cycle's value only
+        relative = motion.bar / abs(motion.value) if motion else math.nan
+        found.append(Goal(row, relative * abs(float(row["value"])),
+                          motion.bar_from if motion else ""))
+    return found
+
+
+def capacity_goals(rows, goals):
+    """capacity_<L> without a total bar: its plateau's error (absolute)."""
+    have = {row_key(g.row) for g in goals}
+    found = []
+    for row in rows:
+        if not re.fullmatch(r"capacity_[VHMT]", row["quantity"]):
+            continue
+        if row_key(row) in have:
+            continue
+        plateau = find_row(rows, row["quantity"] + "_plateau_error", row["n"],
+                           row["family"], row["cycle"])
+        bar = float(plateau["value"]) if plateau else math.nan
+        found.append(Goal(row, bar, plateau["quantity"] if plateau else ""))
+    return found
+
+
+def goal_values(rows):
+    goals = goals_with_own_bar(rows)
+    return goals + stiffness_goals(rows, goals) + capacity_goals(rows, goals)
+
+
+def bar_parts(goal, rows):
+    """The parts of a total bar that results.csv gives (relative):
+    <goal>_error_mesh, _harmonics, _plateau (Target accuracy runs)."""
+    r = goal.row
+    parts = []
+    for part in ("mesh", "harmonics", "plateau"):
+        row = find_row(rows, goal.bar_from + "_" + part, r["n"], r["family"],
+                       r["cycle"])
+        if row is not None:
+            name = "harm." if part == "harmonics" else part
+            parts.append("%s %s" % (name, BAR_FORMAT % float(row["value"])))
+    return ", ".join(parts)
+
+
+def bar_note(goal, rows=()):
+    if not goal.bar_from:
+        return "no estimate in results.csv"
+    if goal.bar_from.endswith("_plateau_error"):
+        return "plateau only"
+    if goal.bar_from != goal.row["quantity"] + "_error":
+        return "its motion's (K = F/u)"
+    parts = bar_parts(goal, rows)
+    return parts if parts else "estimate"
+
+
+# ---------------------------------------------------------------- geometry
+
+
+def graded_edges(breakpoints, cells, growth, refinements):
+    """Cell edges of one direction (Mesh/R or Z: h_{i+1} = q h_i within a
+    segment, as mesh_builder.cc), each cell split 2^refinements times."""
+    edges = [breakpoints[0]]
+    for s in range(len(cells)):
+        q, m = growth[s], int(cells[s])
+        length = breakpoints[s + 1] - breakpoints[s]
+        h = length / (m if q == 1. else (q ** m - 1.) / (q - 1.))
+        for _ in range(m):
+            step = h / 2 ** refinements
+            start = edges[-1]
+            edges += [start + step * (k + 1) for k in range(2 ** refinements)]
+            h *= q
+    return np.array(edges)
+
+
+def material_label(prm, material_id):
+    laws = dict(id_items(prm.get("Soil plasticity/Laws", "")))
+    elastic = dict(id_items(prm.get("Materials/Materials", "")))
+    text = "%d: %s" % (material_id, elastic.get(material_id, "?"))
+    if material_id in laws:
+        text += "; " + laws[material_id]
+    return text
+
+
+def interface_segments(text):
+    """Mesh/Interface lines -> [(id, (r0, r1), (z0, z1))]."""
+    segments = []
+    for interface, spec in id_items(text):
+        coords = {}
+        for part in spec.split(","):
+            name, value = part.split("=")
+            ends = [float(v) for v in value.split("..")]
+            coords[name.strip()] = ends if len(ends) == 2 else ends * 2
+        segments.append((interface, coords["r"], coords["z"]))
+    return segments
+
+
+def foundation_outline(prm, regions):
+    """The rigid foundation: the contact faces (Tie = boundary, id 4: the
+    surface patch) or the box of its material (Tie = material)."""
+    if prm.get("Rigid foundation/Enabled", "false") != "true":
+        return None
+    tie = prm.get("Rigid foundation/Tie", "boundary")
+    tied = int(prm.get("Rigid foundation/Id", "4"))
+    if tie == "material":
+        boxes = [box for mid, box in regions if mid == tied]
+        return ("material", boxes)
+    if tied != 4:  # only the surface patch's faces are known here
+        return None
+    return ("boundary", float(prm.get("Mesh/Surface patch radius", "0")))
+
+
+def dirichlet_sides(prm, r_edges, z_edges):
+    """The rectangle's sides 1 (far), 2 (bottom) and 3 (top) that have a
+    Boundary conditions/Dirichlet entry, as (r, z) end points."""
+    sides = {1: ([r_edges[-1]] * 2, [z_edges[0], z_edges[-1]]),
+             2: ([r_edges[0], r_edges[-1]], [z_edges[0]] * 2),
+             3: ([r_edges[0], r_edges[-1]], [z_edges[-1]] * 2)}
+    return [sides[side] for side, _ in
+            id_items(prm.get("Boundary conditions/Dirichlet", ""))
+            if side in sides]
+
+
+def mesh_edges(prm, direction):
+    refinements = int(prm.get("Mesh/Global refinements", "0"))
+    return graded_edges(*[mesh_entry(prm, "Mesh/%s %s" % (direction, key))
+                          for key in ("breakpoints", "cells", "growth")],
+                        refinements)
+
+
+def draw_geometry(ax, prm, window, zoomed):
+    """Materials, removed regions, cell edges, Dirichlet sides, interface
+    lines and the foundation in the (r, z) window; returns the edges and
+    the material regions."""
+    r, z = mesh_edges(prm, "R"), mesh_edges(prm, "Z")
+    regions = [(mid, numbers(box)) for mid, box in
+               id_items(prm.get("Mesh/Material regions", ""))]
+    colours = plt.get_cmap("Pastel1")
+    ax.add_patch(Rectangle((r[0], z[0]), r[-1] - r[0], z[-1] - z[0],
+                           fc=colours(0), ec="none"))
+    for mid, (r0, r1, z0, z1) in regions:
+        ax.add_patch(Rectangle((r0, z0), r1 - r0, z1 - z0,
+                               fc=colours(mid % 9), ec="none"))
+    for box in prm.get("Mesh/Removed regions", "").split(";"):
+        if box.strip():
+            r0, r1, z0, z1 = numbers(box)
+            ax.add_patch(Rectangle((r0, z0), r1 - r0, z1 - z0, fc="white",
+                                   ec="0.5", hatch="////", lw=0.5))
+    ax.vlines(r, z[0], z[-1], colors="0.55", lw=0.25)
+    ax.hlines(z, r[0], r[-1], colors="0.55", lw=0.25)
+    for rs, zs in dirichlet_sides(prm, r, z):
+        ax.plot(rs, zs, color="#2a9d8f", lw=3, solid_capstyle="butt")
+    for interface, rs, zs in interface_segments(
+            prm.get("Mesh/Interface lines", "")):
+        ax.plot(rs, zs, color="#c44e52", lw=2.2)
+    draw_foundation(ax, foundation_outline(prm, regions), r[0], z[-1])
+    ax.set_xlim(window[0], window[1])
+    ax.set_ylim(window[2], window[3])
+    ax.set_xlabel("r [m]", fontsize=7)
+    ax.set_ylabel("z [m]", fontsize=7)
+    ax.tick_params(labelsize=6)
+    ax.set_title("near the foundation" if zoomed else "whole domain",
+                 fontsize=7)
+    return r, z, regions
+
+
+def draw_foundation(ax, outline, r_axis, z_top):
+    if outline is None:
+        return
+    kind, where = outline
+    if kind == "boundary":
+        ax.plot([r_axis, where], [z_top, z_top], color="k", lw=4,
+                solid_capstyle="butt")
+        return
+    for r0, r1, z0, z1 in where:
+        ax.add_patch(Rectangle((r0, z0), r1 - r0, z1 - z0, fc="0.25",
+                               ec="k", hatch="xx", alpha=0.6))
+
+
+def zoom_window(prm, r, z):
+    """The box around the foundation, material regions and interface lines,
+    widened so the soil next to them shows (3 times their radius, 1.5 times
+    their depth); None if it is not much smaller than the domain."""
+    boxes = [numbers(b) for _, b in id_items(prm.get("Mesh/Material regions",
+                                                     ""))]
+    boxes += [[min(rs), max(rs), min(zs), max(zs)] for _, rs, zs in
+              interface_segments(prm.get("Mesh/Interface lines", ""))]
+    patch = float(prm.get("Mesh/Surface patch radius", "0"))
+    if patch > 0.:
+        boxes.append([r[0], patch, z[-1], z[-1]])
+    if not boxes:
+        return None
+    b = np.array(boxes)
+    radius = max(b[:, 1].max() - r[0], 1e-9)
+    depth = max(z[-1] - b[:, 2].min(), radius)
+    window = [r[0], min(r[-1], r[0] + 3. * radius),
+              max(z[0], z[-1] - 1.5 * depth), z[-1] + 0.05 * depth]
+    whole = (r[-1] - r[0]) * (z[-1] - z[0])
+    part = (window[1] - window[0]) * (window[3] - window[2])
+    return window if part < 0.5 * whole else None
+
+
+def geometry_legend(ax, prm, regions):
+    """Materials (elastic entry and plastic law), then what the scene has of
+    interfaces, rigid foundation and held sides."""
+    ids = sorted({0} | {mid for mid, _ in regions})
+    colours = plt.get_cmap("Pastel1")
+    handles = [Patch(fc=colours(m % 9), label=material_label(prm, m))
+               for m in ids]
+    if prm.get("Mesh/Interface lines", ""):
+        laws = ", ".join("%d: %s" % item for item in id_items(
+            prm.get("Interfaces/Interfaces", "")))
+        handles.append(Patch(fc="#c44e52", label="interface lines " + laws))
+    if prm.get("Rigid foundation/Enabled", "false") == "true":
+        handles.append(Patch(fc="k", label="rigid foundation"))
+    if prm.get("Boundary conditions/Dirichlet", ""):
+        handles.append(Patch(fc="#2a9d8f", label="Dirichlet sides"))
+    for h in handles:
+        h.set_label(textwrap.fill(h.get_label(), 34))
+    ax.axis("off")
+    ax.legend(handles=handles, fontsize=6, loc="center left", frameon=False)
+
+
+def geometry_panel(fig, spec, prm):
+    """The whole domain and, when the foundation is small in it, a zoom."""
+    inner = spec.subgridspec(1, 3, wspace=0.35, width_ratios=[1, 1, 0.8])
+    ax = fig.add_subplot(inner[0, 0])
+    r, z = mesh_edges(prm, "R"), mesh_edges(prm, "Z")
+    whole = [r[0], r[-1], z[0], z[-1]]
+    r_edges, z_edges, regions = draw_geometry(ax, prm, whole, False)
+    window = zoom_window(prm, r_edges, z_edges)
+    if window is not None:
+        draw_geometry(fig.add_subplot(inner[0, 1]), prm, window, True)
+    geometry_legend(fig.add_subplot(inner[0, 2]), prm, regions)
+    top = spec.get_position(fig)
+    fig.text(top.x0, top.y1 + 0.02, "Geometry (the prm's mesh, %s global "
+             "refinements; lines: cell edges)"
+             % prm.get("Mesh/Global refinements", "0"), fontsize=9,
+             weight="bold")
+
+
+# ---------------------------------------------------- load-displacement
+
+
+def controlled_motion(prm, rows):
+    """The motion the curve drives: the prm's entry, else the load named by
+    the capacity or end-load row, else the load that moved most."""
+    if prm and "Nonlinear interfaces/Controlled motion" in prm:
+        return prm["Nonlinear interfaces/Controlled motion"]
+    for row in rows:
+        m = re.fullmatch(r"(?:capacity|end_load)_([VHMT])", row["quantity"])
+        if m:
+            return next(k for k, v in CURVE_COLUMNS.items()
+                        if v[0] == m.group(1))
+    return None
+
+
+def curve_goal(goals, letter):
+    for g in goals:
+        if g.row["quantity"] in ("capacity_" + letter, "end_load_" + letter):
+            return g
+    return None
+
+
+def draw_curve(ax, curve, motion, goals, rows):
+    """The controlled motion's load against it, from zero, with the
+    capacity or end load of results.csv and its bars."""
+    letter, load_col, motion_col, load_unit, motion_unit = \
+        CURVE_COLUMNS[motion]
+    u = np.array([0.] + [float(s[motion_col]) for s in curve])
+    p = np.array([0.] + [float(s[load_col]) for s in curve])
+    sign = -1. if p[-1] < 0. else 1.
+    prefix = "-" if sign < 0. else ""
+    ax.plot(sign * u, sign * p, "o-", ms=3, color="#4c72b0", label="steps")
+    bad = [i + 1 for i, s in enumerate(curve)
+           if s.get("converged", "1") != "1"]
+    if bad:
+        ax.plot(sign * u[bad], sign * p[bad], "x", color="r", ms=6,
+                label="not converged")
+    goal = curve_goal(goals, letter)
+    title = "Load-displacement (%d steps)" % len(curve)
+    if goal is not None:
+        title += ": " + draw_plateau(ax, goal, sign, u[-1], rows, load_unit)
+    ax.set_xlabel("%s%s [%s]" % (prefix, motion_col.rsplit("_", 1)[0],
+                                 motion_unit), fontsize=7)
+    ax.set_ylabel("%s%s [%s]" % (prefix, letter, load_unit), fontsize=7)
+    ax.tick_params(labelsize=6)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=6, loc="lower right")
+    ax.set_title(title, fontsize=8)
+
+
+def draw_plateau(ax, goal, sign, u_last, rows, unit):
+    """The capacity (dashed), its plateau's error as a band, the total bar
+    at the last step; returns the text for the title."""
+    value = sign * goal.value
+    plateau = find_row(rows, goal.row["quantity"] + "_plateau_error",
+                       goal.row["n"], goal.row["family"], goal.row["cycle"])
+    is_capacity = goal.row["quantity"].startswith("capacity_")
+    if is_capacity:
+        ax.axhline(value, ls="--", lw=0.8, color="k",
+                   label="capacity (plateau)")
+    if plateau is not None and math.isfinite(float(plateau["value"])):
+        ax.axhspan(value, value + float(plateau["value"]), color="0.8",
+                   label="plateau's error (asymptote)")
+    if math.isfinite(goal.bar):
+        ax.errorbar([sign * u_last], [value], yerr=[goal.bar], color="k",
+                    capsize=4, lw=1.2, label="error bar (%s)" % (
+                        "plateau only" if "plateau" in goal.bar_from
+                        else "total"))
+    name = "capacity" if is_capacity else "end load"
+    return "%s %s = %s ± %s %s" % (name, goal.row["quantity"][-1],
+                                   VALUE_FORMAT % goal.value,
+                                   BAR_FORMAT % goal.bar, unit)
+
+
+# ------------------------------------------------------- interface state
+
+
+def interface_bands(rows, per_line=4):
+    """The last step's samples on a few positions of every interface line
+    (faces of one orientation of one interface id): [(label, thetas,
+    states)], positions evenly spread over each line."""
+    last = max(int(r["step"]) for r in rows)
+    rows = [r for r in rows if int(r["step"]) == last]
+    lines = {}
+    for r in rows:
+        along = "z" if abs(float(r["normal_r"])) > abs(float(r["normal_z"])) \
+            else "r"
+        lines.setdefault((r["interface_id"], along), []).append(r)
+    bands = []
+    for (interface, along), group in sorted(lines.items()):
+        coords = sorted({float(r[along + "_m"]) for r in group})
+        picks = sorted({coords[int(round(i))] for i in np.linspace(
+            0, len(coords) - 1, min(per_line, len(coords)))}, reverse=True)
+        for c in picks:
+            at = sorted((float(r["theta_deg"]), r["state"]) for r in group
+                        if float(r[along + "_m"]) == c)
+            label = "%s: %s = %.3g m" % (interface, along, c)
+            bands.append((label, [t for t, _ in at], [s for _, s in at]))
+    return last, bands
+
+
+def draw_interface_state(ax, rows):
+    """One band of stick / slip / open samples over theta per position;
+    returns the step and the positions' labels."""
+    step, bands = interface_bands(rows)
+    for k, (label, thetas, states) in enumerate(bands):
+        width = 360. / len(thetas)
+        if thetas[0] == 0.:  # close the circle: 360 is 0
+            thetas, states = thetas + [360.], states + states[:1]
+        for t, s in zip(thetas, states):
+            ax.add_patch(Rectangle((t - width / 2, -k - 0.4), width, 0.8,
+                                   fc=STATE_COLOURS[s], ec="none"))
+    ax.set_yticks([-k for k in range(len(bands))])
+    ax.set_yticklabels([b[0] for b in bands], fontsize=6)
+    ax.set_ylim(-len(bands) + 0.4, 0.6)
+    ax.set_xlim(0, 360)
+    ax.set_xticks([0, 90, 180, 270, 360])
+    ax.tick_params(labelsize=6)
+    ax.set_xlabel("theta [deg]", fontsize=7)
+    ax.legend(handles=[Patch(fc=STATE_COLOURS[s], label=s) for s in STATES],
+              fontsize=6, ncol=3, loc="upper right",
+              bbox_to_anchor=(1.0, -0.08), frameon=False)
+    ax.set_title("Interface state around the circumference at the last step "
+                 "(%d); interface id: position of the sample row" % step,
+                 fontsize=8)
+    return step, [b[0] for b in bands]
+
+
+# --------------------------------------------------------------- yielding
+
+
+def yield_history(rows):
+    """step_plastic_samples per step (plastic soil runs)."""
+    steps = [(int(r["cycle"]), float(r["value"])) for r in rows
+             if r["quantity"] == "step_plastic_samples"]
+    return sorted(steps)
+
+
+def draw_yielding(ax, history):
+    steps = [s for s, _ in history]
+    ax.plot(steps, [n for _, n in history], "o-", ms=3, color="#8172b2")
+    ax.set_xlabel("load step", fontsize=7)
+    ax.set_ylabel("plastic samples", fontsize=7)
+    ax.tick_params(labelsize=6)
+    ax.grid(True, alpha=0.3)
+    ax.set_title("Yielding: plastic soil samples per step\n(the zone's map "
+                 "is not written by the program)", fontsize=8)
+
+
+# ----------------------------------------------------------------- table
+
+
+def goal_table_cells(goals, rows):
+    cells = []
+    for g in goals:
+        r = g.row
+        cells.append([r["quantity"], "%s %s" % (r["n"], r["family"][:4]),
+                      r["cycle"], VALUE_FORMAT % g.value,
+                      BAR_FORMAT % g.bar if math.isfinite(g.bar) else "-",
+                      r["unit"], bar_note(g, rows)])
+    return cells
+
+
+def draw_goal_table(ax, goals, rows):
+    """The goal rows as a table, with whether the target was reached."""
+    ax.axis("off")
+    columns = ["quantity", "n family", "cycle/step", "value", "± (abs)",
+               "unit", "bar (its relative parts)"]
+    table = ax.table(cellText=goal_table_cells(goals, rows), colLabels=columns,
+                     loc="upper center", cellLoc="left",
+                     colWidths=[0.31, 0.07, 0.07, 0.1, 0.07, 0.12, 0.26])
+    for cell in table.get_celld().values():
+        cell.PAD = 0.03
+    table.auto_set_font_size(False)
+    table.set_fontsize(6)
+    target = find_row(rows, "target_accuracy_reached", "0", "symmetric")
+    note = ""
+    if target is not None:
+        accuracy = find_row(rows, "target_accuracy", target["n"],
+                            target["family"], target["cycle"])
+        note = "; Target accuracy %s %s" % (
+            accuracy["value"] if accuracy else "?",
+            "reached" if target["value"] == "1" else "NOT reached")
+    ax.set_title("Goal values (results.csv; bars are absolute, from the "
+                 "relative *_error rows)" + note, fontsize=8, loc="left")
+    return table
+
+
+def table_texts(table, n_rows):
+    """The goal rows as drawn: the text of each cell of the table."""
+    cells = table.get_celld()
+    return [[cells[(i + 1, j)].get_text().get_text() for j in range(7)]
+            for i in range(n_rows)]
+
+
+# ------------------------------------------------------------------ page
+
+
+def choose_panels(directory, prm, rows, goals):
+    """The panels this run can fill, and the reasons for those left out."""
+    shown, missing = [], []
+    if prm is None:
+        missing.append("geometry: no --prm given")
+    elif prm.get("Mesh/Type", "rectangle") != "rectangle":
+        missing.append("geometry: a gmsh mesh (Mesh/Mesh file), not drawn yet")
+    else:
+        shown.append("geometry")
+    curve = os.path.join(directory, "load-displacement.csv")
+    if not os.path.isfile(curve):
+        missing.append("load-displacement: no load-displacement.csv "
+                       "(a linear run)")
+    elif not moves_foundation(read_csv(curve)):
+        missing.append("load-displacement: no rigid-foundation load or "
+                       "motion in load-displacement.csv (loads on "
+                       "boundaries only; its load_factor column has them)")
+    else:
+        shown.append("load-displacement")
+    state = os.path.join(directory, "interface-state.csv")
+    if os.path.isfile(state):
+        shown.append("interface-state")
+    else:
+        missing.append("interface-state: no interface-state.csv "
+                       "(no coulomb interfaces)")
+    if yield_history(rows):
+        shown.append("yielding")
+        missing.append("plastic zone: no map: the program writes no plastic "
+                       "field (only the count of plastic samples per step)")
+    else:
+        missing.append("plastic zone: no plastic soil in this run")
+    if goals:
+        shown.append("goals")
+    else:
+        missing.append("goals: results.csv has no value with an error "
+                       "estimate and no capacity (Discretization/Target "
+                       "accuracy gives them)")
+    return shown, missing
+
+
+def layout(fig, shown, n_goals):
+    """Rows of the page: title, geometry, curve | yielding, interface
+    state, goal table; only those shown."""
+    plan = [("title", 0.05)]
+    if "geometry" in shown:
+        plan.append(("geometry", 3.2))
+    if "load-displacement" in shown or "yielding" in shown:
+        plan.append(("curves", 2.6))
+    if "interface-state" in shown:
+        plan.append(("interface-state", 2.0))
+    if "goals" in shown:
+        plan.append(("goals", 0.6 + 0.19 * n_goals))
+    plan.append(("footer", 0.5))
+    # Every panel keeps its size on every page: the space of the panels
+    # left out stays blank at the bottom.
+    full_page = 0.05 + 3.2 + 2.6 + 2.0 + 1.2 + 0.5
+    plan.append(("blank", max(0., full_page - sum(h for _, h in plan))))
+    grid = GridSpec(len(plan), 1, figure=fig,
+                    height_ratios=[h for _, h in plan], hspace=0.6,
+                    left=0.13, right=0.96, top=0.96, bottom=0.02)
+    return {name: grid[i, 0] for i, (name, _) in enumerate(plan)}
+
+
+def draw_page(directory, prm, prm_path, rows, out):
+    """The page, written to out; returns the panels drawn, the reasons for
+    those left out, the goals, the goal table's texts as drawn, and what
+    the interface-state panel showed."""
+    goals = goal_values(rows)
+    shown, missing = choose_panels(directory, prm, rows, goals)
+    fig = plt.figure(figsize=PAGE_INCHES)
+    spots = layout(fig, shown, len(goals))
+    fig.text(0.05, 0.985, "fourier-ssi run report: %s%s" % (
+        directory,
+        "  (prm: %s)" % prm_path if prm_path else ""), fontsize=9,
+        weight="bold", va="top")
+    extra = {}
+    if "geometry" in shown:
+        geometry_panel(fig, spots["geometry"], prm)
+    if "curves" in spots:
+        draw_curves_row(fig, spots["curves"], shown, directory, prm, rows,
+                        goals)
+    if "interface-state" in shown:
+        ax = fig.add_subplot(spots["interface-state"])
+        extra["interface-state"] = draw_interface_state(
+            ax, read_csv(os.path.join(directory, "interface-state.csv")))
+    texts = []
+    if "goals" in shown:
+        table = draw_goal_table(fig.add_subplot(spots["goals"]), goals, rows)
+        texts = table_texts(table, len(goals))
+    footer = fig.add_subplot(spots["footer"])
+    footer.axis("off")
+    footer.text(0., 1., "Not shown: " + "; ".join(missing), fontsize=6.5,
+                va="top", wrap=True)
+    fig.savefig(out, dpi=100)
+    plt.close(fig)
+    return shown, missing, goals, texts, extra
+
+
+def draw_curves_row(fig, spec, shown, directory, prm, rows, goals):
+    both = "load-displacement" in shown and "yielding" in shown
+    inner = spec.subgridspec(1, 2 if both else 1, wspace=0.3)
+    k = 0
+    if "load-displacement" in shown:
+        curve = [s for s in read_csv(os.path.join(directory,
+                                                  "load-displacement.csv"))]
+        motion = controlled_motion(prm, rows) or largest_motion(curve)
+        draw_curve(fig.add_subplot(inner[0, k]), curve, motion, goals, rows)
+        k += 1
+    if "yielding" in shown:
+        draw_yielding(fig.add_subplot(inner[0, k]), yield_history(rows))
+
+
+def moves_foundation(curve):
+    """Whether any step has a rigid-foundation load or motion."""
+    return any(float(s[c]) != 0. for s in curve
+               for columns in CURVE_COLUMNS.values() for c in columns[1:3])
+
+
+def largest_motion(curve):
+    """Without the prm: the motion whose load changed most (in kN or kN.m)."""
+    return max(CURVE_COLUMNS, key=lambda m: max(
+        abs(float(s[CURVE_COLUMNS[m][1]])) for s in curve))
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("output_dir")
+    parser.add_argument("--prm", help="the scene's .prm (for the geometry)")
+    parser.add_argument("-o", "--output", default="report.png")
+    args = parser.parse_args()
+    if not os.path.isdir(args.output_dir):
+        fail(args.output_dir + ": no such output folder")
+    if args.prm and not os.path.isfile(args.prm):
+        fail(args.prm + ": no such file (--prm)")
+    prm = read_prm(args.prm) if args.prm else None
+    rows = read_results(args.output_dir)
+    shown, missing, goals, texts, extra = draw_page(
+        args.output_dir, prm, args.prm, rows, args.output)
+    print("panels: " + ", ".join(shown))
+    for reason in missing:
+        print("not shown: " + reason)
+    if "interface-state" in extra:
+        step, labels = extra["interface-state"]
+        print("interface-state: step %d; %s" % (step, "; ".join(labels)))
+    for g, t in zip(goals, texts):
+        print("goal: %s,%s,%s,%s | value=%r | page_value=%s | page_bar=%s | "
+              "unit=%s | bar_from=%s"
+              % (t[0], g.row["n"], g.row["family"], t[2], g.value, t[3],
+                 t[4], t[5], g.bar_from or "-"))
+    print("wrote " + args.output)
+
+
+if __name__ == "__main__":
+    main()
