@@ -32,6 +32,8 @@ namespace FourierSSI
     name_of(const NonlinearInterfaceParameters &settings)
     {
       using Kind = NonlinearInterfaceParameters::Acceleration;
+      if (settings.tangent_stiffness)
+        return ", Newton (consistent tangent, line search)";
       return settings.acceleration == Kind::anderson ?
                ", Anderson m = " + std::to_string(settings.anderson_depth) :
              settings.acceleration == Kind::aitken ? ", Aitken" :
@@ -94,6 +96,10 @@ namespace FourierSSI
                              ": not yet: prescribed (non-zero) Dirichlet "
                              "values with nonlinear interfaces; load the "
                              "scene through the Rigid foundation"));
+    AssertThrow(!settings.tangent_stiffness || set.n_owning_ranks() <= 1,
+                ExcMessage(entry +
+                           "/Stiffness: not yet: tangent on several MPI "
+                           "ranks (use initial, or one process)"));
     solve_load_pattern();
     committed.correction_solution = pattern_solution;
     committed.correction_load     = pattern_solution;
@@ -371,73 +377,104 @@ namespace FourierSSI
       ratio * (committed.controlled_motion - before_last.controlled_motion);
   }
 
+  CoupledInterfaceSolver::Evaluation
+  CoupledInterfaceSolver::evaluate(const double target, StepState &state) const
+  {
+    const bool displacement_control =
+      settings.control == NonlinearInterfaceParameters::Control::displacement;
+    state.load_factor = displacement_control ?
+                          (target - state.controlled_motion) / pattern_motion :
+                          target;
+    Evaluation e;
+    // 1-2: relative displacements at every (point, theta), the law.
+    e.relative =
+      interface.relative_displacements(state.interface_solution, sampling);
+    for (unsigned int k = 0; k < e.relative.size(); ++k)
+      for (unsigned int c = 0; c < 3; ++c)
+        e.relative[k][c] += state.load_factor * pattern_relative[k][c];
+    e.counts = interface.return_map(
+      e.relative, committed.plastic, e.plastic, e.traction, e.contact);
+    // 3-4: out-of-balance load G and force residual R = G - c, measured
+    //      against the internal force scale (coupled_iteration.h).
+    e.residual = interface.load_of(e.plastic, sampling);
+    e.scale    = {std::abs(state.load_factor) * pattern_load_norm,
+                  norm_over_harmonics(e.residual)};
+    for (unsigned int h = 0; h < set.size(); ++h)
+      e.residual[h] -= state.correction_load[h];
+    e.residual_norm = norm_over_harmonics(e.residual);
+    return e;
+  }
+
+  bool
+  CoupledInterfaceSolver::accept(const double       target,
+                                 const Evaluation  &e,
+                                 const unsigned int iteration,
+                                 StepState         &state,
+                                 LoadStepResult    &result,
+                                 InterfaceSnapshot &snapshot) const
+  {
+    complete(state);
+    // A diverged iterate can pass the relative test with a huge load
+    // factor; the controlled motion then misses its target (cancellation
+    // of lambda m(u_F) against m(v)): not converged.
+    if (settings.control ==
+          NonlinearInterfaceParameters::Control::displacement &&
+        std::abs(state.load_factor * pattern_motion + state.controlled_motion -
+                 target) > 1e-8 * std::abs(target))
+      return false;
+    state.plastic     = e.plastic;
+    result.iterations = iteration;
+    result.residual   = e.scale.relative(e.residual_norm);
+    result.states     = e.counts;
+    result.resultant  = foundation_resultant(e.traction);
+    snapshot          = {e.relative, e.traction, e.contact};
+    return true;
+  }
+
   bool
   CoupledInterfaceSolver::solve_step(const double       target,
                                      StepState         &state,
                                      LoadStepResult    &result,
                                      InterfaceSnapshot &snapshot)
   {
-    const bool displacement_control =
-      settings.control == NonlinearInterfaceParameters::Control::displacement;
-    std::vector<LocalVector>  plastic, traction;
-    std::vector<ContactState> contact;
-    FixedPointAcceleration    acceleration(settings.acceleration,
+    FixedPointAcceleration acceleration(settings.acceleration,
                                         settings.anderson_depth);
+    NewtonWatchdog         watchdog;
+    Evaluation             e = evaluate(target, state);
     for (unsigned int iteration = 0; iteration <= settings.maximum_iterations;
          ++iteration)
       {
-        state.load_factor =
-          displacement_control ?
-            (target - state.controlled_motion) / pattern_motion :
-            target;
-        // 1-2: relative displacements at every (point, theta), the law.
-        std::vector<LocalVector> relative =
-          interface.relative_displacements(state.interface_solution, sampling);
-        for (unsigned int k = 0; k < relative.size(); ++k)
-          for (unsigned int c = 0; c < 3; ++c)
-            relative[k][c] += state.load_factor * pattern_relative[k][c];
-        const auto counts = interface.return_map(
-          relative, committed.plastic, plastic, traction, contact);
-        // 3-4: out-of-balance load and force residual R = G - c.
-        std::vector<Vector<double>> residual =
-          interface.load_of(plastic, sampling);
-        const double load_norm = norm_over_harmonics(residual);
-        for (unsigned int h = 0; h < set.size(); ++h)
-          residual[h] -= state.correction_load[h];
-        const double residual_norm = norm_over_harmonics(residual);
-        // Relative to the applied load, so that the interface tractions
-        // balance it to the tolerance (the correction load G can be much
-        // larger than the load, e.g. a released initial base compression).
-        const double applied = std::abs(state.load_factor) * pattern_load_norm;
-        const double scale   = applied > 0. ? applied : load_norm;
-        if (!std::isfinite(residual_norm))
+        if (!std::isfinite(e.residual_norm))
           return false;
-        if (residual_norm <= settings.tolerance * scale)
+        if (e.scale.converged(e.residual_norm, settings.tolerance))
           {
+            if (!settings.tangent_stiffness)
+              return accept(target, e, iteration, state, result, snapshot);
+            // Newton: the iterate from the full solve K^-1 c, checked again.
+            // The flexibility blocks carry the round-off of K^-1, which a
+            // stiff interface (kappa >= 1e6) amplifies in G by kn; the next
+            // updates then start from the exact field (iterative
+            // refinement).
             complete(state);
-            // A diverged iterate can pass the relative test with a huge
-            // load factor; the controlled motion then misses its target
-            // (cancellation of lambda m(u_F) against m(v)): not converged.
-            if (displacement_control &&
-                std::abs(state.load_factor * pattern_motion +
-                         state.controlled_motion - target) >
-                  1e-8 * std::abs(target))
-              return false;
-            state.plastic     = plastic;
-            result.iterations = iteration;
-            result.residual   = scale > 0. ? residual_norm / scale : 0.;
-            result.states     = counts;
-            result.resultant  = foundation_resultant(traction);
-            snapshot          = {relative, traction, contact};
-            return true;
+            e = evaluate(target, state);
+            if (e.scale.converged(e.residual_norm, settings.tolerance))
+              return accept(target, e, iteration, state, result, snapshot);
           }
+        // Newton on the interface DoFs, safeguarded by a watchdog line
+        // search (coupled_interface_newton.cc); where no step along the
+        // Newton direction lowers |R| (a kink of the return mapping right
+        // at the iterate), one initial-stiffness update moves off it.
+        if (settings.tangent_stiffness &&
+            newton_update(target, state, e, watchdog))
+          continue;
         // 5: c <- c + dc and v <- v + K^-1 dc at the interface (section 5,
         //    condensed: exact, without a re-solve).
         //    c and R live on the write DoFs: the acceleration works there.
         add_correction(acceleration.increment(on_write_dofs(
                                                 state.correction_load),
-                                              on_write_dofs(residual)),
+                                              on_write_dofs(e.residual)),
                        state);
+        e = evaluate(target, state);
       }
     return false;
   }

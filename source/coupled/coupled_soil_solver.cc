@@ -993,18 +993,17 @@ namespace FourierSSI
         const double load_norm = norm_over_harmonics(residual);
         for (unsigned int h = 0; h < set.size(); ++h)
           residual[h] -= state.correction_load[h];
-        const double residual_norm = norm_over_harmonics(residual);
-        const double applied       = applied_load_norm(state);
-        const double scale         = applied > 0. ? applied : load_norm;
+        const double     residual_norm = norm_over_harmonics(residual);
+        const ForceScale scale         = {applied_load_norm(state), load_norm};
         if (!std::isfinite(residual_norm))
           return false;
-        if (residual_norm <= settings.tolerance * scale)
+        if (scale.converged(residual_norm, settings.tolerance))
           {
             count_over_ranks(result);
             state.plastic           = plastic;
             state.interface_plastic = interface_plastic;
             result.iterations       = iteration;
-            result.residual         = scale > 0. ? residual_norm / scale : 0.;
+            result.residual         = scale.relative(residual_norm);
             return true;
           }
         if (tangent_stiffness)

@@ -251,7 +251,7 @@ namespace FourierSSI
 
     // Open (decollement): no force across the gap; the plastic part takes
     // the whole relative displacement beyond the unloaded state, so that
-    // re-closing starts from t = 0.
+    // re-closing starts from t = 0. The tangent is zero.
     if (trial[1] > tension_cutoff)
       {
         result.state    = ContactState::open;
@@ -263,22 +263,54 @@ namespace FourierSSI
 
     const double f_trial = yield_function(trial);
     if (f_trial <= 0.)
-      return result; // stick
+      {
+        for (unsigned int c = 0; c < 3; ++c)
+          result.tangent[c * 3 + c] = stiffness[c];
+        return result; // stick
+      }
 
     // Slip: one multiplier dl on the plastic potential
     // g = tau + t_n tan(psi): d_p += dl (tau-direction, tan(psi), ...).
-    result.state        = ContactState::slip;
-    const double tau_tr = std::hypot(trial[0], trial[2]);
-    const double dl     = f_trial / (ks + kn * tan_phi * tan_psi);
-    const double tau    = tau_tr - ks * dl;
-    const double scale  = tau / tau_tr;
-    result.traction[0]  = scale * trial[0];
-    result.traction[2]  = scale * trial[2];
-    result.traction[1]  = trial[1] - kn * tan_psi * dl;
+    // On this branch tau_tr >= f_trial > 0: t_n,tr <= sigma_t <= c/tan(phi)
+    // (the apex), so the direction m is defined.
+    result.state           = ContactState::slip;
+    const double tau_tr    = std::hypot(trial[0], trial[2]);
+    const double hardening = ks + kn * tan_phi * tan_psi;
+    const double dl        = f_trial / hardening;
+    const double tau       = tau_tr - ks * dl;
+    const double scale     = tau / tau_tr;
+    result.traction[0]     = scale * trial[0];
+    result.traction[2]     = scale * trial[2];
+    result.traction[1]     = trial[1] - kn * tan_psi * dl;
     result.plastic[0] += dl * trial[0] / tau_tr;
     result.plastic[2] += dl * trial[2] / tau_tr;
     result.plastic[1] += dl * tan_psi;
+    result.tangent = slip_tangent(trial, scale);
     return result;
+  }
+
+  LocalTangent
+  MohrCoulombInterface::slip_tangent(const LocalVector &trial,
+                                     const double       scale) const
+  {
+    // d(dl)/dd = (ks m_s, kn tan(phi), ks m_theta) / H; the shear
+    // t_a = tau m_a turns with m (radial part ks rho (I - m m^T)) and
+    // shrinks by ks d(dl) along m; t_n = t_n,tr - kn tan(psi) dl.
+    const double tau_tr    = std::hypot(trial[0], trial[2]);
+    const double hardening = ks + kn * tan_phi * tan_psi;
+    const double m[3]      = {trial[0] / tau_tr, 0., trial[2] / tau_tr};
+    LocalTangent tangent   = {{0., 0., 0., 0., 0., 0., 0., 0., 0.}};
+    for (const unsigned int a : {0u, 2u})
+      {
+        for (const unsigned int b : {0u, 2u})
+          tangent[a * 3 + b] =
+            ks * scale * ((a == b ? 1. : 0.) - m[a] * m[b]) +
+            ks * kn * tan_phi * tan_psi / hardening * m[a] * m[b];
+        tangent[a * 3 + 1] = -ks * kn * tan_phi / hardening * m[a];
+        tangent[1 * 3 + a] = -ks * kn * tan_psi / hardening * m[a];
+      }
+    tangent[1 * 3 + 1] = ks * kn / hardening;
+    return tangent;
   }
 
   std::string

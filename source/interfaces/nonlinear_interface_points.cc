@@ -182,6 +182,31 @@ namespace FourierSSI
     return counts;
   }
 
+  std::vector<LocalTangent>
+  NonlinearInterfacePoints::plastic_tangents(
+    const std::vector<LocalVector> &relative,
+    const std::vector<LocalVector> &committed_plastic) const
+  {
+    const unsigned int        N = relative.size() / std::max<size_t>(size(), 1);
+    std::vector<LocalTangent> result(relative.size());
+    for (unsigned int i = 0; i < points.size(); ++i)
+      for (unsigned int j = 0; j < N; ++j)
+        {
+          const unsigned int        k = i * N + j;
+          const ReturnMappingResult r =
+            laws[points[i].law].return_map(relative[k],
+                                           points[i].initial_traction,
+                                           committed_plastic[k]);
+          // d_p = d - D^-1 (t - t0 - D d_p,old): dd_p = (I - D^-1 D_t) dd.
+          for (unsigned int a = 0; a < 3; ++a)
+            for (unsigned int b = 0; b < 3; ++b)
+              result[k][a * 3 + b] =
+                (a == b ? 1. : 0.) -
+                r.tangent[a * 3 + b] / stiffness[points[i].law][a];
+        }
+    return result;
+  }
+
   double
   NonlinearInterfacePoints::largest_yield_value(
     const std::vector<LocalVector> &traction) const
@@ -313,25 +338,13 @@ namespace FourierSSI
       law.return_map(relative, point.initial_traction, committed_plastic);
     if (at.state == ContactState::stick)
       return false;
-    // A step small next to the relative displacement but far above
-    // round-off: the forward difference is exact where the return is
-    // linear (open; slip at phi = psi = 0 along the slip direction) and
-    // first-order accurate in the step on the curved part.
-    double size = 0.;
-    for (const double d : relative)
-      size = std::max(size, std::abs(d));
-    const double step = 1e-6 * std::max(size, 1e-12);
-    for (unsigned int b = 0; b < 3; ++b)
-      {
-        LocalVector plus = relative;
-        plus[b] += step;
-        const LocalVector t_plus =
-          law.return_map(plus, point.initial_traction, committed_plastic)
-            .traction;
-        for (unsigned int a = 0; a < 3; ++a)
-          softening[a * 3 + b] = (a == b ? stiffness[point.law][a] : 0.) -
-                                 (t_plus[a] - at.traction[a]) / step;
-      }
+    // The closed-form consistent tangent of the return (interface_law.h):
+    // exact in every regime, so Newton converges quadratically once the
+    // states settle.
+    for (unsigned int a = 0; a < 3; ++a)
+      for (unsigned int b = 0; b < 3; ++b)
+        softening[a * 3 + b] =
+          (a == b ? stiffness[point.law][a] : 0.) - at.tangent[a * 3 + b];
     return true;
   }
 

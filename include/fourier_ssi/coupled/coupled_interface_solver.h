@@ -48,13 +48,15 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
-#include <fourier_ssi/harmonic/harmonic_set.h>
+#include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/initial_stress.h>
-#include <fourier_ssi/interfaces/interface_law.h>
-#include <fourier_ssi/input/nonlinear_interface_parameters.h>
-#include <fourier_ssi/interfaces/nonlinear_interface_points.h>
-#include <fourier_ssi/input/parameters.h>
 #include <fourier_ssi/fourier/theta_sampling.h>
+#include <fourier_ssi/harmonic/harmonic_set.h>
+#include <fourier_ssi/input/nonlinear_interface_parameters.h>
+#include <fourier_ssi/input/parameters.h>
+#include <fourier_ssi/interfaces/interface_law.h>
+#include <fourier_ssi/interfaces/nonlinear_interface_points.h>
+#include <limits>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -270,6 +272,78 @@ namespace FourierSSI
     extrapolate(const StepState &before_last,
                 const double     ratio,
                 StepState       &state) const;
+
+    /** The residual and the interface state at one iterate. */
+    struct Evaluation
+    {
+      std::vector<LocalVector>  relative, plastic, traction;
+      std::vector<ContactState> contact;
+      ContactCounts             counts = {{0, 0, 0}};
+      /** R = G - c per harmonic (condensed), and |R|. */
+      std::vector<Vector<double>> residual;
+      double                      residual_norm = 0.;
+      /** |lambda F| and |G|: what |R| is measured against. */
+      ForceScale scale;
+    };
+
+    /**
+     * Steps 1-4 of an iteration at `state` (lambda set from the target
+     * under displacement control): relative displacements, return mapping,
+     * out-of-balance load and residual.
+     */
+    Evaluation
+    evaluate(const double target, StepState &state) const;
+
+    /** A converged iterate: complete the state, fill the step records. */
+    bool
+    accept(const double       target,
+           const Evaluation  &e,
+           const unsigned int iteration,
+           StepState         &state,
+           LoadStepResult    &result,
+           InterfaceSnapshot &snapshot) const;
+
+    /** The best iterate of a Newton step so far (its |R|). */
+    struct NewtonWatchdog
+    {
+      StepState    best;
+      double       best_norm  = std::numeric_limits<double>::infinity();
+      unsigned int since_best = 0;
+    };
+
+    /**
+     * Stiffness = tangent: one Newton update of c on the write DoFs
+     * (coupled_interface_newton.cc): the full step, or, when full steps
+     * have not improved on the best |R| for a few updates, a backtracking
+     * line search from the best iterate. `e` becomes the evaluation at the
+     * new iterate. False if no step along the direction decreases |R|.
+     */
+    bool
+    newton_update(const double    target,
+                  StepState      &state,
+                  Evaluation     &e,
+                  NewtonWatchdog &watchdog) const;
+
+    /** dc of (I - dG/dc) dc = R, the write DoFs of every harmonic in turn. */
+    Vector<double>
+    newton_direction(const Evaluation &e) const;
+
+    /** c += alpha dc (dc as newton_direction() orders it). */
+    void
+    add_scaled_correction(const double          alpha,
+                          const Vector<double> &dc,
+                          StepState            &state) const;
+
+    /**
+     * Along the Newton direction at `state`, halving the step until |R|
+     * falls by the Armijo fraction; false if 2^-16 of it does not.
+     */
+    bool
+    line_search(const double target, StepState &state, Evaluation &e) const;
+
+    /** dG/dc on the write DoFs of every harmonic, dense (column (h, j)). */
+    FullMatrix<double>
+    out_of_balance_jacobian(const Evaluation &e) const;
 
     /** Iterate one step to lambda (load control) or to a motion target. */
     bool

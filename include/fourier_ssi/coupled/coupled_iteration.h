@@ -8,7 +8,9 @@
 #ifndef fourier_ssi_coupled_iteration_h
 #define fourier_ssi_coupled_iteration_h
 
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/coupled/anderson_acceleration.h>
@@ -30,6 +32,48 @@ namespace FourierSSI
   /** sqrt(sum_h |v_h|^2): the norm of a field given per harmonic. */
   double
   norm_over_harmonics(const std::vector<Vector<double>> &vectors);
+
+  /**
+   * The convergence test of both coupled solvers: the out-of-balance force
+   * R = G - c is measured against the internal force scale, the largest of
+   * |lambda F| (the applied loads, held ones included) and |G| (the load of
+   * the plastic part that the nonlinear sources return: slip and gaps of
+   * the interfaces, plastic strain of the soil). |G| is the force the
+   * interfaces and the soil carry beyond the elastic solution; with a stiff
+   * interface G ~ kn gap is many times |lambda F| (5e4 at kappa = 1e5 for
+   * the disc in a ring) and a test against |lambda F| alone asks for R
+   * below the round-off of G. The support reactions balance lambda F
+   * (plus the self-equilibrated part inside |G|), so they set no larger
+   * scale and are not assembled per iteration.
+   */
+  struct ForceScale
+  {
+    /** |lambda F| [kN]. */
+    double applied = 0.;
+    /** |G| [kN]. */
+    double out_of_balance = 0.;
+
+    double
+    largest() const
+    {
+      return std::max(applied, out_of_balance);
+    }
+
+    /** |R| <= tolerance largest(); never with a non-finite |R|. */
+    bool
+    converged(const double residual_norm, const double tolerance) const
+    {
+      return std::isfinite(residual_norm) &&
+             residual_norm <= tolerance * largest();
+    }
+
+    /** |R| / largest() (0 if the scale is 0), as the step records print. */
+    double
+    relative(const double residual_norm) const
+    {
+      return largest() > 0. ? residual_norm / largest() : 0.;
+    }
+  };
 
   /** sum_h a_h . b_h. */
   double

@@ -76,6 +76,11 @@ namespace FourierSSI
     static constexpr double largest_tolerance  = 1e-2;
     unsigned int            maximum_iterations = 2000;
     Acceleration            acceleration       = Acceleration::aitken;
+    /**
+     * Interface-only scenes: Newton with the consistent tangent and a line
+     * search (Stiffness = tangent) instead of the initial stiffness.
+     */
+    bool tangent_stiffness = false;
     /** Previous residuals an Anderson update uses (m). */
     unsigned int anderson_depth    = 5;
     unsigned int maximum_step_cuts = 4;

@@ -108,7 +108,16 @@ namespace FourierSSI
     open
   };
 
-  /** Result of one return mapping: traction, plastic part and state. */
+  /**
+   * A 3 x 3 matrix on local (s, n, theta) vectors, row-major: entry
+   * (a, b) at a * 3 + b.
+   */
+  using LocalTangent = std::array<double, 9>;
+
+  /**
+   * Result of one return mapping: traction, plastic part, state and the
+   * consistent tangent.
+   */
   struct ReturnMappingResult
   {
     /** Total traction t = t0 + D (d - d_p) [kPa], tension positive. */
@@ -116,6 +125,15 @@ namespace FourierSSI
     /** Plastic relative displacement d_p [m] (slip, and the gap if open). */
     LocalVector  plastic = {{0., 0., 0.}};
     ContactState state   = ContactState::stick;
+    /**
+     * Consistent tangent D_t = dt/dd of this return at fixed committed
+     * plastic part (row-major; doc/nonlinear-interfaces.md section 2,
+     * derived in doc/derivations/interface_consistent_tangent.py): D where
+     * it sticks, 0 where it is open, the closed form of the radial return
+     * where it slips. On the boundary of two regimes it is the tangent of
+     * the regime the state label names (one-sided).
+     */
+    LocalTangent tangent = {{0., 0., 0., 0., 0., 0., 0., 0., 0.}};
   };
 
   /**
@@ -132,6 +150,14 @@ namespace FourierSSI
    *          tau = tau_tr - ks dl (radial return in the (s, theta) plane),
    *          t_n = t_n,tr - kn tan(psi) dl (dilation: more compression),
    *          which lands exactly on f = 0.
+   * The consistent tangent of each case (ReturnMappingResult::tangent), with
+   * m the unit trial shear direction in (s, theta), H = ks + kn tan(phi)
+   * tan(psi) and rho = tau / tau_tr:
+   *   open: 0;  stick: D;
+   *   slip: dt_a/dd_b = ks rho (delta_ab - m_a m_b)
+   *                     + ks kn tan(phi) tan(psi) / H m_a m_b  (a, b = s,
+   * theta), dt_a/dd_n = -ks kn tan(phi) / H m_a, dt_n/dd_b = -ks kn tan(psi) /
+   * H m_b,   dt_n/dd_n = ks kn / H.
    */
   class MohrCoulombInterface
   {
@@ -148,6 +174,13 @@ namespace FourierSSI
     yield_function(const LocalVector &traction) const;
 
   private:
+    /**
+     * The slip tangent at a trial traction that slips, rho = tau / tau_tr
+     * the radial-return shrink factor.
+     */
+    LocalTangent
+    slip_tangent(const LocalVector &trial, const double scale) const;
+
     double kn, ks, cohesion, tan_phi, tan_psi, tension_cutoff;
   };
 

@@ -20,11 +20,11 @@
 #include <deal.II/base/point.h>
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/coupled/coupled_tangent.h>
+#include <fourier_ssi/fourier/theta_sampling.h>
 #include <fourier_ssi/harmonic/harmonic_set.h>
+#include <fourier_ssi/input/parameters.h>
 #include <fourier_ssi/interfaces/interface_law.h>
 #include <fourier_ssi/interfaces/interface_pairing.h>
-#include <fourier_ssi/input/parameters.h>
-#include <fourier_ssi/fourier/theta_sampling.h>
 #include <string>
 #include <vector>
 
@@ -120,6 +120,17 @@ namespace FourierSSI
                std::vector<ContactState>      &state) const;
 
     /**
+     * At every sample, dd_p/dd = I - D^-1 D_t (row-major) of the return
+     * from committed_plastic: how the plastic part follows a change of the
+     * relative displacement (0 where it sticks, I where it is open), D_t
+     * the consistent tangent (interface_law.h). load_of() of the plastic
+     * change dd_p is then the exact change of G (Newton).
+     */
+    std::vector<LocalTangent>
+    plastic_tangents(const std::vector<LocalVector> &relative,
+                     const std::vector<LocalVector> &committed_plastic) const;
+
+    /**
      * The largest f(t) = tau + t_n tan(phi) - c over the samples given
      * (index i * N + j) [kPa]: <= 0 where every traction is admissible.
      */
@@ -157,8 +168,8 @@ namespace FourierSSI
     /**
      * Adds the interface part of the coupled tangent at the relative
      * displacements given (return mapping from committed_plastic) to every
-     * block (h, g) of `tangent`; D - D_t by forward differences of the
-     * return mapping (exact on the slip surface's planes, as for the soil).
+     * block (h, g) of `tangent`; D - D_t with D_t the closed-form
+     * consistent tangent of the return mapping (interface_law.h).
      * Returns the number of samples that slip or open.
      */
     unsigned int

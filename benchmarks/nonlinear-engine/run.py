@@ -1,0 +1,197 @@
+#!/usr/bin/python3
+"""Newton against the initial-stiffness iteration for stiff coulomb
+interfaces (doc/nonlinear-interfaces.md section 5b): the disc in a ring of
+prm/disc-gap.prm with harmonics n = 0..32 and a tensionless Coulomb interface
+(mu = tan(phi) = 0.3, c = 0, sigma_t = 0), kn = ks = kappa G / r0 for
+kappa = kn r0 / G = 1e2 ... 1e8 (G = 38462 kPa, r0 = 0.5 m), 4 displacement
+steps to ubar = 1e-3 m.
+
+    /usr/bin/python3 benchmarks/nonlinear-engine/run.py [BUILD_DIR] [MAIN_EXE] [RUNS]
+
+Four solvers side by side in this one invocation, RUNS times each
+(default 3, medians; a case that fails or times out is run once):
+  * newton65: this build, Stiffness = tangent, Theta samples = 65 =
+    2 n_max + 1 (one sample per degree of freedom of the band-limited gap);
+  * newton:  this build, Nonlinear interfaces/Stiffness = tangent, the
+    default Theta samples 4 (n_max + 1) = 132;
+  * initial: this build, Stiffness = initial, Acceleration = anderson (the
+    same iteration as before, with the convergence test against the
+    internal force scale);
+  * main:    MAIN_EXE (default /work/main/build/fourier-ssi, the code
+    before Newton), Acceleration = anderson.
+The fixed-point runs get Maximum iterations = 20000 per step and every run
+a wall-clock limit of TIMEOUT s. Writes results.csv and results.md next to
+this file. The machine is shared (2 cores): times carry the noise of other
+jobs; the ratios are from runs made side by side.
+"""
+import csv
+import math
+import os
+import re
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+SOURCE = os.path.normpath(os.path.join(HERE, "..", ".."))
+KAPPAS = (1e2, 1e3, 1e4, 1e5, 1e6, 1e8)
+SOLVERS = ("newton65", "newton", "initial", "main")
+TIMEOUT = 25.
+G, R0 = 1e5 / 2.6, 0.5
+FIELDS = ["kappa", "solver", "runs", "converged", "P_over_ubar_kN_per_m",
+          "iterations_step1", "iterations_total", "states_step1",
+          "solve_time_s", "run_wall_s", "note"]
+
+
+def scene(kappa, solver, out):
+    text = open(os.path.join(SOURCE, "prm", "disc-gap.prm")).read()
+    kn = kappa * G / R0
+    phi = math.degrees(math.atan(0.3))
+    law = "5: coulomb, kn=%.17g, ks=%.17g, c=0, phi=%.17g, sigma_t=0" % (
+        kn, kn, phi)
+    text = re.sub(r"set Interfaces = [^\n]*", "set Interfaces = " + law, text)
+    text = re.sub(r"set Directory *= [^\n]*", "set Directory = " + out, text)
+    text += "\nsubsection Discretization\n  set Harmonics = %s\nend\n" % (
+        ", ".join(str(n) for n in range(33)))
+    text += "\nsubsection Nonlinear interfaces\n  set Acceleration = anderson\n"
+    if solver.startswith("newton"):
+        text += "  set Stiffness = tangent\n"
+        if solver == "newton65":
+            text += "  set Theta samples = 65\n"
+    else:
+        text += "  set Maximum iterations = 20000\n"
+        if solver == "initial":
+            text += "  set Stiffness = initial\n"
+    return text + "end\n"
+
+
+def run_once(exe, kappa, solver, work):
+    prm = os.path.join(work, "case.prm")
+    with open(prm, "w") as f:
+        f.write(scene(kappa, solver, os.path.join(work, "out")))
+    start = time.time()
+    try:
+        p = subprocess.run([exe, prm], capture_output=True, text=True,
+                           timeout=TIMEOUT)
+    except subprocess.TimeoutExpired:
+        return {"converged": False, "note": "timeout %.0f s" % TIMEOUT,
+                "wall": time.time() - start}
+    wall = time.time() - start
+    log = p.stdout + p.stderr
+    steps = re.findall(r"step \d+: factor ([-0-9.e+]+),.*? u ([-0-9.e+]+) m"
+                       r".*?; (\d+) iterations; stick/slip/open (\d+/\d+/\d+)",
+                       log)
+    solve = re.search(r"coupled solve: \d+ steps in ([0-9.e+-]+) s", log)
+    if p.returncode != 0 or len(steps) != 4 or not solve:
+        error = [l for l in log.splitlines() if "error" in l]
+        note = "not converged" if error and "did not converge" in error[0] \
+            else (error[0][-80:] if error else "failed")
+        return {"converged": False, "note": note, "wall": wall}
+    # P / ubar of the last step from the CSV (12 digits; the log has 6).
+    with open(os.path.join(work, "out", "load-displacement.csv")) as f:
+        last = list(csv.DictReader(f))[-1]
+    factor, u = float(last["load_factor"]), float(last["horizontal_m"])
+    return {"converged": True, "P": factor / u,
+            "it1": int(steps[0][2]),
+            "total": sum(int(s[2]) for s in steps),
+            "states": steps[0][3], "solve": float(solve.group(1)),
+            "wall": wall, "note": ""}
+
+
+def main():
+    build = sys.argv[1] if len(sys.argv) > 1 else os.path.join(SOURCE, "build")
+    main_exe = sys.argv[2] if len(sys.argv) > 2 else \
+        "/work/main/build/fourier-ssi"
+    runs = int(sys.argv[3]) if len(sys.argv) > 3 else 3
+    exes = {"newton65": os.path.join(build, "fourier-ssi"),
+            "newton": os.path.join(build, "fourier-ssi"),
+            "initial": os.path.join(build, "fourier-ssi"),
+            "main": main_exe}
+    load = [os.getloadavg()[0]]
+    rows = []
+    with tempfile.TemporaryDirectory() as work:
+        for kappa in KAPPAS:
+            for solver in SOLVERS:
+                results = [run_once(exes[solver], kappa, solver, work)]
+                if results[0]["converged"]:
+                    results += [run_once(exes[solver], kappa, solver, work)
+                                for _ in range(runs - 1)]
+                ok = all(r["converged"] for r in results)
+                r0 = results[0]
+                row = {"kappa": "%g" % kappa, "solver": solver,
+                       "runs": len(results), "converged": int(ok),
+                       "note": r0["note"],
+                       "run_wall_s": "%.2f" % statistics.median(
+                           r["wall"] for r in results)}
+                if ok:
+                    row.update({
+                        "P_over_ubar_kN_per_m": "%.9g" % r0["P"],
+                        "iterations_step1": r0["it1"],
+                        "iterations_total": r0["total"],
+                        "states_step1": r0["states"],
+                        "solve_time_s": "%.3f" % statistics.median(
+                            r["solve"] for r in results)})
+                rows.append(row)
+                print(row, flush=True)
+    load.append(os.getloadavg()[0])
+    with open(os.path.join(HERE, "results.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=FIELDS)
+        w.writeheader()
+        w.writerows(rows)
+    write_table(rows, runs, load)
+
+
+def write_table(rows, runs, load):
+    by = {(r["kappa"], r["solver"]): r for r in rows}
+    main_commit = subprocess.run(
+        ["git", "-C", "/work/main", "rev-parse", "--short", "HEAD"],
+        capture_output=True, text=True).stdout.strip()
+    out = ["# Newton vs the initial-stiffness iteration, stiff coulomb "
+           "interfaces", "",
+           "Generated by `benchmarks/nonlinear-engine/run.py` (%d runs per "
+           "converging case, medians; one run where a case fails or times "
+           "out after %.0f s). Disc in a ring (prm/disc-gap.prm), harmonics "
+           "n = 0..32, tensionless Coulomb mu = 0.3, 4 displacement steps to "
+           "ubar = 1e-3 m; kappa = kn r0 / G. newton65: Stiffness = tangent, "
+           "Theta samples = 65 = 2 n_max + 1; newton: Stiffness = tangent, "
+           "the default 132 samples; "
+           "initial: Stiffness = initial, Anderson, this build; main: the "
+           "main build, Anderson. Fixed-point runs: Maximum iterations "
+           "20000 per step. The main build is /work/main/build/fourier-ssi as "
+           "found at the run (main's HEAD then: %s). Iterations: step 1 "
+           "(steps 2-4 start from the "
+           "secant predictor, exact for this positively homogeneous "
+           "problem, and take 0, but newton's at kappa >= 1e5 may take 1). "
+           "solve [s]: the coupled load steps; main / newton65: main's solve "
+           "time over newton65's. Load average %.1f at the start, %.1f at "
+           "the end (2 cores, shared)." % (runs, TIMEOUT, main_commit or "?",
+                                          load[0], load[1]), "",
+           "| kappa | newton65: iterations | newton65: solve [s] | newton: "
+           "iterations | newton: solve [s] | initial: iterations | initial: "
+           "solve [s] | main: iterations | main: solve [s] | main / newton65 "
+           "| P/ubar newton65 [kN/m] | P/ubar newton [kN/m] |",
+           "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+    for kappa in KAPPAS:
+        k = "%g" % kappa
+        cells = [k]
+        for solver in SOLVERS:
+            r = by[(k, solver)]
+            if r["converged"]:
+                cells += [str(r["iterations_step1"]), r["solve_time_s"]]
+            else:
+                cells += [r["note"], "-"]
+        n, m = by[(k, "newton65")], by[(k, "main")]
+        ratio = "%.1f" % (float(m["solve_time_s"]) /
+                          max(float(n["solve_time_s"]), 1e-3)) \
+            if n["converged"] and m["converged"] else "-"
+        cells += [ratio, n.get("P_over_ubar_kN_per_m", "-"),
+                  by[(k, "newton")].get("P_over_ubar_kN_per_m", "-")]
+        out.append("| " + " | ".join(cells) + " |")
+    with open(os.path.join(HERE, "results.md"), "w") as f:
+        f.write("\n".join(out) + "\n")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,194 @@
+// Newton for the interface-only coupled iteration (Nonlinear interfaces/
+// Stiffness = tangent, doc/nonlinear-interfaces.md section 5b): the unknown
+// is the correction load c on the write DoFs of every harmonic, the
+// residual R(c) = G(c) - c, and
+//   dG/dc = load_of( (I - D^-1 D_t) dd/dc ),  dd/dc = B F (+ dlambda/dc d_F),
+// with D_t the closed-form consistent tangent of the return mapping, F the
+// flexibility blocks K^-1 (read x write) kept by the condensation and, under
+// displacement control, dlambda/dc = -m(K^-1 e_j) / m(u_F) (lambda keeps the
+// controlled motion on its target). The update solves (I - dG/dc) dc = R,
+// dense on the write DoFs (tens to a few thousand unknowns). Full steps are
+// taken while they improve on the best |R| within a few steps (a gap that
+// closes or a slip that reverses beyond the tangent's foresight is corrected
+// by the next tangent, as in an active-set Newton); otherwise (the states
+// cycle) the iteration returns to the best iterate and a backtracking line
+// search halves the step until |R| falls by the Armijo fraction, so the
+// best |R| decreases at least every few updates and stick/slip cycling
+// cannot go on. Where not even that lowers |R| (a kink of the return
+// mapping at the iterate), the solver takes one initial-stiffness update
+// (coupled_interface_solver.cc, solve_step).
+#include <deal.II/lac/lapack_full_matrix.h>
+#include <fourier_ssi/coupled/coupled_interface_solver.h>
+
+namespace FourierSSI
+{
+  namespace
+  {
+    /** Armijo fraction: accept a step alpha if |R| falls by c1 alpha |R|. */
+    constexpr double armijo_fraction = 1e-4;
+    /** Halvings of the Newton step before the update gives up (2^-16). */
+    constexpr unsigned int maximum_halvings = 16;
+    /**
+     * Full Newton steps that may fail to improve on the best |R| before
+     * the iteration returns to the best iterate and searches along its
+     * direction (the watchdog of Chamberlain et al., 1982).
+     */
+    constexpr unsigned int watchdog_steps = 4;
+  } // namespace
+
+  FullMatrix<double>
+  CoupledInterfaceSolver::out_of_balance_jacobian(const Evaluation &e) const
+  {
+    const bool displacement_control =
+      settings.control == NonlinearInterfaceParameters::Control::displacement;
+    const std::vector<LocalTangent> follow =
+      interface.plastic_tangents(e.relative, committed.plastic);
+    std::vector<unsigned int> offset(set.size() + 1, 0);
+    for (unsigned int h = 0; h < set.size(); ++h)
+      offset[h + 1] = offset[h] + condensed[h].write.size();
+    FullMatrix<double>          jacobian(offset.back(), offset.back());
+    std::vector<Vector<double>> unit(set.size());
+    for (unsigned int h = 0; h < set.size(); ++h)
+      unit[h].reinit(pattern_solution[h].size());
+    std::vector<LocalVector> plastic_change(e.relative.size());
+    for (unsigned int g = 0; g < set.size(); ++g)
+      {
+        const Condensation &column = condensed[g];
+        for (unsigned int j = 0; j < column.write.size(); ++j)
+          {
+            // 1. dd of c = e_j at every sample: K^-1 e_j at the read DoFs
+            //    (the flexibility column), and lambda's change.
+            for (unsigned int i = 0; i < column.read.size(); ++i)
+              unit[g](column.read[i]) = column.flexibility(i, j);
+            std::vector<LocalVector> change =
+              interface.relative_displacements(unit, sampling);
+            unit[g] = 0.;
+            const double load_factor_change =
+              displacement_control ?
+                -column.controlled_motion[j] / pattern_motion :
+                0.;
+            // 2. dd_p = (I - D^-1 D_t) dd, and dG = load_of(dd_p).
+            for (unsigned int k = 0; k < change.size(); ++k)
+              for (unsigned int a = 0; a < 3; ++a)
+                {
+                  plastic_change[k][a] = 0.;
+                  for (unsigned int b = 0; b < 3; ++b)
+                    plastic_change[k][a] +=
+                      follow[k][a * 3 + b] *
+                      (change[k][b] +
+                       load_factor_change * pattern_relative[k][b]);
+                }
+            const std::vector<Vector<double>> load_change =
+              on_write_dofs(interface.load_of(plastic_change, sampling));
+            for (unsigned int h = 0; h < set.size(); ++h)
+              for (unsigned int i = 0; i < load_change[h].size(); ++i)
+                jacobian(offset[h] + i, offset[g] + j) = load_change[h](i);
+          }
+      }
+    return jacobian;
+  }
+
+  Vector<double>
+  CoupledInterfaceSolver::newton_direction(const Evaluation &e) const
+  {
+    const FullMatrix<double>    dG = out_of_balance_jacobian(e);
+    const unsigned int          n  = dG.m();
+    LAPACKFullMatrix<double>    system(n, n);
+    Vector<double>              dc(n);
+    std::vector<Vector<double>> residual = on_write_dofs(e.residual);
+    for (unsigned int r = 0, h = 0; h < set.size(); ++h)
+      for (unsigned int i = 0; i < residual[h].size(); ++i, ++r)
+        dc(r) = residual[h](i);
+    for (unsigned int r = 0; r < n; ++r)
+      for (unsigned int c = 0; c < n; ++c)
+        system(r, c) = (r == c ? 1. : 0.) - dG(r, c);
+    system.compute_lu_factorization();
+    system.solve(dc);
+    return dc;
+  }
+
+  void
+  CoupledInterfaceSolver::add_scaled_correction(const double          alpha,
+                                                const Vector<double> &dc,
+                                                StepState &state) const
+  {
+    std::vector<Vector<double>> step(set.size());
+    for (unsigned int r = 0, h = 0; h < set.size(); ++h)
+      {
+        step[h].reinit(condensed[h].write.size());
+        for (unsigned int i = 0; i < step[h].size(); ++i, ++r)
+          step[h](i) = alpha * dc(r);
+      }
+    add_correction(step, state);
+  }
+
+  bool
+  CoupledInterfaceSolver::line_search(const double target,
+                                      StepState   &state,
+                                      Evaluation  &e) const
+  {
+    const Vector<double> dc    = newton_direction(e);
+    const StepState      start = state;
+    // The first step that meets the Armijo condition, else the step of the
+    // smallest |R| if it is below the start's.
+    double alpha = 1., best_alpha = 0., best_norm = e.residual_norm;
+    for (unsigned int halving = 0; halving <= maximum_halvings; ++halving)
+      {
+        add_scaled_correction(alpha, dc, state);
+        Evaluation trial = evaluate(target, state);
+        if (std::isfinite(trial.residual_norm) &&
+            trial.residual_norm <=
+              (1. - armijo_fraction * alpha) * e.residual_norm)
+          {
+            e = std::move(trial);
+            return true;
+          }
+        if (std::isfinite(trial.residual_norm) &&
+            trial.residual_norm < best_norm)
+          best_alpha = alpha, best_norm = trial.residual_norm;
+        state = start;
+        alpha /= 2.;
+      }
+    if (best_alpha == 0.)
+      return false;
+    add_scaled_correction(best_alpha, dc, state);
+    e = evaluate(target, state);
+    return true;
+  }
+
+  bool
+  CoupledInterfaceSolver::newton_update(const double    target,
+                                        StepState      &state,
+                                        Evaluation     &e,
+                                        NewtonWatchdog &watchdog) const
+  {
+    // 1. The best iterate so far; the full steps keep going while they
+    //    improve on it within watchdog_steps.
+    if (e.residual_norm < watchdog.best_norm)
+      {
+        watchdog.best       = state;
+        watchdog.best_norm  = e.residual_norm;
+        watchdog.since_best = 0;
+      }
+    else if (++watchdog.since_best > watchdog_steps)
+      {
+        // 2. No improvement over watchdog_steps full steps (the states
+        //    cycle): back to the best iterate and along its Newton
+        //    direction only as far as |R| decreases.
+        state               = watchdog.best;
+        e                   = evaluate(target, state);
+        watchdog.since_best = 0;
+        if (!line_search(target, state, e))
+          return false;
+        watchdog.best      = state;
+        watchdog.best_norm = e.residual_norm;
+        return true;
+      }
+    // 3. The full Newton step: a state change it does not foresee (a gap
+    //    that closes, a slip that reverses) is corrected by the next
+    //    tangent, as in an active-set (semismooth) Newton.
+    add_scaled_correction(1., newton_direction(e), state);
+    e = evaluate(target, state);
+    return std::isfinite(e.residual_norm);
+  }
+} // namespace FourierSSI
