@@ -3,7 +3,6 @@
 // CoupledInterfaceSolver on one HarmonicSet (doc/nonlinear-interfaces.md).
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/base/timer.h>
-#include <fourier_ssi/app/command_line.h>
 #include <fourier_ssi/coupled/coupled_interface_solver.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/driver/simulator.h>

@@ -1,5 +1,5 @@
 // Convergence of the tensionless disc's stiffness P/ubar in the number of
-// harmonics (issue 15, Verify 3; doc/nonlinear-interfaces.md section 7).
+// harmonics (doc/nonlinear-interfaces.md section 7).
 // prm/disc-gap.prm (rigid disc in an elastic ring, plane strain, c = 0,
 // sigma_t = 0, no initial stress: positively homogeneous, so one load step
 // gives P/ubar), harmonics n = 0..n_max for n_max = 2, 4, 8, 16, 32, all

@@ -1,4 +1,4 @@
-// Bounds of the lateral pile curve (issue 15, Verify 5; the bundled scene
+// Bounds of the lateral pile curve (the bundled scene
 // prm/pile-lateral-slip.prm: the thesis pile, Coulomb interface phi = 25
 // degrees, c = 0, tensionless, over geostatic stress gamma' = 10 kN/m^3,
 // K0 = 0.5, kn = ks = 1e4 kPa/m, harmonics n = 0..6):
