@@ -153,6 +153,27 @@ namespace FourierSSI
     return result;
   }
 
+  void
+  NonlinearInterfacePoints::for_each_return(
+    const std::vector<LocalVector>                         &relative,
+    const std::vector<LocalVector>                         &committed_plastic,
+    const std::function<void(const unsigned int,
+                             const unsigned int,
+                             const ReturnMappingResult &)> &use) const
+  {
+    const unsigned int N = relative.size() / std::max<size_t>(size(), 1);
+    for (unsigned int i = 0; i < points.size(); ++i)
+      for (unsigned int j = 0; j < N; ++j)
+        {
+          const unsigned int k = i * N + j;
+          use(k,
+              i,
+              laws[points[i].law].return_map(relative[k],
+                                             points[i].initial_traction,
+                                             committed_plastic[k]));
+        }
+  }
+
   ContactCounts
   NonlinearInterfacePoints::return_map(
     const std::vector<LocalVector> &relative,
@@ -161,24 +182,20 @@ namespace FourierSSI
     std::vector<LocalVector>       &traction,
     std::vector<ContactState>      &state) const
   {
-    const unsigned int N      = relative.size() / std::max<size_t>(size(), 1);
-    ContactCounts      counts = {{0, 0, 0}};
+    ContactCounts counts = {{0, 0, 0}};
     plastic.resize(relative.size());
     traction.resize(relative.size());
     state.resize(relative.size());
-    for (unsigned int i = 0; i < points.size(); ++i)
-      for (unsigned int j = 0; j < N; ++j)
-        {
-          const unsigned int        k = i * N + j;
-          const ReturnMappingResult r =
-            laws[points[i].law].return_map(relative[k],
-                                           points[i].initial_traction,
-                                           committed_plastic[k]);
-          plastic[k]  = r.plastic;
-          traction[k] = r.traction;
-          state[k]    = r.state;
-          ++counts[static_cast<int>(r.state)];
-        }
+    for_each_return(relative,
+                    committed_plastic,
+                    [&](const unsigned int k,
+                        const unsigned int /*point*/,
+                        const ReturnMappingResult &r) {
+                      plastic[k]  = r.plastic;
+                      traction[k] = r.traction;
+                      state[k]    = r.state;
+                      ++counts[static_cast<int>(r.state)];
+                    });
     return counts;
   }
 
@@ -187,23 +204,20 @@ namespace FourierSSI
     const std::vector<LocalVector> &relative,
     const std::vector<LocalVector> &committed_plastic) const
   {
-    const unsigned int        N = relative.size() / std::max<size_t>(size(), 1);
     std::vector<LocalTangent> result(relative.size());
-    for (unsigned int i = 0; i < points.size(); ++i)
-      for (unsigned int j = 0; j < N; ++j)
-        {
-          const unsigned int        k = i * N + j;
-          const ReturnMappingResult r =
-            laws[points[i].law].return_map(relative[k],
-                                           points[i].initial_traction,
-                                           committed_plastic[k]);
-          // d_p = d - D^-1 (t - t0 - D d_p,old): dd_p = (I - D^-1 D_t) dd.
-          for (unsigned int a = 0; a < 3; ++a)
-            for (unsigned int b = 0; b < 3; ++b)
-              result[k][a * 3 + b] =
-                (a == b ? 1. : 0.) -
-                r.tangent[a * 3 + b] / stiffness[points[i].law][a];
-        }
+    for_each_return(relative,
+                    committed_plastic,
+                    [&](const unsigned int         k,
+                        const unsigned int         i,
+                        const ReturnMappingResult &r) {
+                      // d_p = d - D^-1 (t - t0 - D d_p,old):
+                      // dd_p = (I - D^-1 D_t) dd.
+                      for (unsigned int a = 0; a < 3; ++a)
+                        for (unsigned int b = 0; b < 3; ++b)
+                          result[k][a * 3 + b] =
+                            (a == b ? 1. : 0.) -
+                            r.tangent[a * 3 + b] / stiffness[points[i].law][a];
+                    });
     return result;
   }
 

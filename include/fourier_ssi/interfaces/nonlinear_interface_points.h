@@ -25,6 +25,7 @@
 #include <fourier_ssi/input/parameters.h>
 #include <fourier_ssi/interfaces/interface_law.h>
 #include <fourier_ssi/interfaces/interface_pairing.h>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -179,6 +180,17 @@ namespace FourierSSI
                   CoupledTangent                 &tangent) const;
 
   private:
+    /**
+     * The return mapping at every (point i, theta sample) k = i N + j from
+     * its committed plastic relative displacement, handed to use(k, i, r).
+     */
+    void
+    for_each_return(
+      const std::vector<LocalVector>                         &relative,
+      const std::vector<LocalVector>                         &committed_plastic,
+      const std::function<void(const unsigned int,
+                               const unsigned int,
+                               const ReturnMappingResult &)> &use) const;
     /** D - D_t at one sample (row-major 3 x 3); false where it sticks. */
     bool
     softening_at(const InterfacePoint  &point,
