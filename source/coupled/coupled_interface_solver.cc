@@ -720,13 +720,15 @@ namespace FourierSSI
         snapshots.push_back(std::move(snapshot));
         const auto loads = applied_loads(result.load_factor);
         log << "  step " << steps.size() << ": factor " << result.load_factor
-            << ", V " << loads[2] << " kN, H " << loads[0] << " kN, T "
-            << loads[5] << " kN m; w " << result.motion.vertical_displacement
-            << " m, u " << result.motion.horizontal_displacement << " m, twist "
-            << result.motion.twist << " rad; " << result.iterations
-            << " iterations; stick/slip/open " << result.states[0] << '/'
-            << result.states[1] << '/' << result.states[2] << "; "
-            << result.n_harmonics << " harmonics\n";
+            << ", V " << loads[2] << " kN, H " << loads[0] << " kN, M "
+            << moment_about_reference(loads, parameters.rigid_foundation)
+            << " kN m, T " << loads[5] << " kN m; w "
+            << result.motion.vertical_displacement << " m, u "
+            << result.motion.horizontal_displacement << " m, rotation "
+            << result.motion.rotation << " rad, twist " << result.motion.twist
+            << " rad; " << result.iterations << " iterations; stick/slip/open "
+            << result.states[0] << '/' << result.states[1] << '/'
+            << result.states[2] << "; " << result.n_harmonics << " harmonics\n";
       }
     if (set.n_owning_ranks() > 1)
       log << "  MPI: " << set.n_rank_sums() << " sums over the ranks ("

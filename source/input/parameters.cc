@@ -196,7 +196,9 @@ namespace FourierSSI
                       "Where results go (created if missing). The value "
                       "is taken literally: not empty, no quotes; the folder "
                       "(or its nearest existing parent) must be writable, "
-                      "checked before the run.");
+                      "checked before the run. A relative path is relative "
+                      "to the folder the program runs in (Mesh/Mesh file, "
+                      "unlike it, is relative to the .prm file's folder).");
     prm.declare_entry("Results file",
                       "results.csv",
                       Patterns::FileName(),
