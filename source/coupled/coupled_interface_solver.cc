@@ -485,7 +485,7 @@ namespace FourierSSI
   {
     std::array<double, 6> resultant = {{0., 0., 0., 0., 0., 0.}};
     if (!parameters.rigid_foundation.enabled ||
-        parameters.rigid_foundation.tie != "material")
+        parameters.rigid_foundation.tie != FoundationTie::material)
       return resultant;
     const std::vector<InterfacePair> &pairs =
       interfaces_of(set.problem(0)).get_pairs();

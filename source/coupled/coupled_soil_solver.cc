@@ -183,7 +183,8 @@ namespace FourierSSI
                           update_values | update_gradients |
                             update_quadrature_points | update_JxW_values);
     const bool  bbar =
-      parameters.discretization.volumetric == "bbar" && fe.degree == 2;
+      parameters.discretization.volumetric == VolumetricStrain::bbar &&
+      fe.degree == 2;
     const unsigned int n_dofs = fe.n_dofs_per_cell();
     for (unsigned int i = 0; i < n_dofs; ++i)
       component.push_back(fe.system_to_component_index(i).first);

@@ -273,8 +273,7 @@ namespace FourierSSI
     if (foundation.enabled)
       {
         const std::string tied =
-          (foundation.tie == "material" ? "material " : "boundary ") +
-          std::to_string(foundation.id);
+          name_of(foundation.tie) + " " + std::to_string(foundation.id);
         for (const auto &cell : triangulation.active_cell_iterators())
           for (const auto &face : cell->face_iterators())
             {
@@ -284,7 +283,7 @@ namespace FourierSSI
               if (fixed == bc.dirichlet.end() || !fixed->second.given[0] ||
                   !fixed->second.given[1] || !fixed->second.given[2])
                 continue;
-              const bool tied_here = foundation.tie == "material" ?
+              const bool tied_here = foundation.tie == FoundationTie::material ?
                                        cell->material_id() == foundation.id :
                                        face->boundary_id() == foundation.id;
               AssertThrow(!tied_here,
@@ -313,7 +312,7 @@ namespace FourierSSI
     const double tolerance = 1e-10 * std::max(r_max, z_max - z_min);
 
     const MeshBuilder &mesh = parameters.mesh;
-    if (mesh.type == "rectangle")
+    if (mesh.type == MeshType::rectangle)
       AssertThrow(mesh.surface_patch_radius <= r_max + tolerance,
                   ExcMessage("Mesh/Surface patch radius: " +
                              format(mesh.surface_patch_radius) +
@@ -421,7 +420,7 @@ namespace FourierSSI
                           "FE_Q(2) with nu = " +
                           format(nu) + " >= " + format(locking_poisson_ratio) +
                           ")");
-        else if (discretization.volumetric == "standard")
+        else if (discretization.volumetric == VolumetricStrain::standard)
           notes.push_back(
             "warning: Discretization/Volumetric strain = standard with "
             "FE_Q(2) and nu = " +

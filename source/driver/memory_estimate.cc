@@ -142,7 +142,7 @@ namespace FourierSSI
     else
       {
         estimate.driving_entry = held > 1. ? "Discretization/Harmonics" :
-                                 parameters.mesh.type == "gmsh" ?
+                                 parameters.mesh.type == MeshType::gmsh ?
                                              "Mesh/Mesh file" :
                                              "Mesh/R cells, Z cells";
         estimate.largest_part  = gigabytes(factorizations) + " for " +

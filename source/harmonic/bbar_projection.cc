@@ -116,7 +116,8 @@ namespace FourierSSI
   HarmonicProblem::project_solution_dilatation()
   {
     dilatation_projection.clear();
-    if (parameters.discretization.volumetric != "bbar" || fe->degree != 2)
+    if (parameters.discretization.volumetric != VolumetricStrain::bbar ||
+        fe->degree != 2)
       return;
     FEValues<2>                           &fe_values = *cell_values;
     const unsigned int                     n_q = fe_values.n_quadrature_points;

@@ -260,7 +260,8 @@ namespace FourierSSI
                                                 fe_values.shape_grad(i, q),
                                                 fe_values.quadrature_point(
                                                   q)[0]);
-    if (parameters.discretization.volumetric == "bbar" && fe->degree == 2)
+    if (parameters.discretization.volumetric == VolumetricStrain::bbar &&
+        fe->degree == 2)
       replace_dilatation(fe_values, strain_at);
 
     // matrix = sum over q of strain_q^T W D strain_q dV (W: the theta

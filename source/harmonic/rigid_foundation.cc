@@ -44,6 +44,12 @@ namespace FourierSSI
     }
   } // namespace
 
+  std::string
+  name_of(const FoundationTie tie)
+  {
+    return tie == FoundationTie::material ? "material" : "boundary";
+  }
+
   void
   RigidFoundationParameters::declare_parameters(ParameterHandler &prm)
   {
@@ -191,10 +197,11 @@ namespace FourierSSI
   RigidFoundationParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Rigid foundation");
-    enabled               = prm.get_bool("Enabled");
-    tie                   = prm.get("Tie");
-    id                    = prm.get_integer("Id");
-    normal_only           = prm.get("Tied components") == "normal";
+    enabled     = prm.get_bool("Enabled");
+    tie         = prm.get("Tie") == "material" ? FoundationTie::material :
+                                                 FoundationTie::boundary;
+    id          = prm.get_integer("Id");
+    normal_only = prm.get("Tied components") == "normal";
     reference_elevation   = prm.get_double("Reference elevation");
     horizontal_force      = prm.get_double("Horizontal force");
     moment                = prm.get_double("Moment");
@@ -280,7 +287,7 @@ namespace FourierSSI
     };
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
-        if (parameters.tie == "material")
+        if (parameters.tie == FoundationTie::material)
           {
             if (cell->material_id() != parameters.id)
               continue;
@@ -311,7 +318,7 @@ namespace FourierSSI
       }
     AssertThrow(!nodes.empty(),
                 ExcMessage("Rigid foundation: no DoFs found on " +
-                           parameters.tie + " id " +
+                           name_of(parameters.tie) + " id " +
                            std::to_string(parameters.id)));
 
     // Master node: the tied node farthest from the axis whose DoFs are free

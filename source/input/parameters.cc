@@ -127,9 +127,12 @@ namespace FourierSSI
     AssertThrow(automatic || !harmonics.empty(),
                 ExcMessage("Discretization/Harmonics: empty; write 'auto' or "
                            "a list such as '0, 1'"));
-    degree     = prm.get_integer("Polynomial degree");
-    volumetric = prm.get("Volumetric strain");
-    AssertThrow(volumetric != "bbar" || degree == 2,
+    degree                             = prm.get_integer("Polynomial degree");
+    const std::string volumetric_entry = prm.get("Volumetric strain");
+    volumetric_automatic               = volumetric_entry == "auto";
+    volumetric = volumetric_entry == "bbar" ? VolumetricStrain::bbar :
+                                              VolumetricStrain::standard;
+    AssertThrow(volumetric != VolumetricStrain::bbar || degree == 2,
                 ExcMessage("Discretization/Volumetric strain = bbar needs "
                            "Polynomial degree = 2"));
     refinement_cycles        = prm.get_integer("Refinement cycles");
@@ -349,20 +352,19 @@ namespace FourierSSI
     soil_plasticity.parse_parameters(prm);
     if (discretization.target_accuracy > 0. && !coupled())
       {
-        AssertThrow(discretization.volumetric != "bbar",
+        AssertThrow(discretization.volumetric != VolumetricStrain::bbar,
                     ExcMessage("Discretization/Target accuracy: designs "
                                "FE_Q(4) meshes, and Volumetric strain = bbar "
                                "needs degree 2 (write auto or standard)"));
         discretization.degree = 4;
       }
-    mesh.degree                         = discretization.degree;
-    discretization.volumetric_automatic = discretization.volumetric == "auto";
+    mesh.degree = discretization.degree;
     if (discretization.volumetric_automatic)
       discretization.volumetric =
         discretization.degree == 2 &&
             largest_poisson_ratio(materials) >= locking_poisson_ratio ?
-          "bbar" :
-          "standard";
+          VolumetricStrain::bbar :
+          VolumetricStrain::standard;
     initial_stress.parse_parameters(prm);
     nonlinear_interfaces.parse_parameters(prm);
     for (const auto &law : soil_plasticity.laws)
@@ -512,7 +514,7 @@ namespace FourierSSI
         // A relative Mesh file is relative to the folder of the .prm, so
         // that a scene runs from any working directory.
         const std::filesystem::path mesh_file(mesh.mesh_file);
-        if (mesh.type == "gmsh" && !mesh.mesh_file.empty() &&
+        if (mesh.type == MeshType::gmsh && !mesh.mesh_file.empty() &&
             mesh_file.is_relative())
           mesh.mesh_file =
             (std::filesystem::path(filename).parent_path() / mesh_file)

@@ -65,7 +65,7 @@ namespace FourierSSI
     singular_points(const MeshBuilder &mesh)
     {
       std::vector<Point<2>> points;
-      if (mesh.type != "rectangle")
+      if (mesh.type != MeshType::rectangle)
         return points;
       const double r0        = mesh.r_breakpoints.front(),
                    r1        = mesh.r_breakpoints.back(),
@@ -134,7 +134,7 @@ namespace FourierSSI
       for (const auto &[id, material] : parameters.materials.all())
         graded_soil |= material.alpha > 0.;
       const double top = parameters.mesh.z_breakpoints.back();
-      if (graded_soil && parameters.mesh.type == "rectangle" &&
+      if (graded_soil && parameters.mesh.type == MeshType::rectangle &&
           std::abs(parameters.materials.surface_elevation - top) <
             1e-9 * (1. + std::abs(top)))
         design.layer_refinements.push_back(
@@ -178,7 +178,7 @@ namespace FourierSSI
         for (double &g : growth)
           g = std::pow(g, 1. / split);
       };
-      if (mesh.type == "rectangle")
+      if (mesh.type == MeshType::rectangle)
         {
           refine(mesh.r_cells, mesh.r_growth);
           unsigned int z_cells = 0;

@@ -172,7 +172,7 @@ namespace FourierSSI
   MeshBuilder::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Mesh");
-    type                 = prm.get("Type");
+    type = prm.get("Type") == "gmsh" ? MeshType::gmsh : MeshType::rectangle;
     mesh_file            = prm.get("Mesh file");
     r_breakpoints        = to_list<double>(prm.get("R breakpoints"));
     r_cells              = to_list<unsigned int>(prm.get("R cells"));
@@ -213,10 +213,10 @@ namespace FourierSSI
          split_top_level(prm.get("Removed regions"), ';'))
       removed_regions.push_back(parse_box(item, "Mesh/Removed regions"));
     prm.leave_subsection();
-    AssertThrow(interface_lines.empty() || type == "rectangle",
+    AssertThrow(interface_lines.empty() || type == MeshType::rectangle,
                 ExcMessage("Mesh/Interface lines: only for Type = rectangle "
                            "(duplicate the curve in gmsh instead)"));
-    if (type == "rectangle")
+    if (type == MeshType::rectangle)
       AssertThrow(r_breakpoints.front() >= 0.,
                   ExcMessage("Mesh/R breakpoints: r must be >= 0"));
   }
@@ -245,7 +245,7 @@ namespace FourierSSI
   MeshBuilder::build(Triangulation<2> &triangulation) const
   {
     triangulation.clear();
-    if (type == "gmsh")
+    if (type == MeshType::gmsh)
       {
         AssertThrow(!std::filesystem::is_directory(mesh_file),
                     ExcMessage("Mesh/Mesh file: '" + mesh_file +

@@ -34,6 +34,21 @@ namespace FourierSSI
 {
   using namespace dealii;
 
+  /**
+   * What the rigid foundation holds (Rigid foundation/Tie): every DoF of
+   * the cells of a material (a footing or pile body) or the DoFs on a
+   * boundary (a rigid plate in contact).
+   */
+  enum class FoundationTie
+  {
+    material,
+    boundary
+  };
+
+  /** "material" or "boundary", as the entry spells it. */
+  std::string
+  name_of(const FoundationTie tie);
+
   struct RigidFoundationParameters
   {
     static void
@@ -41,17 +56,17 @@ namespace FourierSSI
     void
     parse_parameters(ParameterHandler &prm);
 
-    bool         enabled     = false;
-    std::string  tie         = "material"; // "material" or "boundary"
-    unsigned int id          = 1;
-    bool         normal_only = false; // tie only V (a frictionless contact)
-    double       reference_elevation = 0.;
-    double       horizontal_force    = 0.; // H [kN], n = 1
-    double       moment              = 0.; // M [kN.m], n = 1
-    double       horizontal_force_y  = 0.; // H_y [kN], n = 1 antisymmetric
-    double       moment_x            = 0.; // M_x [kN.m], n = 1 antisymmetric
-    double       vertical_force      = 0.; // V [kN], n = 0 symmetric
-    double       torque              = 0.; // T [kN.m], n = 0 antisymmetric
+    bool          enabled     = false;
+    FoundationTie tie         = FoundationTie::material;
+    unsigned int  id          = 1;
+    bool          normal_only = false; // tie only V (a frictionless contact)
+    double        reference_elevation = 0.;
+    double        horizontal_force    = 0.; // H [kN], n = 1
+    double        moment              = 0.; // M [kN.m], n = 1
+    double        horizontal_force_y  = 0.; // H_y [kN], n = 1 antisymmetric
+    double        moment_x            = 0.; // M_x [kN.m], n = 1 antisymmetric
+    double        vertical_force      = 0.; // V [kN], n = 0 symmetric
+    double        torque              = 0.; // T [kN.m], n = 0 antisymmetric
     /**
      * Held loads (plastic soil): applied first, then kept while the loads
      * above are scaled; a combined loading path (a fixed V, then H or M).

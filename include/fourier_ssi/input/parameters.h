@@ -27,6 +27,13 @@ namespace FourierSSI
   using namespace dealii;
 
   /** Which harmonics to solve and with which element. */
+  /** Discretization/Volumetric strain once 'auto' is resolved. */
+  enum class VolumetricStrain
+  {
+    standard,
+    bbar
+  };
+
   struct DiscretizationParameters
   {
     static void
@@ -39,12 +46,12 @@ namespace FourierSSI
     std::vector<Harmonic> harmonics;
     unsigned int          degree = 2;
     /**
-     * "standard" or "bbar" (projected dilatation, p = 2): what is solved.
-     * The entry's default 'auto' is resolved when the parameters are read
-     * (AllParameters::parse_parameters): bbar for p = 2 when a material has
-     * nu >= locking_poisson_ratio, standard otherwise.
+     * What is solved: the standard strain or B-bar (projected dilatation,
+     * p = 2). The entry's default 'auto' is resolved when the parameters
+     * are read (AllParameters::parse_parameters): bbar for p = 2 when a
+     * material has nu >= locking_poisson_ratio, standard otherwise.
      */
-    std::string volumetric = "standard";
+    VolumetricStrain volumetric = VolumetricStrain::standard;
     /** True if `volumetric` was chosen by 'auto' (the log says so). */
     bool         volumetric_automatic = false;
     unsigned int refinement_cycles    = 1;

@@ -50,6 +50,15 @@ namespace FourierSSI
   BoundingBox<2>
   parse_box(const std::string &text, const std::string &entry);
 
+  /**
+   * Mesh/Type: the built-in graded (r, z) rectangle, or a gmsh file.
+   */
+  enum class MeshType
+  {
+    rectangle,
+    gmsh
+  };
+
   class MeshBuilder
   {
   public:
@@ -67,7 +76,7 @@ namespace FourierSSI
     void
     build(Triangulation<2> &triangulation) const;
 
-    std::string               type = "rectangle";
+    MeshType                  type = MeshType::rectangle;
     std::vector<double>       r_breakpoints, z_breakpoints, r_growth, z_growth;
     std::vector<unsigned int> r_cells, z_cells;
     double                    surface_patch_radius = 0.;
