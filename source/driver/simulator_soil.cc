@@ -159,14 +159,11 @@ namespace FourierSSI
 
     /** The capacity's rows and log line. */
     void
-    report_capacity(const CoupledSoilSolver &solver,
-                    const AllParameters     &parameters,
+    report_capacity(const Capacity          &c,
+                    const CoupledSoilSolver &solver,
                     std::ostream            &log,
                     ResultsTable            &results)
     {
-      if (!has_capacity(solver, parameters))
-        return;
-      const Capacity     c     = capacity_of(solver, parameters);
       const NamedLoad    last  = c.load;
       const double       rise  = c.rise;
       const double       error = c.plateau_error;
@@ -220,11 +217,11 @@ namespace FourierSSI
     add_load_step_rows(solver, results);
     add_plastic_state_rows(solver, parameters, results);
     keep_last_step(solver);
-    report_capacity(solver, parameters, log, results);
-    // Without a target the capacity's error bar is the plateau's alone.
     if (has_capacity(solver, parameters))
       {
         const Capacity c = capacity_of(solver, parameters);
+        report_capacity(c, solver, log, results);
+        // Without a target the capacity's error bar is the plateau's alone.
         report_normalised_capacity(c.load.name,
                                    c.load.value,
                                    c.load.unit,
