@@ -14,15 +14,6 @@
 
 namespace FourierSSI
 {
-  double
-  largest_poisson_ratio(const MaterialLibrary &materials)
-  {
-    double nu = -1.;
-    for (const auto &[id, material] : materials.all())
-      nu = std::max(nu, material.poisson_ratio);
-    return nu;
-  }
-
   namespace
   {
     std::string
@@ -183,6 +174,298 @@ namespace FourierSSI
             "round the first step will not converge (give c > 0 or Initial "
             "stress)");
     }
+
+    /**
+     * A foundation resultant acts on one harmonic only: a harmonic list
+     * without it solves a scene without that load.
+     */
+    void
+    check_foundation_loads_are_solved(const AllParameters &parameters,
+                                      const ScenePlan     &plan)
+    {
+      const RigidFoundationParameters &foundation = parameters.rigid_foundation;
+      if (!foundation.enabled || parameters.discretization.automatic)
+        return;
+      const auto listed = [&](const unsigned int n, const Family family) {
+        for (const Harmonic &h : plan.harmonics)
+          if (h.n == n && h.family == family)
+            return true;
+        return false;
+      };
+      const auto require = [&](const double       value,
+                               const std::string &entry,
+                               const unsigned int n,
+                               const Family       family) {
+        AssertThrow(value == 0. || listed(n, family),
+                    ExcMessage("Rigid foundation/" + entry +
+                               " acts on harmonic " +
+                               Harmonic{n, family}.name() +
+                               ", which Discretization/Harmonics does not "
+                               "list: add it (and Family), or set "
+                               "Harmonics = auto"));
+      };
+      const Family symmetric     = Family::symmetric,
+                   antisymmetric = Family::antisymmetric;
+      require(foundation.vertical_force, "Vertical force", 0, symmetric);
+      require(foundation.torque, "Torque", 0, antisymmetric);
+      require(foundation.horizontal_force, "Horizontal force", 1, symmetric);
+      require(foundation.moment, "Moment", 1, symmetric);
+      require(foundation.horizontal_force_y,
+              "Horizontal force y",
+              1,
+              antisymmetric);
+      require(foundation.moment_x, "Moment x", 1, antisymmetric);
+      require(foundation.stiffness_coefficients ? 1. : 0.,
+              "Stiffness coefficients (unit H and M)",
+              1,
+              symmetric);
+      require(foundation.stiffness_matrix ? 1. : 0.,
+              "Stiffness matrix (unit V)",
+              0,
+              symmetric);
+      require(foundation.stiffness_matrix ? 1. : 0.,
+              "Stiffness matrix (unit T)",
+              0,
+              antisymmetric);
+      require(foundation.held_vertical_force,
+              "Held vertical force",
+              0,
+              symmetric);
+      require(foundation.held_torque, "Held torque", 0, antisymmetric);
+      require(foundation.held_horizontal_force,
+              "Held horizontal force",
+              1,
+              symmetric);
+      require(foundation.held_moment, "Held moment", 1, symmetric);
+    }
+
+    /**
+     * Held loads are a stage of a nonlinear load path; a linear solve has
+     * no path (add them to the loads).
+     */
+    void
+    check_held_loads_have_a_path(const AllParameters &parameters)
+    {
+      AssertThrow(!parameters.rigid_foundation.any_held() ||
+                    parameters.soil_plasticity.any(),
+                  ExcMessage("Rigid foundation/Held ...: not yet: held loads "
+                             "without plastic soil (in a linear or interface "
+                             "run add them to the loads)"));
+    }
+
+    /**
+     * A rigid foundation tied to DoFs of a boundary fixed in u, v and w is
+     * clamped by the supports (typically the soil's material id given as
+     * the foundation's). Rollers (some components fixed, e.g. the
+     * plane-strain disc's v = 0) are legal.
+     */
+    void
+    check_foundation_not_clamped(const AllParameters    &parameters,
+                                 const Triangulation<2> &triangulation)
+    {
+      const RigidFoundationParameters &foundation = parameters.rigid_foundation;
+      const BoundaryConditions        &bc = parameters.boundary_conditions;
+      if (!foundation.enabled)
+        return;
+      const std::string tied =
+        name_of(foundation.tie) + " " + std::to_string(foundation.id);
+      for (const auto &cell : triangulation.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          {
+            if (!face->at_boundary())
+              continue;
+            const auto fixed = bc.dirichlet.find(face->boundary_id());
+            if (fixed == bc.dirichlet.end() || !fixed->second.given[0] ||
+                !fixed->second.given[1] || !fixed->second.given[2])
+              continue;
+            const bool tied_here = foundation.tie == FoundationTie::material ?
+                                     cell->material_id() == foundation.id :
+                                     face->boundary_id() == foundation.id;
+            AssertThrow(!tied_here,
+                        ExcMessage("Rigid foundation/Id: " + tied +
+                                   " touches boundary " +
+                                   std::to_string(face->boundary_id()) +
+                                   ", which Boundary conditions/Dirichlet "
+                                   "fixes in u, v, w: the supports would "
+                                   "clamp the rigid body (is " +
+                                   tied + " the soil?)"));
+          }
+    }
+
+    /** The mesh's bounding box in (r, z) and a round-off length of it. */
+    struct MeshExtent
+    {
+      double r_max = 0., z_min = 0., z_max = 0.;
+      double tolerance = 0.;
+    };
+
+    MeshExtent
+    mesh_extent(const Triangulation<2> &triangulation)
+    {
+      MeshExtent extent;
+      bool       first = true;
+      for (const auto &v : triangulation.get_vertices())
+        {
+          extent.r_max = first ? v[0] : std::max(extent.r_max, v[0]);
+          extent.z_min = first ? v[1] : std::min(extent.z_min, v[1]);
+          extent.z_max = first ? v[1] : std::max(extent.z_max, v[1]);
+          first        = false;
+        }
+      extent.tolerance =
+        1e-10 * std::max(extent.r_max, extent.z_max - extent.z_min);
+      return extent;
+    }
+
+    void
+    check_surface_patch(const MeshBuilder &mesh, const MeshExtent &extent)
+    {
+      if (mesh.type == MeshType::rectangle)
+        AssertThrow(mesh.surface_patch_radius <=
+                      extent.r_max + extent.tolerance,
+                    ExcMessage("Mesh/Surface patch radius: " +
+                               format(mesh.surface_patch_radius) +
+                               " is wider than the mesh (outer radius " +
+                               format(extent.r_max) + ", Mesh/R breakpoints)"));
+    }
+
+    /** G(depth) with alpha > 0 vanishes above the ground surface. */
+    void
+    check_graded_materials_below_surface(const MaterialLibrary  &materials,
+                                         const Triangulation<2> &triangulation,
+                                         const MeshExtent       &extent,
+                                         std::vector<std::string> &notes)
+    {
+      const double                 surface = materials.surface_elevation;
+      std::set<types::material_id> graded;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (materials.get(cell->material_id()).alpha > 0.)
+          {
+            graded.insert(cell->material_id());
+            AssertThrow(cell->center()[1] < surface + extent.tolerance,
+                        ExcMessage(
+                          "Materials/Ground surface elevation: " +
+                          format(surface) + " is below cells of material " +
+                          std::to_string(cell->material_id()) +
+                          " (alpha > 0, G = 0 above the ground surface), "
+                          "e.g. the cell at " +
+                          at(cell->center()) +
+                          "; the mesh spans z = " + format(extent.z_min) +
+                          " .. " + format(extent.z_max)));
+          }
+      if (!graded.empty() && surface > extent.z_max + extent.tolerance)
+        notes.push_back(
+          "warning: Materials/Ground surface elevation " + format(surface) +
+          " is " + format(surface - extent.z_max) +
+          " m above the top of the mesh (z = " + format(extent.z_max) +
+          "): the mesh's top is at that depth in G(depth)");
+    }
+
+    /** Both traction entries against both prescribed-displacement entries. */
+    void
+    check_tractions_on_fixed(const AllParameters      &parameters,
+                             std::vector<std::string> &notes)
+    {
+      const BoundaryConditions &bc = parameters.boundary_conditions;
+      for (const auto &[fixed, fixed_entry] :
+           {std::make_pair(&bc.dirichlet, "Boundary conditions/Dirichlet"),
+            std::make_pair(&parameters.loads.displacement,
+                           "Loads/Prescribed displacement")})
+        {
+          check_traction_on_fixed(bc.traction,
+                                  "Boundary conditions/Traction",
+                                  *fixed,
+                                  fixed_entry,
+                                  notes);
+          check_traction_on_fixed(parameters.loads.traction,
+                                  "Loads/Traction",
+                                  *fixed,
+                                  fixed_entry,
+                                  notes);
+        }
+    }
+
+    /**
+     * NaN and infinity in the prescribed values and tractions (the loads
+     * given as functions of theta are checked by ThetaLoad::choose_samples
+     * when the scene is planned).
+     */
+    void
+    check_finite_loads(const AllParameters    &parameters,
+                       const Triangulation<2> &triangulation,
+                       const ScenePlan        &plan)
+    {
+      const BoundaryConditions &bc = parameters.boundary_conditions;
+      check_finite_amplitudes(bc.dirichlet,
+                              "Boundary conditions/Dirichlet",
+                              false,
+                              triangulation,
+                              plan.harmonics);
+      check_finite_amplitudes(bc.traction,
+                              "Boundary conditions/Traction",
+                              true,
+                              triangulation,
+                              plan.harmonics);
+    }
+
+    /**
+     * Output/Lines 3D: every point must lie in the mesh (the 3D sum is
+     * evaluated after the solve, too late to refuse).
+     */
+    void
+    check_lines_in_mesh(const OutputParameters &output,
+                        const Triangulation<2> &triangulation)
+    {
+      if (output.lines.empty())
+        return;
+      const MappingQ1<2>     mapping;
+      GridTools::Cache<2, 2> cache(triangulation, mapping);
+      for (const OutputLine &line : output.lines)
+        for (unsigned int i = 0; i < line.n_points; ++i)
+          {
+            const double t =
+              line.n_points == 1 ? 0. : double(i) / (line.n_points - 1);
+            const Point<2> p     = line.start + t * (line.end - line.start);
+            bool           found = false;
+            try
+              {
+                const auto cell_and_point =
+                  GridTools::find_active_cell_around_point(cache, p);
+                found = cell_and_point.first.state() == IteratorState::valid;
+              }
+            catch (...)
+              {}
+            AssertThrow(found,
+                        ExcMessage("Output/Lines 3D: the point " + at(p) +
+                                   " of the line from " + at(line.start) +
+                                   " to " + at(line.end) +
+                                   " is outside the mesh"));
+          }
+    }
+
+    /** Volumetric locking of FE_Q(2) near incompressibility. */
+    void
+    note_volumetric_locking(const AllParameters      &parameters,
+                            std::vector<std::string> &notes)
+    {
+      const DiscretizationParameters &discretization =
+        parameters.discretization;
+      const double nu = largest_poisson_ratio(parameters.materials);
+      if (discretization.degree != 2 || nu < locking_poisson_ratio)
+        return;
+      if (discretization.volumetric_automatic)
+        notes.push_back("volumetric strain: bbar (Volumetric strain = auto: "
+                        "FE_Q(2) with nu = " +
+                        format(nu) + " >= " + format(locking_poisson_ratio) +
+                        ")");
+      else if (discretization.volumetric == VolumetricStrain::standard)
+        notes.push_back(
+          "warning: Discretization/Volumetric strain = standard with "
+          "FE_Q(2) and nu = " +
+          format(nu) +
+          ": volumetric locking makes the soil too stiff (embedded "
+          "footing at nu = 0.499: K_M +5.6 %, with bbar +0.6 %); solved "
+          "as asked, 'auto' or 'bbar' avoids it");
+    }
   } // namespace
 
   std::vector<std::string>
@@ -190,334 +473,22 @@ namespace FourierSSI
                            const Triangulation<2> &triangulation,
                            const ScenePlan        &plan)
   {
-    std::vector<std::string>         notes;
-    const DiscretizationParameters  &discretization = parameters.discretization;
-    const RigidFoundationParameters &foundation = parameters.rigid_foundation;
-    const BoundaryConditions        &bc = parameters.boundary_conditions;
-
-    // A foundation resultant acts on one harmonic only: a list without it
-    // solves a scene without that load.
-    if (foundation.enabled && !discretization.automatic)
-      {
-        const auto listed = [&](const unsigned int n, const Family family) {
-          for (const Harmonic &h : plan.harmonics)
-            if (h.n == n && h.family == family)
-              return true;
-          return false;
-        };
-        const auto require = [&](const double       value,
-                                 const std::string &entry,
-                                 const unsigned int n,
-                                 const Family       family) {
-          AssertThrow(value == 0. || listed(n, family),
-                      ExcMessage("Rigid foundation/" + entry +
-                                 " acts on harmonic " +
-                                 Harmonic{n, family}.name() +
-                                 ", which Discretization/Harmonics does not "
-                                 "list: add it (and Family), or set "
-                                 "Harmonics = auto"));
-        };
-        require(foundation.vertical_force,
-                "Vertical force",
-                0,
-                Family::symmetric);
-        require(foundation.torque, "Torque", 0, Family::antisymmetric);
-        require(foundation.horizontal_force,
-                "Horizontal force",
-                1,
-                Family::symmetric);
-        require(foundation.moment, "Moment", 1, Family::symmetric);
-        require(foundation.horizontal_force_y,
-                "Horizontal force y",
-                1,
-                Family::antisymmetric);
-        require(foundation.moment_x, "Moment x", 1, Family::antisymmetric);
-        require(foundation.stiffness_coefficients ? 1. : 0.,
-                "Stiffness coefficients (unit H and M)",
-                1,
-                Family::symmetric);
-        require(foundation.stiffness_matrix ? 1. : 0.,
-                "Stiffness matrix (unit V)",
-                0,
-                Family::symmetric);
-        require(foundation.stiffness_matrix ? 1. : 0.,
-                "Stiffness matrix (unit T)",
-                0,
-                Family::antisymmetric);
-        require(foundation.held_vertical_force,
-                "Held vertical force",
-                0,
-                Family::symmetric);
-        require(foundation.held_torque,
-                "Held torque",
-                0,
-                Family::antisymmetric);
-        require(foundation.held_horizontal_force,
-                "Held horizontal force",
-                1,
-                Family::symmetric);
-        require(foundation.held_moment, "Held moment", 1, Family::symmetric);
-      }
-
-    // Held loads are a stage of a nonlinear load path; a linear solve has
-    // no path (add them to the loads).
-    AssertThrow(!foundation.any_held() || parameters.soil_plasticity.any(),
-                ExcMessage("Rigid foundation/Held ...: not yet: held loads "
-                           "without plastic soil (in a linear or interface "
-                           "run add them to the loads)"));
-
-    // A rigid foundation tied to DoFs of a boundary fixed in u, v and w is
-    // clamped by the supports (typically the soil's material id given as
-    // the foundation's). Rollers (some components fixed, e.g. the
-    // plane-strain disc's v = 0) are legal.
-    if (foundation.enabled)
-      {
-        const std::string tied =
-          name_of(foundation.tie) + " " + std::to_string(foundation.id);
-        for (const auto &cell : triangulation.active_cell_iterators())
-          for (const auto &face : cell->face_iterators())
-            {
-              if (!face->at_boundary())
-                continue;
-              const auto fixed = bc.dirichlet.find(face->boundary_id());
-              if (fixed == bc.dirichlet.end() || !fixed->second.given[0] ||
-                  !fixed->second.given[1] || !fixed->second.given[2])
-                continue;
-              const bool tied_here = foundation.tie == FoundationTie::material ?
-                                       cell->material_id() == foundation.id :
-                                       face->boundary_id() == foundation.id;
-              AssertThrow(!tied_here,
-                          ExcMessage(
-                            "Rigid foundation/Id: " + tied +
-                            " touches "
-                            "boundary " +
-                            std::to_string(face->boundary_id()) +
-                            ", which Boundary conditions/Dirichlet fixes in "
-                            "u, v, w: the supports would clamp the rigid "
-                            "body (is " +
-                            tied + " the soil?)"));
-            }
-      }
-
-    // Mesh extent.
-    double r_max = 0., z_min = 0., z_max = 0.;
-    bool   first = true;
-    for (const auto &v : triangulation.get_vertices())
-      {
-        r_max = first ? v[0] : std::max(r_max, v[0]);
-        z_min = first ? v[1] : std::min(z_min, v[1]);
-        z_max = first ? v[1] : std::max(z_max, v[1]);
-        first = false;
-      }
-    const double tolerance = 1e-10 * std::max(r_max, z_max - z_min);
-
-    const MeshBuilder &mesh = parameters.mesh;
-    if (mesh.type == MeshType::rectangle)
-      AssertThrow(mesh.surface_patch_radius <= r_max + tolerance,
-                  ExcMessage("Mesh/Surface patch radius: " +
-                             format(mesh.surface_patch_radius) +
-                             " is wider than the mesh (outer radius " +
-                             format(r_max) + ", Mesh/R breakpoints)"));
-
-    // G(depth) with alpha > 0 vanishes above the ground surface.
-    const MaterialLibrary       &materials = parameters.materials;
-    const double                 surface   = materials.surface_elevation;
-    std::set<types::material_id> graded;
-    for (const auto &cell : triangulation.active_cell_iterators())
-      if (materials.get(cell->material_id()).alpha > 0.)
-        {
-          graded.insert(cell->material_id());
-          AssertThrow(cell->center()[1] < surface + tolerance,
-                      ExcMessage(
-                        "Materials/Ground surface elevation: " +
-                        format(surface) + " is below cells of material " +
-                        std::to_string(cell->material_id()) +
-                        " (alpha > 0, G = 0 above the ground surface), "
-                        "e.g. the cell at " +
-                        at(cell->center()) + "; the mesh spans z = " +
-                        format(z_min) + " .. " + format(z_max)));
-        }
-    if (!graded.empty() && surface > z_max + tolerance)
-      notes.push_back("warning: Materials/Ground surface elevation " +
-                      format(surface) + " is " + format(surface - z_max) +
-                      " m above the top of the mesh (z = " + format(z_max) +
-                      "): the mesh's top is at that depth in G(depth)");
-
-    // Tractions on fixed DoFs.
-    check_traction_on_fixed(bc.traction,
-                            "Boundary conditions/Traction",
-                            bc.dirichlet,
-                            "Boundary conditions/Dirichlet",
-                            notes);
-    check_traction_on_fixed(parameters.loads.traction,
-                            "Loads/Traction",
-                            bc.dirichlet,
-                            "Boundary conditions/Dirichlet",
-                            notes);
-    check_traction_on_fixed(bc.traction,
-                            "Boundary conditions/Traction",
-                            parameters.loads.displacement,
-                            "Loads/Prescribed displacement",
-                            notes);
-    check_traction_on_fixed(parameters.loads.traction,
-                            "Loads/Traction",
-                            parameters.loads.displacement,
-                            "Loads/Prescribed displacement",
-                            notes);
-
-    // NaN and infinity in the loads and prescribed values.
-    check_finite_amplitudes(bc.dirichlet,
-                            "Boundary conditions/Dirichlet",
-                            false,
-                            triangulation,
-                            plan.harmonics);
-    check_finite_amplitudes(bc.traction,
-                            "Boundary conditions/Traction",
-                            true,
-                            triangulation,
-                            plan.harmonics);
-    // (The loads given as functions of theta are checked by
-    // ThetaLoad::choose_samples when the scene is planned.)
-
-    // Lines 3D: every point must lie in the mesh (the 3D sum is evaluated
-    // after the solve).
-    const OutputParameters &output = parameters.output;
-    if (!output.lines.empty())
-      {
-        const MappingQ1<2>     mapping;
-        GridTools::Cache<2, 2> cache(triangulation, mapping);
-        for (const OutputLine &line : output.lines)
-          for (unsigned int i = 0; i < line.n_points; ++i)
-            {
-              const double t =
-                line.n_points == 1 ? 0. : double(i) / (line.n_points - 1);
-              const Point<2> p     = line.start + t * (line.end - line.start);
-              bool           found = false;
-              try
-                {
-                  const auto cell_and_point =
-                    GridTools::find_active_cell_around_point(cache, p);
-                  found = cell_and_point.first.state() == IteratorState::valid;
-                }
-              catch (...)
-                {}
-              AssertThrow(found,
-                          ExcMessage("Output/Lines 3D: the point " + at(p) +
-                                     " of the line from " + at(line.start) +
-                                     " to " + at(line.end) +
-                                     " is outside the mesh"));
-            }
-      }
-
+    std::vector<std::string> notes;
+    check_foundation_loads_are_solved(parameters, plan);
+    check_held_loads_have_a_path(parameters);
+    check_foundation_not_clamped(parameters, triangulation);
+    const MeshExtent extent = mesh_extent(triangulation);
+    check_surface_patch(parameters.mesh, extent);
+    check_graded_materials_below_surface(parameters.materials,
+                                         triangulation,
+                                         extent,
+                                         notes);
+    check_tractions_on_fixed(parameters, notes);
+    check_finite_loads(parameters, triangulation, plan);
+    check_lines_in_mesh(parameters.output, triangulation);
     warn_cohesionless_soil(parameters, notes);
-
-    // Volumetric locking of FE_Q(2) near incompressibility.
-    const double nu = largest_poisson_ratio(materials);
-    if (discretization.degree == 2 && nu >= locking_poisson_ratio)
-      {
-        if (discretization.volumetric_automatic)
-          notes.push_back("volumetric strain: bbar (Volumetric strain = auto: "
-                          "FE_Q(2) with nu = " +
-                          format(nu) + " >= " + format(locking_poisson_ratio) +
-                          ")");
-        else if (discretization.volumetric == VolumetricStrain::standard)
-          notes.push_back(
-            "warning: Discretization/Volumetric strain = standard with "
-            "FE_Q(2) and nu = " +
-            format(nu) +
-            ": volumetric locking makes the soil too stiff (embedded "
-            "footing at nu = 0.499: K_M +5.6 %, with bbar +0.6 %); solved "
-            "as asked, 'auto' or 'bbar' avoids it");
-      }
+    note_volumetric_locking(parameters, notes);
     return notes;
-  }
-
-  namespace
-  {
-    /**
-     * Displacement control drives the controlled motion from where the
-     * held stage left it to Target: a Target of 0 is a path of zero length
-     * (every step the unloaded state, reported as converged).
-     */
-    void
-    check_displacement_target(const AllParameters &parameters)
-    {
-      const NonlinearInterfaceParameters &path =
-        parameters.nonlinear_interfaces;
-      AssertThrow(!parameters.coupled() ||
-                    path.control !=
-                      NonlinearInterfaceParameters::Control::displacement ||
-                    path.target != 0.,
-                  ExcMessage("Nonlinear interfaces/Target: 0 with Control = "
-                             "displacement, the controlled motion would not "
-                             "move; give its final value [m or rad]"));
-    }
-
-    /** True if some load of the scene is not zero. */
-    bool
-    scene_has_load(const AllParameters &parameters)
-    {
-      const RigidFoundationParameters &foundation = parameters.rigid_foundation;
-      const BoundaryConditions        &bc = parameters.boundary_conditions;
-      const auto                       any_nonzero =
-        [](const std::map<types::boundary_id, ComponentExpressions> &entries) {
-          for (const auto &[id, e] : entries)
-            if (!e.is_zero())
-              return true;
-          return false;
-        };
-      const bool foundation_load =
-        foundation.enabled &&
-        (foundation.horizontal_force != 0. || foundation.moment != 0. ||
-         foundation.horizontal_force_y != 0. || foundation.moment_x != 0. ||
-         foundation.vertical_force != 0. || foundation.torque != 0. ||
-         foundation.any_held());
-      return foundation_load || !bc.body_force.is_zero() ||
-             any_nonzero(bc.traction) || any_nonzero(bc.dirichlet) ||
-             any_nonzero(parameters.loads.traction) ||
-             any_nonzero(parameters.loads.displacement);
-    }
-
-    /**
-     * Load control scales the scene's loads along the path: with every
-     * load zero each step solves the unloaded state (displacement control
-     * refuses the same scene when the pattern solve finds no motion).
-     */
-    void
-    check_load_control_has_load(const AllParameters &parameters)
-    {
-      AssertThrow(!parameters.coupled() ||
-                    parameters.nonlinear_interfaces.control !=
-                      NonlinearInterfaceParameters::Control::load ||
-                    scene_has_load(parameters),
-                  ExcMessage("Nonlinear interfaces/Control = load: every "
-                             "load is zero (Rigid foundation, Loads, "
-                             "Boundary conditions, Body force), the path "
-                             "has nothing to scale"));
-    }
-
-    /**
-     * The error norms compare one harmonic's amplitudes with a closed form
-     * (a linear solve); the coupled paths (plastic soil, coulomb
-     * interfaces) do not compute them.
-     */
-    void
-    check_exact_solution_linear(const AllParameters &parameters)
-    {
-      AssertThrow(!parameters.exact_solution.enabled || !parameters.coupled(),
-                  ExcMessage("Exact solution/Enabled: error norms are "
-                             "computed for linear runs only, not with "
-                             "plastic soil or a coulomb interface; set it "
-                             "false"));
-    }
-  } // namespace
-
-  void
-  check_problem_is_meaningful(const AllParameters &parameters)
-  {
-    check_displacement_target(parameters);
-    check_load_control_has_load(parameters);
-    check_exact_solution_linear(parameters);
   }
 
   namespace

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <deal.II/base/utilities.h>
 #include <fourier_ssi/fourier/material.h>
@@ -162,5 +163,14 @@ namespace FourierSSI
                 ExcMessage("the mesh has material id " + std::to_string(id) +
                            " but Materials/Materials does not define it"));
     return it->second;
+  }
+
+  double
+  largest_poisson_ratio(const MaterialLibrary &materials)
+  {
+    double nu = -1.;
+    for (const auto &[id, material] : materials.all())
+      nu = std::max(nu, material.poisson_ratio);
+    return nu;
   }
 } // namespace FourierSSI

@@ -1,9 +1,10 @@
 #include <algorithm>
 #include <deal.II/base/utilities.h>
 #include <filesystem>
-#include <fourier_ssi/driver/input_checks.h>
+#include <fourier_ssi/fourier/material.h>
 #include <fourier_ssi/input/messages.h>
 #include <fourier_ssi/input/parameters.h>
+#include <fourier_ssi/input/problem_checks.h>
 #include <fstream>
 #include <sstream>
 

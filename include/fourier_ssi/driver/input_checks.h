@@ -31,17 +31,6 @@ namespace FourierSSI
                            const ScenePlan        &plan);
 
   /**
-   * Throw a one-line error, naming the entry, for parameters that are legal
-   * one by one but together describe no problem to solve (a displacement-
-   * controlled path to a target of 0, a load-controlled path with every load
-   * zero, error norms a coupled run never computes). Called by
-   * AllParameters::parse_parameters once every subsection is read, so that
-   * the refusal comes before any output is touched.
-   */
-  void
-  check_problem_is_meaningful(const AllParameters &parameters);
-
-  /**
    * Why the output paths cannot be written (Output/Directory exists and is
    * not a directory, Output/Results file is empty or names a directory), as
    * a one-line message; empty if they can. It reads the file system, so on
@@ -50,18 +39,6 @@ namespace FourierSSI
   std::string
   output_path_error(const OutputParameters &output);
 
-  /**
-   * Poisson's ratio from which FE_Q(2) with the standard (fully integrated)
-   * dilatation locks noticeably. On the bundled embedded footing (finer
-   * cycle) locking adds 0.2 % to K_M at nu = 0.3, 0.9 % at 0.45 (more than
-   * the discretization error, 0.7 %), 2.6 % at 0.49 and 5.0 % at 0.499
-   * (doc/robustness.md).
-   */
-  constexpr double locking_poisson_ratio = 0.45;
-
-  /** The largest Poisson's ratio defined in Materials/Materials. */
-  double
-  largest_poisson_ratio(const MaterialLibrary &materials);
 } // namespace FourierSSI
 
 #endif

@@ -52,7 +52,7 @@ namespace FourierSSI
    * Poisson's ratio nu of the scene's materials and whether the scene has
    * a slip wedge (the end of a smooth interface,
    * DiscretizationDesign::slip_wedge_points):
-   *   0.4 for nu <  locking_poisson_ratio (0.45, input_checks.h) without,
+   *   0.4 for nu <  locking_poisson_ratio (0.45, material.h) without,
    *   0.6 for nu >= locking_poisson_ratio, or with a slip wedge.
    * Measured, not derived. With two values the estimate is |d| r/(1-r)
    * and the truth |d| rho/(1-rho), rho = e_1/e_0 the member 0 -> 1 error

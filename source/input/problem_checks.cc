@@ -1,0 +1,92 @@
+#include <fourier_ssi/input/problem_checks.h>
+
+namespace FourierSSI
+{
+  namespace
+  {
+    /**
+     * Displacement control drives the controlled motion from where the
+     * held stage left it to Target: a Target of 0 is a path of zero length
+     * (every step the unloaded state, reported as converged).
+     */
+    void
+    check_displacement_target(const AllParameters &parameters)
+    {
+      const NonlinearInterfaceParameters &path =
+        parameters.nonlinear_interfaces;
+      AssertThrow(!parameters.coupled() ||
+                    path.control !=
+                      NonlinearInterfaceParameters::Control::displacement ||
+                    path.target != 0.,
+                  ExcMessage("Nonlinear interfaces/Target: 0 with Control = "
+                             "displacement, the controlled motion would not "
+                             "move; give its final value [m or rad]"));
+    }
+
+    /** True if some load of the scene is not zero. */
+    bool
+    scene_has_load(const AllParameters &parameters)
+    {
+      const RigidFoundationParameters &foundation = parameters.rigid_foundation;
+      const BoundaryConditions        &bc = parameters.boundary_conditions;
+      const auto                       any_nonzero =
+        [](const std::map<types::boundary_id, ComponentExpressions> &entries) {
+          for (const auto &[id, e] : entries)
+            if (!e.is_zero())
+              return true;
+          return false;
+        };
+      const bool foundation_load =
+        foundation.enabled &&
+        (foundation.horizontal_force != 0. || foundation.moment != 0. ||
+         foundation.horizontal_force_y != 0. || foundation.moment_x != 0. ||
+         foundation.vertical_force != 0. || foundation.torque != 0. ||
+         foundation.any_held());
+      return foundation_load || !bc.body_force.is_zero() ||
+             any_nonzero(bc.traction) || any_nonzero(bc.dirichlet) ||
+             any_nonzero(parameters.loads.traction) ||
+             any_nonzero(parameters.loads.displacement);
+    }
+
+    /**
+     * Load control scales the scene's loads along the path: with every
+     * load zero each step solves the unloaded state (displacement control
+     * refuses the same scene when the pattern solve finds no motion).
+     */
+    void
+    check_load_control_has_load(const AllParameters &parameters)
+    {
+      AssertThrow(!parameters.coupled() ||
+                    parameters.nonlinear_interfaces.control !=
+                      NonlinearInterfaceParameters::Control::load ||
+                    scene_has_load(parameters),
+                  ExcMessage("Nonlinear interfaces/Control = load: every "
+                             "load is zero (Rigid foundation, Loads, "
+                             "Boundary conditions, Body force), the path "
+                             "has nothing to scale"));
+    }
+
+    /**
+     * The error norms compare one harmonic's amplitudes with a closed form
+     * (a linear solve); the coupled paths (plastic soil, coulomb
+     * interfaces) do not compute them.
+     */
+    void
+    check_exact_solution_linear(const AllParameters &parameters)
+    {
+      AssertThrow(!parameters.exact_solution.enabled || !parameters.coupled(),
+                  ExcMessage("Exact solution/Enabled: error norms are "
+                             "computed for linear runs only, not with "
+                             "plastic soil or a coulomb interface; set it "
+                             "false"));
+    }
+  } // namespace
+
+  void
+  check_problem_is_meaningful(const AllParameters &parameters)
+  {
+    check_displacement_target(parameters);
+    check_load_control_has_load(parameters);
+    check_exact_solution_linear(parameters);
+  }
+} // namespace FourierSSI
