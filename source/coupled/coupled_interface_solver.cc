@@ -155,15 +155,7 @@ namespace FourierSSI
   CoupledInterfaceSolver::from_owner(const unsigned int   h,
                                      std::vector<double> &values) const
   {
-    if (set.n_owning_ranks() > 1)
-      {
-        const int ierr = MPI_Bcast(values.data(),
-                                   values.size(),
-                                   MPI_DOUBLE,
-                                   set.owner(h),
-                                   set.get_ranks());
-        AssertThrowMPI(ierr);
-      }
+    set.broadcast_from_owner(h, values.data(), values.size());
   }
 
   double
@@ -637,12 +629,7 @@ namespace FourierSSI
   {
     Vector<double> u = pattern_solution[i];
     u.sadd(committed.load_factor, 1., committed.correction_solution[i]);
-    if (set.n_owning_ranks() > 1)
-      {
-        const int ierr = MPI_Bcast(
-          u.begin(), u.size(), MPI_DOUBLE, set.owner(i), set.get_ranks());
-        AssertThrowMPI(ierr);
-      }
+    set.broadcast_from_owner(i, u.begin(), u.size());
     return u;
   }
 

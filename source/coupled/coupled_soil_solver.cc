@@ -1141,12 +1141,7 @@ namespace FourierSSI
   CoupledSoilSolver::solution(const unsigned int i) const
   {
     Vector<double> u = total_displacement(committed, i);
-    if (set.n_owning_ranks() > 1)
-      {
-        const int ierr = MPI_Bcast(
-          u.begin(), u.size(), MPI_DOUBLE, set.owner(i), set.get_ranks());
-        AssertThrowMPI(ierr);
-      }
+    set.broadcast_from_owner(i, u.begin(), u.size());
     return u;
   }
 

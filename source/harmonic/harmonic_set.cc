@@ -183,6 +183,17 @@ namespace FourierSSI
   }
 
   void
+  HarmonicSet::broadcast_from_owner(const unsigned int i,
+                                    double            *values,
+                                    const std::size_t  n) const
+  {
+    if (n_ranks == 1)
+      return;
+    const int ierr = MPI_Bcast(values, n, MPI_DOUBLE, owner(i), ranks);
+    AssertThrowMPI(ierr);
+  }
+
+  void
   HarmonicSet::sum_over_ranks(std::vector<double> &values) const
   {
     if (n_ranks == 1)

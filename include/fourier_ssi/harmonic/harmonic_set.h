@@ -23,8 +23,8 @@
 #include <deal.II/lac/vector.h>
 #include <exception>
 #include <fourier_ssi/fourier/harmonic.h>
-#include <fourier_ssi/harmonic/harmonic_problem.h>
 #include <fourier_ssi/fourier/load_decomposition.h>
+#include <fourier_ssi/harmonic/harmonic_problem.h>
 #include <fourier_ssi/input/parameters.h>
 #include <functional>
 #include <memory>
@@ -209,6 +209,16 @@ namespace FourierSSI
      */
     void
     sum_over_ranks(std::vector<double> &values) const;
+
+    /**
+     * values[0..n) := the owner of harmonic i's copy, on every rank (one
+     * MPI_Bcast; on one rank nothing): what only the owner computed
+     * (harmonic i's solution, a motion read from it) made known to all.
+     */
+    void
+    broadcast_from_owner(const unsigned int i,
+                         double            *values,
+                         const std::size_t  n) const;
 
     /** Sums made by sum_over_ranks() and the wall time in them [s]. */
     unsigned int
