@@ -319,7 +319,7 @@ namespace FourierSSI
                                                 outcome.solution.coefficients);
         outcome.has_goal = true;
         Postprocessors::goal_estimate(outcome.goal,
-                                      parameters.adaptivity.goal,
+                                      name_of(parameters.adaptivity.goal),
                                       outcome.report);
       }
     if (!estimate_only)
@@ -463,9 +463,9 @@ namespace FourierSSI
         {
           log << "cycle " << cycle << " goal estimate: relative error "
               << std::setprecision(2) << outcome.goal.goal_error << " ("
-              << parameters.adaptivity.goal << "), K_H " << std::setprecision(7)
-              << outcome.solution.coefficients.K_H << ", K_M "
-              << outcome.solution.coefficients.K_M << ", K_MH "
+              << name_of(parameters.adaptivity.goal) << "), K_H "
+              << std::setprecision(7) << outcome.solution.coefficients.K_H
+              << ", K_M " << outcome.solution.coefficients.K_M << ", K_MH "
               << outcome.solution.coefficients.K_MH << std::endl;
           if (outcome.goal.goal_error < parameters.adaptivity.goal_tolerance)
             {

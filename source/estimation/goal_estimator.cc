@@ -83,11 +83,11 @@ namespace FourierSSI
     const std::array<double, 3> K_q = {{q.K_H, q.K_M, q.K_MH}};
     for (unsigned int x = 0; x < 3; ++x)
       result.relative_error[x] = std::abs(K_q[x] - K_p[x]) / std::abs(K_q[x]);
-    const std::array<std::string, 3> names = {{"K_H", "K_M", "K_MH"}};
-    std::array<bool, 3>              selected;
+    std::array<bool, 3> selected;
     for (unsigned int x = 0; x < 3; ++x)
       {
-        selected[x] = (goal == "all" || goal == names[x]);
+        selected[x] =
+          goal == StiffnessGoal::all || goal == static_cast<StiffnessGoal>(x);
         if (selected[x])
           result.goal_error =
             std::max(result.goal_error, result.relative_error[x]);

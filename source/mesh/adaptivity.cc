@@ -100,19 +100,40 @@ namespace FourierSSI
     prm.leave_subsection();
   }
 
+  std::string
+  name_of(const StiffnessGoal goal)
+  {
+    switch (goal)
+      {
+        case StiffnessGoal::K_H:
+          return "K_H";
+        case StiffnessGoal::K_M:
+          return "K_M";
+        case StiffnessGoal::K_MH:
+          return "K_MH";
+        case StiffnessGoal::all:
+          break;
+      }
+    return "all";
+  }
+
   void
   AdaptivityParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Adaptivity");
     const std::string strategy_name = prm.get("Strategy");
-    strategy          = strategy_name == "kelly" ? RefinementStrategy::kelly :
-                        strategy_name == "goal"  ? RefinementStrategy::goal :
-                                                   RefinementStrategy::global;
-    refine_fraction   = prm.get_double("Refine fraction");
-    goal              = prm.get("Goal");
-    goal_tolerance    = prm.get_double("Goal tolerance");
-    maximum_dofs      = prm.get_double("Maximum DoFs");
-    allow_unconverged = prm.get_bool("Allow unconverged");
+    strategy        = strategy_name == "kelly" ? RefinementStrategy::kelly :
+                      strategy_name == "goal"  ? RefinementStrategy::goal :
+                                                 RefinementStrategy::global;
+    refine_fraction = prm.get_double("Refine fraction");
+    const std::string goal_name = prm.get("Goal");
+    goal                        = goal_name == "K_H"  ? StiffnessGoal::K_H :
+                                  goal_name == "K_M"  ? StiffnessGoal::K_M :
+                                  goal_name == "K_MH" ? StiffnessGoal::K_MH :
+                                                        StiffnessGoal::all;
+    goal_tolerance              = prm.get_double("Goal tolerance");
+    maximum_dofs                = prm.get_double("Maximum DoFs");
+    allow_unconverged           = prm.get_bool("Allow unconverged");
     point_refinements.clear();
     for (const std::string &item :
          Utilities::split_string_list(prm.get("Point refinement"), ';'))

@@ -28,8 +28,8 @@
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/harmonic/harmonic_problem.h>
-#include <fourier_ssi/input/parameters.h>
 #include <fourier_ssi/harmonic/rigid_foundation.h>
+#include <fourier_ssi/input/parameters.h>
 #include <string>
 #include <vector>
 
@@ -80,7 +80,7 @@ namespace FourierSSI
   private:
     /** Copy of the run's parameters with Polynomial degree = 4. */
     AllParameters enriched_parameters;
-    std::string   goal;
+    StiffnessGoal goal;
   };
 } // namespace FourierSSI
 

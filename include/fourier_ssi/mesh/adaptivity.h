@@ -31,6 +31,24 @@ namespace FourierSSI
     goal    // DWR indicators of K_H, K_M, K_MH (goal_estimator.h)
   };
 
+  /**
+   * Adaptivity/Goal, parsed once: the stiffness coefficient whose estimated
+   * error steers a goal-oriented refinement; `all` the largest relative
+   * error of the three. The order of K_H, K_M, K_MH is that of
+   * GoalEstimate::relative_error.
+   */
+  enum class StiffnessGoal
+  {
+    K_H,
+    K_M,
+    K_MH,
+    all
+  };
+
+  /** The Adaptivity/Goal value of `goal` ("K_H", ..., "all"). */
+  std::string
+  name_of(const StiffnessGoal goal);
+
   struct AdaptivityParameters
   {
     static void
@@ -47,8 +65,8 @@ namespace FourierSSI
 
     RefinementStrategy strategy        = RefinementStrategy::global;
     double             refine_fraction = 0.3;
-    std::string        goal            = "all"; // K_H | K_M | K_MH | all
-    double             goal_tolerance  = 0.;    // relative; 0: no stop
+    StiffnessGoal      goal            = StiffnessGoal::all;
+    double             goal_tolerance  = 0.; // relative; 0: no stop
     /** Work bound of Discretization/Target accuracy (DoFs per harmonic). */
     double maximum_dofs = 5e5;
     /** Exit 0 although Target accuracy was not reached (the CSV says so). */
