@@ -84,6 +84,16 @@ add_test(NAME program_target_accuracy_unreachable
           -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/target_unreachable
           -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_unconverged.cmake)
 
+# The same target with the bound in Mesh/Maximum DoFs: the mesh builder
+# refusing a later member of the design is an unmet target (exit 3, results
+# marked), not an input error.
+add_test(NAME program_target_accuracy_mesh_limit
+  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi>
+          -DPRM=${CMAKE_CURRENT_SOURCE_DIR}/accuracy/unreachable_target_mesh_limit.prm
+          "-DEXPECTED=Discretization/Target accuracy 1e-08 not reached: estimated relative error [0-9.e+-]+ with [0-9]+ DoFs; the next mesh: Mesh/Global refinements: .* above Mesh/Maximum DoFs = 1e\\+05"
+          -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/target_mesh_limit
+          -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_unconverged.cmake)
+
 # Plastic soil: the capacity of prm/pile-capacity.prm asked to 1e-2, whose
 # n <= 8 truncation (2.2e-2) needs the harmonics doubled, with a work bound
 # (6 000 DoFs over all harmonics) that doubling would exceed: one line

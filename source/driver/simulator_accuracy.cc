@@ -184,11 +184,8 @@ namespace FourierSSI
     return dofs;
   }
 
-  void
-  Simulator::target_unmet_at_limit(const unsigned int      member,
-                                   const double            dofs,
-                                   const Triangulation<2> &next,
-                                   std::ostream           &log)
+  std::string
+  Simulator::target_unmet_beginning(const unsigned int member) const
   {
     std::ostringstream line;
     line << "Discretization/Target accuracy "
@@ -198,13 +195,58 @@ namespace FourierSSI
       line << std::setprecision(2) << largest_estimated_error();
     else
       line << "unknown (one mesh solved)";
-    line << " with " << static_cast<long long>(dofs)
-         << " DoFs; the next mesh (about "
+    line << " with " << static_cast<long long>(solved_dofs()) << " DoFs";
+    return line.str();
+  }
+
+  void
+  Simulator::target_unmet_at_mesh_limit(const unsigned int member,
+                                        const std::string &limit,
+                                        std::ostream      &log)
+  {
+    target_not_reached =
+      target_unmet_beginning(member) + "; the next mesh: " + limit;
+    log << target_not_reached << std::endl;
+  }
+
+  void
+  Simulator::target_unmet_at_limit(const unsigned int      member,
+                                   const double            dofs,
+                                   const Triangulation<2> &next,
+                                   std::ostream           &log)
+  {
+    std::ostringstream line;
+    line << target_unmet_beginning(member) << "; the next mesh (about "
          << static_cast<long long>(dofs * cell_growth(next))
          << " DoFs) exceeds Adaptivity/Maximum DoFs = " << std::setprecision(6)
          << parameters.adaptivity.maximum_dofs;
     target_not_reached = line.str();
     log << target_not_reached << std::endl;
+  }
+
+  std::unique_ptr<Triangulation<2>>
+  Simulator::member_mesh_within_limits(const unsigned int member,
+                                       std::ostream      &log)
+  {
+    std::unique_ptr<Triangulation<2>> next;
+    try
+      {
+        next = member_mesh(member);
+      }
+    catch (const MeshExceedsMaximumDoFs &limit)
+      {
+        // Mesh/Maximum DoFs stops the design like Adaptivity/Maximum DoFs:
+        // the meshes solved so far are the answer, with the target unmet.
+        target_unmet_at_mesh_limit(member, limit.what(), log);
+        return nullptr;
+      }
+    const double dofs = solved_dofs();
+    if (dofs * cell_growth(*next) > parameters.adaptivity.maximum_dofs)
+      {
+        target_unmet_at_limit(member, dofs, *next, log);
+        return nullptr;
+      }
+    return next;
   }
 
   unsigned int
@@ -337,7 +379,6 @@ namespace FourierSSI
   Simulator::solve_to_target(std::ostream &log)
   {
     const double target = parameters.discretization.target_accuracy;
-    const double limit  = parameters.adaptivity.maximum_dofs;
     // The target decides which meshes are solved: a scene written as a
     // convergence study (Refinement cycles > 1) runs with a target appended,
     // and the log says what the target replaced.
@@ -364,13 +405,10 @@ namespace FourierSSI
           {
             if (member > 0)
               {
-                std::unique_ptr<Triangulation<2>> next = member_mesh(member);
-                const double                      dofs = solved_dofs();
-                if (dofs * cell_growth(*next) > limit)
-                  {
-                    target_unmet_at_limit(member, dofs, *next, log);
-                    break;
-                  }
+                std::unique_ptr<Triangulation<2>> next =
+                  member_mesh_within_limits(member, log);
+                if (!next)
+                  break;
                 reconstruction = FieldReconstruction();
                 harmonic_set.reset();
                 outcomes.clear();

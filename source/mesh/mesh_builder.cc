@@ -280,14 +280,14 @@ namespace FourierSSI
         const double n_r = std::accumulate(r_cells.begin(), r_cells.end(), 0.);
         const double n_z = std::accumulate(z_cells.begin(), z_cells.end(), 0.);
         const double cell_dofs = n_r * n_z * 3. * degree * degree;
-        AssertThrow(cell_dofs <= maximum_dofs,
-                    ExcMessage("Mesh/R cells, Z cells: " + format_count(n_r) +
-                               " x " + format_count(n_z) +
-                               " cells would give about " +
-                               format_count(cell_dofs) +
-                               " DoFs per harmonic, above Mesh/Maximum DoFs "
-                               "= " +
-                               format_count(maximum_dofs)));
+        if (!(cell_dofs <= maximum_dofs))
+          throw MeshExceedsMaximumDoFs(
+            "Mesh/R cells, Z cells: " + format_count(n_r) + " x " +
+            format_count(n_z) + " cells would give about " +
+            format_count(cell_dofs) +
+            " DoFs per harmonic, above Mesh/Maximum DoFs "
+            "= " +
+            format_count(maximum_dofs));
         const std::vector<std::vector<double>> steps = {
           graded_steps(r_breakpoints, r_cells, r_growth, "Mesh/R"),
           graded_steps(z_breakpoints, z_cells, z_growth, "Mesh/Z")};
@@ -364,14 +364,13 @@ namespace FourierSSI
     const double dofs_per_cell = 3. * degree * degree;
     const double estimate      = triangulation.n_active_cells() *
                             std::pow(4., global_refinements) * dofs_per_cell;
-    AssertThrow(estimate <= maximum_dofs,
-                ExcMessage("Mesh/Global refinements: " +
-                           std::to_string(global_refinements) +
-                           " refinements of " +
-                           std::to_string(triangulation.n_active_cells()) +
-                           " cells would give about " + format_count(estimate) +
-                           " DoFs per harmonic, above Mesh/Maximum DoFs = " +
-                           format_count(maximum_dofs)));
+    if (!(estimate <= maximum_dofs))
+      throw MeshExceedsMaximumDoFs(
+        "Mesh/Global refinements: " + std::to_string(global_refinements) +
+        " refinements of " + std::to_string(triangulation.n_active_cells()) +
+        " cells would give about " + format_count(estimate) +
+        " DoFs per harmonic, above Mesh/Maximum DoFs = " +
+        format_count(maximum_dofs));
     const auto guard = std::make_shared<boost::signals2::connection>();
     *guard           = triangulation.signals.pre_refinement.connect(
       [&triangulation, dofs_per_cell, limit = maximum_dofs]() {
@@ -384,16 +383,15 @@ namespace FourierSSI
             n_new += 1;
         const double dofs =
           (triangulation.n_active_cells() + n_new) * dofs_per_cell;
-        AssertThrow(dofs <= limit,
-                    ExcMessage(
-                      "Mesh/Maximum DoFs: refining the mesh to " +
-                      std::to_string(triangulation.n_active_cells() + n_new) +
-                      " cells would give about " + format_count(dofs) +
-                      " DoFs per harmonic, above the limit " +
-                      format_count(limit) +
-                      " (lower Adaptivity/Box, Layer or Point refinement, "
-                                "Discretization/Refinement cycles, or raise Mesh/"
-                                "Maximum DoFs)"));
+        if (!(dofs <= limit))
+          throw MeshExceedsMaximumDoFs(
+            "Mesh/Maximum DoFs: refining the mesh to " +
+            std::to_string(triangulation.n_active_cells() + n_new) +
+            " cells would give about " + format_count(dofs) +
+            " DoFs per harmonic, above the limit " + format_count(limit) +
+            " (lower Adaptivity/Box, Layer or Point refinement, "
+                      "Discretization/Refinement cycles, or raise Mesh/"
+                      "Maximum DoFs)");
       });
     // The guard belongs to this build: the next clear() (a new build)
     // removes it.

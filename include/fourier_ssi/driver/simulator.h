@@ -392,6 +392,14 @@ namespace FourierSSI
     std::unique_ptr<Triangulation<2>>
     member_mesh(const unsigned int member) const;
 
+    /**
+     * The designed mesh of `member` if both work bounds allow it (Mesh/
+     * Maximum DoFs while it is built, Adaptivity/Maximum DoFs by the cell
+     * growth); otherwise nullptr, with the target reported unmet.
+     */
+    std::unique_ptr<Triangulation<2>>
+    member_mesh_within_limits(const unsigned int member, std::ostream &log);
+
     /** Cells of `next` over the current mesh's: how its DoFs scale. */
     double
     cell_growth(const Triangulation<2> &next) const;
@@ -409,6 +417,16 @@ namespace FourierSSI
                           const double            dofs,
                           const Triangulation<2> &next,
                           std::ostream           &log);
+
+    /** "Discretization/Target accuracy ... not reached: ... with N DoFs". */
+    std::string
+    target_unmet_beginning(const unsigned int member) const;
+
+    /** As target_unmet_at_limit, the next mesh refused by Mesh/Maximum DoFs. */
+    void
+    target_unmet_at_mesh_limit(const unsigned int member,
+                               const std::string &limit,
+                               std::ostream      &log);
 
     /** set_cores(), or the node's cores shared among the MPI ranks. */
     unsigned int

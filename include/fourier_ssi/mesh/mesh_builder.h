@@ -27,6 +27,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/grid/tria.h>
 #include <fourier_ssi/mesh/interface_lines.h>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,18 @@ namespace FourierSSI
   /** Parse "r0, r1, z0, z1" into a box; `entry` names the .prm entry. */
   BoundingBox<2>
   parse_box(const std::string &text, const std::string &entry);
+
+  /**
+   * A mesh that would exceed Mesh/Maximum DoFs. For the first mesh of a run
+   * it is an input error like any other; for a later member of
+   * Discretization/Target accuracy it is a bound that stops the refinement,
+   * so the target run catches this type and reports the target unmet.
+   */
+  class MeshExceedsMaximumDoFs : public std::runtime_error
+  {
+  public:
+    using std::runtime_error::runtime_error;
+  };
 
   /**
    * Mesh/Type: the built-in graded (r, z) rectangle, or a gmsh file.
