@@ -261,10 +261,11 @@ namespace FourierSSI
 
     // Held loads are a stage of a nonlinear load path; a linear solve has
     // no path (add them to the loads).
-    AssertThrow(!foundation.any_held() || parameters.soil_plasticity.any(),
-                ExcMessage("Rigid foundation/Held ...: not yet: held loads "
-                           "without plastic soil (in a linear or interface "
-                           "run add them to the loads)"));
+    AssertThrow(!foundation.any_held() || parameters.coupled(),
+                ExcMessage("Rigid foundation/Held ...: held loads need a "
+                           "nonlinear run (plastic soil or coulomb "
+                           "interfaces); in a linear run add them to the "
+                           "loads"));
 
     // A rigid foundation tied to DoFs of a boundary fixed in u, v and w is
     // clamped by the supports (typically the soil's material id given as
