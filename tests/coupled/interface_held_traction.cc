@@ -10,7 +10,7 @@
 // (r < a at z = 0: Q = q pi a^2 = 39.27 kN, below the shaft's capacity), then
 // pulled out by displacement control (Vertical force = 1 gives the
 // direction).
-// Checks, with their reasons:
+// Checks, with their reasons (4: a lateral push, below):
 //  1. the held stage reaches Q with lambda = 0 and the pull stage keeps it
 //     (held fraction 1 at every step);
 //  2. equilibrium of the pile at every converged step: the interface
@@ -88,6 +88,62 @@ subsection Nonlinear interfaces
 end
 )";
   }
+
+  /** `text` with each `from` replaced by its `to` (each must be there). */
+  std::string
+  replaced(std::string                                             text,
+           const std::vector<std::pair<std::string, std::string>> &changes)
+  {
+    for (const auto &[from, to] : changes)
+      {
+        const auto at = text.find(from);
+        AssertThrow(at != std::string::npos, ExcMessage(from));
+        text.replace(at, from.size(), to);
+      }
+    return text;
+  }
+
+  /**
+   * 4. The same pile with Q held pushed sideways (n = 0, 1; kn = 1e5 so
+   *    that the soil resists the push): at every step the interface
+   *    resultant carries the held Q vertically and lambda H horizontally,
+   *    to 1e-8 of max(|H|, Q) as in 2 (the iteration tolerance 1e-10 of
+   *    the force scale). Scaling the traction with lambda would make the
+   *    vertical resultant follow H instead.
+   */
+  void
+  lateral_push(const double Q)
+  {
+    std::cout << "4. lateral push with Q held" << std::endl;
+    const std::string text = replaced(
+      pile_scene("2"),
+      {{"set Harmonics         = 0", "set Harmonics         = 0, 1"},
+       {"5: coulomb, kn=1,", "5: coulomb, kn=1e5,"},
+       {"6: coulomb, kn=1,", "6: coulomb, kn=1e5,"},
+       {"z=-50*(r<0.5)", "z=-50*(r<0.5)*(n==0)"},
+       {"set Vertical force = 1", "set Horizontal force = 1"},
+       {"Controlled motion = vertical", "Controlled motion = horizontal"},
+       {"set Target            = 0.04", "set Target            = 0.02"},
+       {"set Load steps        = 8", "set Load steps        = 4"},
+       {"set Tolerance         = 1e-12", "set Tolerance         = 1e-10"}});
+    test_support::FactorizedScene scene(text);
+    CoupledInterfaceSolver        solver(scene.set, scene.parameters);
+    solver.run(std::cout);
+    double vertical = 0., horizontal = 0., H = 0.;
+    for (const LoadStepResult &s : solver.get_steps())
+      {
+        H                  = solver.applied_loads(s.load_factor)[0];
+        const double scale = std::max(std::abs(H), Q);
+        vertical =
+          std::max(vertical,
+                   std::abs(s.resultant[2] + s.held_fraction * Q) / scale);
+        horizontal = std::max(horizontal, std::abs(s.resultant[0] - H) / scale);
+      }
+    std::cout << "  H at u = 0.02 m: " << H << " kN" << std::endl;
+    check::that("the push reached H > 0", H > 0.);
+    check::small("max |F_z + rho Q| / max(|H|, Q)", vertical, 1e-8);
+    check::small("max |F_x - lambda H| / max(|H|, Q)", horizontal, 1e-8);
+  }
 } // namespace
 
 int
@@ -145,5 +201,6 @@ main()
                   V_u,
                   shaft + Q,
                   5e-3);
+  lateral_push(Q);
   return check::summary();
 }
