@@ -35,11 +35,14 @@
  * Gauss points; each amplitude is non-zero on its owner only, so the sum is
  * exact and every rank samples, return-maps, accelerates and decides on
  * bitwise the same numbers (the decisions cannot diverge).
- * Load control scales the scene's loads by lambda; displacement control
+ * Load control scales the foundation's loads by lambda (load_factor_pattern;
+ * all the scene's loads without a Rigid foundation); displacement control
  * chooses lambda in every iteration so that one rigid-foundation motion
- * equals its target (needed past the peak). A step that does not converge is
- * cut in half (up to a limit); then the solve stops with a one-line error,
- * the converged steps kept.
+ * equals its target (needed past the peak). Held loads (held_stage_load:
+ * body force, tractions, Rigid foundation/Held ...) come first, in a held
+ * stage at lambda = 0, and stay while lambda scales the foundation's loads. A
+ * step that does not converge is cut in half (up to a limit); then the solve
+ * stops with a one-line error, the converged steps kept.
  */
 #ifndef fourier_ssi_coupled_interface_solver_h
 #define fourier_ssi_coupled_interface_solver_h
@@ -69,7 +72,7 @@ namespace FourierSSI
   /** One converged load step. */
   struct LoadStepResult
   {
-    /** Factor on the scene's loads (load control: step / n_steps). */
+    /** Factor on the scaled loads (load_factor_pattern). */
     double load_factor = 0.;
     /**
      * Fraction of the held loads (held_stage_load: Rigid foundation/Held
