@@ -42,14 +42,14 @@
 
 #include <array>
 #include <deal.II/lac/vector.h>
-#include <fourier_ssi/coupled/coupled_tangent.h>
-#include <fourier_ssi/coupled/soil_law.h>
-#include <fourier_ssi/fourier/theta_sampling.h>
 #include <fourier_ssi/harmonic/bbar_projection.h>
+#include <fourier_ssi/coupled/coupled_tangent.h>
 #include <fourier_ssi/harmonic/harmonic_set.h>
 #include <fourier_ssi/input/nonlinear_interface_parameters.h>
-#include <fourier_ssi/input/parameters.h>
 #include <fourier_ssi/interfaces/nonlinear_interface_points.h>
+#include <fourier_ssi/input/parameters.h>
+#include <fourier_ssi/coupled/soil_law.h>
+#include <fourier_ssi/fourier/theta_sampling.h>
 #include <memory>
 #include <ostream>
 #include <string>
