@@ -39,8 +39,8 @@ namespace FourierSSI
   FullMatrix<double>
   CoupledInterfaceSolver::out_of_balance_jacobian(const Evaluation &e) const
   {
-    const bool displacement_control =
-      settings.control == NonlinearInterfaceParameters::Control::displacement;
+    // The held stage prescribes rho: lambda does not follow c there.
+    const bool                      displacement_control = controls_motion();
     const std::vector<LocalTangent> follow =
       interface.plastic_tangents(e.relative, committed.plastic);
     std::vector<unsigned int> offset(set.size() + 1, 0);

@@ -101,6 +101,7 @@ namespace FourierSSI
                            "/Stiffness: not yet: tangent on several MPI "
                            "ranks (use initial, or one process)"));
     solve_load_pattern();
+    solve_held_loads();
     committed.correction_solution = pattern_solution;
     committed.correction_load     = pattern_solution;
     for (unsigned int h = 0; h < set.size(); ++h)
@@ -124,7 +125,7 @@ namespace FourierSSI
     for (unsigned int h = 0; h < set.size(); ++h)
       if (set.owns(h))
         {
-          b[h] = {set.problem(h).get_system_rhs()};
+          b[h] = {load_factor_pattern(set.problem(h))};
           norm_sqr[0] += b[h][0].norm_sqr();
         }
     set.sum_over_ranks(norm_sqr);
@@ -149,6 +150,63 @@ namespace FourierSSI
                                "loads do not drive this motion (give the "
                                "load that does, e.g. V for vertical)"));
       }
+  }
+
+  void
+  CoupledInterfaceSolver::solve_held_loads()
+  {
+    // |F_held|^2 and F . F_held of the harmonics this rank owns, summed.
+    std::vector<std::vector<Vector<double>>> b(set.size());
+    std::vector<double>                      sums = {0., 0.};
+    for (unsigned int h = 0; h < set.size(); ++h)
+      if (set.owns(h))
+        {
+          Vector<double> held = held_stage_load(set.problem(h));
+          sums[0] += held.norm_sqr();
+          sums[1] += held * load_factor_pattern(set.problem(h));
+          b[h] = {std::move(held)};
+        }
+    set.sum_over_ranks(sums);
+    held_load_norm   = std::sqrt(sums[0]);
+    pattern_held_dot = sums[1];
+    held_solution.clear();
+    held_relative.clear();
+    held_motion = 0.;
+    // No held loads (the same answer on every rank): no held stage.
+    if (held_load_norm == 0.)
+      return;
+    set.solve_increments(b);
+    for (unsigned int h = 0; h < set.size(); ++h)
+      held_solution.push_back(
+        set.owns(h) ?
+          b[h][0] :
+          Vector<double>(set.problem(h).get_dof_handler().n_dofs()));
+    held_relative = interface.relative_displacements(held_solution, sampling);
+    if (settings.control == NonlinearInterfaceParameters::Control::displacement)
+      {
+        const unsigned int h = controlled_harmonic();
+        held_motion          = from_owner(
+          h, set.owns(h) ? controlled_motion_of(h, held_solution[h]) : 0.);
+      }
+  }
+
+  bool
+  CoupledInterfaceSolver::controls_motion() const
+  {
+    return settings.control ==
+             NonlinearInterfaceParameters::Control::displacement &&
+           !holding_stage;
+  }
+
+  Vector<double>
+  CoupledInterfaceSolver::total_displacement(const StepState   &state,
+                                             const unsigned int h) const
+  {
+    Vector<double> u = pattern_solution[h];
+    u.sadd(state.load_factor, 1., state.correction_solution[h]);
+    if (!held_solution.empty())
+      u.add(state.held_fraction, held_solution[h]);
+    return u;
   }
 
   void
@@ -372,24 +430,37 @@ namespace FourierSSI
   CoupledInterfaceSolver::Evaluation
   CoupledInterfaceSolver::evaluate(const double target, StepState &state) const
   {
-    const bool displacement_control =
-      settings.control == NonlinearInterfaceParameters::Control::displacement;
-    state.load_factor = displacement_control ?
-                          (target - state.controlled_motion) / pattern_motion :
-                          target;
+    // The held stage brings rho to its target at lambda = 0; then rho stays
+    // and lambda follows the load or displacement control (the held loads'
+    // motion is part of the controlled one).
+    if (holding_stage)
+      state.held_fraction = target;
+    else
+      state.load_factor = controls_motion() ?
+                            (target - state.controlled_motion -
+                             state.held_fraction * held_motion) /
+                              pattern_motion :
+                            target;
     Evaluation e;
     // 1-2: relative displacements at every (point, theta), the law.
     e.relative =
       interface.relative_displacements(state.interface_solution, sampling);
     for (unsigned int k = 0; k < e.relative.size(); ++k)
       for (unsigned int c = 0; c < 3; ++c)
-        e.relative[k][c] += state.load_factor * pattern_relative[k][c];
+        e.relative[k][c] +=
+          state.load_factor * pattern_relative[k][c] +
+          (held_relative.empty() ? 0. :
+                                   state.held_fraction * held_relative[k][c]);
     e.counts = interface.return_map(
       e.relative, committed.plastic, e.plastic, e.traction, e.contact);
     // 3-4: out-of-balance load G and force residual R = G - c, measured
     //      against the internal force scale (coupled_iteration.h).
     e.residual = interface.load_of(e.plastic, sampling);
-    e.scale    = {std::abs(state.load_factor) * pattern_load_norm,
+    e.scale    = {combined_load_norm(state.load_factor,
+                                  state.held_fraction,
+                                  pattern_load_norm,
+                                  pattern_held_dot,
+                                  held_load_norm),
                   norm_over_harmonics(e.residual)};
     for (unsigned int h = 0; h < set.size(); ++h)
       e.residual[h] -= state.correction_load[h];
@@ -409,10 +480,10 @@ namespace FourierSSI
     // A diverged iterate can pass the relative test with a huge load
     // factor; the controlled motion then misses its target (cancellation
     // of lambda m(u_F) against m(v)): not converged.
-    if (settings.control ==
-          NonlinearInterfaceParameters::Control::displacement &&
-        std::abs(state.load_factor * pattern_motion + state.controlled_motion -
-                 target) > 1e-8 * std::abs(target))
+    if (controls_motion() &&
+        std::abs(state.load_factor * pattern_motion + state.controlled_motion +
+                 state.held_fraction * held_motion - target) >
+          1e-8 * std::abs(target))
       return false;
     state.plastic     = e.plastic;
     result.iterations = iteration;
@@ -539,9 +610,7 @@ namespace FourierSSI
         if (!set.owns(h) || foundation == nullptr || harmonics[h].n > 1 ||
             (harmonics[h].n == 1 && harmonics[h].family != Family::symmetric))
           continue;
-        Vector<double> u = pattern_solution[h];
-        u.sadd(state.load_factor, 1., state.correction_solution[h]);
-        const RigidMotion m = foundation->motion(u);
+        const RigidMotion m = foundation->motion(total_displacement(state, h));
         total[0] += m.vertical_displacement;
         total[1] += m.twist;
         total[2] += m.horizontal_displacement;
@@ -614,6 +683,7 @@ namespace FourierSSI
     harmonics = set.get_harmonics();
     sampling  = ThetaSampling(harmonics, sampling.n_samples());
     solve_load_pattern();
+    solve_held_loads();
     const unsigned int first = committed.correction_solution.size();
     for (unsigned int h = first; h < set.size(); ++h)
       {
@@ -627,8 +697,7 @@ namespace FourierSSI
   Vector<double>
   CoupledInterfaceSolver::solution(const unsigned int i) const
   {
-    Vector<double> u = pattern_solution[i];
-    u.sadd(committed.load_factor, 1., committed.correction_solution[i]);
+    Vector<double> u = total_displacement(committed, i);
     set.broadcast_from_owner(i, u.begin(), u.size());
     return u;
   }
@@ -655,7 +724,37 @@ namespace FourierSSI
       log << "warning: " << entry
           << ": a coulomb interface has c = 0 and no Initial stress: it has "
              "no strength\n";
-    double       done = 0., increment = 1. / settings.load_steps;
+    if (!held_solution.empty())
+      {
+        const auto held = applied_loads(0., 1.);
+        log << "held loads first (" << settings.held_load_steps
+            << " load-controlled steps), then held: body force, tractions; "
+               "foundation V "
+            << held[2] << " kN, H " << held[0] << " kN, M "
+            << moment_about_reference(held, parameters.rigid_foundation)
+            << " kN m, T " << held[5] << " kN m\n";
+        run_stage(true, settings.held_load_steps, log);
+      }
+    run_stage(false, settings.load_steps, log);
+    if (set.n_owning_ranks() > 1)
+      log << "  MPI: " << set.n_rank_sums() << " sums over the ranks ("
+          << "one per iteration, a few per step), " << set.rank_sum_time()
+          << " s in them on rank 0 (computing or waiting for the others)\n";
+  }
+
+  void
+  CoupledInterfaceSolver::run_stage(const bool         holding,
+                                    const unsigned int n_steps,
+                                    std::ostream      &log)
+  {
+    holding_stage = holding;
+    // Displacement control moves from where the held loads left the
+    // controlled motion to Target.
+    const double start =
+      controls_motion() ?
+        controlled_component(motion_of(committed), settings.motion) :
+        0.;
+    double       done = 0., increment = 1. / n_steps;
     unsigned int cuts = 0;
     // The state before the last converged step and that step's size: the
     // next step starts from the last correction extrapolated (as for the
@@ -665,25 +764,24 @@ namespace FourierSSI
     while (done < 1. - 1e-12)
       {
         const double fraction = std::min(1., done + increment);
-        const double target =
-          load_control ? fraction : fraction * settings.target;
-        StepState state = committed;
+        const double target   = controls_motion() ?
+                                  start + fraction * (settings.target - start) :
+                                  fraction;
+        StepState    state    = committed;
         if (last_increment > 0.)
           extrapolate(before_last, increment / last_increment, state);
         LoadStepResult    result;
         InterfaceSnapshot snapshot;
-        const auto        start = std::chrono::steady_clock::now();
+        const auto        clock = std::chrono::steady_clock::now();
         if (!solve_step(target, state, result, snapshot))
           {
-            AssertThrow(++cuts <= settings.maximum_step_cuts,
-                        ExcMessage(unconverged_step_message(entry,
-                                                            done,
-                                                            settings.load_steps,
-                                                            false,
-                                                            steps.size(),
-                                                            settings)));
+            AssertThrow(
+              ++cuts <= settings.maximum_step_cuts,
+              ExcMessage(unconverged_step_message(
+                entry, done, n_steps, holding, steps.size(), settings)));
             increment /= 2.;
-            log << "  step cut to " << increment << " of the loading\n";
+            log << "  step cut to " << increment << " of the "
+                << (holding ? "held loads" : "loading") << '\n';
             continue;
           }
         const std::vector<Harmonic> added = harmonics_called_for(snapshot, log);
@@ -693,21 +791,25 @@ namespace FourierSSI
             last_increment = 0.;
             continue;
           }
-        before_last        = std::move(committed);
-        last_increment     = fraction - done;
-        committed          = state;
-        done               = fraction;
-        result.n_harmonics = set.size();
-        result.load_factor = state.load_factor;
-        result.motion      = motion_of(state);
-        result.time        = std::chrono::duration<double>(
-                        std::chrono::steady_clock::now() - start)
+        before_last          = std::move(committed);
+        last_increment       = fraction - done;
+        committed            = state;
+        done                 = fraction;
+        result.n_harmonics   = set.size();
+        result.load_factor   = state.load_factor;
+        result.held_fraction = state.held_fraction;
+        result.motion        = motion_of(state);
+        result.time          = std::chrono::duration<double>(
+                        std::chrono::steady_clock::now() - clock)
                         .count();
         steps.push_back(result);
         snapshots.push_back(std::move(snapshot));
-        const auto loads = applied_loads(result.load_factor);
-        log << "  step " << steps.size() << ": factor " << result.load_factor
-            << ", V " << loads[2] << " kN, H " << loads[0] << " kN, M "
+        const auto loads =
+          applied_loads(result.load_factor, result.held_fraction);
+        log << "  step " << steps.size()
+            << (holding ? " (held loads): factor " : ": factor ")
+            << result.load_factor << ", V " << loads[2] << " kN, H " << loads[0]
+            << " kN, M "
             << moment_about_reference(loads, parameters.rigid_foundation)
             << " kN m, T " << loads[5] << " kN m; w "
             << result.motion.vertical_displacement << " m, u "
@@ -717,10 +819,5 @@ namespace FourierSSI
             << result.states[0] << '/' << result.states[1] << '/'
             << result.states[2] << "; " << result.n_harmonics << " harmonics\n";
       }
-    if (set.n_owning_ranks() > 1)
-      log << "  MPI: " << set.n_rank_sums() << " sums over the ranks ("
-          << "one per iteration, a few per step), " << set.rank_sum_time()
-          << " s in them on rank 0 (computing or waiting for the others)\n";
   }
-
 } // namespace FourierSSI

@@ -22,11 +22,11 @@ namespace FourierSSI
     write_load_step_csv(filename,
                         steps,
                         parameters.rigid_foundation,
-                        "stick,slip,open,time_s,harmonics",
+                        "stick,slip,open,time_s,harmonics,held_fraction",
                         [](std::ostream &out, const LoadStepResult &r) {
                           out << r.states[0] << ',' << r.states[1] << ','
                               << r.states[2] << ',' << r.time << ','
-                              << r.n_harmonics;
+                              << r.n_harmonics << ',' << r.held_fraction;
                         });
   }
 

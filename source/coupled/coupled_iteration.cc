@@ -1,9 +1,50 @@
 #include <algorithm>
 #include <cmath>
 #include <fourier_ssi/coupled/coupled_iteration.h>
+#include <fourier_ssi/harmonic/harmonic_problem.h>
 
 namespace FourierSSI
 {
+  Vector<double>
+  load_factor_pattern(const HarmonicProblem &problem)
+  {
+    const RigidFoundation *foundation = problem.get_foundation();
+    if (foundation == nullptr)
+      return problem.get_system_rhs();
+    Vector<double> pattern(problem.get_system_rhs().size());
+    foundation->add_loads(pattern);
+    return pattern;
+  }
+
+  Vector<double>
+  held_stage_load(const HarmonicProblem &problem)
+  {
+    const RigidFoundation *foundation = problem.get_foundation();
+    Vector<double>         held(problem.get_system_rhs().size());
+    if (foundation == nullptr)
+      return held;
+    // The scene's load is body force + tractions + the foundation's loads
+    // (HarmonicProblem::assemble_system): the first two are held.
+    held = problem.get_system_rhs();
+    held -= load_factor_pattern(problem);
+    foundation->add_held_loads(held);
+    return held;
+  }
+
+  double
+  combined_load_norm(const double load_factor,
+                     const double held_fraction,
+                     const double pattern_norm,
+                     const double pattern_held_dot,
+                     const double held_norm)
+  {
+    const double lambda = load_factor, rho = held_fraction;
+    const double norm_sqr = lambda * lambda * pattern_norm * pattern_norm +
+                            2. * lambda * rho * pattern_held_dot +
+                            rho * rho * held_norm * held_norm;
+    return std::sqrt(std::max(norm_sqr, 0.));
+  }
+
   double
   norm_over_harmonics(const std::vector<Vector<double>> &vectors)
   {

@@ -121,8 +121,7 @@ namespace FourierSSI
         point_rank   = Utilities::MPI::this_mpi_process(set.get_ranks());
       }
     solve_load_pattern();
-    if (parameters.rigid_foundation.any_held())
-      solve_held_loads();
+    solve_held_loads();
     committed.correction_solution = pattern_solution;
     for (Vector<double> &v : committed.correction_solution)
       v = 0.;
@@ -251,11 +250,17 @@ namespace FourierSSI
     std::vector<std::vector<Vector<double>>> b(set.size());
     std::vector<double>                      norm_sqr(set.size(), 0.);
     for (unsigned int h = 0; h < set.size(); ++h)
-      if (set.owns(h))
-        {
-          b[h]        = {set.problem(h).get_system_rhs()};
-          norm_sqr[h] = b[h][0].norm_sqr();
-        }
+      {
+        pattern_load.push_back(
+          set.owns(h) ?
+            load_factor_pattern(set.problem(h)) :
+            Vector<double>(set.problem(h).get_dof_handler().n_dofs()));
+        if (set.owns(h))
+          {
+            b[h]        = {pattern_load[h]};
+            norm_sqr[h] = b[h][0].norm_sqr();
+          }
+      }
     pattern_load_norm = std::sqrt(sum_over_harmonics(norm_sqr, 1)[0]);
     set.solve_increments(b);
     for (unsigned int h = 0; h < set.size(); ++h)
@@ -279,15 +284,17 @@ namespace FourierSSI
       {
         if (!set.owns(h))
           continue;
-        const Vector<double> &pattern_load = set.problem(h).get_system_rhs();
-        Vector<double>        held         = held_load(h);
-        products[2 * h]                    = held.norm_sqr();
-        products[2 * h + 1]                = held * pattern_load;
-        b[h]                               = {std::move(held)};
+        Vector<double> held = held_load(h);
+        products[2 * h]     = held.norm_sqr();
+        products[2 * h + 1] = held * pattern_load[h];
+        b[h]                = {std::move(held)};
       }
     const std::vector<double> sums = sum_over_harmonics(products, 2);
     held_load_norm                 = std::sqrt(sums[0]);
     pattern_held_dot               = sums[1];
+    // No held loads (the same answer on every rank): no held stage.
+    if (held_load_norm == 0.)
+      return;
     set.solve_increments(b);
     for (unsigned int h = 0; h < set.size(); ++h)
       held_solution.push_back(
@@ -303,12 +310,11 @@ namespace FourierSSI
   double
   CoupledSoilSolver::applied_load_norm(const StepState &state) const
   {
-    const double lambda = state.load_factor, rho = state.held_fraction;
-    const double norm_sqr =
-      lambda * lambda * pattern_load_norm * pattern_load_norm +
-      2. * lambda * rho * pattern_held_dot +
-      rho * rho * held_load_norm * held_load_norm;
-    return std::sqrt(std::max(norm_sqr, 0.));
+    return combined_load_norm(state.load_factor,
+                              state.held_fraction,
+                              pattern_load_norm,
+                              pattern_held_dot,
+                              held_load_norm);
   }
 
   std::vector<std::vector<StrainVector>>
@@ -901,7 +907,7 @@ namespace FourierSSI
     tangent->factorize();
     tangent_pattern.resize(H);
     for (unsigned int h = 0; h < H; ++h)
-      tangent_pattern[h] = set.problem(h).get_system_rhs();
+      tangent_pattern[h] = pattern_load[h];
     tangent->solve(tangent_pattern);
   }
 
@@ -931,7 +937,7 @@ namespace FourierSSI
       du[h].add(load_change, tangent_pattern[h]);
       change[h].reinit(du[h].size());
       set.problem(h).get_system_matrix().vmult(change[h], du[h]);
-      change[h].add(-load_change, set.problem(h).get_system_rhs());
+      change[h].add(-load_change, pattern_load[h]);
       set.problem(h).get_homogeneous_constraints().set_zero(change[h]);
     });
     return change;
@@ -1114,10 +1120,7 @@ namespace FourierSSI
   Vector<double>
   CoupledSoilSolver::held_load(const unsigned int h) const
   {
-    Vector<double> held(set.problem(h).get_dof_handler().n_dofs());
-    if (const RigidFoundation *foundation = set.problem(h).get_foundation())
-      foundation->add_held_loads(held);
-    return held;
+    return held_stage_load(set.problem(h));
   }
 
   double
@@ -1128,7 +1131,7 @@ namespace FourierSSI
     for (unsigned int h = 0; h < set.size(); ++h)
       if (set.owns(h))
         {
-          Vector<double> load = set.problem(h).get_system_rhs();
+          Vector<double> load = pattern_load[h];
           load *= committed.load_factor;
           if (!held_solution.empty())
             load.add(committed.held_fraction, held_load(h));
@@ -1164,7 +1167,8 @@ namespace FourierSSI
     if (!held_solution.empty())
       {
         log << "held loads first (" << settings.held_load_steps
-            << " load-controlled steps), then held: ";
+            << " load-controlled steps), then held: body force, tractions; "
+               "foundation ";
         write_held_loads(log);
         log << '\n';
         run_stage(true, settings.held_load_steps, log);

@@ -247,10 +247,11 @@ namespace FourierSSI
     check_held_loads_have_a_path(const AllParameters &parameters)
     {
       AssertThrow(!parameters.rigid_foundation.any_held() ||
-                    parameters.soil_plasticity.any(),
-                  ExcMessage("Rigid foundation/Held ...: not yet: held loads "
-                             "without plastic soil (in a linear or interface "
-                             "run add them to the loads)"));
+                    parameters.coupled(),
+                  ExcMessage("Rigid foundation/Held ...: held loads need a "
+                             "nonlinear run (plastic soil or coulomb "
+                             "interfaces); in a linear run add them to the "
+                             "loads"));
     }
 
     /**

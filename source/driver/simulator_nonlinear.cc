@@ -55,7 +55,8 @@ namespace FourierSSI
                   ExcMessage("Discretization/Target accuracy: no converged "
                                    "step"));
       const NamedLoad load =
-        conjugate_load(solver->applied_loads(steps.back().load_factor),
+        conjugate_load(solver->applied_loads(steps.back().load_factor,
+                                             steps.back().held_fraction),
                        parameters.rigid_foundation,
                        parameters.nonlinear_interfaces.motion);
       return CoupledGoal{load.name,

@@ -69,22 +69,29 @@ namespace FourierSSI
       Patterns::Anything(),
       "Surface traction amplitudes [kPa] per boundary id: "
       "'id: r=expr, z=expr, theta=expr; ...'. Unlisted boundaries are "
-      "traction free.");
+      "traction free. Nonlinear runs with a Rigid foundation: held, like "
+      "the Body force (applied in full in the held stage, Nonlinear "
+      "interfaces/Held load steps, then constant while the load factor "
+      "scales only the foundation's loads or motion); without one, scaled "
+      "by the load factor.");
     prm.leave_subsection();
 
     prm.enter_subsection("Body force");
     prm.declare_entry("Radial",
                       "0",
                       Patterns::Anything(),
-                      "Amplitude [kN/m^3].");
+                      "Amplitude [kN/m^3]. Nonlinear runs with a Rigid "
+                      "foundation: held (see Boundary conditions/Traction).");
     prm.declare_entry("Axial",
                       "0",
                       Patterns::Anything(),
-                      "Amplitude [kN/m^3].");
+                      "Amplitude [kN/m^3]. Nonlinear runs with a Rigid "
+                      "foundation: held (see Boundary conditions/Traction).");
     prm.declare_entry("Circumferential",
                       "0",
                       Patterns::Anything(),
-                      "Amplitude [kN/m^3].");
+                      "Amplitude [kN/m^3]. Nonlinear runs with a Rigid "
+                      "foundation: held (see Boundary conditions/Traction).");
     prm.leave_subsection();
   }
 

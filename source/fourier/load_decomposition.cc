@@ -20,7 +20,8 @@ namespace FourierSSI
       "load, not an amplitude): 'id: r=expr, z=expr, theta=expr; ...'. The "
       "program decomposes them into harmonics and solves only those whose "
       "amplitude exceeds the tolerance (with Discretization/Harmonics = "
-      "auto).");
+      "auto). Nonlinear runs with a Rigid foundation: held in every "
+      "harmonic (see Boundary conditions/Traction).");
     prm.declare_entry(
       "Prescribed displacement",
       "",

@@ -105,24 +105,26 @@ namespace FourierSSI
     prm.declare_entry("Held vertical force",
                       "0",
                       Patterns::Double(),
-                      "Plastic soil: V [kN] applied first (Nonlinear "
-                      "interfaces/Held load steps) and then held while the "
-                      "loads above are scaled by the load or displacement "
-                      "control: a combined loading path (a fixed V, then H "
-                      "or M).");
+                      "Nonlinear runs: V [kN] applied first (Nonlinear "
+                      "interfaces/Held load steps, with the body force and "
+                      "tractions) and then held while the loads above are "
+                      "scaled by the load or displacement control: a "
+                      "combined loading path (a fixed V, then H or M).");
     prm.declare_entry("Held horizontal force",
                       "0",
                       Patterns::Double(),
-                      "Plastic soil: held H_x [kN] (see Held vertical force).");
+                      "Nonlinear runs: held H_x [kN] (see Held vertical "
+                      "force).");
     prm.declare_entry("Held moment",
                       "0",
                       Patterns::Double(),
-                      "Plastic soil: held M_y [kN.m] about the reference "
+                      "Nonlinear runs: held M_y [kN.m] about the reference "
                       "point (see Held vertical force).");
     prm.declare_entry("Held torque",
                       "0",
                       Patterns::Double(),
-                      "Plastic soil: held T [kN.m] (see Held vertical force).");
+                      "Nonlinear runs: held T [kN.m] (see Held vertical "
+                      "force).");
     prm.declare_entry("Stiffness coefficients",
                       "false",
                       Patterns::Bool(),

@@ -24,19 +24,22 @@ namespace FourierSSI
     prm.declare_entry("Held load steps",
                       "4",
                       Patterns::Integer(1, most_load_steps),
-                      "Plastic soil with Rigid foundation/Held ... loads: "
-                      "equal load-controlled steps from 0 to the held loads, "
-                      "taken before the Load steps (which then start from "
-                      "the held state). At most 10000.");
-    prm.declare_entry("Control",
-                      "load",
-                      Patterns::Selection("load|displacement"),
-                      "load: the Rigid foundation loads (H, M, V, T) times "
-                      "step/steps. displacement: those loads give the "
-                      "direction, their factor is found so that the "
-                      "controlled motion reaches Target (past a peak too); "
-                      "after held loads, in equal steps from the motion they "
-                      "left.");
+                      "Equal load-controlled steps from 0 to the held loads "
+                      "(with a Rigid foundation: its Held ... loads, the "
+                      "Body force and the tractions, e.g. self-weight and "
+                      "surcharges), taken before the Load steps, which then "
+                      "start from the held state and scale only the "
+                      "foundation's loads or motion. At most 10000.");
+    prm.declare_entry(
+      "Control",
+      "load",
+      Patterns::Selection("load|displacement"),
+      "load: the Rigid foundation loads (H, M, V, T) times step/steps "
+      "(body force and tractions are held, see Held load steps; without a "
+      "Rigid foundation they are the loads scaled). displacement: those "
+      "loads give the direction, their factor is found so that the "
+      "controlled motion reaches Target (past a peak too); after held "
+      "loads, in equal steps from the motion they left.");
     prm.declare_entry("Controlled motion",
                       "vertical",
                       Patterns::Selection("vertical|twist|horizontal|rotation"),

@@ -35,11 +35,14 @@
  * Gauss points; each amplitude is non-zero on its owner only, so the sum is
  * exact and every rank samples, return-maps, accelerates and decides on
  * bitwise the same numbers (the decisions cannot diverge).
- * Load control scales the scene's loads by lambda; displacement control
+ * Load control scales the foundation's loads by lambda (load_factor_pattern;
+ * all the scene's loads without a Rigid foundation); displacement control
  * chooses lambda in every iteration so that one rigid-foundation motion
- * equals its target (needed past the peak). A step that does not converge is
- * cut in half (up to a limit); then the solve stops with a one-line error,
- * the converged steps kept.
+ * equals its target (needed past the peak). Held loads (held_stage_load:
+ * body force, tractions, Rigid foundation/Held ...) come first, in a held
+ * stage at lambda = 0, and stay while lambda scales the foundation's loads. A
+ * step that does not converge is cut in half (up to a limit); then the solve
+ * stops with a one-line error, the converged steps kept.
  */
 #ifndef fourier_ssi_coupled_interface_solver_h
 #define fourier_ssi_coupled_interface_solver_h
@@ -69,9 +72,13 @@ namespace FourierSSI
   /** One converged load step. */
   struct LoadStepResult
   {
-    /** Factor on the scene's loads (load control: step / n_steps). */
+    /** Factor on the scaled loads (load_factor_pattern). */
     double load_factor = 0.;
-    /** Fraction of the held loads: none here (a plastic-soil stage). */
+    /**
+     * Fraction of the held loads (held_stage_load: Rigid foundation/Held
+     * ..., body force, tractions) applied: rises to 1 in the held stage,
+     * then stays 1 while the load factor scales the foundation's loads.
+     */
     double held_fraction = 0.;
     /** Rigid motion of the foundation (RigidMotion fields). */
     RigidMotion motion;
@@ -214,6 +221,8 @@ namespace FourierSSI
     struct StepState
     {
       double load_factor = 0.;
+      /** rho: the held loads' part rho F_held of the load. */
+      double held_fraction = 0.;
       /** K^-1 c per harmonic, and c (condensed). */
       std::vector<Vector<double>> correction_solution, correction_load;
       /** K^-1 c valid at the read DoFs only (the iteration's view). */
@@ -226,6 +235,29 @@ namespace FourierSSI
 
     void
     solve_load_pattern();
+
+    /**
+     * K^-1 F_held, its relative displacements and controlled motion
+     * (held_stage_load); left empty if the scene holds no load.
+     */
+    void
+    solve_held_loads();
+
+    /**
+     * One stage of the load path in `steps` equal steps from the committed
+     * state: the held loads brought on by load control (holding), or the
+     * foundation's loads scaled by the load or displacement control.
+     */
+    void
+    run_stage(const bool holding, const unsigned int steps, std::ostream &log);
+
+    /** Displacement control in the stage being solved (not the held one). */
+    bool
+    controls_motion() const;
+
+    /** lambda u_F + rho u_held + K^-1 c of harmonic h (owner's fields). */
+    Vector<double>
+    total_displacement(const StepState &state, const unsigned int h) const;
 
     /** The owner's copy of values of harmonic h on every rank. */
     void
@@ -386,8 +418,17 @@ namespace FourierSSI
     std::vector<Vector<double>>        pattern_solution;
     /** Controlled motion of the pattern solution u_F (load factor 1). */
     double pattern_motion = 0.;
-    /** sqrt(sum_h |F_h|^2) of the scene's (condensed) loads. */
-    double                         pattern_load_norm = 0.;
+    /** sqrt(sum_h |F_h|^2) of the scaled (condensed) loads. */
+    double pattern_load_norm = 0.;
+    /**
+     * Held loads: K^-1 F_held, its relative displacements and controlled
+     * motion, |F_held| and F . F_held (empty, 0: none).
+     */
+    std::vector<Vector<double>> held_solution;
+    std::vector<LocalVector>    held_relative;
+    double held_motion = 0., held_load_norm = 0., pattern_held_dot = 0.;
+    /** True while run_stage() brings the held loads on. */
+    bool                           holding_stage = false;
     std::vector<LocalVector>       pattern_relative;
     StepState                      committed;
     std::vector<LoadStepResult>    steps;

@@ -29,6 +29,39 @@ namespace FourierSSI
 {
   using namespace dealii;
 
+  class HarmonicProblem;
+
+  /**
+   * The loads the load factor lambda scales in a nonlinear run (condensed):
+   * with a Rigid foundation its loads H, M, V, T alone; without one, every
+   * load of the scene (the body force and tractions are then the loading).
+   */
+  Vector<double>
+  load_factor_pattern(const HarmonicProblem &problem);
+
+  /**
+   * The held loads F_held of a nonlinear run (condensed): brought on in full
+   * by the held stage (Nonlinear interfaces/Held load steps), then constant
+   * while lambda scales load_factor_pattern(). With a Rigid foundation they
+   * are its Held ... loads, the Body force and the tractions (Boundary
+   * conditions/Traction, Loads/Traction): self-weight and surcharges are in
+   * place before the foundation is loaded, as in a staged geotechnical
+   * analysis. Without a Rigid foundation there are none.
+   */
+  Vector<double>
+  held_stage_load(const HarmonicProblem &problem);
+
+  /**
+   * |lambda F + rho F_held| from |F|, F . F_held and |F_held| (2-norms over
+   * the harmonics): the applied load scale of a step of either stage.
+   */
+  double
+  combined_load_norm(const double load_factor,
+                     const double held_fraction,
+                     const double pattern_norm,
+                     const double pattern_held_dot,
+                     const double held_norm);
+
   /** sqrt(sum_h |v_h|^2): the norm of a field given per harmonic. */
   double
   norm_over_harmonics(const std::vector<Vector<double>> &vectors);

@@ -325,7 +325,10 @@ namespace FourierSSI
                StepState      &state,
                SoilStepResult &result);
 
-    /** F_held,h: the held foundation loads of harmonic h (zero without). */
+    /**
+     * F_held,h: the held loads of harmonic h (held_stage_load: Rigid
+     * foundation/Held ..., body force and tractions; zero without).
+     */
     Vector<double>
     held_load(const unsigned int h) const;
 
@@ -432,8 +435,9 @@ namespace FourierSSI
     std::vector<SoilCell>         cells;
     std::vector<SoilPoint>        points;
     std::vector<unsigned int>     component;
-    std::vector<Vector<double>>   pattern_solution;
-    double                        pattern_load_norm = 0.;
+    /** F, the loads the load factor scales (load_factor_pattern), K^-1 F. */
+    std::vector<Vector<double>> pattern_load, pattern_solution;
+    double                      pattern_load_norm = 0.;
     /** Held loads: K^-1 F_held, |F_held|, F . F_held; empty: none. */
     std::vector<Vector<double>> held_solution;
     double                      held_load_norm = 0., pattern_held_dot = 0.;
