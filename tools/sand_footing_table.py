@@ -1,0 +1,107 @@
+#!/usr/bin/python3
+"""The comparison table of doc/verification/sand-footings.md: N_q of the
+smooth rigid circular footing on weightless Mohr-Coulomb sand
+(prm/footing-sand.prm) against the method of characteristics
+(doc/derivations/circular_footing_characteristics.py), phi' = 30 and 35 deg,
+with the run's own error bar and its cost.
+
+    /usr/bin/python3 tools/sand_footing_table.py [--exe build/fourier-ssi]
+        [--work sand-footing-runs] [--skip-target]
+
+Runs the shipped scene for phi' = 30 deg, the same with the entries of
+tests/prm/footing_sand_phi35.prm (35 deg), and for 30 deg with
+Discretization/Target accuracy = 5e-2 (tests/accuracy/footing_sand_target_5e-2.prm),
+each in its own folder of --work, and prints the Markdown table (value, bar,
+reference, difference, CPU and wall time). About 1 min of CPU in all, plus
+about 1 min for the references.
+"""
+import argparse
+import csv
+import math
+import os
+import resource
+import subprocess
+import sys
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+sys.path.insert(0, os.path.join(ROOT, "doc", "derivations"))
+import circular_footing_characteristics as characteristics  # noqa: E402
+
+SCENE = os.path.join(ROOT, "prm", "footing-sand.prm")
+CASES = [
+    # (label, phi', files appended to the scene)
+    ("shipped mesh (480 cells)", 30.0, []),
+    ("shipped mesh (480 cells)", 35.0, ["tests/prm/footing_sand_phi35.prm"]),
+    ("Target accuracy = 5e-2", 30.0,
+     ["tests/accuracy/footing_sand_target_5e-2.prm"]),
+]
+
+
+def run(exe, work, name, appended):
+    """Run the scene with `appended` files; (results rows, CPU s, wall s)."""
+    directory = os.path.join(work, name)
+    os.makedirs(directory, exist_ok=True)
+    text = open(SCENE).read()
+    for path in appended:
+        text += "\n" + open(os.path.join(ROOT, path)).read()
+    prm = os.path.join(directory, "scene.prm")
+    with open(prm, "w") as f:
+        f.write(text)
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    start = time.time()
+    with open(os.path.join(directory, "log.txt"), "w") as log:
+        p = subprocess.run([exe, prm], cwd=directory, stdout=log,
+                           stderr=subprocess.STDOUT)
+    wall = time.time() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    if p.returncode != 0:
+        sys.exit("sand_footing_table.py: run %s failed; its log: %s" %
+                 (name, os.path.join(directory, "log.txt")))
+    rows = {}
+    results = os.path.join(directory, "output", "footing-sand", "results.csv")
+    with open(results) as f:
+        for row in csv.DictReader(f):
+            rows[row["quantity"]] = float(row["value"])
+    return rows, cpu, wall
+
+
+def reference(phi):
+    """N_q - 1 of the smooth circular footing (Richardson over 20/40 lines)."""
+    return characteristics.richardson(characteristics.n_q, phi, True, 20)[2] - 1
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--exe", default=os.path.join(ROOT, "build",
+                                                      "fourier-ssi"))
+    parser.add_argument("--work", default="sand-footing-runs")
+    parser.add_argument("--skip-target", action="store_true",
+                        help="leave out the Target accuracy run (5 min wall)")
+    args = parser.parse_args()
+    exe = os.path.abspath(args.exe)
+    references = {phi: reference(phi) for phi in (30.0, 35.0)}
+    print("| phi' | run | N_q - 1 computed | its bar (what it holds) | "
+          "N_q - 1 exact (smooth, associated) | difference | |error| <= bar? "
+          "| CPU | wall |")
+    print("|---|---|---|---|---|---|---|---|---|")
+    for index, (label, phi, appended) in enumerate(CASES):
+        if args.skip_target and "Target" in label:
+            continue
+        rows, cpu, wall = run(exe, args.work, "case-%d" % index, appended)
+        value = rows["capacity_normalised"]
+        bar = rows["capacity_normalised_error"]
+        holds = "mesh + plateau" if "Target" in label else "plateau only"
+        exact = references[phi]
+        error = value - exact
+        print("| %g° | %s | %.3f | ± %.2f (%s) | %.3f | %+.2f %% | %s | "
+              "%.0f s | %.0f s |" % (phi, label, value, bar, holds, exact,
+                                     100 * error / exact,
+                                     "yes" if abs(error) <= bar else "no",
+                                     cpu, wall))
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
