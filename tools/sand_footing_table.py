@@ -83,7 +83,7 @@ def main():
     exe = os.path.abspath(args.exe)
     references = {phi: reference(phi) for phi in (30.0, 35.0)}
     print("| phi' | run | N_q - 1 computed | its bar (what it holds) | "
-          "N_q - 1 exact (smooth, associated) | difference | |error| <= bar? "
+          "N_q - 1 exact (smooth, associated) | difference | error within bar? "
           "| CPU | wall |")
     print("|---|---|---|---|---|---|---|---|---|")
     for index, (label, phi, appended) in enumerate(CASES):

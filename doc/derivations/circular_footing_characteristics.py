@@ -4,8 +4,9 @@ cohesionless Mohr-Coulomb soil by the method of stress characteristics
 (doc/verification/sand-footings.md; the reference of prm/footing-sand.prm).
 
 Compression positive, z downward, r = x the distance from the axis. The
-soil is at yield everywhere in the plastic region (c' = 0, associated flow
-implied by the lower/upper bound equality of the method, Martin 2005):
+soil is at yield everywhere in the plastic region (c' = 0); the limit load
+of such a field is the exact one of the ASSOCIATED material (psi = phi'),
+as Martin (2005) argues for the completed fields of the method:
 
     sigma_x = s (1 + k cos 2 psi), sigma_z = s (1 - k cos 2 psi),
     tau_xz  = s k sin 2 psi,       k = sin(phi),
@@ -28,7 +29,6 @@ psi + mu, the fan's radials). Along a direction theta with l^T (A sin theta
     w . dU = (l . C) dl,   w = A^T l cos theta + B^T l sin theta,
 dl the arc length; the script forms l and w numerically at every step
 (no hand-derived relation to get a sign wrong).
-
 
 Construction (smooth footing, Martin's "solution type 1"): the free surface
 x in [a, L] with sigma_z = q, tau = 0 (psi = 0) is a Cauchy problem; the
