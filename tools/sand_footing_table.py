@@ -1,22 +1,24 @@
 #!/usr/bin/python3
 """The comparison table of doc/verification/sand-footings.md: N_q of the
 smooth rigid circular footing on weightless Mohr-Coulomb sand
-(prm/footing-sand.prm) against the method of characteristics
+(prm/footing-sand.prm) and N_gamma on sand with its weight
+(prm/footing-sand-gamma.prm) against the method of characteristics
 (doc/derivations/circular_footing_characteristics.py), phi' = 30 and 35 deg,
 with the run's own error bar and its cost.
 
     /usr/bin/python3 tools/sand_footing_table.py [--exe build/fourier-ssi]
         [--work sand-footing-runs] [--skip-target]
 
-Runs the shipped scene for phi' = 30 deg, the same with the entries of
-tests/prm/footing_sand_phi35.prm (35 deg), and for 30 deg with
+Runs each scene for phi' = 30 deg, the same with the entries of
+tests/prm/footing_sand{,_gamma}_phi35.prm (35 deg), and N_q for 30 deg with
 Discretization/Target accuracy = 5e-2 (tests/accuracy/footing_sand_target_5e-2.prm),
 each in its own folder of --work, and prints the Markdown table (value, bar,
-reference, difference, CPU and wall time). About 1 min of CPU in all, plus
-about 1 min for the references.
+reference, difference, CPU and wall time). About 1.5 min of CPU in all,
+plus about 2 min for the references.
 """
 import argparse
 import csv
+import functools
 import math
 import os
 import resource
@@ -28,21 +30,24 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "doc", "derivations"))
 import circular_footing_characteristics as characteristics  # noqa: E402
 
-SCENE = os.path.join(ROOT, "prm", "footing-sand.prm")
 CASES = [
-    # (label, phi', files appended to the scene)
-    ("shipped mesh (480 cells)", 30.0, []),
-    ("shipped mesh (480 cells)", 35.0, ["tests/prm/footing_sand_phi35.prm"]),
-    ("Target accuracy = 5e-2", 30.0,
+    # (factor, scene stem, label, phi', files appended to the scene)
+    ("N_q - 1", "footing-sand", "shipped mesh (480 cells)", 30.0, []),
+    ("N_q - 1", "footing-sand", "shipped mesh (480 cells)", 35.0,
+     ["tests/prm/footing_sand_phi35.prm"]),
+    ("N_q - 1", "footing-sand", "Target accuracy = 5e-2", 30.0,
      ["tests/accuracy/footing_sand_target_5e-2.prm"]),
+    ("N_gamma", "footing-sand-gamma", "shipped mesh (480 cells)", 30.0, []),
+    ("N_gamma", "footing-sand-gamma", "shipped mesh (480 cells)", 35.0,
+     ["tests/prm/footing_sand_gamma_phi35.prm"]),
 ]
 
 
-def run(exe, work, name, appended):
-    """Run the scene with `appended` files; (results rows, CPU s, wall s)."""
+def run(exe, work, name, stem, appended):
+    """Run prm/STEM.prm with `appended` files; (results rows, CPU s, wall s)."""
     directory = os.path.join(work, name)
     os.makedirs(directory, exist_ok=True)
-    text = open(SCENE).read()
+    text = open(os.path.join(ROOT, "prm", stem + ".prm")).read()
     for path in appended:
         text += "\n" + open(os.path.join(ROOT, path)).read()
     prm = os.path.join(directory, "scene.prm")
@@ -60,16 +65,22 @@ def run(exe, work, name, appended):
         sys.exit("sand_footing_table.py: run %s failed; its log: %s" %
                  (name, os.path.join(directory, "log.txt")))
     rows = {}
-    results = os.path.join(directory, "output", "footing-sand", "results.csv")
+    results = os.path.join(directory, "output", stem, "results.csv")
     with open(results) as f:
         for row in csv.DictReader(f):
             rows[row["quantity"]] = float(row["value"])
     return rows, cpu, wall
 
 
-def reference(phi):
-    """N_q - 1 of the smooth circular footing (Richardson over 20/40 lines)."""
-    return characteristics.richardson(characteristics.n_q, phi, True, 20)[2] - 1
+@functools.lru_cache(maxsize=None)
+def reference(factor, phi):
+    """N_q - 1 or N_gamma of the smooth circular footing (Richardson over
+    nets of 20 and 40 lines)."""
+    if factor == "N_q - 1":
+        return characteristics.richardson(characteristics.n_q, phi, True,
+                                          20)[2] - 1
+    return characteristics.richardson(characteristics.n_gamma, phi, True,
+                                      20)[2]
 
 
 def main():
@@ -81,25 +92,25 @@ def main():
                         help="leave out the Target accuracy run (5 min wall)")
     args = parser.parse_args()
     exe = os.path.abspath(args.exe)
-    references = {phi: reference(phi) for phi in (30.0, 35.0)}
-    print("| phi' | run | N_q - 1 computed | its bar (what it holds) | "
-          "N_q - 1 exact (smooth, associated) | difference | error within bar? "
+    print("| factor | phi' | run | computed | its bar (what it holds) | "
+          "exact (smooth, associated) | difference | error within bar? "
           "| CPU | wall |")
-    print("|---|---|---|---|---|---|---|---|---|")
-    for index, (label, phi, appended) in enumerate(CASES):
+    print("|---|---|---|---|---|---|---|---|---|---|")
+    for index, (factor, stem, label, phi, appended) in enumerate(CASES):
         if args.skip_target and "Target" in label:
             continue
-        rows, cpu, wall = run(exe, args.work, "case-%d" % index, appended)
+        rows, cpu, wall = run(exe, args.work, "case-%d" % index, stem,
+                              appended)
         value = rows["capacity_normalised"]
         bar = rows["capacity_normalised_error"]
         holds = "mesh + plateau" if "Target" in label else "plateau only"
-        exact = references[phi]
+        exact = reference(factor, phi)
         error = value - exact
-        print("| %g° | %s | %.3f | ± %.2f (%s) | %.3f | %+.2f %% | %s | "
-              "%.0f s | %.0f s |" % (phi, label, value, bar, holds, exact,
-                                     100 * error / exact,
+        print("| %s | %g° | %s | %.3f | ± %.2f (%s) | %.3f | %+.2f %% | %s | "
+              "%.0f s | %.0f s |" % (factor, phi, label, value, bar, holds,
+                                     exact, 100 * error / exact,
                                      "yes" if abs(error) <= bar else "no",
-                                     cpu, wall))
+                                     cpu, wall), flush=True)
     return 0
 
 
