@@ -10,10 +10,10 @@ with the run's own error bar and its cost.
         [--work sand-footing-runs] [--skip-target]
 
 Runs each scene for phi' = 30 deg, the same with the entries of
-tests/prm/footing_sand{,_gamma}_phi35.prm (35 deg), and N_q for 30 deg with
-Discretization/Target accuracy = 5e-2 (tests/accuracy/footing_sand_target_5e-2.prm),
+tests/prm/footing_sand{,_gamma}_phi35.prm (35 deg), and for 30 deg with a
+Discretization/Target accuracy (tests/accuracy/footing_sand{,_gamma}_target_*.prm),
 each in its own folder of --work, and prints the Markdown table (value, bar,
-reference, difference, CPU and wall time). About 1.5 min of CPU in all,
+reference, difference, CPU and wall time). About 2.5 min of CPU in all,
 plus about 2 min for the references.
 """
 import argparse
@@ -40,6 +40,8 @@ CASES = [
     ("N_gamma", "footing-sand-gamma", "shipped mesh (480 cells)", 30.0, []),
     ("N_gamma", "footing-sand-gamma", "shipped mesh (480 cells)", 35.0,
      ["tests/prm/footing_sand_gamma_phi35.prm"]),
+    ("N_gamma", "footing-sand-gamma", "Target accuracy = 15e-2", 30.0,
+     ["tests/accuracy/footing_sand_gamma_target_15e-2.prm"]),
 ]
 
 
@@ -89,7 +91,7 @@ def main():
                                                       "fourier-ssi"))
     parser.add_argument("--work", default="sand-footing-runs")
     parser.add_argument("--skip-target", action="store_true",
-                        help="leave out the Target accuracy run (5 min wall)")
+                        help="leave out the Target accuracy runs")
     args = parser.parse_args()
     exe = os.path.abspath(args.exe)
     print("| factor | phi' | run | computed | its bar (what it holds) | "
