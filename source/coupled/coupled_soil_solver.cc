@@ -748,28 +748,23 @@ namespace FourierSSI
   {
     const SoilPoint &point = points[p];
     const double     G = point.shear_modulus, lambda = point.lambda;
-    const auto       stress = [&](const StrainVector &eps) {
-      return return_from_committed(point, k, elastic_stress(point, eps));
-    };
-    const SoilReturn at = stress(strain);
+    // Trial: sigma_0 + D (eps - eps_p,committed), as return_from_committed.
+    StrainVector trial = elastic_stress(point, strain);
+    for (unsigned int c = 0; c < 6; ++c)
+      trial[c] -= committed.plastic[k][c];
+    StressTangent    d_ep;
+    const SoilReturn at = laws[point.law].return_map_with_tangent(
+      trial, G, lambda + 2. * G / 3., point.depth, d_ep);
     if (at.state == SoilState::elastic)
       return false;
-    // A step small next to the strain but far above round-off: the
-    // forward difference is then exact on each plane of the surface (the
-    // return is linear there); at an edge it takes one side's tangent.
-    double size = 0.;
-    for (const double e : strain)
-      size = std::max(size, std::abs(e));
-    const double step = 1e-6 * std::max(size, 1e-12);
+    // D_e - D_ep, D_ep in closed form (SoilLaw::return_map_with_tangent).
     for (unsigned int l = 0; l < 6; ++l)
       {
-        StrainVector plus = strain, unit{};
-        plus[l] += step;
+        StrainVector unit{};
         unit[l]                    = 1.;
-        const StrainVector s_plus  = stress(plus).stress,
-                           elastic = hooke_stress(unit, lambda, G);
+        const StrainVector elastic = hooke_stress(unit, lambda, G);
         for (unsigned int a = 0; a < 6; ++a)
-          softening[a * 6 + l] = elastic[a] - (s_plus[a] - at.stress[a]) / step;
+          softening[a * 6 + l] = elastic[a] - d_ep[a * 6 + l];
       }
     return true;
   }

@@ -61,22 +61,29 @@ namespace FourierSSI
                volumetric + 2. * G * m[2]}};
     }
 
+    /** d returned_i / d trial_j in principal space (row-major 3 x 3). */
+    using PrincipalJacobian = std::array<Principal, 3>;
+
     /**
      * Return onto the planes given (one or two): s = s_tr - sum_a dgamma_a
      * D m_a with f_b(s) = 0 for every plane b, a linear system
      * sum_a (n_b . D m_a) dgamma_a = f_b(s_tr). Returns false if a
      * multiplier is negative (the trial is not in this return's region).
+     * The system is linear in s_tr, so its derivative is
+     * d s / d s_tr = I - sum_ab D m_a (A^-1)_ab n_b^T
+     * (de Souza Neto et al. 2008, eq. 8.60 and box 8.4 in principal form).
      */
     bool
     return_to_planes(const Principal          &trial,
                      const std::vector<Plane> &planes,
                      const double              G,
                      const double              K,
-                     Principal                &result)
+                     Principal                &result,
+                     PrincipalJacobian        &jacobian)
     {
       const unsigned int     n_planes = planes.size();
       std::vector<Principal> Dm(n_planes);
-      double                 A[2][2], f[2], dgamma[2];
+      double                 A[2][2], f[2], dgamma[2], inverse[2][2];
       for (unsigned int a = 0; a < n_planes; ++a)
         Dm[a] = elastic_times(planes[a].m, G, K);
       for (unsigned int b = 0; b < n_planes; ++b)
@@ -86,6 +93,18 @@ namespace FourierSSI
             A[b][a] = dot(planes[b].n, Dm[a]);
         }
       if (n_planes == 1)
+        inverse[0][0] = 1. / A[0][0];
+      else
+        {
+          const double det = A[0][0] * A[1][1] - A[0][1] * A[1][0];
+          inverse[0][0]    = A[1][1] / det;
+          inverse[0][1]    = -A[0][1] / det;
+          inverse[1][0]    = -A[1][0] / det;
+          inverse[1][1]    = A[0][0] / det;
+        }
+      // The multipliers as divisions by det (not by the inverse): the
+      // returned stresses to the bit of the return without its tangent.
+      if (n_planes == 1)
         dgamma[0] = f[0] / A[0][0];
       else
         {
@@ -94,12 +113,20 @@ namespace FourierSSI
           dgamma[1]        = (A[0][0] * f[1] - A[1][0] * f[0]) / det;
         }
       result = trial;
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = 0; j < 3; ++j)
+          jacobian[i][j] = i == j ? 1. : 0.;
       for (unsigned int a = 0; a < n_planes; ++a)
         {
           if (dgamma[a] < 0.)
             return false;
           for (unsigned int i = 0; i < 3; ++i)
-            result[i] -= dgamma[a] * Dm[a][i];
+            {
+              result[i] -= dgamma[a] * Dm[a][i];
+              for (unsigned int b = 0; b < n_planes; ++b)
+                for (unsigned int j = 0; j < 3; ++j)
+                  jacobian[i][j] -= Dm[a][i] * inverse[a][b] * planes[b].n[j];
+            }
         }
       return true;
     }
@@ -114,6 +141,180 @@ namespace FourierSSI
       const double slack =
         1e-12 * (std::abs(trial[0]) + std::abs(trial[1]) + std::abs(trial[2]));
       return s[0] + slack >= s[1] && s[1] + slack >= s[2];
+    }
+
+    /**
+     * The return of a yielding trial in its principal frame: the trial's
+     * principal stresses s1 >= s2 >= s3 and directions, the returned
+     * principal stresses and their derivative by the trial's.
+     */
+    struct PrincipalReturn
+    {
+      Principal                   trial, stress;
+      std::array<Tensor<1, 3>, 3> directions;
+      PrincipalJacobian           jacobian;
+      SoilState                   state = SoilState::plane;
+    };
+
+    /**
+     * Plane, edge or apex (doc/soil-plasticity.md section 2): the main
+     * plane first; an edge if that return left the order s1 >= s2 >= s3;
+     * the apex (Mohr-Coulomb) if the edge return is not admissible either.
+     * Tresca is Mohr-Coulomb with phi = psi = 0 and 2 c cos phi = 2 s_u.
+     */
+    PrincipalReturn
+    principal_return(const StrainVector &trial,
+                     const double        sin_friction,
+                     const double        sin_dilation,
+                     const double        strength,
+                     const double        apex,
+                     const bool          has_apex,
+                     const double        G,
+                     const double        K)
+    {
+      const auto      eigen = eigenvectors(to_tensor(trial),
+                                      SymmetricTensorEigenvectorMethod::jacobi);
+      PrincipalReturn r;
+      for (unsigned int i = 0; i < 3; ++i)
+        {
+          r.trial[i]      = eigen[i].first;
+          r.directions[i] = eigen[i].second;
+        }
+      const double sf = sin_friction, sp = sin_dilation, k = strength;
+      const Plane  main{{{1. + sf, 0., -(1. - sf)}},
+                       {{1. + sp, 0., -(1. - sp)}},
+                       k};
+      // s1 = s2 (right edge): the plane of (s2, s3); s2 = s3 (left edge):
+      // the plane of (s1, s2).
+      const Plane right{{{0., 1. + sf, -(1. - sf)}},
+                        {{0., 1. + sp, -(1. - sp)}},
+                        k};
+      const Plane left{{{1. + sf, -(1. - sf), 0.}},
+                       {{1. + sp, -(1. - sp), 0.}},
+                       k};
+      if (return_to_planes(r.trial, {main}, G, K, r.stress, r.jacobian) &&
+          ordered(r.stress, r.trial))
+        return r;
+      // The main-plane return crossed an edge: s2 overtook s1 (right
+      // edge, s1 = s2) or fell below s3 (left edge, s2 = s3); on Tresca's
+      // right edge dgamma_2 > 0 iff s2' > s1' [soil_return_mapping.py 3].
+      const bool   to_right = r.stress[1] > r.stress[0];
+      const Plane &second   = to_right ? right : left;
+      r.state               = SoilState::edge;
+      if (return_to_planes(
+            r.trial, {main, second}, G, K, r.stress, r.jacobian) &&
+          ordered(r.stress, r.trial))
+        return r;
+      // Only Mohr-Coulomb has an apex: the hydrostatic stress c cot phi
+      // where all planes meet, the same for every trial near it (a zero
+      // derivative: perfect plasticity).
+      AssertThrow(has_apex,
+                  ExcMessage("Tresca return mapping: no admissible "
+                             "edge return (internal error)"));
+      r.state  = SoilState::apex;
+      r.stress = {{apex, apex, apex}};
+      for (Principal &row : r.jacobian)
+        row = {{0., 0., 0.}};
+      return r;
+    }
+
+    /** sum_i stress_i e_i e_i^T in (r, z, theta) as a stress vector. */
+    StrainVector
+    from_principal(const PrincipalReturn &r)
+    {
+      SymmetricTensor<2, 3> stress;
+      for (unsigned int i = 0; i < 3; ++i)
+        stress += r.stress[i] *
+                  symmetrize(outer_product(r.directions[i], r.directions[i]));
+      return to_vector(stress);
+    }
+
+    /**
+     * The spin factor of the principal pair (i, j): d sigma'_ij / d
+     * sigma_tr'_ij = (sigma_i - sigma_j) / (s_i - s_j) in the principal
+     * frame (the derivative of the eigenprojections, de Souza Neto et al.
+     * 2008, appendix A.5); for coinciding trial values its limit, the
+     * derivative of sigma_i - sigma_j along s_i - s_j.
+     */
+    double
+    spin_factor(const PrincipalReturn &r,
+                const unsigned int     i,
+                const unsigned int     j)
+    {
+      const double scale =
+        std::abs(r.trial[0]) + std::abs(r.trial[1]) + std::abs(r.trial[2]);
+      const double gap = r.trial[i] - r.trial[j];
+      if (std::abs(gap) > 1e-10 * scale)
+        return (r.stress[i] - r.stress[j]) / gap;
+      const PrincipalJacobian &J = r.jacobian;
+      return 0.5 * (J[i][i] - J[i][j] - J[j][i] + J[j][j]);
+    }
+
+    /**
+     * D_ep = d sigma / d eps column by column: a unit strain turned into the
+     * principal frame, D_e on it (the trial's change), the principal
+     * Jacobian on the normal part and the spin factors on the shears, and
+     * turned back (doc/derivations/soil_consistent_tangent.md).
+     */
+    void
+    tangent_of(const PrincipalReturn &r,
+               const double           G,
+               const double           K,
+               StressTangent         &tangent)
+    {
+      const double lambda = K - 2. * G / 3.;
+      double       spin[3][3];
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = 0; j < 3; ++j)
+          spin[i][j] = i == j ? 0. : spin_factor(r, i, j);
+      for (unsigned int l = 0; l < 6; ++l)
+        {
+          StrainVector unit = {{0., 0., 0., 0., 0., 0.}};
+          // Engineering shears: the tensor component is half of it.
+          unit[l]                            = l < 3 ? 1. : 0.5;
+          const SymmetricTensor<2, 3> strain = to_tensor(unit);
+          // The trial's change in the principal frame, D_e eps'.
+          double trial_change[3][3];
+          for (unsigned int i = 0; i < 3; ++i)
+            for (unsigned int j = 0; j < 3; ++j)
+              trial_change[i][j] =
+                2. * G * (r.directions[i] * (strain * r.directions[j]));
+          const double volumetric = lambda * trace(strain);
+          for (unsigned int i = 0; i < 3; ++i)
+            trial_change[i][i] += volumetric;
+          SymmetricTensor<2, 3> change;
+          for (unsigned int i = 0; i < 3; ++i)
+            for (unsigned int j = 0; j < 3; ++j)
+              {
+                double value = 0.;
+                if (i == j)
+                  for (unsigned int m = 0; m < 3; ++m)
+                    value += r.jacobian[i][m] * trial_change[m][m];
+                else
+                  value = spin[i][j] * trial_change[i][j];
+                // (e_i e_j^T + e_j e_i^T)/2 summed over both (i, j), (j, i).
+                change += value * symmetrize(outer_product(r.directions[i],
+                                                           r.directions[j]));
+              }
+          const StrainVector column = to_vector(change);
+          for (unsigned int a = 0; a < 6; ++a)
+            tangent[a * 6 + l] = column[a];
+        }
+    }
+
+    /** D_e in the order of StrainVector (engineering shears). */
+    void
+    elastic_tangent(const double G, const double K, StressTangent &tangent)
+    {
+      const double lambda = K - 2. * G / 3.;
+      tangent.fill(0.);
+      for (unsigned int a = 0; a < 3; ++a)
+        {
+          for (unsigned int b = 0; b < 3; ++b)
+            tangent[a * 6 + b] = lambda;
+          tangent[a * 6 + a] += 2. * G;
+          tangent[(a + 3) * 6 + a + 3] = G;
+        }
     }
   } // namespace
 
@@ -137,66 +338,38 @@ namespace FourierSSI
                       const double        K,
                       const double        depth) const
   {
+    StressTangent unused;
+    return return_map_with_tangent(trial, G, K, depth, unused);
+  }
+
+  SoilReturn
+  SoilLaw::return_map_with_tangent(const StrainVector &trial,
+                                   const double        G,
+                                   const double        K,
+                                   const double        depth,
+                                   StressTangent      &tangent) const
+  {
     SoilReturn result;
     result.stress = trial;
     if (yield_function(trial, depth) <= 0.)
-      return result;
-
-    // Principal stresses s1 >= s2 >= s3 and directions of the trial.
-    const auto eigen =
-      eigenvectors(to_tensor(trial), SymmetricTensorEigenvectorMethod::jacobi);
-    Principal s = {{eigen[0].first, eigen[1].first, eigen[2].first}};
-
-    // Tresca is Mohr-Coulomb with phi = psi = 0, c = s_u.
-    const bool   tresca = kind == Kind::tresca;
-    const double sf     = tresca ? 0. : std::sin(friction),
-                 sp     = tresca ? 0. : std::sin(dilation);
-    const double k      = tresca ? 2. * undrained_strength(depth) :
-                                   2. * cohesion * std::cos(friction);
-    const Plane  main{{{1. + sf, 0., -(1. - sf)}},
-                     {{1. + sp, 0., -(1. - sp)}},
-                     k};
-    // s1 = s2 (right edge): the plane of (s2, s3); s2 = s3 (left edge): the
-    // plane of (s1, s2).
-    const Plane right{{{0., 1. + sf, -(1. - sf)}},
-                      {{0., 1. + sp, -(1. - sp)}},
-                      k};
-    const Plane left{{{1. + sf, -(1. - sf), 0.}},
-                     {{1. + sp, -(1. - sp), 0.}},
-                     k};
-
-    Principal returned;
-    if (return_to_planes(s, {main}, G, K, returned) && ordered(returned, s))
-      result.state = SoilState::plane;
-    else
       {
-        // The main-plane return crossed an edge: s2 overtook s1 (right
-        // edge, s1 = s2) or fell below s3 (left edge, s2 = s3); on Tresca's
-        // right edge dgamma_2 > 0 iff s2' > s1' [soil_return_mapping.py 3].
-        const bool   to_right = returned[1] > returned[0];
-        const Plane &second   = to_right ? right : left;
-        if (return_to_planes(s, {main, second}, G, K, returned) &&
-            ordered(returned, s))
-          result.state = SoilState::edge;
-        else
-          {
-            // Only Mohr-Coulomb has an apex: the hydrostatic stress
-            // c cot phi where all planes meet.
-            AssertThrow(!tresca,
-                        ExcMessage("Tresca return mapping: no admissible "
-                                   "edge return (internal error)"));
-            const double apex = cohesion / std::tan(friction);
-            returned          = {{apex, apex, apex}};
-            result.state      = SoilState::apex;
-          }
+        elastic_tangent(G, K, tangent);
+        return result;
       }
-
-    // Back to (r, z, theta) with the trial's principal directions.
-    SymmetricTensor<2, 3> stress;
-    for (unsigned int i = 0; i < 3; ++i)
-      stress += returned[i] *
-                symmetrize(outer_product(eigen[i].second, eigen[i].second));
-    result.stress = to_vector(stress);
+    const bool            tresca = kind == Kind::tresca;
+    const PrincipalReturn r =
+      principal_return(trial,
+                       tresca ? 0. : std::sin(friction),
+                       tresca ? 0. : std::sin(dilation),
+                       tresca ? 2. * undrained_strength(depth) :
+                                2. * cohesion * std::cos(friction),
+                       tresca ? 0. : cohesion / std::tan(friction),
+                       !tresca,
+                       G,
+                       K);
+    result.state  = r.state;
+    result.stress = from_principal(r);
+    tangent_of(r, G, K, tangent);
     return result;
   }
 

@@ -225,6 +225,31 @@ main(int argc, char **argv)
                               high);
               continue;
             }
+          if (kind == "within")
+            {
+              // within QUANTITY N FAMILY CYCLE REFERENCE MODEL_TOL: the value
+              // lies within its own error bar (the row QUANTITY_error, in the
+              // value's unit) plus MODEL_TOL |REFERENCE| of the reference
+              std::string  quantity, family, cycle;
+              unsigned int n         = 0;
+              double       reference = 0., model_tolerance = 0.;
+              if (!(words >> quantity >> n >> family >> cycle >> reference >>
+                    model_tolerance))
+                throw std::runtime_error("malformed check '" + line + "'");
+              const double value = lookup(series, quantity, n, family, cycle);
+              const double bar =
+                lookup(series, quantity + "_error", n, family, cycle);
+              const double allowed =
+                std::abs(bar) + model_tolerance * std::abs(reference);
+              check::in_range(quantity + " n=" + std::to_string(n) + " " +
+                                family + " cycle " + cycle + " (bar " +
+                                std::to_string(bar) + " + model " +
+                                std::to_string(model_tolerance) + ")",
+                              value,
+                              reference - allowed,
+                              reference + allowed);
+              continue;
+            }
           std::string  quantity, family, cycle;
           unsigned int n = 0;
           double       a = 0., b = 0.;

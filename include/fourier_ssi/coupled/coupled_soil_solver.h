@@ -356,9 +356,9 @@ namespace FourierSSI
                           const StrainVector &elastic) const;
 
     /**
-     * D_e - D_ep at sample k of point p (row-major 6 x 6, forward
-     * differences of the return mapping from the committed state); false
-     * where the return is elastic (no softening).
+     * D_e - D_ep at sample k of point p (row-major 6 x 6, D_ep the
+     * closed-form algorithmic tangent of the return mapping from the
+     * committed state); false where the return is elastic (no softening).
      */
     bool
     softening_at(const unsigned int      p,

@@ -19,6 +19,7 @@
 #ifndef fourier_ssi_soil_law_h
 #define fourier_ssi_soil_law_h
 
+#include <array>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
 #include <fourier_ssi/fourier/harmonic_operator.h>
@@ -44,6 +45,13 @@ namespace FourierSSI
     StrainVector stress = {{0., 0., 0., 0., 0., 0.}};
     SoilState    state  = SoilState::elastic;
   };
+
+  /**
+   * A 6 x 6 matrix in the order of StrainVector, row-major: entry (a, b) is
+   * d stress_a / d strain_b with engineering shear strains (as
+   * hooke_stress).
+   */
+  using StressTangent = std::array<double, 36>;
 
   struct SoilLaw
   {
@@ -79,6 +87,23 @@ namespace FourierSSI
                const double        shear_modulus,
                const double        bulk_modulus,
                const double        depth) const;
+
+    /**
+     * The algorithmic (consistent) tangent D_ep = d sigma / d eps of the
+     * return mapping at the trial stress sigma_tr(eps) = sigma_fixed +
+     * D_e eps (doc/soil-plasticity.md section 2b; derivation in
+     * doc/derivations/soil_consistent_tangent.md): the derivative of the
+     * returned principal stresses times D_e on the principal axes, and
+     * (sigma_i - sigma_j) / (s_i - s_j) G on the shears of the principal
+     * frame (the rotation of the principal directions). D_e where the
+     * trial is admissible, zero at the apex. Also returns the return.
+     */
+    SoilReturn
+    return_map_with_tangent(const StrainVector &trial,
+                            const double        shear_modulus,
+                            const double        bulk_modulus,
+                            const double        depth,
+                            StressTangent      &tangent) const;
   };
 
   /**
