@@ -9,6 +9,7 @@
 #include <fourier_ssi/postprocess/soil_reaction_curves.h>
 #include <iomanip>
 #include <limits>
+#include <sstream>
 
 namespace FourierSSI
 {
@@ -250,10 +251,12 @@ namespace FourierSSI
       }
     for (const double d : output.soil_reaction_depths)
       {
+        std::ostringstream message;
+        message << entry << ": depth " << d
+                << " m lies outside the pile's shaft (0 to " << length
+                << " m below its head)";
         AssertThrow(d >= 0. && d <= length * (1. + 1e-12),
-                    ExcMessage(entry + ": depth " + std::to_string(d) +
-                               " m lies outside the pile's shaft (0 to " +
-                               std::to_string(length) + " m below its head)"));
+                    ExcMessage(message.str()));
         curve_depths.push_back(d);
       }
   }
