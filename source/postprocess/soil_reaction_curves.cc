@@ -1,9 +1,9 @@
+#include <algorithm>
 #include <cmath>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q1.h>
-#include <deal.II/grid/grid_generator.h>
 #include <deal.II/numerics/vector_tools.h>
 #include <fourier_ssi/input/atomic_file.h>
 #include <fourier_ssi/postprocess/soil_reaction_curves.h>
