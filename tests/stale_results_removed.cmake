@@ -5,7 +5,8 @@
 # stay. Checked for every writer: a linear scene (per-harmonic VTU, linear
 # interface tractions, Lines 3D, revolved 3D VTU), a coulomb interface
 # (load-displacement, interface state CSV and 3D VTU, per-harmonic VTU of the
-# last step), plastic soil, a renamed Results file, a leftover temporary file
+# last step), plastic soil, plastic soil with soil-reaction curves, a renamed
+# Results file, a leftover temporary file
 # of an interrupted run, and a --batch case.
 # Each good run must first write the files listed for it (so that a writer
 # that stops writing cannot pass for one whose files were removed).
@@ -174,6 +175,41 @@ end")
 check_removed(plastic.prm
   "results.csv;load-displacement.csv;solution-n0-symmetric-cycle0.vtu"
   "plastic_su_negative.prm")
+
+# 4b. Plastic soil with soil-reaction curves: prm/pile-free-head.prm on a
+#     coarse mesh, n <= 1, two steps; refused: a depth below the pile's toe
+#     (found once the mesh is known) and an entry that is not a list.
+file(READ ${SOURCE_DIR}/prm/pile-free-head.prm pile)
+set(pile_output "subsection Discretization
+  set Harmonics = 0, 1
+end
+subsection Mesh
+  set R cells = 1, 6
+  set R growth = 1, 1.5
+  set Z cells = 1, 4
+end
+subsection Nonlinear interfaces
+  set Theta samples = 8
+  set Load steps = 2
+  set Target = 0.02
+end
+subsection Output
+  set Directory = out
+  set Write vtu = false
+  set Soil reaction depths = 2, 8
+end")
+write_prm(pile_curves "${pile}" "${pile_output}")
+write_prm(pile_curves_too_deep "${pile}" "${pile_output}
+subsection Output
+  set Soil reaction depths = 2, 12
+end")
+write_prm(pile_curves_not_a_list "${pile}" "${pile_output}
+subsection Output
+  set Soil reaction depths = 2 m
+end")
+check_removed(pile_curves.prm
+  "results.csv;load-displacement.csv;soil-reaction-curves.csv"
+  "pile_curves_too_deep.prm;pile_curves_not_a_list.prm")
 
 # 5. A --batch case: a refused case removes its folder's earlier results as
 #    a single run does.

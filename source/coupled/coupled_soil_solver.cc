@@ -198,6 +198,7 @@ namespace FourierSSI
             fe_values.reinit(iterators[0]);
             SoilCell cell;
             cell.first_point = points.size();
+            cell.centre      = iterators[0]->center();
             for (unsigned int h = 0; h < set.size(); ++h)
               {
                 std::vector<types::global_dof_index> indices(n_dofs);
@@ -566,31 +567,98 @@ namespace FourierSSI
             }
           if (!active)
             continue; // only the points that yield cost work
-          apply_bbar(cell.projection.get(), field);
-          const unsigned int n_dofs = component.size();
-          Vector<double>     local(n_dofs);
-          for (unsigned int q = 0; q < n_q; ++q)
-            {
-              const double dV = points[cell.first_point + q].dV;
-              for (unsigned int i = 0; i < n_dofs; ++i)
-                {
-                  const StrainVector b =
-                    operators[h].strain_of_component(component[i],
-                                                     cell.shape_value[q][i],
-                                                     cell.shape_grad[q][i],
-                                                     cell.radius[q]);
-                  double sum = 0.;
-                  for (unsigned int k = 0; k < 6; ++k)
-                    sum += b[k] * field[q][k];
-                  local(i) += sum * dV;
-                }
-            }
           set.problem(h)
             .get_homogeneous_constraints()
-            .distribute_local_to_global(local, cell.dof_indices[h], load[h]);
+            .distribute_local_to_global(cell_load(cell, h, field),
+                                        cell.dof_indices[h],
+                                        load[h]);
         }
     });
     return load;
+  }
+
+  Vector<double>
+  CoupledSoilSolver::cell_load(const SoilCell            &cell,
+                               const unsigned int         h,
+                               std::vector<StrainVector> &field) const
+  {
+    apply_bbar(cell.projection.get(), field);
+    const unsigned int n_dofs = component.size();
+    Vector<double>     local(n_dofs);
+    for (unsigned int q = 0; q < cell.radius.size(); ++q)
+      {
+        const double dV = points[cell.first_point + q].dV;
+        for (unsigned int i = 0; i < n_dofs; ++i)
+          {
+            const StrainVector b =
+              operators[h].strain_of_component(component[i],
+                                               cell.shape_value[q][i],
+                                               cell.shape_grad[q][i],
+                                               cell.radius[q]);
+            double sum = 0.;
+            for (unsigned int k = 0; k < 6; ++k)
+              sum += b[k] * field[q][k];
+            local(i) += sum * dV;
+          }
+      }
+    return local;
+  }
+
+  std::vector<Vector<double>>
+  CoupledSoilSolver::soil_nodal_force(
+    const std::function<bool(const Point<2> &)> &selected) const
+  {
+    AssertThrow(point_stride == 1,
+                ExcMessage("Output/Soil reaction depths: not yet under "
+                           "mpirun (the soil's stress lies on several ranks)"));
+    const unsigned int N = sampling.n_samples(), H = set.size();
+    const auto         strain = strain_samples(committed.correction_solution,
+                                       committed.load_factor,
+                                       committed.held_fraction);
+    std::vector<Vector<double>> force(H);
+    for (unsigned int h = 0; h < H; ++h)
+      force[h].reinit(set.problem(h).get_dof_handler().n_dofs());
+    std::vector<double>                    s(N), coefficient;
+    std::vector<std::vector<StrainVector>> field(H);
+    for (const SoilCell &cell : cells)
+      {
+        if (!selected(cell.centre))
+          continue;
+        const unsigned int n_q = cell.radius.size();
+        for (auto &f : field)
+          f.assign(n_q, StrainVector());
+        // The stress less the geostatic sigma_0 (balanced by self-weight):
+        // D eps - s_p, theta-integrated against each harmonic's factor.
+        for (unsigned int q = 0; q < n_q; ++q)
+          {
+            const unsigned int        p     = cell.first_point + q;
+            const SoilPoint          &point = points[p];
+            std::vector<StrainVector> stress(N);
+            for (unsigned int j = 0; j < N; ++j)
+              {
+                stress[j] = hooke_stress(strain[p * N + j],
+                                         point.lambda,
+                                         point.shear_modulus);
+                for (unsigned int k = 0; k < 6; ++k)
+                  stress[j][k] -= committed.plastic[p * N + j][k];
+              }
+            for (unsigned int k = 0; k < 6; ++k)
+              {
+                for (unsigned int j = 0; j < N; ++j)
+                  s[j] = stress[j][k];
+                sampling.integrate(s, factor_of(k), coefficient);
+                for (unsigned int h = 0; h < H; ++h)
+                  field[h][q][k] = coefficient[h];
+              }
+          }
+        for (unsigned int h = 0; h < H; ++h)
+          {
+            const Vector<double> local = cell_load(cell, h, field[h]);
+            for (unsigned int i = 0; i < local.size(); ++i)
+              force[h](cell.dof_indices[h][i]) += local(i);
+          }
+      }
+    return force;
   }
 
   std::vector<Vector<double>>
@@ -1279,6 +1347,8 @@ namespace FourierSSI
                         std::chrono::steady_clock::now() - clock)
                         .count();
         steps.push_back(result);
+        if (step_observer)
+          step_observer(result);
         log << "  step " << steps.size()
             << (holding ? " (held loads): " : ": ");
         write_foundation_state(log, result);

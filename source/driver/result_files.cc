@@ -96,6 +96,8 @@ namespace FourierSSI
       "load-displacement-incomplete.csv",
       "interface-state.csv",
       "interface-state-3d.vtu",
+      // Output/Soil reaction depths: the PISA curves of a plastic run.
+      "soil-reaction-curves.csv",
       // Rigid foundation/Stiffness matrix: the 6x6 matrix, as CSV and as
       // OpenFAST SubDyn's SSI file.
       "foundation-stiffness.csv",

@@ -1,6 +1,7 @@
 // The driver's path for scenes with plastic soil: the harmonics are coupled
 // through theta at the soil's quadrature points, so they are solved together
 // by CoupledSoilSolver on one HarmonicSet (doc/soil-plasticity.md).
+#include <chrono>
 #include <cmath>
 #include <deal.II/base/timer.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
@@ -50,6 +51,12 @@ namespace FourierSSI
                     !parameters.output.write_3d_vtu,
                   ExcMessage(entry + ": not yet: Output/Lines 3D and Write "
                                      "3d vtu with plastic soil"));
+      AssertThrow(!parameters.output.soil_reaction_curves() ||
+                    parameters.discretization.target_accuracy == 0.,
+                  ExcMessage("Output/Soil reaction depths: not yet with "
+                             "Discretization/Target accuracy (the curves of "
+                             "one mesh); set Refinement cycles = 1 and no "
+                             "target"));
       AssertThrow(!parameters.rigid_foundation.stiffness_coefficients,
                   ExcMessage(entry + ": Rigid foundation/Stiffness "
                                      "coefficients and Stiffness matrix "
@@ -205,9 +212,49 @@ namespace FourierSSI
         return;
       }
     const std::unique_ptr<CoupledSoilSolver> solver =
-      solve_coupled_curve<CoupledSoilSolver>(log, true);
+      solve_coupled_curve<CoupledSoilSolver>(
+        log, true, [&](CoupledSoilSolver &s) { record_soil_reactions(s); });
     add_plastic_rows(*solver, log);
     write_plastic_files(*solver, log);
+  }
+
+  void
+  Simulator::record_soil_reactions(CoupledSoilSolver &solver)
+  {
+    reaction_curves.reset();
+    if (!parameters.output.soil_reaction_curves())
+      return;
+    // The reactions are those of n = 1, symmetric (H along x, M about y).
+    unsigned int h = 0;
+    while (h < harmonic_set->size() &&
+           !(harmonic_set->harmonic(h).n == 1 &&
+             harmonic_set->harmonic(h).family == Family::symmetric))
+      ++h;
+    AssertThrow(h < harmonic_set->size(),
+                ExcMessage("Output/Soil reaction depths: Discretization/"
+                           "Harmonics has no n = 1 (symmetric): no lateral "
+                           "reaction"));
+    reaction_curves = std::make_unique<SoilReactionCurves>(
+      harmonic_set->problem(h).get_dof_handler(), parameters);
+    SoilReactionCurves &curves = *reaction_curves;
+    solver.set_step_observer([&solver, &curves, h, this](
+                               const SoilStepResult &step) {
+      const auto start = std::chrono::steady_clock::now();
+      const auto shaft = solver.soil_nodal_force(
+        [&](const Point<2> &c) { return curves.beside_shaft(c); });
+      const auto base = solver.soil_nodal_force(
+        [&](const Point<2> &c) { return curves.below_base(c); });
+      const auto loads =
+        solver.applied_loads(step.load_factor, step.held_fraction);
+      curves.record(shaft[h],
+                    base[h],
+                    step.motion,
+                    loads[0],
+                    moment_about_reference(loads, parameters.rigid_foundation));
+      curves.wall_time +=
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
+          .count();
+    });
   }
 
   void
@@ -216,6 +263,17 @@ namespace FourierSSI
   {
     add_load_step_rows(solver, results);
     add_plastic_state_rows(solver, parameters, results);
+    if (reaction_curves)
+      {
+        // The pile's balance of the curves (doc/soil-reaction-curves.md 2).
+        const auto         imbalance = reaction_curves->largest_imbalance();
+        const Harmonic     any{0, Family::symmetric};
+        const unsigned int step = solver.get_steps().size();
+        results.add(
+          "soil_reaction_imbalance_H", any, step, imbalance.first, "-");
+        results.add(
+          "soil_reaction_imbalance_M", any, step, imbalance.second, "-");
+      }
     keep_last_step(solver);
     if (has_capacity(solver, parameters))
       {
@@ -246,6 +304,19 @@ namespace FourierSSI
         const std::string state = result_files.claim("interface-state.csv");
         solver.write_interface_state_csv(state);
         log << "interface state around the circumference written to " << state
+            << std::endl;
+      }
+    if (reaction_curves)
+      {
+        const std::string name = result_files.claim("soil-reaction-curves.csv");
+        reaction_curves->write_csv(name);
+        const auto imbalance = reaction_curves->largest_imbalance();
+        log << "soil-reaction curves (" << reaction_curves->depths().size()
+            << " depths x " << reaction_curves->n_steps()
+            << " steps) written to " << name
+            << "; the pile's balance over the steps: |int p + H_B - H| <= "
+            << imbalance.first << " |H|, moments <= " << imbalance.second
+            << " |H| L; " << reaction_curves->wall_time << " s for the curves"
             << std::endl;
       }
     // The stress of plastic soil is not C eps(u): displacements only.

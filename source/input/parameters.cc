@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cmath>
 #include <deal.II/base/utilities.h>
 #include <filesystem>
 #include <fourier_ssi/fourier/material.h>
@@ -247,7 +248,59 @@ namespace FourierSSI
                       "36",
                       Patterns::Integer(3, 720),
                       "Sectors of the revolved 3D VTU.");
+    prm.declare_entry("Soil reaction depths",
+                      "",
+                      Patterns::Anything(),
+                      "Soil-reaction curves of a rigid pile in plastic soil "
+                      "(PISA: p-v, m-psi, base H_B-v and M_B-psi, one point "
+                      "per load step) at these depths [m below the pile's "
+                      "head], or 'auto' (10 evenly spaced) or 'auto N'; "
+                      "written to soil-reaction-curves.csv "
+                      "(doc/soil-reaction-curves.md). Empty: none.");
     prm.leave_subsection();
+  }
+
+  void
+  OutputParameters::parse_soil_reaction_depths(const std::string &text)
+  {
+    const auto fail = [&]() {
+      AssertThrow(false,
+                  ExcMessage("Output/Soil reaction depths: '" + text +
+                             "' is not a list of depths >= 0 [m], 'auto' or "
+                             "'auto N' (N from 1 to 1000)"));
+    };
+    soil_reaction_depths.clear();
+    soil_reaction_auto = 0;
+    const auto words   = Utilities::split_string_list(text, ' ');
+    if (!words.empty() && words[0] == "auto")
+      {
+        if (words.size() > 2)
+          fail();
+        try
+          {
+            soil_reaction_auto =
+              words.size() == 1 ? 10 : Utilities::string_to_int(words[1]);
+          }
+        catch (...)
+          {
+            fail();
+          }
+        if (soil_reaction_auto < 1 || soil_reaction_auto > 1000)
+          fail();
+        return;
+      }
+    try
+      {
+        for (const std::string &d : Utilities::split_string_list(text))
+          soil_reaction_depths.push_back(Utilities::string_to_double(d));
+      }
+    catch (...)
+      {
+        fail();
+      }
+    for (const double d : soil_reaction_depths)
+      if (!(d >= 0.) || !std::isfinite(d))
+        fail();
   }
 
   void
@@ -265,6 +318,7 @@ namespace FourierSSI
     for (const std::string &t :
          Utilities::split_string_list(prm.get("Theta values")))
       theta_degrees.push_back(Utilities::string_to_double(t));
+    parse_soil_reaction_depths(prm.get("Soil reaction depths"));
     lines.clear();
     for (const std::string &item : split_top_level(prm.get("Lines 3D"), ';'))
       {
@@ -351,6 +405,10 @@ namespace FourierSSI
     // own, on its own mesh refined (FE_Q(2) with B-bar for undrained soil,
     // section 4 of doc/soil-plasticity.md).
     soil_plasticity.parse_parameters(prm);
+    AssertThrow(!output.soil_reaction_curves() || soil_plasticity.any(),
+                ExcMessage("Output/Soil reaction depths: not yet without "
+                           "plastic soil (Soil plasticity/Laws): the curves "
+                           "are read from the soil's stress at each step"));
     if (discretization.target_accuracy > 0. && !coupled())
       {
         AssertThrow(discretization.volumetric != VolumetricStrain::bbar,

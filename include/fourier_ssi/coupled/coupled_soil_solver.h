@@ -50,6 +50,7 @@
 #include <fourier_ssi/input/parameters.h>
 #include <fourier_ssi/coupled/soil_law.h>
 #include <fourier_ssi/fourier/theta_sampling.h>
+#include <functional>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -165,6 +166,30 @@ namespace FourierSSI
       return sampling.n_samples();
     }
 
+    /**
+     * The soil's nodal forces int Bbar_h^T (sigma - sigma_0) r dr dz of the
+     * last converged step, every harmonic, over the soil cells whose centre
+     * is `selected`, NOT condensed: the force each node of those cells
+     * exerts on the soil, 3D virtual-work coefficients as the load vectors
+     * (theta weights included). At a node of a rigid foundation it is the
+     * force the foundation exerts on those cells (soil-reaction curves,
+     * doc/soil-reaction-curves.md). The geostatic sigma_0 is left out: it
+     * is balanced by the self-weight. Serial runs only.
+     */
+    std::vector<Vector<double>>
+    soil_nodal_force(
+      const std::function<bool(const Point<2> &)> &selected) const;
+
+    /**
+     * Called after every converged step (the state then is that step's:
+     * solution(), soil_nodal_force()), before the step's log line.
+     */
+    void
+    set_step_observer(std::function<void(const SoilStepResult &)> observer)
+    {
+      step_observer = std::move(observer);
+    }
+
     /** True if the scene has coulomb interfaces (iterated with the soil). */
     bool
     has_coulomb_interfaces() const
@@ -207,6 +232,7 @@ namespace FourierSSI
       /** B-bar projection of the cell (null: standard strains). */
       std::shared_ptr<LinearProjection> projection;
       unsigned int                      first_point;
+      Point<2>                          centre;
     };
 
     struct StepState
@@ -310,6 +336,15 @@ namespace FourierSSI
      */
     std::vector<Vector<double>>
     load_of(const std::vector<StrainVector> &samples) const;
+
+    /**
+     * int Bbar_h^T field dV over one cell (its local vector): `field` is
+     * the theta integrals per quadrature point (B-bar applied in place).
+     */
+    Vector<double>
+    cell_load(const SoilCell            &cell,
+              const unsigned int         h,
+              std::vector<StrainVector> &field) const;
 
     /** lambda that puts the controlled motion of the state at target. */
     double
@@ -453,8 +488,9 @@ namespace FourierSSI
      * Coulomb interfaces (null: none): their points, the relative
      * displacements of the load pattern and of the held loads.
      */
-    std::unique_ptr<NonlinearInterfacePoints> interface;
-    std::vector<LocalVector>                  pattern_relative, held_relative;
+    std::unique_ptr<NonlinearInterfacePoints>   interface;
+    std::vector<LocalVector>                    pattern_relative, held_relative;
+    std::function<void(const SoilStepResult &)> step_observer;
     /** owns_point(): the ranks and this rank (1, 0: every point). */
     unsigned int point_stride = 1, point_rank = 0;
   };

@@ -25,6 +25,7 @@
 #include <fourier_ssi/mesh/adaptivity.h>
 #include <fourier_ssi/postprocess/field_reconstruction.h>
 #include <fourier_ssi/postprocess/results_table.h>
+#include <fourier_ssi/postprocess/soil_reaction_curves.h>
 #include <functional>
 #include <map>
 #include <memory>
@@ -252,7 +253,10 @@ namespace FourierSSI
      */
     template <class Solver>
     std::unique_ptr<Solver>
-    solve_coupled_curve(std::ostream &log, const bool keep_incomplete)
+    solve_coupled_curve(
+      std::ostream                        &log,
+      const bool                           keep_incomplete,
+      const std::function<void(Solver &)> &before_run = nullptr)
     {
       Timer timer;
       make_distributed_harmonic_set();
@@ -260,6 +264,8 @@ namespace FourierSSI
           << " harmonics in " << timer.wall_time() << " s" << std::endl;
       log_harmonic_distribution(log);
       auto solver = std::make_unique<Solver>(*harmonic_set, parameters);
+      if (before_run)
+        before_run(*solver);
       run_keeping_converged_steps(*solver,
                                   log,
                                   keep_incomplete && writes_csv() ?
@@ -270,6 +276,13 @@ namespace FourierSSI
           << timer.wall_time() << " s" << std::endl;
       return solver;
     }
+
+    /**
+     * Output/Soil reaction depths: the curves' recorder, fed by the
+     * solver after every converged step.
+     */
+    void
+    record_soil_reactions(CoupledSoilSolver &solver);
 
     /** A plastic curve's rows (steps, plastic state, capacity). */
     void
@@ -585,6 +598,8 @@ namespace FourierSSI
     FieldReconstruction                  reconstruction;
     /** The result files of this run (removed again if it fails). */
     ResultFiles result_files;
+    /** Output/Soil reaction depths: the curves of the load path. */
+    std::unique_ptr<SoilReactionCurves> reaction_curves;
   };
 } // namespace FourierSSI
 

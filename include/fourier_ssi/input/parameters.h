@@ -110,6 +110,23 @@ namespace FourierSSI
     /** The mesh revolved about the axis with the 3D displacement. */
     bool         write_3d_vtu    = false;
     unsigned int theta_divisions = 36;
+    /**
+     * Soil-reaction curves (Soil reaction depths): the depths [m below
+     * the pile's head], or, if soil_reaction_auto > 0, that many evenly
+     * spaced; none if both are empty (doc/soil-reaction-curves.md).
+     */
+    std::vector<double> soil_reaction_depths;
+    unsigned int        soil_reaction_auto = 0;
+
+    bool
+    soil_reaction_curves() const
+    {
+      return soil_reaction_auto > 0 || !soil_reaction_depths.empty();
+    }
+
+    /** Read the entry Soil reaction depths; one line if it is malformed. */
+    void
+    parse_soil_reaction_depths(const std::string &text);
 
     /**
      * Only Output/Directory and Output/Results file of a parameter file,
