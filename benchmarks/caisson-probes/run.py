@@ -129,7 +129,7 @@ def main():
     build = sys.argv[1] if len(sys.argv) > 1 else os.path.join(SOURCE,
                                                                "build")
     keys = sys.argv[2].split(",") if len(sys.argv) > 2 else ["H", "M"]
-    exe = os.path.join(build, "fourier-ssi")
+    exe = os.path.abspath(os.path.join(build, "fourier-ssi"))
     work = tempfile.mkdtemp(prefix="caisson-probes-")
     print("work folder:", work)
     results = []
