@@ -27,9 +27,12 @@ over the harmonics) so that a member that would take far longer than the
 values and error in the log and results.csv).
 
     /usr/bin/python3 benchmarks/caisson-probes/run.py [BUILD_DIR] [PROBES]
+                                                      [MAXIMUM_DOFS]
 
-PROBES: a comma list of H, M (default both), run side by side. Writes
-results.csv next to this file (results.md is written by hand from it and
+PROBES: a comma list of H, M (default both), run side by side;
+MAXIMUM_DOFS: Adaptivity/Maximum DoFs (default 45000: the budget of about
+5 minutes; larger allows the next member). Writes results.csv (with the
+default budget; results-<MAXIMUM_DOFS>.csv otherwise) next to this file (results.md is written by hand from it and
 the logs); each run's log is kept in the work folder printed at the start.
 Times are wall times on the shared 2-core machine, with the 1-minute load
 average at the start (other jobs add noise).
@@ -48,6 +51,7 @@ S_U, D = 10.0, 8.0
 AREA = 3.141592653589793 * (D / 2) ** 2
 # N_H = H / (A s_u), N_M = M / (A D s_u): the normalisation of Bransby &
 # Randolph (1998) and Gourvenec (2008) for circular foundations.
+MAXIMUM_DOFS = 45000
 PROBES = {
     "H": dict(load="Horizontal force", held="rotation",
               motion="horizontal", target="0.05",
@@ -66,7 +70,7 @@ subsection Discretization
   set Target accuracy   = 5e-2
 end
 subsection Adaptivity
-  set Maximum DoFs = 45000
+  set Maximum DoFs = {maximum_dofs}
 end
 subsection Mesh
   set R breakpoints    = 0, 3.96, 4, 12, 24
@@ -122,7 +126,8 @@ def start_probe(exe, key, work):
         text = f.read()
     prm = os.path.join(work, "caisson-" + key + ".prm")
     with open(prm, "w") as f:
-        f.write(text + PLASTIC_CAISSON.format(out=out, **p))
+        f.write(text + PLASTIC_CAISSON.format(out=out,
+                                              maximum_dofs=MAXIMUM_DOFS, **p))
     log = open(os.path.join(work, "caisson-" + key + ".log"), "w")
     return dict(probe=key, out=out, load=os.getloadavg()[0],
                 start=time.time(),
@@ -142,7 +147,11 @@ def finish_probe(run):
 def main():
     build = sys.argv[1] if len(sys.argv) > 1 else os.path.join(SOURCE,
                                                                "build")
-    keys = sys.argv[2].split(",") if len(sys.argv) > 2 else ["H", "M"]
+    keys = sys.argv[2].split(",") if len(sys.argv) > 2 and sys.argv[2] \
+        else ["H", "M"]
+    global MAXIMUM_DOFS
+    if len(sys.argv) > 3:
+        MAXIMUM_DOFS = int(sys.argv[3])
     exe = os.path.abspath(os.path.join(build, "fourier-ssi"))
     work = tempfile.mkdtemp(prefix="caisson-probes-")
     print("work folder:", work)
@@ -170,7 +179,9 @@ def main():
             error_plateau=rows.get("capacity_" + key + "_error_plateau",
                                    float("nan"))))
         print(results[-1], flush=True)
-    with open(os.path.join(HERE, "results.csv"), "w", newline="") as f:
+    name = "results.csv" if MAXIMUM_DOFS == 45000 else \
+        "results-%d.csv" % MAXIMUM_DOFS
+    with open(os.path.join(HERE, name), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(results[0].keys()))
         w.writeheader()
         w.writerows(results)
