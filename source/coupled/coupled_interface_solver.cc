@@ -720,6 +720,14 @@ namespace FourierSSI
           << " where the interface traction calls for them (tolerance "
           << settings.harmonic_tolerance << ")";
     log << '\n';
+    if (!parameters.rigid_foundation.held_motions.empty())
+      {
+        log << "held at zero (Rigid foundation/Held motions):";
+        for (const FoundationMotion m :
+             parameters.rigid_foundation.held_motions)
+          log << ' ' << name_of(m);
+        log << "; the loads that hold them: not yet with coulomb interfaces\n";
+      }
     if (interface.without_strength())
       log << "warning: " << entry
           << ": a coulomb interface has c = 0 and no Initial stress: it has "

@@ -498,7 +498,8 @@ namespace FourierSSI
   }
 
   std::vector<Vector<double>>
-  CoupledSoilSolver::load_of(const std::vector<StrainVector> &samples) const
+  CoupledSoilSolver::load_of(const std::vector<StrainVector> &samples,
+                             const bool                       condensed) const
   {
     const unsigned int          N = sampling.n_samples(), H = set.size();
     std::vector<Vector<double>> load(H);
@@ -567,11 +568,14 @@ namespace FourierSSI
             }
           if (!active)
             continue; // only the points that yield cost work
-          set.problem(h)
-            .get_homogeneous_constraints()
-            .distribute_local_to_global(cell_load(cell, h, field),
-                                        cell.dof_indices[h],
-                                        load[h]);
+          const Vector<double> local = cell_load(cell, h, field);
+          if (condensed)
+            set.problem(h)
+              .get_homogeneous_constraints()
+              .distribute_local_to_global(local, cell.dof_indices[h], load[h]);
+          else
+            for (unsigned int i = 0; i < local.size(); ++i)
+              load[h](cell.dof_indices[h][i]) += local(i);
         }
     });
     return load;
@@ -1169,6 +1173,39 @@ namespace FourierSSI
     return total;
   }
 
+  std::vector<std::pair<FoundationMotion, double>>
+  CoupledSoilSolver::held_reactions(const StepState &state) const
+  {
+    const std::vector<FoundationMotion> &held =
+      parameters.rigid_foundation.held_motions;
+    if (held.empty() || interface)
+      return {};
+    const std::vector<Vector<double>> plastic_load =
+      load_of(state.plastic, false);
+    // One value per held motion, from the owner of its harmonic.
+    std::vector<double> values(held.size(), 0.);
+    for (unsigned int h = 0; h < set.size(); ++h)
+      {
+        const RigidFoundation *foundation = set.problem(h).get_foundation();
+        if (!set.owns(h) || foundation == nullptr ||
+            !foundation->holds_motion())
+          continue;
+        Vector<double> force =
+          set.problem(h).nodal_forces(total_displacement(state, h),
+                                      state.load_factor);
+        force -= plastic_load[h];
+        for (const auto &[motion, load] : foundation->held_reactions(force))
+          for (unsigned int i = 0; i < held.size(); ++i)
+            if (held[i] == motion)
+              values[i] = load;
+      }
+    set.sum_over_ranks(values);
+    std::vector<std::pair<FoundationMotion, double>> reactions;
+    for (unsigned int i = 0; i < held.size(); ++i)
+      reactions.emplace_back(held[i], values[i]);
+    return reactions;
+  }
+
   Vector<double>
   CoupledSoilSolver::total_displacement(const StepState   &state,
                                         const unsigned int h) const
@@ -1227,6 +1264,14 @@ namespace FourierSSI
         << settings.load_steps << " steps, tolerance " << settings.tolerance
         << ", " << iteration_name(settings, parameters.soil_plasticity.tangent)
         << (cells.front().projection ? ", B-bar" : "") << '\n';
+    if (!parameters.rigid_foundation.held_motions.empty())
+      {
+        log << "held at zero (Rigid foundation/Held motions):";
+        for (const FoundationMotion m :
+             parameters.rigid_foundation.held_motions)
+          log << ' ' << name_of(m);
+        log << '\n';
+      }
     if (!held_solution.empty())
       {
         log << "held loads first (" << settings.held_load_steps
@@ -1340,10 +1385,11 @@ namespace FourierSSI
             easy_steps = 0;
             just_grown = true;
           }
-        result.load_factor   = state.load_factor;
-        result.held_fraction = state.held_fraction;
-        result.motion        = motion_of(state);
-        result.time          = std::chrono::duration<double>(
+        result.load_factor    = state.load_factor;
+        result.held_fraction  = state.held_fraction;
+        result.motion         = motion_of(state);
+        result.held_reactions = held_reactions(state);
+        result.time           = std::chrono::duration<double>(
                         std::chrono::steady_clock::now() - clock)
                         .count();
         steps.push_back(result);
@@ -1384,6 +1430,12 @@ namespace FourierSSI
       log << ", rotation " << motion.rotation << " rad";
     if (torque)
       log << ", twist " << motion.twist << " rad";
+    for (const auto &[held, load] : result.held_reactions)
+      log << "; " << name_of(held) << " held by " << load_name_of(held) << " "
+          << load << " " << load_unit_of(held);
+    if (!parameters.rigid_foundation.held_motions.empty() && interface)
+      log << "; the loads that hold the held motions: not yet with coulomb "
+             "interfaces";
   }
 
   void

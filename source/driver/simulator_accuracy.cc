@@ -3,6 +3,7 @@
 // is recorded on each nested mesh it is solved on, and its error estimated
 // from those values (sequence_error_estimate.h).
 #include <algorithm>
+#include <cmath>
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <fourier_ssi/driver/input_checks.h>
@@ -113,10 +114,26 @@ namespace FourierSSI
     double largest = 0.;
     for (const GoalHistory &h : goal_histories)
       if (h.values.size() >= 2)
-        largest =
-          std::max(largest,
-                   estimate_sequence_error(h.values, assumed_ratio()).relative);
+        largest = std::max(largest, goal_error(h));
     return largest;
+  }
+
+  double
+  Simulator::goal_error(const GoalHistory &history) const
+  {
+    const SequenceErrorEstimate e =
+      estimate_sequence_error(history.values, assumed_ratio());
+    if (history.quantity != "K_MH")
+      return e.relative;
+    const auto last = [&](const std::string &quantity) {
+      for (const GoalHistory &h : goal_histories)
+        if (h.quantity == quantity && h.harmonic.n == history.harmonic.n &&
+            h.harmonic.family == history.harmonic.family)
+          return h.values.back();
+      return 0.;
+    };
+    const double scale = std::sqrt(std::abs(last("K_H") * last("K_M")));
+    return scale > 0. ? e.absolute / scale : e.relative;
   }
 
   void
@@ -460,12 +477,20 @@ namespace FourierSSI
           {
             const SequenceErrorEstimate e =
               estimate_sequence_error(h.values, assumed_ratio());
+            const double error = goal_error(h);
             results.add(
-              h.quantity + "_error", h.harmonic, row_cycle, e.relative, "-");
-            converged = target_not_reached.empty() && e.relative <= target;
+              h.quantity + "_error", h.harmonic, row_cycle, error, "-");
+            converged = target_not_reached.empty() && error <= target;
             log << "\n    " << h.harmonic.name() << ": " << h.quantity << " = "
                 << std::setprecision(7) << h.values.back() << " " << h.unit
-                << " \u00b1 " << std::setprecision(2) << e.relative << " (rel)"
+                << " \u00b1 " << std::setprecision(2) << error
+                << (h.quantity == "K_MH" && error != e.relative ?
+                      " (rel. to sqrt(K_H K_M); " +
+                        (std::ostringstream()
+                         << std::setprecision(2) << e.relative)
+                          .str() +
+                        " rel. to K_MH)" :
+                      " (rel)")
                 << (e.asymptotic ? "" : ", rate assumed");
           }
         else

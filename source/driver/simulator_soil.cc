@@ -275,6 +275,13 @@ namespace FourierSSI
           "soil_reaction_imbalance_M", any, step, imbalance.second, "-");
       }
     keep_last_step(solver);
+    const Harmonic any{0, Family::symmetric};
+    for (const auto &[motion, load] : solver.get_steps().back().held_reactions)
+      results.add("held_" + name_of(motion) + "_reaction",
+                  any,
+                  solver.get_steps().size(),
+                  load,
+                  load_unit_of(motion));
     if (has_capacity(solver, parameters))
       {
         const Capacity c = capacity_of(solver, parameters);

@@ -73,36 +73,45 @@ namespace FourierSSI
   }
 
   Vector<double>
-  HarmonicProblem::nodal_reactions() const
+  HarmonicProblem::nodal_forces(const Vector<double> &u,
+                                const double          body_force_factor) const
   {
     FullMatrix<double>                   cell_matrix;
     Vector<double>                       cell_rhs;
     std::vector<types::global_dof_index> dof_indices(fe->n_dofs_per_cell());
     Vector<double> local(fe->n_dofs_per_cell()), product(fe->n_dofs_per_cell());
-    Vector<double> reactions(dof_handler.n_dofs());
+    Vector<double> forces(dof_handler.n_dofs());
     // Without a body force, a cell at rest exerts no nodal force.
     const bool body_force_given =
+      body_force_factor != 0. &&
       !parameters.boundary_conditions.body_force.is_zero();
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         cell->get_dof_indices(dof_indices);
         for (unsigned int i = 0; i < dof_indices.size(); ++i)
-          local(i) = solution(dof_indices[i]);
+          local(i) = u(dof_indices[i]);
         if (!body_force_given && local.linfty_norm() == 0.)
           continue;
         local_matrix(cell, cell_matrix, &cell_rhs);
         cell_matrix.vmult(product, local);
-        product -= cell_rhs;
+        product.add(-body_force_factor, cell_rhs);
         for (unsigned int i = 0; i < dof_indices.size(); ++i)
-          reactions(dof_indices[i]) += product(i);
+          forces(dof_indices[i]) += product(i);
       }
     if (interfaces)
-      interfaces->add_reactions(solution, reactions);
+      interfaces->add_reactions(u, forces);
+    return forces;
+  }
+
+  Vector<double>
+  HarmonicProblem::nodal_reactions() const
+  {
+    Vector<double> reactions = nodal_forces(solution);
     // The nodal force at a hanging DoF acts on the DoFs it hangs from
     // (C^T r), some of which may be supports: move it there, or the support
     // reactions miss it (0.3 % of F_z with a corner grading next to fixed
-    // boundaries, tests/harmonic/reaction_equilibrium.cc). A separate set of only
-    // the hanging-node constraints keeps supports as masters (the full set
+    // boundaries, tests/harmonic/reaction_equilibrium.cc). A separate set of
+    // only the hanging-node constraints keeps supports as masters (the full set
     // eliminates Dirichlet DoFs from the lines).
     AffineConstraints<double> hanging_nodes;
     DoFTools::make_hanging_node_constraints(dof_handler, hanging_nodes);

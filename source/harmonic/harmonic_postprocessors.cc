@@ -138,6 +138,23 @@ namespace FourierSSI
   namespace Postprocessors
   {
     void
+    held_motion_reactions(
+      const std::vector<std::pair<FoundationMotion, double>> &reactions,
+      HarmonicReport                                         &report)
+    {
+      for (const auto &[motion, load] : reactions)
+        {
+          report.add("held_" + name_of(motion) + "_reaction",
+                     load,
+                     load_unit_of(motion));
+          report.log << "\n    " << name_of(motion)
+                     << " held at zero; the load that holds it: "
+                     << load_name_of(motion) << " = " << std::setprecision(7)
+                     << load << " " << load_unit_of(motion);
+        }
+    }
+
+    void
     discretization(const HarmonicSolution &solution,
                    const unsigned int      cycle,
                    HarmonicReport         &report)
@@ -210,6 +227,11 @@ namespace FourierSSI
                  "m");
       report.add("foundation_twist", m.twist, "rad");
       const double z_ref = parameters.rigid_foundation.reference_elevation;
+      if (foundation->holds_motion())
+        held_motion_reactions(foundation->held_reactions(
+                                solution.problem->nodal_forces(
+                                  solution.problem->get_solution())),
+                              report);
       single_load_stiffness(parameters.rigid_foundation,
                             solution.problem->get_operator().get_harmonic(),
                             m,

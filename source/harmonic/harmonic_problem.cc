@@ -149,6 +149,10 @@ namespace FourierSSI
                                         harmonic_operator.get_harmonic(),
                                         axis_tolerance,
                                         constraints);
+    // Held motions last: the foundation keeps the constraints without them
+    // to read the load that holds them.
+    if (foundation)
+      foundation->add_held_motion_constraints(constraints);
     constraints.close();
     homogeneous_constraints.clear();
     homogeneous_constraints.copy_from(constraints);

@@ -50,6 +50,129 @@ namespace FourierSSI
     return tie == FoundationTie::material ? "material" : "boundary";
   }
 
+  std::string
+  name_of(const FoundationMotion motion)
+  {
+    switch (motion)
+      {
+        case FoundationMotion::u:
+          return "u";
+        case FoundationMotion::w:
+          return "w";
+        case FoundationMotion::twist:
+          return "twist";
+        case FoundationMotion::rotation:
+          return "rotation";
+      }
+    return "";
+  }
+
+  Harmonic
+  harmonic_of(const FoundationMotion motion)
+  {
+    if (motion == FoundationMotion::w)
+      return {0, Family::symmetric};
+    if (motion == FoundationMotion::twist)
+      return {0, Family::antisymmetric};
+    return {1, Family::symmetric};
+  }
+
+  std::string
+  load_name_of(const FoundationMotion motion)
+  {
+    switch (motion)
+      {
+        case FoundationMotion::u:
+          return "H";
+        case FoundationMotion::w:
+          return "V";
+        case FoundationMotion::twist:
+          return "T";
+        case FoundationMotion::rotation:
+          return "M";
+      }
+    return "";
+  }
+
+  std::string
+  load_unit_of(const FoundationMotion motion)
+  {
+    return motion == FoundationMotion::u || motion == FoundationMotion::w ?
+             "kN" :
+             "kN.m";
+  }
+
+  namespace
+  {
+    /** 'u, rotation' -> the motions; Patterns::List checked the names. */
+    std::vector<FoundationMotion>
+    held_motions_of(const std::string &text)
+    {
+      std::vector<FoundationMotion> motions;
+      for (const std::string &name : Utilities::split_string_list(text))
+        for (const FoundationMotion m : {FoundationMotion::u,
+                                         FoundationMotion::w,
+                                         FoundationMotion::twist,
+                                         FoundationMotion::rotation})
+          if (name == name_of(m))
+            motions.push_back(m);
+      return motions;
+    }
+
+    /**
+     * The loads that work on a motion (given or held): holding a motion
+     * and loading it at once is a contradiction.
+     */
+    std::vector<std::pair<std::string, double>>
+    loads_on(const FoundationMotion motion, const RigidFoundationParameters &f)
+    {
+      switch (motion)
+        {
+          case FoundationMotion::u:
+            return {{"Horizontal force", f.horizontal_force},
+                    {"Held horizontal force", f.held_horizontal_force}};
+          case FoundationMotion::w:
+            return {{"Vertical force", f.vertical_force},
+                    {"Held vertical force", f.held_vertical_force}};
+          case FoundationMotion::twist:
+            return {{"Torque", f.torque}, {"Held torque", f.held_torque}};
+          case FoundationMotion::rotation:
+            return {{"Moment", f.moment}, {"Held moment", f.held_moment}};
+        }
+      return {};
+    }
+
+    /** One line for held motions that contradict the other entries. */
+    void
+    check_held_motions(const RigidFoundationParameters &f)
+    {
+      const std::string entry = "Rigid foundation/Held motions";
+      if (f.held_motions.empty())
+        return;
+      AssertThrow(f.enabled,
+                  ExcMessage(entry + ": held motions are motions of the "
+                                     "rigid foundation; set Enabled = true"));
+      AssertThrow(!f.stiffness_coefficients,
+                  ExcMessage(entry + ": the stiffness coefficients (and "
+                                     "Stiffness matrix) are those of the free "
+                                     "foundation; hold no motion in that run"));
+      for (const FoundationMotion m : f.held_motions)
+        {
+          AssertThrow(!(f.normal_only && (m == FoundationMotion::u ||
+                                          m == FoundationMotion::twist)),
+                      ExcMessage(entry + ": '" + name_of(m) +
+                                 "' is not a rigid motion with 'Tied "
+                                 "components = normal'"));
+          for (const auto &[load, value] : loads_on(m, f))
+            AssertThrow(value == 0.,
+                        ExcMessage(entry + ": '" + name_of(m) +
+                                   "' is held at zero and loaded by "
+                                   "Rigid foundation/" +
+                                   load + " at once; drop one"));
+        }
+    }
+  } // namespace
+
   void
   RigidFoundationParameters::declare_parameters(ParameterHandler &prm)
   {
@@ -125,6 +248,18 @@ namespace FourierSSI
                       Patterns::Double(),
                       "Nonlinear runs: held T [kN.m] (see Held vertical "
                       "force).");
+    prm.declare_entry(
+      "Held motions",
+      "",
+      Patterns::List(Patterns::Selection("u|w|twist|rotation"), 0, 4),
+      "Rigid motions held at zero (their master DoF constrained), for "
+      "the probes of the foundation literature: u (translation along x) "
+      "held for pure M, rotation (about y, through the reference point) "
+      "held for pure H, also w and twist. Linear and nonlinear runs; "
+      "the log prints the load that holds each (kN, kN m). A held motion "
+      "takes no load (Horizontal force with u, Moment with rotation, "
+      "...), is not the Nonlinear interfaces/Controlled motion, and "
+      "excludes Stiffness coefficients. Empty: none held.");
     prm.declare_entry("Stiffness coefficients",
                       "false",
                       Patterns::Bool(),
@@ -251,6 +386,8 @@ namespace FourierSSI
                            "Stiffness coefficients (or Stiffness matrix)"));
     std::tie(capacity_name, capacity_reference) =
       capacity_normalisation(prm.get("Capacity normalisation"));
+    held_motions = held_motions_of(prm.get("Held motions"));
+    check_held_motions(*this);
     prm.leave_subsection();
   }
 
@@ -418,6 +555,128 @@ namespace FourierSSI
       tie(master_U, {});
   }
 
+  void
+  RigidFoundation::add_held_motion_constraints(
+    AffineConstraints<double> &constraints)
+  {
+    held_here.clear();
+    held_lines.clear();
+    for (const FoundationMotion m : parameters.held_motions)
+      if (harmonic_of(m).n == harmonic.n &&
+          harmonic_of(m).family == harmonic.family)
+        held_here.push_back(m);
+    if (held_here.empty())
+      return;
+    constraints_without_hold.clear();
+    constraints_without_hold.copy_from(constraints);
+    constraints_without_hold.close();
+    const std::array<types::global_dof_index, 3> masters = {
+      {master_U, master_V, master_W}};
+    for (const FoundationMotion m : held_here)
+      {
+        // The motion is linear in the masters: sum_k g_k m_k = 0 holds it.
+        std::array<double, 3> g;
+        for (unsigned int k = 0; k < 3; ++k)
+          {
+            MasterValues unit = {{0., 0., 0.}};
+            unit[k]           = 1.;
+            g[k]              = component(motion_of(unit), m);
+          }
+        // Solve for a free master with weight (a master held by an earlier
+        // motion is constrained already): U_A unless V_A weighs twice as
+        // much (|z_A - z_ref| > 2 r_A for U_h), a well-scaled line.
+        unsigned int held = 3;
+        for (unsigned int k = 0; k < 3; ++k)
+          if (g[k] != 0. && !constraints.is_constrained(masters[k]) &&
+              (held == 3 || std::abs(g[k]) > 2. * std::abs(g[held])))
+            held = k;
+        AssertThrow(held < 3,
+                    ExcMessage("Rigid foundation/Held motions: '" + name_of(m) +
+                               "' has no free master DoF in harmonic " +
+                               harmonic.name()));
+        std::vector<std::pair<types::global_dof_index, double>> line;
+        for (unsigned int k = 0; k < 3; ++k)
+          if (k != held && g[k] != 0.)
+            line.emplace_back(masters[k], -g[k] / g[held]);
+        constraints.add_line(masters[held]);
+        constraints.add_entries(masters[held], line);
+        held_lines.emplace(masters[held], line);
+      }
+  }
+
+  double
+  RigidFoundation::component(const RigidMotion     &m,
+                             const FoundationMotion motion)
+  {
+    switch (motion)
+      {
+        case FoundationMotion::u:
+          return m.horizontal_displacement;
+        case FoundationMotion::w:
+          return m.vertical_displacement;
+        case FoundationMotion::twist:
+          return m.twist;
+        case FoundationMotion::rotation:
+          return m.rotation;
+      }
+    return 0.;
+  }
+
+  RigidFoundation::MasterValues
+  RigidFoundation::unit_motion(const FoundationMotion motion) const
+  {
+    // n = 1: (U_h, Theta) = A (U_A, V_A); n = 0: one motion, one master.
+    const MasterValues unit_U = {{1., 0., 0.}}, unit_V = {{0., 1., 0.}},
+                       unit_W = {{0., 0., 1.}};
+    if (harmonic.n == 0)
+      {
+        const MasterValues &unit =
+          harmonic.family == Family::symmetric ? unit_V : unit_W;
+        const double per_unit = component(motion_of(unit), motion);
+        MasterValues result   = unit;
+        for (double &v : result)
+          v /= per_unit;
+        return result;
+      }
+    const RigidMotion by_U = motion_of(unit_U), by_V = motion_of(unit_V);
+    const double      a = by_U.horizontal_displacement,
+                 b = by_V.horizontal_displacement, c = by_U.rotation,
+                 d   = by_V.rotation;
+    const double det = a * d - b * c;
+    // (U_A, V_A) = A^-1 e, e the unit vector of the motion.
+    return motion == FoundationMotion::u ?
+             MasterValues{{d / det, -c / det, 0.}} :
+             MasterValues{{-b / det, a / det, 0.}};
+  }
+
+  std::vector<std::pair<FoundationMotion, double>>
+  RigidFoundation::held_reactions(const Vector<double> &nodal_forces) const
+  {
+    // C^T r: every constrained DoF's force moved onto the DoFs it follows
+    // (the closed lines name unconstrained DoFs only), so the masters'
+    // entries are the work of r on their unit rigid motions.
+    Vector<double> condensed = nodal_forces;
+    for (const auto &line : constraints_without_hold.get_lines())
+      {
+        for (const auto &[dof, weight] : line.entries)
+          condensed(dof) += weight * condensed(line.index);
+        condensed(line.index) = 0.;
+      }
+    const std::array<types::global_dof_index, 3> masters = {
+      {master_U, master_V, master_W}};
+    std::vector<std::pair<FoundationMotion, double>> reactions;
+    for (const FoundationMotion m : held_here)
+      {
+        const MasterValues e    = unit_motion(m);
+        double             work = 0.;
+        for (unsigned int k = 0; k < 3; ++k)
+          if (e[k] != 0.)
+            work += e[k] * condensed(masters[k]);
+        reactions.emplace_back(m, work);
+      }
+    return reactions;
+  }
+
   std::array<double, 3>
   RigidFoundation::displacement_at(const Point<2>     &x,
                                    const MasterValues &master) const
@@ -506,7 +765,25 @@ namespace FourierSSI
       {master_U, master_V, master_W}};
     for (unsigned int k = 0; k < 3; ++k)
       if (forces[k] != 0.)
-        rhs(masters[k]) += forces[k];
+        add_force(rhs, masters[k], forces[k]);
+  }
+
+  void
+  RigidFoundation::add_force(Vector<double>               &rhs,
+                             const types::global_dof_index dof,
+                             const double                  force) const
+  {
+    // A held master is constrained to the others: its force acts on them
+    // (C^T f, as assembly condenses every other load); a fully held body
+    // ends at a line without entries and keeps nothing.
+    const auto line = held_lines.find(dof);
+    if (line == held_lines.end())
+      {
+        rhs(dof) += force;
+        return;
+      }
+    for (const auto &[master, weight] : line->second)
+      add_force(rhs, master, weight * force);
   }
 
   void
@@ -544,9 +821,7 @@ namespace FourierSSI
     Vector<double>     rhs(n_dofs);
     const MasterValues f =
       master_forces(load_case == 0 ? 1. : 0., load_case == 1 ? 1. : 0., 0., 0.);
-    rhs(master_U) += f[0];
-    rhs(master_V) += f[1];
-    rhs(master_W) += f[2];
+    add_master_forces(rhs, f);
     return rhs;
   }
 

@@ -23,6 +23,31 @@ namespace FourierSSI
                              "move; give its final value [m or rad]"));
     }
 
+    /**
+     * Displacement control drives the Controlled motion; holding it at
+     * zero as well is a contradiction.
+     */
+    void
+    check_controlled_motion_not_held(const AllParameters &parameters)
+    {
+      const NonlinearInterfaceParameters &path =
+        parameters.nonlinear_interfaces;
+      if (!parameters.coupled() ||
+          path.control != NonlinearInterfaceParameters::Control::displacement)
+        return;
+      using M = NonlinearInterfaceParameters::Motion;
+      const FoundationMotion driven =
+        path.motion == M::vertical   ? FoundationMotion::w :
+        path.motion == M::twist      ? FoundationMotion::twist :
+        path.motion == M::horizontal ? FoundationMotion::u :
+                                       FoundationMotion::rotation;
+      AssertThrow(!parameters.rigid_foundation.holds(driven),
+                  ExcMessage("Rigid foundation/Held motions: '" +
+                             name_of(driven) +
+                             "' is also the Nonlinear interfaces/Controlled "
+                             "motion; hold another motion or drive another"));
+    }
+
     /** True if some load of the scene is not zero. */
     bool
     scene_has_load(const AllParameters &parameters)
@@ -85,6 +110,7 @@ namespace FourierSSI
   void
   check_problem_is_meaningful(const AllParameters &parameters)
   {
+    check_controlled_motion_not_held(parameters);
     check_displacement_target(parameters);
     check_load_control_has_load(parameters);
     check_exact_solution_linear(parameters);

@@ -83,7 +83,12 @@ namespace FourierSSI
     double largest_interface_yield_value = 0.;
     /** The coulomb interfaces at every (point, theta) (empty without). */
     InterfaceSnapshot interface_state;
-    double            time = 0.;
+    /**
+     * The load that holds each of Rigid foundation/Held motions [kN or
+     * kN m] (held_reactions(); empty without, or with coulomb interfaces).
+     */
+    std::vector<std::pair<FoundationMotion, double>> held_reactions;
+    double                                           time = 0.;
   };
 
   class CoupledSoilSolver
@@ -335,7 +340,19 @@ namespace FourierSSI
      * theta integrals at the points this rank owns, summed over the ranks.
      */
     std::vector<Vector<double>>
-    load_of(const std::vector<StrainVector> &samples) const;
+    load_of(const std::vector<StrainVector> &samples,
+            const bool                       condensed = true) const;
+
+    /**
+     * The load that holds each held motion (Rigid foundation/Held motions)
+     * in a converged state: the work of the internal force K u - G(u)
+     * (G unconstrained: load_of(plastic, false)) minus the body force
+     * lambda f on the unit held motion (RigidFoundation::held_reactions).
+     * Empty without held motions; coulomb interfaces: not yet (their
+     * plastic load is only assembled condensed).
+     */
+    std::vector<std::pair<FoundationMotion, double>>
+    held_reactions(const StepState &state) const;
 
     /**
      * int Bbar_h^T field dV over one cell (its local vector): `field` is

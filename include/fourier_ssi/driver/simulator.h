@@ -534,6 +534,17 @@ namespace FourierSSI
     largest_estimated_error() const;
 
     /**
+     * The error of one goal value against which the target is tested:
+     * relative to the value itself, except for the coupling term K_MH,
+     * whose error is relative to sqrt(K_H K_M) of the same harmonic (the
+     * scale of the H-M block: |K_MH| <= sqrt(K_H K_M) for a positive
+     * definite K). A coupling near zero (a surface disc at nu -> 0.5)
+     * then meets a target its own relative error never could.
+     */
+    double
+    goal_error(const GoalHistory &history) const;
+
+    /**
      * Log "K_H = 10.7993 +- 2.1e-05 (rel)" per goal value and write the
      * rows <quantity>_error (relative) under the last cycle.
      */

@@ -78,6 +78,15 @@ namespace FourierSSI
               HarmonicReport         &report);
 
     /**
+     * The load that holds each held motion (Rigid foundation/Held
+     * motions): rows held_<motion>_reaction [kN or kN.m] and a log line.
+     */
+    void
+    held_motion_reactions(
+      const std::vector<std::pair<FoundationMotion, double>> &reactions,
+      HarmonicReport                                         &report);
+
+    /**
      * The rigid foundation's motion, and on the stiffness harmonic the
      * influence and stiffness coefficients (thesis eqs 4.2-4.5, 6.1-6.3)
      * with their normalisations and the reference point.

@@ -211,6 +211,17 @@ namespace FourierSSI
     nodal_reactions() const;
 
     /**
+     * The nodal forces K u - body_force_factor f_cells of the field u (K
+     * the elastic matrix, f_cells the cells' body-force loads), one entry
+     * per DoF, before any constraint: what nodal_reactions() computes for
+     * the solution, for any field (a plastic run subtracts its plastic
+     * load from it).
+     */
+    Vector<double>
+    nodal_forces(const Vector<double> &u,
+                 const double          body_force_factor = 1.) const;
+
+    /**
      * Resultant of the reactions on one boundary. Each constrained DoF is
      * counted once: on the lowest Dirichlet boundary id whose entry fixes
      * that DoF's component (a corner shared by ids 1 and 2 belongs to 1 for

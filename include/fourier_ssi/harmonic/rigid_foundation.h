@@ -20,6 +20,7 @@
 #ifndef fourier_ssi_rigid_foundation_h
 #define fourier_ssi_rigid_foundation_h
 
+#include <algorithm>
 #include <array>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
@@ -27,8 +28,11 @@
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/fourier/harmonic.h>
+#include <map>
 #include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace FourierSSI
 {
@@ -48,6 +52,36 @@ namespace FourierSSI
   /** "material" or "boundary", as the entry spells it. */
   std::string
   name_of(const FoundationTie tie);
+
+  /**
+   * A rigid-body motion that Rigid foundation/Held motions can hold at
+   * zero: the horizontal translation U_h along x and the rotation Theta
+   * about y (n = 1, symmetric family), the vertical translation W_v (n = 0
+   * symmetric) and the twist Phi about z (n = 0 antisymmetric).
+   */
+  enum class FoundationMotion
+  {
+    u,
+    w,
+    twist,
+    rotation
+  };
+
+  /** "u", "w", "twist" or "rotation", as the entry spells it. */
+  std::string
+  name_of(const FoundationMotion motion);
+
+  /** The harmonic whose master DoFs carry the motion. */
+  Harmonic
+  harmonic_of(const FoundationMotion motion);
+
+  /** The load that works on the motion: "H", "V", "T" or "M". */
+  std::string
+  load_name_of(const FoundationMotion motion);
+
+  /** Its unit: "kN" (H, V) or "kN.m" (M, T). */
+  std::string
+  load_unit_of(const FoundationMotion motion);
 
   struct RigidFoundationParameters
   {
@@ -81,6 +115,20 @@ namespace FourierSSI
     {
       return held_horizontal_force != 0. || held_moment != 0. ||
              held_vertical_force != 0. || held_torque != 0.;
+    }
+    /**
+     * Motions held at zero (Held motions): the master DoF constrained, so
+     * the foundation is probed with that motion fixed (pure H with the
+     * rotation held, pure M with the translation held); the log prints the
+     * load that holds each.
+     */
+    std::vector<FoundationMotion> held_motions;
+
+    bool
+    holds(const FoundationMotion motion) const
+    {
+      return std::find(held_motions.begin(), held_motions.end(), motion) !=
+             held_motions.end();
     }
     /** Also solve the unit H and unit M cases (thesis eqs 4.2-4.5). */
     bool stiffness_coefficients = false;
@@ -168,6 +216,36 @@ namespace FourierSSI
     motion(const Vector<double> &solution) const;
 
     /**
+     * Hold the motions of Held motions that this harmonic carries at zero:
+     * a master DoF with weight in that motion is constrained to the others (U_A
+     * = -V_A (z_A - z_ref) / r_A holds U_h; V_A = 0 holds Theta). Call after
+     * every other constraint and before close(): the constraints without the
+     * hold are kept for the reactions.
+     */
+    void
+    add_held_motion_constraints(AffineConstraints<double> &constraints);
+
+    /** True if this harmonic holds some motion. */
+    bool
+    holds_motion() const
+    {
+      return !held_here.empty();
+    }
+
+    /**
+     * The load that holds each held motion of this harmonic [kN or kN m;
+     * M about the reference point], a load applied to the foundation: the
+     * virtual work phi . r of the nodal forces r = K u - f of the body
+     * (unconstrained, one entry per DoF) on the unit held motion phi (the
+     * other rigid motions of the harmonic zero), phi = C e through the
+     * constraints without the hold. The applied foundation loads do no
+     * work on a held motion (a load on it is refused), so phi . r is all
+     * of it.
+     */
+    std::vector<std::pair<FoundationMotion, double>>
+    held_reactions(const Vector<double> &nodal_forces) const;
+
+    /**
      * The load vector of a unit horizontal force (load_case 0) or a unit
      * moment (load_case 1); n = 1 only.
      */
@@ -251,13 +329,38 @@ namespace FourierSSI
     void
     add_master_forces(Vector<double> &rhs, const MasterValues &forces) const;
 
+    /** rhs(dof) += force, moved onto the masters of a held master. */
+    void
+    add_force(Vector<double>               &rhs,
+              const types::global_dof_index dof,
+              const double                  force) const;
+
+    /** The value of a held motion's component in a rigid motion. */
+    static double
+    component(const RigidMotion &m, const FoundationMotion motion);
+
+    /**
+     * Master amplitudes of the unit rigid motion along `motion`: that
+     * motion 1, the other motions of this harmonic 0.
+     */
+    MasterValues
+    unit_motion(const FoundationMotion motion) const;
+
     const RigidFoundationParameters &parameters;
     const Harmonic                   harmonic;
-    Point<2>                         master_position;
-    types::global_dof_index          master_U = numbers::invalid_dof_index;
-    types::global_dof_index          master_V = numbers::invalid_dof_index;
-    types::global_dof_index          master_W = numbers::invalid_dof_index;
-    unsigned int                     n_tied   = 0;
+    /** The held motions that this harmonic carries. */
+    std::vector<FoundationMotion> held_here;
+    /** The constraint of each held master DoF: (master, weight) entries. */
+    std::map<types::global_dof_index,
+             std::vector<std::pair<types::global_dof_index, double>>>
+      held_lines;
+    /** The closed constraints before the hold: a rigid motion's DoFs. */
+    AffineConstraints<double> constraints_without_hold;
+    Point<2>                  master_position;
+    types::global_dof_index   master_U = numbers::invalid_dof_index;
+    types::global_dof_index   master_V = numbers::invalid_dof_index;
+    types::global_dof_index   master_W = numbers::invalid_dof_index;
+    unsigned int              n_tied   = 0;
   };
 } // namespace FourierSSI
 
