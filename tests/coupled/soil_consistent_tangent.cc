@@ -1,11 +1,12 @@
 // The closed-form algorithmic tangent of the soil return mapping
-// (SoilLaw::return_map_with_tangent, doc/derivations/soil_consistent_tangent.md)
-// against central differences of the return mapping itself, at random
-// trial stresses with random principal directions in every region of the
-// surface: the plane, the right edge (s1 = s2 after the return), the left
-// edge (s2 = s3) and, for Mohr-Coulomb, the apex; Tresca (s_u = 50 kPa) and
-// non-associated Mohr-Coulomb (c' = 10 kPa, phi' = 30, psi = 10 degrees).
-// Also: D_e where the trial is admissible, zero at the apex.
+// (SoilLaw::return_map_with_tangent,
+// doc/derivations/soil_consistent_tangent.md) against central differences of
+// the return mapping itself, at random trial stresses with random principal
+// directions in every region of the surface: the plane, the right edge (s1 = s2
+// after the return), the left edge (s2 = s3) and, for Mohr-Coulomb, the apex;
+// Tresca (s_u = 50 kPa) and non-associated Mohr-Coulomb (c' = 10 kPa, phi' =
+// 30, psi = 10 degrees). Also: D_e where the trial is admissible, zero at the
+// apex.
 //
 // Difference step: strain h = 1e-6 (stress changes of about 1e-3 kPa on
 // stresses of 100 kPa). Central differences err by O(h^2) times the third
@@ -81,13 +82,13 @@ namespace
     if (r.state == SoilState::plane)
       return plane;
     SymmetricTensor<2, 3> t;
-    t[0][0]                   = r.stress[0];
-    t[1][1]                   = r.stress[1];
-    t[2][2]                   = r.stress[2];
-    t[0][1]                   = r.stress[3];
-    t[1][2]                   = r.stress[4];
-    t[0][2]                   = r.stress[5];
-    const auto s              = eigenvalues(t);
+    t[0][0]      = r.stress[0];
+    t[1][1]      = r.stress[1];
+    t[2][2]      = r.stress[2];
+    t[0][1]      = r.stress[3];
+    t[1][2]      = r.stress[4];
+    t[0][2]      = r.stress[5];
+    const auto s = eigenvalues(t);
     return s[0] - s[1] < s[1] - s[2] ? right_edge : left_edge;
   }
 
@@ -111,7 +112,7 @@ namespace
   tangent_error(const SoilLaw &law, const StrainVector &trial)
   {
     StressTangent    d_ep;
-    const SoilReturn at = law.return_map_with_tangent(trial, G, K, 0., d_ep);
+    const SoilReturn at    = law.return_map_with_tangent(trial, G, K, 0., d_ep);
     double           error = 0.;
     for (unsigned int l = 0; l < 6; ++l)
       {
@@ -122,7 +123,7 @@ namespace
             plus[a] += strain_step * change[a];
             minus[a] -= strain_step * change[a];
           }
-        const SoilReturn up = law.return_map(plus, G, K, 0.),
+        const SoilReturn up   = law.return_map(plus, G, K, 0.),
                          down = law.return_map(minus, G, K, 0.);
         if (region_of(up) != region_of(at) || region_of(down) != region_of(at))
           return -1.;

@@ -91,7 +91,7 @@ namespace FourierSSI
     /**
      * The algorithmic (consistent) tangent D_ep = d sigma / d eps of the
      * return mapping at the trial stress sigma_tr(eps) = sigma_fixed +
-     * D_e eps (doc/soil-plasticity.md section 2b; derivation in
+     * D_e eps (doc/soil-plasticity.md section 3b; derivation in
      * doc/derivations/soil_consistent_tangent.md): the derivative of the
      * returned principal stresses times D_e on the principal axes, and
      * (sigma_i - sigma_j) / (s_i - s_j) G on the shears of the principal
