@@ -35,11 +35,24 @@ namespace FourierSSI
      */
     unsigned int
     theta_samples_for(const std::vector<Harmonic>        &list,
-                      const NonlinearInterfaceParameters &settings)
+                      const NonlinearInterfaceParameters &settings,
+                      const InterfaceParameters          &interfaces)
     {
-      return FourierSSI::theta_samples_for(std::max(highest_harmonic(list),
-                                                    settings.maximum_harmonic),
-                                           settings.theta_samples);
+      const unsigned int n_max =
+        std::max(highest_harmonic(list), settings.maximum_harmonic);
+      // Exact contact at more than 2 n_max + 1 samples asks a band-limited
+      // gap to vanish at more samples than it has values (section 5c): the
+      // multipliers at the contact edge then drift and the updates do not
+      // converge. Its default is one sample per value.
+      const bool contact =
+        std::any_of(interfaces.laws.begin(),
+                    interfaces.laws.end(),
+                    [](const auto &entry) { return entry.second.contact; });
+      return FourierSSI::theta_samples_for(n_max,
+                                           settings.theta_samples == 0 &&
+                                               contact ?
+                                             2 * n_max + 1 :
+                                             settings.theta_samples);
     }
 
     std::string
@@ -98,7 +111,8 @@ namespace FourierSSI
     , parameters(parameters)
     , settings(parameters.nonlinear_interfaces)
     , harmonics(set.get_harmonics())
-    , sampling(harmonics, theta_samples_for(harmonics, settings))
+    , sampling(harmonics,
+               theta_samples_for(harmonics, settings, parameters.interfaces))
     , candidates(candidate_harmonics(harmonics, settings.maximum_harmonic))
     , spectrum(candidates, sampling.n_samples())
     , interface(set, parameters)
