@@ -427,9 +427,8 @@ namespace FourierSSI
     // 3-4: out-of-balance load G = int B^T (D_K d - (t - t0)) (D_K the
     //      springs in K) and force residual R = G - c, measured against
     //      the internal force scale (coupled_iteration.h).
-    e.residual =
-      interface.load_of(interface.iteration_plastic(e.relative, e.traction),
-                        sampling);
+    e.residual = interface.load_of(
+      interface.iteration_plastic(e.relative, e.traction, e.plastic), sampling);
     e.scale = {std::abs(state.load_factor) * pattern_load_norm,
                norm_over_harmonics(e.residual)};
     for (unsigned int h = 0; h < set.size(); ++h)

@@ -63,7 +63,7 @@ namespace FourierSSI
         laws.emplace_back(law, spring.normal, spring.shear);
         stiffness.push_back({{in_K.shear, in_K.normal, in_K.shear}});
         contact.push_back(law.contact);
-        law_normal.push_back(spring.normal);
+        law_springs.push_back({{spring.shear, spring.normal, spring.shear}});
         soil_scale.push_back(integrator.get_soil_scale()[i]);
         if (law.cohesion == 0. && !parameters.initial_stress.enabled())
           strengthless = true;
@@ -229,19 +229,25 @@ namespace FourierSSI
   std::vector<LocalVector>
   NonlinearInterfacePoints::iteration_plastic(
     const std::vector<LocalVector> &relative,
-    const std::vector<LocalVector> &traction) const
+    const std::vector<LocalVector> &traction,
+    const std::vector<LocalVector> &plastic) const
   {
     const unsigned int       N = relative.size() / std::max<size_t>(size(), 1);
-    std::vector<LocalVector> result(relative.size());
+    std::vector<LocalVector> result = plastic;
     for (unsigned int i = 0; i < points.size(); ++i)
-      for (unsigned int j = 0; j < N; ++j)
-        for (unsigned int c = 0; c < 3; ++c)
-          {
-            const unsigned int k = i * N + j;
-            result[k][c]         = relative[k][c] -
-                           (traction[k][c] - points[i].initial_traction[c]) /
-                             stiffness[points[i].law][c];
-          }
+      {
+        const unsigned int law = points[i].law;
+        if (stiffness[law] == law_springs[law])
+          continue;
+        for (unsigned int j = 0; j < N; ++j)
+          for (unsigned int c = 0; c < 3; ++c)
+            {
+              const unsigned int k = i * N + j;
+              result[k][c]         = relative[k][c] -
+                             (traction[k][c] - points[i].initial_traction[c]) /
+                               stiffness[law][c];
+            }
+      }
     return result;
   }
 
@@ -264,7 +270,7 @@ namespace FourierSSI
         springs.contact  = contact[point.law];
         springs.smallest =
           std::min(springs.smallest,
-                   law_normal[point.law] / soil_scale[point.law]);
+                   law_springs[point.law][1] / soil_scale[point.law]);
       }
     const unsigned int needed = 2 * highest_harmonic + 1;
     for (const auto &[id, springs] : by_id)
