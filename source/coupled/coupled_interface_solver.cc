@@ -41,7 +41,7 @@ namespace FourierSSI
       const unsigned int n_max =
         std::max(highest_harmonic(list), settings.maximum_harmonic);
       // Exact contact at more than 2 n_max + 1 samples asks a band-limited
-      // gap to vanish at more samples than it has values (section 5c): the
+      // gap to vanish at more samples than it has values (section 5d): the
       // multipliers at the contact edge then drift and the updates do not
       // converge. Its default is one sample per value.
       const bool contact =
@@ -526,7 +526,7 @@ namespace FourierSSI
           return false;
         if (!interface.any_contact())
           break;
-        // Augmented Lagrangian (section 5c): lambda <- t, until the
+        // Augmented Lagrangian (section 5d): lambda <- t, until the
         // multipliers no longer move the origin of the return by more
         // than the force test resolves.
         double largest = 0.;

@@ -1,5 +1,5 @@
 // One nonlinear engine for stiff and exact interfaces
-// (doc/nonlinear-interfaces.md sections 5b, 5c) on the disc in a ring of
+// (doc/nonlinear-interfaces.md sections 5b, 5d, 5e) on the disc in a ring of
 // prm/disc-gap.prm: rigid disc r0 = 0.5 m pushed along x in an elastic
 // ring, G = E / (2 (1 + nu)) = 38462 kPa, harmonics n = 0..32, 4
 // displacement steps to ubar = 1e-3 m, Theta samples = 2 n_max + 1 = 65,

@@ -62,7 +62,7 @@ namespace FourierSSI
      * Exact non-penetration with Coulomb friction (`contact, phi=..,
      * c=..`): the coulomb law without kn, ks, tensionless, no dilation,
      * enforced by an augmented Lagrangian at the theta samples
-     * (doc/nonlinear-interfaces.md section 5c); its springs are the
+     * (doc/nonlinear-interfaces.md section 5d); its springs are the
      * augmentation, interface_iteration_stiffness G / l.
      */
     bool contact = false;
@@ -98,7 +98,7 @@ namespace FourierSSI
    * C of the compliance error of a penalty interface: against rigid
    * contact the load-displacement answer is off by about C G / (kn r0)
    * (r0 the foundation's size), measured C = 1.2 on the disc in a ring
-   * (doc/nonlinear-interfaces.md section 5d).
+   * (doc/nonlinear-interfaces.md section 5e).
    */
   constexpr double compliance_error_coefficient = 1.2;
 

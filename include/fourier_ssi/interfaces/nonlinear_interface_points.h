@@ -151,7 +151,7 @@ namespace FourierSSI
     /**
      * One line per nonlinear interface with the rule that ties its springs,
      * the theta samples and the harmonics (doc/nonlinear-interfaces.md
-     * section 5d): kn, ks against G / l, the estimated compliance error
+     * section 5e): kn, ks against G / l, the estimated compliance error
      * against rigid contact C G / (kn l) (an upper bound of C G / (kn r0)
      * for a foundation r0 >= l), and the samples 2 n_max + 1 that carry
      * the band-limited gap; for contact, the augmentation.
@@ -167,7 +167,7 @@ namespace FourierSSI
 
     /**
      * Uzawa update of the contact multipliers (doc/nonlinear-interfaces.md
-     * section 5c): at every contact sample the return starts from the
+     * section 5d): at every contact sample the return starts from the
      * origin p_c - (lambda - t0) / r (p_c the committed slip, r the
      * augmentation), so its trial traction is lambda + r (d - p_c); here
      * lambda <- t. Returns the largest change of the origin [m]: the
