@@ -4,7 +4,8 @@ interfaces (doc/nonlinear-interfaces.md section 5b): the disc in a ring of
 prm/disc-gap.prm with harmonics n = 0..32 and a tensionless Coulomb interface
 (mu = tan(phi) = 0.3, c = 0, sigma_t = 0), kn = ks = kappa G / r0 for
 kappa = kn r0 / G = 1e2 ... 1e8 (G = 38462 kPa, r0 = 0.5 m), 4 displacement
-steps to ubar = 1e-3 m.
+steps to ubar = 1e-3 m; and the exact `contact, c=0, phi=...` interface
+(augmented Lagrangian, no kn) with Newton and 65 samples, one row.
 
     /usr/bin/python3 benchmarks/nonlinear-engine/run.py [BUILD_DIR] [MAIN_EXE] [RUNS]
 
@@ -17,8 +18,10 @@ Four solvers side by side in this one invocation, RUNS times each
   * initial: this build, Stiffness = initial, Acceleration = anderson (the
     same iteration as before, with the convergence test against the
     internal force scale);
-  * main:    MAIN_EXE (default /work/main/build/fourier-ssi, the code
-    before Newton), Acceleration = anderson.
+  * main:    MAIN_EXE (default /work/main/build/fourier-ssi),
+    Acceleration = anderson;
+  * main65:  MAIN_EXE with Stiffness = tangent and 65 samples (Newton
+    before K's springs were capped at 1e3 G / l).
 The fixed-point runs get Maximum iterations = 20000 per step and every run
 a wall-clock limit of TIMEOUT s. Writes results.csv and results.md next to
 this file. The machine is shared (2 cores): times carry the noise of other
@@ -36,29 +39,34 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SOURCE = os.path.normpath(os.path.join(HERE, "..", ".."))
-KAPPAS = (1e2, 1e3, 1e4, 1e5, 1e6, 1e8)
-SOLVERS = ("newton65", "newton", "initial", "main")
+KAPPAS = (1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8)
+SOLVERS = ("newton65", "newton", "initial", "main", "main65")
+CONTACT = "contact"
 TIMEOUT = 25.
 G, R0 = 1e5 / 2.6, 0.5
 FIELDS = ["kappa", "solver", "runs", "converged", "P_over_ubar_kN_per_m",
-          "iterations_step1", "iterations_total", "states_step1",
+          "iterations_step1", "iterations_worst", "iterations_total",
+          "multiplier_updates_total", "states_step1",
           "solve_time_s", "run_wall_s", "note"]
 
 
 def scene(kappa, solver, out):
     text = open(os.path.join(SOURCE, "prm", "disc-gap.prm")).read()
-    kn = kappa * G / R0
     phi = math.degrees(math.atan(0.3))
-    law = "5: coulomb, kn=%.17g, ks=%.17g, c=0, phi=%.17g, sigma_t=0" % (
-        kn, kn, phi)
+    if kappa == CONTACT:
+        law = "5: contact, c=0, phi=%.17g" % phi
+    else:
+        kn = kappa * G / R0
+        law = "5: coulomb, kn=%.17g, ks=%.17g, c=0, phi=%.17g, " \
+            "sigma_t=0" % (kn, kn, phi)
     text = re.sub(r"set Interfaces = [^\n]*", "set Interfaces = " + law, text)
     text = re.sub(r"set Directory *= [^\n]*", "set Directory = " + out, text)
     text += "\nsubsection Discretization\n  set Harmonics = %s\nend\n" % (
         ", ".join(str(n) for n in range(33)))
     text += "\nsubsection Nonlinear interfaces\n  set Acceleration = anderson\n"
-    if solver.startswith("newton"):
+    if solver.startswith("newton") or solver == "main65":
         text += "  set Stiffness = tangent\n"
-        if solver == "newton65":
+        if solver in ("newton65", "main65"):
             text += "  set Theta samples = 65\n"
     else:
         text += "  set Maximum iterations = 20000\n"
@@ -85,7 +93,7 @@ def run_once(exe, kappa, solver, work):
                        log)
     solve = re.search(r"coupled solve: \d+ steps in ([0-9.e+-]+) s", log)
     if p.returncode != 0 or len(steps) != 4 or not solve:
-        error = [l for l in log.splitlines() if "error" in l]
+        error = [l for l in log.splitlines() if "error:" in l]
         note = "not converged" if error and "did not converge" in error[0] \
             else (error[0][-80:] if error else "failed")
         return {"converged": False, "note": note, "wall": wall}
@@ -95,7 +103,10 @@ def run_once(exe, kappa, solver, work):
     factor, u = float(last["load_factor"]), float(last["horizontal_m"])
     return {"converged": True, "P": factor / u,
             "it1": int(steps[0][2]),
+            "worst": max(int(s[2]) for s in steps),
             "total": sum(int(s[2]) for s in steps),
+            "updates": sum(int(n) for n in re.findall(
+                r"(\d+) contact multiplier updates", log)),
             "states": steps[0][3], "solve": float(solve.group(1)),
             "wall": wall, "note": ""}
 
@@ -108,39 +119,52 @@ def main():
     exes = {"newton65": os.path.join(build, "fourier-ssi"),
             "newton": os.path.join(build, "fourier-ssi"),
             "initial": os.path.join(build, "fourier-ssi"),
-            "main": main_exe}
+            "main": main_exe, "main65": main_exe}
     load = [os.getloadavg()[0]]
     rows = []
     with tempfile.TemporaryDirectory() as work:
-        for kappa in KAPPAS:
-            for solver in SOLVERS:
+        cases = [(k, s) for k in KAPPAS for s in SOLVERS] + \
+            [(CONTACT, "newton65")]
+        for kappa, solver in cases:
+            if True:
                 results = [run_once(exes[solver], kappa, solver, work)]
                 if results[0]["converged"]:
                     results += [run_once(exes[solver], kappa, solver, work)
                                 for _ in range(runs - 1)]
                 ok = all(r["converged"] for r in results)
                 r0 = results[0]
-                row = {"kappa": "%g" % kappa, "solver": solver,
+                row = {"kappa": label(kappa), "solver": solver,
                        "runs": len(results), "converged": int(ok),
                        "note": r0["note"],
                        "run_wall_s": "%.2f" % statistics.median(
                            r["wall"] for r in results)}
                 if ok:
                     row.update({
-                        "P_over_ubar_kN_per_m": "%.9g" % r0["P"],
+                        "P_over_ubar_kN_per_m": "%.12g" % r0["P"],
                         "iterations_step1": r0["it1"],
+                        "iterations_worst": r0["worst"],
+                        "multiplier_updates_total": r0["updates"],
                         "iterations_total": r0["total"],
                         "states_step1": r0["states"],
                         "solve_time_s": "%.3f" % statistics.median(
                             r["solve"] for r in results)})
                 rows.append(row)
                 print(row, flush=True)
+                write_csv(rows)
     load.append(os.getloadavg()[0])
+    write_table(rows, runs, load)
+
+
+def write_csv(rows):
+    """results.csv after every case: a run cut short keeps what it did."""
     with open(os.path.join(HERE, "results.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=FIELDS)
         w.writeheader()
         w.writerows(rows)
-    write_table(rows, runs, load)
+
+
+def label(kappa):
+    return kappa if kappa == CONTACT else "%g" % kappa
 
 
 def write_table(rows, runs, load):
@@ -168,27 +192,55 @@ def write_table(rows, runs, load):
            "time over newton65's. Load average %.1f at the start, %.1f at "
            "the end (2 cores, shared)." % (runs, TIMEOUT, main_commit or "?",
                                           load[0], load[1]), "",
-           "| kappa | newton65: iterations | newton65: solve [s] | newton: "
-           "iterations | newton: solve [s] | initial: iterations | initial: "
-           "solve [s] | main: iterations | main: solve [s] | main / newton65 "
-           "| P/ubar newton65 [kN/m] | P/ubar newton [kN/m] |",
-           "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+           "Cells: Newton updates (or fixed-point iterations) in step 1 / "
+           "in the worst step, and the solve time. main65: the main build "
+           "with Stiffness = tangent and 65 samples (Newton before this "
+           "build capped K's springs at 1e3 G/l).", "",
+           "| kappa | newton65 | newton65 solve [s] | newton | newton solve "
+           "[s] | initial | initial solve [s] | main | main solve [s] | "
+           "main65 | main65 solve [s] | main / newton65 | P/ubar newton65 "
+           "[kN/m] | P/ubar newton [kN/m] | P/ubar main65 [kN/m] |",
+           "|" + "---|" * 15]
     for kappa in KAPPAS:
-        k = "%g" % kappa
+        k = label(kappa)
         cells = [k]
         for solver in SOLVERS:
             r = by[(k, solver)]
             if r["converged"]:
-                cells += [str(r["iterations_step1"]), r["solve_time_s"]]
+                cells += ["%s / %s" % (r["iterations_step1"],
+                                       r["iterations_worst"]),
+                          r["solve_time_s"]]
             else:
                 cells += [r["note"], "-"]
         n, m = by[(k, "newton65")], by[(k, "main")]
         ratio = "%.1f" % (float(m["solve_time_s"]) /
                           max(float(n["solve_time_s"]), 1e-3)) \
             if n["converged"] and m["converged"] else "-"
-        cells += [ratio, n.get("P_over_ubar_kN_per_m", "-"),
-                  by[(k, "newton")].get("P_over_ubar_kN_per_m", "-")]
+        cells += [ratio] + [by[(k, s)].get("P_over_ubar_kN_per_m", "-")
+                            for s in ("newton65", "newton", "main65")]
         out.append("| " + " | ".join(cells) + " |")
+    c = by[(CONTACT, "newton65")]
+    p5 = by[("100000", "newton65")].get("P_over_ubar_kN_per_m")
+    p6 = by[("1e+06", "newton65")].get("P_over_ubar_kN_per_m")
+    out += ["", "Exact contact (`contact, c=0, phi=16.7`, Newton, 65 "
+            "samples) against the 1/kappa extrapolation of the penalty "
+            "(newton65), P_inf = P(1e6) + (P(1e6) - P(1e5)) / 9:", "",
+            "| interface | Newton updates, step 1 / worst | multiplier "
+            "updates, all steps | solve [s] | P/ubar [kN/m] |",
+            "|---|---|---|---|---|"]
+    if c["converged"]:
+        out.append("| contact | %s / %s | %s | %s | %s |" % (
+            c["iterations_step1"], c["iterations_worst"],
+            c["multiplier_updates_total"], c["solve_time_s"],
+            c["P_over_ubar_kN_per_m"]))
+    else:
+        out.append("| contact | %s | - | - | - |" % c["note"])
+    if p5 and p6:
+        limit = float(p6) + (float(p6) - float(p5)) / 9.
+        out.append("| penalty, 1/kappa -> 0 | - | - | - | %.9g |" % limit)
+        if c["converged"]:
+            out += ["", "contact vs extrapolated penalty: %.2e relative." % (
+                abs(float(c["P_over_ubar_kN_per_m"]) - limit) / limit)]
     with open(os.path.join(HERE, "results.md"), "w") as f:
         f.write("\n".join(out) + "\n")
 

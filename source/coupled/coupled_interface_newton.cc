@@ -2,8 +2,11 @@
 // Stiffness = tangent, doc/nonlinear-interfaces.md section 5b): the unknown
 // is the correction load c on the write DoFs of every harmonic, the
 // residual R(c) = G(c) - c, and
-//   dG/dc = load_of( (I - D^-1 D_t) dd/dc ),  dd/dc = B F (+ dlambda/dc d_F),
-// with D_t the closed-form consistent tangent of the return mapping, F the
+//   dG/dc = load_of( (I - D_K^-1 D_t) dd/dc ),  dd/dc = B F (+ dlambda/dc d_F),
+// with D_K the springs assembled into K (a coulomb interface's kn, ks capped
+// at interface_iteration_stiffness G / l, so that K, F and c stay those of
+// a moderate interface however stiff the law; the augmentation for
+// contact), D_t the closed-form consistent tangent of the return mapping, F the
 // flexibility blocks K^-1 (read x write) kept by the condensation and, under
 // displacement control, dlambda/dc = -m(K^-1 e_j) / m(u_F) (lambda keeps the
 // controlled motion on its target). The update solves (I - dG/dc) dc = R,
@@ -37,12 +40,13 @@ namespace FourierSSI
   } // namespace
 
   FullMatrix<double>
-  CoupledInterfaceSolver::out_of_balance_jacobian(const Evaluation &e) const
+  CoupledInterfaceSolver::out_of_balance_jacobian(const Evaluation &e,
+                                                  const StepState  &state) const
   {
     // The held stage prescribes rho: lambda does not follow c there.
     const bool                      displacement_control = controls_motion();
     const std::vector<LocalTangent> follow =
-      interface.plastic_tangents(e.relative, committed.plastic);
+      interface.plastic_tangents(e.relative, state.origin);
     std::vector<unsigned int> offset(set.size() + 1, 0);
     for (unsigned int h = 0; h < set.size(); ++h)
       offset[h + 1] = offset[h] + condensed[h].write.size();
@@ -89,9 +93,10 @@ namespace FourierSSI
   }
 
   Vector<double>
-  CoupledInterfaceSolver::newton_direction(const Evaluation &e) const
+  CoupledInterfaceSolver::newton_direction(const Evaluation &e,
+                                           const StepState  &state) const
   {
-    const FullMatrix<double>    dG = out_of_balance_jacobian(e);
+    const FullMatrix<double>    dG = out_of_balance_jacobian(e, state);
     const unsigned int          n  = dG.m();
     LAPACKFullMatrix<double>    system(n, n);
     Vector<double>              dc(n);
@@ -127,7 +132,7 @@ namespace FourierSSI
                                       StepState   &state,
                                       Evaluation  &e) const
   {
-    const Vector<double> dc    = newton_direction(e);
+    const Vector<double> dc    = newton_direction(e, state);
     const StepState      start = state;
     // The first step that meets the Armijo condition, else the step of the
     // smallest |R| if it is below the start's.
@@ -187,7 +192,7 @@ namespace FourierSSI
     // 3. The full Newton step: a state change it does not foresee (a gap
     //    that closes, a slip that reverses) is corrected by the next
     //    tangent, as in an active-set (semismooth) Newton.
-    add_scaled_correction(1., newton_direction(e), state);
+    add_scaled_correction(1., newton_direction(e, state), state);
     e = evaluate(target, state);
     return std::isfinite(e.residual_norm);
   }

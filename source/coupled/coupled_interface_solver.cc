@@ -16,16 +16,43 @@ namespace FourierSSI
     const std::string entry = "Nonlinear interfaces";
 
     /**
+     * Contact (augmented Lagrangian): the multipliers have converged when
+     * an update moves the origin of the return by no more than this times
+     * Tolerance times the largest relative displacement. The force test
+     * leaves the displacements uncertain by about Tolerance times their
+     * size, so the penetration cannot be driven below that; on the disc in
+     * a ring the updates contract by 15-20 each down to 2.4e-10 of the
+     * largest relative displacement at Tolerance 1e-10, and stall there.
+     */
+    constexpr double contact_tolerance = 10.;
+
+    /** Uzawa updates of the contact multipliers before the step is cut. */
+    constexpr unsigned int maximum_multiplier_updates = 50;
+
+    /**
      * With growth n_max is Maximum harmonic, so that the samples (and the
      * state kept at them) stay valid when harmonics are added.
      */
     unsigned int
     theta_samples_for(const std::vector<Harmonic>        &list,
-                      const NonlinearInterfaceParameters &settings)
+                      const NonlinearInterfaceParameters &settings,
+                      const InterfaceParameters          &interfaces)
     {
-      return FourierSSI::theta_samples_for(std::max(highest_harmonic(list),
-                                                    settings.maximum_harmonic),
-                                           settings.theta_samples);
+      const unsigned int n_max =
+        std::max(highest_harmonic(list), settings.maximum_harmonic);
+      // Exact contact at more than 2 n_max + 1 samples asks a band-limited
+      // gap to vanish at more samples than it has values (section 5d): the
+      // multipliers at the contact edge then drift and the updates do not
+      // converge. Its default is one sample per value.
+      const bool contact =
+        std::any_of(interfaces.laws.begin(),
+                    interfaces.laws.end(),
+                    [](const auto &entry) { return entry.second.contact; });
+      return FourierSSI::theta_samples_for(n_max,
+                                           settings.theta_samples == 0 &&
+                                               contact ?
+                                             2 * n_max + 1 :
+                                             settings.theta_samples);
     }
 
     std::string
@@ -84,7 +111,8 @@ namespace FourierSSI
     , parameters(parameters)
     , settings(parameters.nonlinear_interfaces)
     , harmonics(set.get_harmonics())
-    , sampling(harmonics, theta_samples_for(harmonics, settings))
+    , sampling(harmonics,
+               theta_samples_for(harmonics, settings, parameters.interfaces))
     , candidates(candidate_harmonics(harmonics, settings.maximum_harmonic))
     , spectrum(candidates, sampling.n_samples())
     , interface(set, parameters)
@@ -113,6 +141,8 @@ namespace FourierSSI
     condense(0);
     committed.plastic.assign(points.size() * sampling.n_samples(),
                              {{0., 0., 0.}});
+    committed.origin = committed.plastic;
+    committed.slip   = committed.plastic;
   }
 
   void
@@ -452,16 +482,18 @@ namespace FourierSSI
           (held_relative.empty() ? 0. :
                                    state.held_fraction * held_relative[k][c]);
     e.counts = interface.return_map(
-      e.relative, committed.plastic, e.plastic, e.traction, e.contact);
-    // 3-4: out-of-balance load G and force residual R = G - c, measured
-    //      against the internal force scale (coupled_iteration.h).
-    e.residual = interface.load_of(e.plastic, sampling);
-    e.scale    = {combined_load_norm(state.load_factor,
+      e.relative, state.origin, e.plastic, e.traction, e.contact);
+    // 3-4: out-of-balance load G = int B^T (D_K d - (t - t0)) (D_K the
+    //      springs in K) and force residual R = G - c, measured against
+    //      the internal force scale (coupled_iteration.h).
+    e.residual = interface.load_of(
+      interface.iteration_plastic(e.relative, e.traction, e.plastic), sampling);
+    e.scale = {combined_load_norm(state.load_factor,
                                   state.held_fraction,
                                   pattern_load_norm,
                                   pattern_held_dot,
                                   held_load_norm),
-                  norm_over_harmonics(e.residual)};
+               norm_over_harmonics(e.residual)};
     for (unsigned int h = 0; h < set.size(); ++h)
       e.residual[h] -= state.correction_load[h];
     e.residual_norm = norm_over_harmonics(e.residual);
@@ -485,7 +517,9 @@ namespace FourierSSI
                  state.held_fraction * held_motion - target) >
           1e-8 * std::abs(target))
       return false;
-    state.plastic     = e.plastic;
+    state.plastic = e.plastic;
+    interface.commit_contact(e.relative, e.traction, state.slip, state.plastic);
+    state.origin      = state.plastic;
     result.iterations = iteration;
     result.residual   = e.scale.relative(e.residual_norm);
     result.states     = e.counts;
@@ -495,33 +529,31 @@ namespace FourierSSI
   }
 
   bool
-  CoupledInterfaceSolver::solve_step(const double       target,
-                                     StepState         &state,
-                                     LoadStepResult    &result,
-                                     InterfaceSnapshot &snapshot)
+  CoupledInterfaceSolver::iterate(const double  target,
+                                  StepState    &state,
+                                  Evaluation   &e,
+                                  unsigned int &iterations) const
   {
     FixedPointAcceleration acceleration(settings.acceleration,
                                         settings.anderson_depth);
     NewtonWatchdog         watchdog;
-    Evaluation             e = evaluate(target, state);
-    for (unsigned int iteration = 0; iteration <= settings.maximum_iterations;
-         ++iteration)
+    e = evaluate(target, state);
+    for (const unsigned int last = iterations + settings.maximum_iterations;
+         iterations <= last;
+         ++iterations)
       {
         if (!std::isfinite(e.residual_norm))
           return false;
         if (e.scale.converged(e.residual_norm, settings.tolerance))
           {
             if (!settings.tangent_stiffness)
-              return accept(target, e, iteration, state, result, snapshot);
-            // Newton: the iterate from the full solve K^-1 c, checked again.
-            // The flexibility blocks carry the round-off of K^-1, which a
-            // stiff interface (kappa >= 1e6) amplifies in G by kn; the next
-            // updates then start from the exact field (iterative
-            // refinement).
+              return true;
+            // Newton: the iterate from the full solve K^-1 c, checked again
+            // (iterative refinement of the flexibility blocks' round-off).
             complete(state);
             e = evaluate(target, state);
             if (e.scale.converged(e.residual_norm, settings.tolerance))
-              return accept(target, e, iteration, state, result, snapshot);
+              return true;
           }
         // Newton on the interface DoFs, safeguarded by a watchdog line
         // search (coupled_interface_newton.cc); where no step along the
@@ -540,6 +572,39 @@ namespace FourierSSI
         e = evaluate(target, state);
       }
     return false;
+  }
+
+  bool
+  CoupledInterfaceSolver::solve_step(const double       target,
+                                     StepState         &state,
+                                     LoadStepResult    &result,
+                                     InterfaceSnapshot &snapshot)
+  {
+    Evaluation   e;
+    unsigned int iterations = 0;
+    state.origin            = committed.origin;
+    for (unsigned int update = 0;; ++update)
+      {
+        if (!iterate(target, state, e, iterations))
+          return false;
+        if (!interface.any_contact())
+          break;
+        // Augmented Lagrangian (section 5d): lambda <- t, until the
+        // multipliers no longer move the origin of the return by more
+        // than the force test resolves.
+        double largest = 0.;
+        for (const LocalVector &d : e.relative)
+          for (const double v : d)
+            largest = std::max(largest, std::abs(v));
+        const double violation =
+          interface.update_multipliers(e.traction, state.slip, state.origin);
+        result.multiplier_updates = update + 1;
+        if (violation <= contact_tolerance * settings.tolerance * largest)
+          break;
+        if (update == maximum_multiplier_updates)
+          return false;
+      }
+    return accept(target, e, iterations, state, result, snapshot);
   }
 
   std::array<double, 6>
@@ -720,6 +785,7 @@ namespace FourierSSI
           << " where the interface traction calls for them (tolerance "
           << settings.harmonic_tolerance << ")";
     log << '\n';
+    interface.describe(log, sampling.n_samples(), highest_harmonic(harmonics));
     if (!parameters.rigid_foundation.held_motions.empty())
       {
         log << "held at zero (Rigid foundation/Held motions):";
@@ -825,7 +891,11 @@ namespace FourierSSI
             << result.motion.rotation << " rad, twist " << result.motion.twist
             << " rad; " << result.iterations << " iterations; stick/slip/open "
             << result.states[0] << '/' << result.states[1] << '/'
-            << result.states[2] << "; " << result.n_harmonics << " harmonics\n";
+            << result.states[2] << "; " << result.n_harmonics << " harmonics";
+        if (result.multiplier_updates > 0)
+          log << "; " << result.multiplier_updates
+              << " contact multiplier updates";
+        log << '\n';
       }
   }
 } // namespace FourierSSI

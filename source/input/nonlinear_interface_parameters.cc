@@ -6,15 +6,16 @@ namespace FourierSSI
   NonlinearInterfaceParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Nonlinear interfaces");
-    prm.declare_entry("Theta samples",
-                      "0",
-                      Patterns::Integer(0, most_theta_samples),
-                      "Angles N at which the interface law is evaluated. 0: "
-                      "4 (n_max + 1). Must exceed 2 n_max (n_max the highest "
-                      "harmonic), else a band-limited field aliases. At "
-                      "most 8192; the memory of the coupled state (N times "
-                      "the soil's quadrature points) is checked against the "
-                      "free memory before the run.");
+    prm.declare_entry(
+      "Theta samples",
+      "0",
+      Patterns::Integer(0, most_theta_samples),
+      "Angles N at which the interface law is evaluated. 0: "
+      "4 (n_max + 1), 2 n_max + 1 with a contact interface. Must exceed 2 n_max (n_max the highest "
+      "harmonic), else a band-limited field aliases. At "
+      "most 8192; the memory of the coupled state (N times "
+      "the soil's quadrature points) is checked against the "
+      "free memory before the run.");
     prm.declare_entry("Load steps",
                       "10",
                       Patterns::Integer(1, most_load_steps),

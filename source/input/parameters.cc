@@ -426,6 +426,15 @@ namespace FourierSSI
           VolumetricStrain::standard;
     initial_stress.parse_parameters(prm);
     nonlinear_interfaces.parse_parameters(prm);
+    // Newton on the interface-only iteration assembles coulomb springs no
+    // stiffer than interface_iteration_stiffness G / l (interface_law.h).
+    if (nonlinear_interfaces.tangent_stiffness && !soil_plasticity.any())
+      interfaces.iteration_stiffness_cap = interface_iteration_stiffness;
+    for (const auto &[id, law] : interfaces.laws)
+      AssertThrow(!law.contact || !soil_plasticity.any(),
+                  ExcMessage("Interfaces/Interfaces: not yet: contact with "
+                             "Soil plasticity (boundary id " +
+                             std::to_string(id) + "; use coulomb)"));
     for (const auto &law : soil_plasticity.laws)
       AssertThrow(materials.has(law.first),
                   ExcMessage("Soil plasticity/Laws: material " +

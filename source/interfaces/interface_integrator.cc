@@ -27,6 +27,38 @@ namespace FourierSSI
     return ids;
   }
 
+  const ElasticMaterial &
+  InterfaceIntegrator::soil_of(const InterfacePair &pair,
+                               const InterfaceLaw  &law) const
+  {
+    const double depth = materials.depth(pair.center[1]);
+    const auto   check = [&](const int id) -> const ElasticMaterial   &{
+      AssertThrow(materials.has(id),
+                  ExcMessage("Interfaces/Interfaces: material " +
+                             std::to_string(id) + " of interface " +
+                             std::to_string(pair.boundary_id) +
+                             " is not defined"));
+      return materials.get(id);
+    };
+    if (law.material >= 0)
+      return check(law.material);
+    const ElasticMaterial &a = check(pair.material_a);
+    const ElasticMaterial &b = check(pair.material_b);
+    return a.shear_modulus(depth) <= b.shear_modulus(depth) ? a : b;
+  }
+
+  double
+  InterfaceIntegrator::soil_scale(
+    const InterfacePair &pair,
+    const InterfaceLaw  &law,
+    const std::map<types::boundary_id, std::pair<double, unsigned int>>
+      &lengths) const
+  {
+    const auto &[sum, count] = lengths.at(pair.boundary_id);
+    return soil_of(pair, law).shear_modulus(materials.depth(pair.center[1])) /
+           (sum / count);
+  }
+
   void
   InterfaceIntegrator::setup(const DoFHandler<2> &dof_handler)
   {
@@ -41,6 +73,8 @@ namespace FourierSSI
         ++lengths[pair.boundary_id].second;
       }
     stiffness.clear();
+    law_stiffness.clear();
+    soil_scales.clear();
     matrices.clear();
     for (const InterfacePair &pair : pairs)
       {
@@ -50,31 +84,30 @@ namespace FourierSSI
                              law.tied || law.tied_normal ? 0. : law.shear};
         if (law.vermeer)
           {
-            // G, nu of the soil side at the face centre's depth.
-            const double depth = materials.depth(pair.center[1]);
-            const auto   check = [&](const int id) -> const ElasticMaterial   &{
-              AssertThrow(materials.has(id),
-                          ExcMessage("Interfaces/Interfaces: material " +
-                                     std::to_string(id) + " of interface " +
-                                     std::to_string(pair.boundary_id) +
-                                     " is not defined"));
-              return materials.get(id);
-            };
-            const ElasticMaterial *soil = nullptr;
-            if (law.material >= 0)
-              soil = &check(law.material);
-            else
-              {
-                const ElasticMaterial &a = check(pair.material_a);
-                const ElasticMaterial &b = check(pair.material_b);
-                soil =
-                  a.shear_modulus(depth) <= b.shear_modulus(depth) ? &a : &b;
-              }
-            const auto &[sum, count] = lengths[pair.boundary_id];
-            const double l           = sum / count;
-            const double G           = soil->shear_modulus(depth);
-            k.shear                  = law.mu * G / l;
-            k.normal = law.mu * G / ((1. - 2. * soil->poisson_ratio) * l);
+            const ElasticMaterial &soil     = soil_of(pair, law);
+            const double           G_over_l = soil_scale(pair, law, lengths);
+            k.shear                         = law.mu * G_over_l;
+            k.normal = law.mu * G_over_l / (1. - 2. * soil.poisson_ratio);
+          }
+        // G / l where a rule needs it (the springs of a nonlinear law are
+        // compared with it in the log).
+        const double G_over_l =
+          law.is_nonlinear() ? soil_scale(pair, law, lengths) : 0.;
+        soil_scales.push_back(G_over_l);
+        if (law.automatic_normal)
+          k.normal = automatic_interface_stiffness * G_over_l;
+        if (law.automatic_shear)
+          k.shear = automatic_interface_stiffness * G_over_l;
+        if (law.contact)
+          k.normal = k.shear = interface_iteration_stiffness * G_over_l;
+        law_stiffness.push_back(k);
+        if (law.coulomb && parameters.iteration_stiffness_cap > 0.)
+          {
+            // Newton: K with springs no stiffer than the cap (the law's
+            // kn, ks act through the return mapping, section 5b).
+            const double cap = parameters.iteration_stiffness_cap * G_over_l;
+            k.normal         = std::min(k.normal, cap);
+            k.shear          = std::min(k.shear, cap);
           }
         stiffness.push_back(k);
         matrices.push_back(

@@ -25,7 +25,8 @@ namespace FourierSSI
     {
       AssertThrow(complete,
                   ExcMessage(entry + " coulomb needs kn, ks and phi" + where));
-      AssertThrow(law.normal > 0. && law.shear > 0.,
+      AssertThrow((law.normal > 0. || law.automatic_normal) &&
+                    (law.shear > 0. || law.automatic_shear),
                   ExcMessage(entry + " coulomb needs kn > 0 and ks > 0" +
                              where));
       AssertThrow(law.friction_angle < 90.,
@@ -48,6 +49,39 @@ namespace FourierSSI
                              "friction has its apex as cut-off)" +
                              where));
     }
+
+    /**
+     * The contact law's admissible data: phi given, 0 <= phi < 90 degrees,
+     * c >= 0; no springs (non-penetration is exact), no dilation and no
+     * tension (a contact transmits none).
+     */
+    void
+    check_contact(const InterfaceLaw          &law,
+                  const bool                   springs_given,
+                  const std::set<std::string> &keys,
+                  const std::string           &entry,
+                  const std::string           &where)
+    {
+      AssertThrow(!springs_given,
+                  ExcMessage(entry +
+                             ": contact takes no kn or ks (non-penetration "
+                             "is exact; use coulomb for springs)" +
+                             where));
+      AssertThrow(keys.count("phi") == 1,
+                  ExcMessage(entry + ": contact needs phi" + where));
+      AssertThrow(law.friction_angle < 90.,
+                  ExcMessage(entry + ": contact phi must be below 90 degrees" +
+                             where));
+      AssertThrow(keys.count("psi") == 0 && keys.count("sigma_t") == 0,
+                  ExcMessage(entry +
+                             ": contact takes no psi or sigma_t (no "
+                             "dilation, no tension)" +
+                             where));
+      AssertThrow(keys.count("mu") == 0 && keys.count("material") == 0,
+                  ExcMessage(entry +
+                             ": mu and material belong to the vermeer law" +
+                             where));
+    }
   } // namespace
 
   void
@@ -68,10 +102,15 @@ namespace FourierSSI
       "'id: tied' (kn = ks = infinity) and 'id: tied-normal' (kn = infinity, "
       "ks = 0). Nonlinear Mohr-Coulomb slip with a tension cut-off: "
       "'id: coulomb, kn=1e6, ks=1e6, c=0, phi=25[, psi=0][, sigma_t=0]' "
-      "(kn, ks > 0 [kPa/m] elastic; c [kPa] cohesion; phi, psi [degrees] "
+      "(kn, ks > 0 [kPa/m] elastic, or 'auto': 1e3 G/l with G of the softer "
+      "side and l the mean face length, within about 0.1 % of rigid "
+      "contact, the rule printed in the log; c [kPa] cohesion; phi, psi [degrees] "
       "friction and dilation angles, 0 <= psi <= phi < 90; sigma_t [kPa] "
       "largest tension, 0 = tensionless (default), 'none' = no cut-off; "
-      "doc/nonlinear-interfaces.md). Empty: no interface.");
+      "doc/nonlinear-interfaces.md). Exact non-penetration with Coulomb "
+      "friction, no springs to choose: 'id: contact, phi=25[, c=0]' "
+      "(tensionless, augmented Lagrangian at the theta samples). Empty: no "
+      "interface.");
     prm.declare_entry("Pairing tolerance",
                       "1e-8",
                       Patterns::Double(0.),
@@ -130,12 +169,14 @@ namespace FourierSSI
                   law.tied_normal = true;
                 else if (token == "coulomb")
                   law.coulomb = true;
+                else if (token == "contact")
+                  law.contact = true;
                 else
                   AssertThrow(false,
                               ExcMessage(entry + ": unknown law '" + token +
                                          "' (expected rough, smooth, tied, "
-                                         "tied-normal, vermeer, coulomb or "
-                                         "kn=..., ks=...)"));
+                                         "tied-normal, vermeer, coulomb, "
+                                         "contact or kn=..., ks=...)"));
                 continue;
               }
             const std::string key = Utilities::trim(token.substr(0, eq));
@@ -145,6 +186,15 @@ namespace FourierSSI
               {
                 law.tension_cutoff = std::numeric_limits<double>::infinity();
                 has_strength       = true;
+                continue;
+              }
+            if ((key == "kn" || key == "ks") &&
+                Utilities::trim(token.substr(eq + 1)) == "auto")
+              {
+                // automatic_interface_stiffness G / l, per face.
+                (key == "kn" ? law.automatic_normal : law.automatic_shear) =
+                  true;
+                (key == "kn" ? has_kn : has_ks) = true;
                 continue;
               }
             const double value = number_in_entry(token.substr(eq + 1), entry);
@@ -174,12 +224,20 @@ namespace FourierSSI
                                      "phi, psi or sigma_t)"));
           }
         const std::string where = " for boundary id " + std::to_string(id);
-        AssertThrow(law.coulomb || !has_strength,
+        AssertThrow(law.is_nonlinear() || !has_strength,
                     ExcMessage(entry +
                                ": c, phi, psi and sigma_t belong to the "
+                               "coulomb and contact laws" +
+                               where));
+        AssertThrow(law.is_nonlinear() ||
+                      !(law.automatic_normal || law.automatic_shear),
+                    ExcMessage(entry +
+                               ": kn=auto, ks=auto belong to the "
                                "coulomb law" +
                                where));
-        if (law.coulomb)
+        if (law.contact)
+          check_contact(law, has_kn || has_ks, keys_given, entry, where);
+        else if (law.coulomb)
           {
             AssertThrow(!has_mu && !has_material,
                         ExcMessage(entry +
@@ -223,8 +281,14 @@ namespace FourierSSI
   }
 
   MohrCoulombInterface::MohrCoulombInterface(const InterfaceLaw &law)
-    : kn(law.normal)
-    , ks(law.shear)
+    : MohrCoulombInterface(law, law.normal, law.shear)
+  {}
+
+  MohrCoulombInterface::MohrCoulombInterface(const InterfaceLaw &law,
+                                             const double        kn,
+                                             const double        ks)
+    : kn(kn)
+    , ks(ks)
     , cohesion(law.cohesion)
     , tan_phi(std::tan(law.friction_angle * numbers::PI / 180.))
     , tan_psi(std::tan(law.dilation_angle * numbers::PI / 180.))

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/lac/full_matrix.h>
 #include <fourier_ssi/fourier/harmonic_pair_integral.h>
@@ -46,22 +47,26 @@ namespace FourierSSI
     const AllParameters &parameters)
     : set(set)
   {
-    const std::vector<InterfacePair>          &pairs = pairs_of(set.problem(0));
-    std::map<types::boundary_id, unsigned int> law_index;
-    for (const auto &[id, law] : parameters.interfaces.laws)
-      if (law.is_nonlinear())
-        {
-          law_index[id] = laws.size();
-          laws.emplace_back(law);
-          stiffness.push_back({{law.shear, law.normal, law.shear}});
-          if (law.cohesion == 0. && !parameters.initial_stress.enabled())
-            strengthless = true;
-        }
+    const std::vector<InterfacePair> &pairs = pairs_of(set.problem(0));
+    const InterfaceIntegrator &integrator   = *set.problem(0).get_interfaces();
     for (unsigned int i = 0; i < pairs.size(); ++i)
       {
-        const auto law = law_index.find(pairs[i].boundary_id);
-        if (law == law_index.end())
+        const InterfaceLaw &law =
+          parameters.interfaces.laws.at(pairs[i].boundary_id);
+        if (!law.is_nonlinear())
           continue;
+        // One law per pair: its springs are resolved per face (contact's
+        // augmentation, G / l), and K may hold softer ones (Newton's cap).
+        const InterfaceStiffness &spring    = integrator.get_law_stiffness()[i];
+        const InterfaceStiffness &in_K      = integrator.get_stiffness()[i];
+        const unsigned int        law_index = laws.size();
+        laws.emplace_back(law, spring.normal, spring.shear);
+        stiffness.push_back({{in_K.shear, in_K.normal, in_K.shear}});
+        contact.push_back(law.contact);
+        law_springs.push_back({{spring.shear, spring.normal, spring.shear}});
+        soil_scale.push_back(integrator.get_soil_scale()[i]);
+        if (law.cohesion == 0. && !parameters.initial_stress.enabled())
+          strengthless = true;
         nonlinear_pairs.push_back(i);
         const unsigned int p = pairs[i].nodes.size() - 1;
         // Gauss p + 1 points: exact for the elastic part N_i N_j r (degree
@@ -71,7 +76,7 @@ namespace FourierSSI
           {
             InterfacePoint point;
             point.pair  = i;
-            point.law   = law->second;
+            point.law   = law_index;
             point.shape = lagrange_values(p, gauss.point(q)[0]);
             for (unsigned int k = 0; k <= p; ++k)
               for (unsigned int d = 0; d < 2; ++d)
@@ -219,6 +224,133 @@ namespace FourierSSI
                             r.tangent[a * 3 + b] / stiffness[points[i].law][a];
                     });
     return result;
+  }
+
+  std::vector<LocalVector>
+  NonlinearInterfacePoints::iteration_plastic(
+    const std::vector<LocalVector> &relative,
+    const std::vector<LocalVector> &traction,
+    const std::vector<LocalVector> &plastic) const
+  {
+    const unsigned int       N = relative.size() / std::max<size_t>(size(), 1);
+    std::vector<LocalVector> result = plastic;
+    for (unsigned int i = 0; i < points.size(); ++i)
+      {
+        const unsigned int law = points[i].law;
+        if (stiffness[law] == law_springs[law])
+          continue;
+        for (unsigned int j = 0; j < N; ++j)
+          for (unsigned int c = 0; c < 3; ++c)
+            {
+              const unsigned int k = i * N + j;
+              result[k][c]         = relative[k][c] -
+                             (traction[k][c] - points[i].initial_traction[c]) /
+                               stiffness[law][c];
+            }
+      }
+    return result;
+  }
+
+  void
+  NonlinearInterfacePoints::describe(std::ostream      &log,
+                                     const unsigned int n_samples,
+                                     const unsigned int highest_harmonic) const
+  {
+    // Per boundary id: contact or not, and the smallest kn l / G of its
+    // faces (the largest compliance error).
+    struct Springs
+    {
+      bool   contact  = false;
+      double smallest = std::numeric_limits<double>::max();
+    };
+    std::map<types::boundary_id, Springs> by_id;
+    for (const InterfacePoint &point : points)
+      {
+        Springs &springs = by_id[pair_of(point).boundary_id];
+        springs.contact  = contact[point.law];
+        springs.smallest =
+          std::min(springs.smallest,
+                   law_springs[point.law][1] / soil_scale[point.law]);
+      }
+    const unsigned int needed = 2 * highest_harmonic + 1;
+    for (const auto &[id, springs] : by_id)
+      {
+        log << "interface " << id << ": ";
+        if (springs.contact)
+          log << "contact, exact non-penetration (augmented Lagrangian, "
+                 "augmentation "
+              << springs.smallest << " G/l)";
+        else
+          log << "coulomb, kn >= " << springs.smallest
+              << " G/l (G of the softer side, l the mean face length): "
+                 "compliance error against rigid contact about "
+              << compliance_error_coefficient << " G/(kn r0) <= "
+              << compliance_error_coefficient / springs.smallest
+              << " for a foundation of size r0 >= l";
+        log << "; " << n_samples
+            << " theta samples for n <= " << highest_harmonic
+            << " (2 n_max + 1 = " << needed << " carry the band-limited gap"
+            << (n_samples > needed ? ", more over-constrain a stiff penalty" :
+                                     "")
+            << ")\n";
+      }
+  }
+
+  bool
+  NonlinearInterfacePoints::any_contact() const
+  {
+    return std::find(contact.begin(), contact.end(), true) != contact.end();
+  }
+
+  double
+  NonlinearInterfacePoints::update_multipliers(
+    const std::vector<LocalVector> &traction,
+    const std::vector<LocalVector> &slip,
+    std::vector<LocalVector>       &origin) const
+  {
+    const unsigned int N = traction.size() / std::max<size_t>(size(), 1);
+    double             violation = 0.;
+    for (unsigned int i = 0; i < points.size(); ++i)
+      if (contact[points[i].law])
+        for (unsigned int j = 0; j < N; ++j)
+          for (unsigned int c = 0; c < 3; ++c)
+            {
+              // The origin p_c - (lambda - t0) / r makes the trial traction
+              // lambda + r (d - p_c); lambda <- t moves it by (t - lambda)/r,
+              // the penetration (c = n) or elastic slip the spring allowed.
+              const unsigned int k      = i * N + j;
+              const double       r      = stiffness[points[i].law][c];
+              const double       t0     = points[i].initial_traction[c];
+              const double       lambda = t0 + r * (slip[k][c] - origin[k][c]);
+              const double       change = (traction[k][c] - lambda) / r;
+              violation                 = std::max(violation, std::abs(change));
+              origin[k][c] -= change;
+            }
+    return violation;
+  }
+
+  void
+  NonlinearInterfacePoints::commit_contact(
+    const std::vector<LocalVector> &relative,
+    const std::vector<LocalVector> &traction,
+    std::vector<LocalVector>       &slip,
+    std::vector<LocalVector>       &origin) const
+  {
+    const unsigned int N = relative.size() / std::max<size_t>(size(), 1);
+    for (unsigned int i = 0; i < points.size(); ++i)
+      if (contact[points[i].law])
+        for (unsigned int j = 0; j < N; ++j)
+          {
+            // Exact contact keeps no elastic slip: the tangential relative
+            // displacement is all slip; the gap is no memory (its normal
+            // part 0), and the next step starts from lambda = t.
+            const unsigned int k = i * N + j;
+            slip[k]              = {{relative[k][0], 0., relative[k][2]}};
+            for (unsigned int c = 0; c < 3; ++c)
+              origin[k][c] =
+                slip[k][c] - (traction[k][c] - points[i].initial_traction[c]) /
+                               stiffness[points[i].law][c];
+          }
   }
 
   double

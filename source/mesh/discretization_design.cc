@@ -56,8 +56,8 @@ namespace FourierSSI
       bool
       slides_freely(const InterfaceLaw &law)
       {
-        return law.tied_normal ||
-               (!law.tied && !law.vermeer && !law.coulomb && law.shear == 0.);
+        return law.tied_normal || (!law.tied && !law.vermeer &&
+                                   !law.is_nonlinear() && law.shear == 0.);
       }
     } // namespace
 

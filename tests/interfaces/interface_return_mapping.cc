@@ -1,8 +1,8 @@
 // The closed-form return mapping of the Mohr-Coulomb interface with a tension
-// cut-off (include/fourier_ssi/interfaces/interface_law.h, doc/nonlinear-interfaces.md
-// section 2) against hand-computed cases, its consistency (returned
-// tractions on the slip surface), the .prm syntax of the laws (the linear
-// presets unchanged) and the rejected inputs.
+// cut-off (include/fourier_ssi/interfaces/interface_law.h,
+// doc/nonlinear-interfaces.md section 2) against hand-computed cases, its
+// consistency (returned tractions on the slip surface), the .prm syntax of the
+// laws (the linear presets unchanged) and the rejected inputs.
 //
 // Hand cases: kn = 1000 kPa/m, ks = 500 kPa/m, c = 10 kPa, phi = 30 deg,
 // initial traction t0 = (0, -100, 0) kPa (compression).
@@ -22,8 +22,8 @@
 #include "check.h"
 
 #include <cmath>
-#include <fourier_ssi/interfaces/interface_law.h>
 #include <fourier_ssi/input/messages.h>
+#include <fourier_ssi/interfaces/interface_law.h>
 #include <random>
 
 using namespace FourierSSI;
@@ -244,6 +244,15 @@ namespace
     check::that("sigma_t default 0 (tensionless)",
                 law_of("coulomb, kn=1, ks=1, phi=20").tension_cutoff == 0.);
     check::that("sigma_t=none", std::isinf(laws.at(9).tension_cutoff));
+    const InterfaceLaw contact = law_of("contact, c=2, phi=20");
+    check::that("contact: tensionless, no dilation, no springs given",
+                contact.contact && contact.is_nonlinear() &&
+                  contact.cohesion == 2. && contact.friction_angle == 20. &&
+                  contact.tension_cutoff == 0. &&
+                  contact.dilation_angle == 0. && contact.normal == 0.);
+    const InterfaceLaw automatic = law_of("coulomb, kn=auto, ks=auto, phi=20");
+    check::that("kn=auto, ks=auto",
+                automatic.automatic_normal && automatic.automatic_shear);
 
     const std::pair<std::string, std::string> bad[] = {
       {"5: coulomb, kn=1e6, ks=1e6, phi=90", "phi must be below 90"},
@@ -255,7 +264,13 @@ namespace
       {"5: coulomb, kn=1e6, ks=1e6, phi=20, psi=30", "psi must not exceed phi"},
       {"5: coulomb, kn=1e6, ks=1e6, phi=30, c=1, sigma_t=5", "apex"},
       {"5: coulomb, kn=1e6, ks=1e6", "needs kn, ks and phi"},
-      {"5: rough, phi=30", "belong to the coulomb law"}};
+      {"5: rough, phi=30", "belong to the coulomb and contact laws"},
+      {"5: contact, kn=1e6, phi=20", "contact takes no kn or ks"},
+      {"5: contact, ks=auto, phi=20", "contact takes no kn or ks"},
+      {"5: contact, phi=90", "contact phi must be below 90"},
+      {"5: contact, c=1", "contact needs phi"},
+      {"5: contact, phi=20, sigma_t=0", "contact takes no psi or sigma_t"},
+      {"5: kn=auto, ks=1e6", "kn=auto, ks=auto belong to the coulomb law"}};
     for (const auto &[text, expected] : bad)
       {
         const std::string message = error_of(text);

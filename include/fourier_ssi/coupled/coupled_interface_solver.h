@@ -93,6 +93,8 @@ namespace FourierSSI
      * the origin (x, y, z) [kN m].
      */
     std::array<double, 6> resultant = {{0., 0., 0., 0., 0., 0.}};
+    /** Uzawa updates of the contact multipliers (0: no contact). */
+    unsigned int multiplier_updates = 0;
     /** Wall time of the step [s]. */
     double time = 0.;
     /** Harmonics solved in this step (grows with Maximum harmonic). */
@@ -231,6 +233,14 @@ namespace FourierSSI
       double controlled_motion = 0.;
       /** Plastic relative displacement per point and sample. */
       std::vector<LocalVector> plastic;
+      /**
+       * What the return mapping starts from at every sample: the committed
+       * plastic part, at contact samples shifted by the multipliers
+       * (NonlinearInterfacePoints::update_multipliers).
+       */
+      std::vector<LocalVector> origin;
+      /** Committed slip p_c of the contact samples (zero elsewhere). */
+      std::vector<LocalVector> slip;
     };
 
     void
@@ -358,7 +368,7 @@ namespace FourierSSI
 
     /** dc of (I - dG/dc) dc = R, the write DoFs of every harmonic in turn. */
     Vector<double>
-    newton_direction(const Evaluation &e) const;
+    newton_direction(const Evaluation &e, const StepState &state) const;
 
     /** c += alpha dc (dc as newton_direction() orders it). */
     void
@@ -375,9 +385,24 @@ namespace FourierSSI
 
     /** dG/dc on the write DoFs of every harmonic, dense (column (h, j)). */
     FullMatrix<double>
-    out_of_balance_jacobian(const Evaluation &e) const;
+    out_of_balance_jacobian(const Evaluation &e, const StepState &state) const;
 
-    /** Iterate one step to lambda (load control) or to a motion target. */
+    /**
+     * The iteration (Newton or fixed point) at fixed contact multipliers
+     * until the force test passes; `e` the converged evaluation,
+     * `iterations` counts on. False if it does not converge.
+     */
+    bool
+    iterate(const double  target,
+            StepState    &state,
+            Evaluation   &e,
+            unsigned int &iterations) const;
+
+    /**
+     * Iterate one step to lambda (load control) or to a motion target;
+     * with contact interfaces, Uzawa updates of the multipliers around
+     * iterate() until the contact conditions hold to round-off.
+     */
     bool
     solve_step(const double       target,
                StepState         &state,

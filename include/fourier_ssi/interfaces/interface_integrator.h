@@ -16,9 +16,10 @@
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/fourier/harmonic.h>
+#include <fourier_ssi/fourier/material.h>
 #include <fourier_ssi/interfaces/interface_element.h>
 #include <fourier_ssi/interfaces/interface_pairing.h>
-#include <fourier_ssi/fourier/material.h>
+#include <map>
 #include <ostream>
 #include <set>
 #include <string>
@@ -99,18 +100,53 @@ namespace FourierSSI
       return pairs;
     }
 
+    /** The springs assembled into K, per pair. */
     const std::vector<InterfaceStiffness> &
     get_stiffness() const
     {
       return stiffness;
     }
 
+    /**
+     * The springs of each pair's law (kn, ks resolved: vermeer's rule, the
+     * augmentation of contact); get_stiffness() but where Newton caps a
+     * coulomb interface's springs in K (InterfaceParameters::
+     * iteration_stiffness_cap).
+     */
+    const std::vector<InterfaceStiffness> &
+    get_law_stiffness() const
+    {
+      return law_stiffness;
+    }
+
+    /** G / l of each pair [kPa/m] (soil_scale()). */
+    const std::vector<double> &
+    get_soil_scale() const
+    {
+      return soil_scales;
+    }
+
   private:
+    /**
+     * The soil of a pair: the law's material, or the side of lower G at
+     * the face centre's depth.
+     */
+    const ElasticMaterial &
+    soil_of(const InterfacePair &pair, const InterfaceLaw &law) const;
+
+    /** G / l [kPa/m]: the soil's G at the face, l the mean face length. */
+    double
+    soil_scale(const InterfacePair                             &pair,
+               const InterfaceLaw                              &law,
+               const std::map<types::boundary_id,
+                              std::pair<double, unsigned int>> &lengths) const;
+
     const InterfaceParameters      &parameters;
     const MaterialLibrary          &materials;
     const Harmonic                  harmonic;
     std::vector<InterfacePair>      pairs;
-    std::vector<InterfaceStiffness> stiffness;
+    std::vector<InterfaceStiffness> stiffness, law_stiffness;
+    std::vector<double>             soil_scales;
     std::vector<FullMatrix<double>> matrices;
   };
 } // namespace FourierSSI

@@ -58,12 +58,57 @@ namespace FourierSSI
     /** sigma_t [kPa]: largest tensile t_n; infinity = no cut-off. */
     double tension_cutoff = 0.;
 
+    /**
+     * Exact non-penetration with Coulomb friction (`contact, phi=..,
+     * c=..`): the coulomb law without kn, ks, tensionless, no dilation,
+     * enforced by an augmented Lagrangian at the theta samples
+     * (doc/nonlinear-interfaces.md section 5d); its springs are the
+     * augmentation, interface_iteration_stiffness G / l.
+     */
+    bool contact = false;
+
+    /**
+     * kn=auto, ks=auto (coulomb): automatic_interface_stiffness G / l,
+     * resolved per face by InterfaceIntegrator (G of the softer side at the
+     * face, l the interface's mean face length).
+     */
+    bool automatic_normal = false, automatic_shear = false;
+
     bool
     is_nonlinear() const
     {
-      return coulomb;
+      return coulomb || contact;
     }
   };
+
+  /**
+   * The stiffest interface spring the condensed interface iteration is
+   * given, in units of G / l (G the shear modulus of the softer side at the
+   * face, l the interface's mean face length): the augmentation of
+   * `contact`, and under Newton (Nonlinear interfaces/Stiffness = tangent)
+   * the cap on the springs of a coulomb interface assembled into K (its
+   * own kn, ks stay in the return mapping). Stiffer springs make K^-1 and
+   * the correction load c = int B^T (D d - (t - t0)) carry about kappa
+   * times the round-off of the applied load, which at kappa = 1e8 left the
+   * Newton matrix without a correct digit (section 5b).
+   */
+  constexpr double interface_iteration_stiffness = 1e3;
+
+  /**
+   * C of the compliance error of a penalty interface: against rigid
+   * contact the load-displacement answer is off by about C G / (kn r0)
+   * (r0 the foundation's size), measured C = 1.2 on the disc in a ring
+   * (doc/nonlinear-interfaces.md section 5e).
+   */
+  constexpr double compliance_error_coefficient = 1.2;
+
+  /**
+   * kn=auto, ks=auto: springs of this times G / l. With the face length l
+   * no larger than the foundation, the compliance error is below
+   * compliance_error_coefficient / 1e3 = 1.2e-3; and K then holds the
+   * law's springs under Newton too (interface_iteration_stiffness).
+   */
+  constexpr double automatic_interface_stiffness = 1e3;
 
   /** Subsection "Interfaces" of the .prm file. */
   struct InterfaceParameters
@@ -87,6 +132,14 @@ namespace FourierSSI
     {
       return !laws.empty();
     }
+
+    /**
+     * > 0: coulomb interfaces are assembled with springs of at most this
+     * times G / l (Newton, interface_iteration_stiffness); 0: with their
+     * own kn, ks (the initial-stiffness iteration needs K to be the law's
+     * elastic stiffness).
+     */
+    double iteration_stiffness_cap = 0.;
 
     /** True if some interface has a nonlinear law. */
     bool
@@ -163,6 +216,11 @@ namespace FourierSSI
   {
   public:
     explicit MohrCoulombInterface(const InterfaceLaw &law);
+
+    /** The law with the springs kn, ks given (resolved per face). */
+    MohrCoulombInterface(const InterfaceLaw &law,
+                         const double        kn,
+                         const double        ks);
 
     ReturnMappingResult
     return_map(const LocalVector &relative_displacement,

@@ -26,6 +26,7 @@
 #include <fourier_ssi/interfaces/interface_law.h>
 #include <fourier_ssi/interfaces/interface_pairing.h>
 #include <functional>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -121,7 +122,8 @@ namespace FourierSSI
                std::vector<ContactState>      &state) const;
 
     /**
-     * At every sample, dd_p/dd = I - D^-1 D_t (row-major) of the return
+     * At every sample, dd_p/dd = I - D_K^-1 D_t (row-major; D_K the
+     * springs in K, iteration_plastic()) of the return
      * from committed_plastic: how the plastic part follows a change of the
      * relative displacement (0 where it sticks, I where it is open), D_t
      * the consistent tangent (interface_law.h). load_of() of the plastic
@@ -130,6 +132,63 @@ namespace FourierSSI
     std::vector<LocalTangent>
     plastic_tangents(const std::vector<LocalVector> &relative,
                      const std::vector<LocalVector> &committed_plastic) const;
+
+    /**
+     * d_p of the springs assembled into K at every sample,
+     * d - D_K^-1 (t - t0): load_of() of it is the correction load c =
+     * int B^T (D_K d - (t - t0)) that makes K u = lambda F + c carry the
+     * law's traction t. Where K holds the law's springs (no cap; contact)
+     * that is the law's plastic part, taken as it is (the difference
+     * d - (d - d_p) would add round-off of d to it, which slowed the
+     * fixed-point iteration 2.3 times at kappa = 1e4); under Newton's cap
+     * (coulomb) it holds what the law's stiffer response adds.
+     */
+    std::vector<LocalVector>
+    iteration_plastic(const std::vector<LocalVector> &relative,
+                      const std::vector<LocalVector> &traction,
+                      const std::vector<LocalVector> &plastic) const;
+
+    /**
+     * One line per nonlinear interface with the rule that ties its springs,
+     * the theta samples and the harmonics (doc/nonlinear-interfaces.md
+     * section 5e): kn, ks against G / l, the estimated compliance error
+     * against rigid contact C G / (kn l) (an upper bound of C G / (kn r0)
+     * for a foundation r0 >= l), and the samples 2 n_max + 1 that carry
+     * the band-limited gap; for contact, the augmentation.
+     */
+    void
+    describe(std::ostream      &log,
+             const unsigned int n_samples,
+             const unsigned int highest_harmonic) const;
+
+    /** Some nonlinear interface is `contact` (augmented Lagrangian). */
+    bool
+    any_contact() const;
+
+    /**
+     * Uzawa update of the contact multipliers (doc/nonlinear-interfaces.md
+     * section 5d): at every contact sample the return starts from the
+     * origin p_c - (lambda - t0) / r (p_c the committed slip, r the
+     * augmentation), so its trial traction is lambda + r (d - p_c); here
+     * lambda <- t. Returns the largest change of the origin [m]: the
+     * penetration and elastic slip the augmentation still allowed, zero
+     * when the contact conditions hold exactly.
+     */
+    double
+    update_multipliers(const std::vector<LocalVector> &traction,
+                       const std::vector<LocalVector> &slip,
+                       std::vector<LocalVector>       &origin) const;
+
+    /**
+     * A converged step at the contact samples: p_c <- (d_s, 0, d_theta)
+     * (exact contact has no elastic slip), and the origin of the next step
+     * from lambda = t.
+     */
+    void
+    commit_contact(const std::vector<LocalVector> &relative,
+                   const std::vector<LocalVector> &traction,
+                   std::vector<LocalVector>       &slip,
+                   std::vector<LocalVector>       &origin) const;
 
     /**
      * The largest f(t) = tau + t_n tan(phi) - c over the samples given
@@ -209,8 +268,13 @@ namespace FourierSSI
 
     const HarmonicSet                &set;
     std::vector<MohrCoulombInterface> laws;
-    /** (ks, kn, ks) per law [kPa/m]. */
-    std::vector<LocalVector>    stiffness;
+    /** (ks, kn, ks) assembled into K, per law (one law per pair) [kPa/m]. */
+    std::vector<LocalVector> stiffness;
+    /** Per law: contact (augmented Lagrangian) rather than coulomb. */
+    std::vector<bool> contact;
+    /** Per law: its springs (ks, kn, ks) and G / l of its pair. */
+    std::vector<LocalVector>    law_springs;
+    std::vector<double>         soil_scale;
     std::vector<InterfacePoint> points;
     /** The pairs with a coulomb law (indices into get_pairs()). */
     std::vector<unsigned int> nonlinear_pairs;
