@@ -72,13 +72,13 @@ verify("torsion T/(a^3 s_u)",
        capacity("torsion", ["Discretization/Family=antisymmetric",
                             "Rigid foundation/Vertical force=0",
                             "Rigid foundation/Torque=1",
-                            "Nonlinear interfaces/Controlled motion=twist",
-                            "Nonlinear interfaces/Target=0.02",
-                            "Nonlinear interfaces/Load steps=10"]),
+                            "Load path/Controlled motion=twist",
+                            "Load path/Target=0.02",
+                            "Load path/Load steps=10"]),
        2.0 * math.pi / 3.0)
 verify("vertical N_c",
-       capacity("vertical", ["Nonlinear interfaces/Target=-0.04",
-                             "Nonlinear interfaces/Load steps=8"]),
+       capacity("vertical", ["Load path/Target=-0.04",
+                             "Load path/Load steps=8"]),
        6.05)
 
 # A load-controlled scene has no plateau to read: refused in one line.

@@ -62,7 +62,7 @@ def relative_error(values, reference):
 # Coulomb interface.
 delta = 1e-3
 log = run("coulomb", "tests/prm/nonconverging_coulomb_step.prm", """
-subsection Nonlinear interfaces
+subsection Load path
   set Load steps = 2
   set Maximum iterations = 60
 end
@@ -98,7 +98,7 @@ check("sigma_r" in fields[1] and
 # Plastic soil.
 w = -0.01
 log = run("plastic", "prm/footing-capacity.prm", """
-subsection Nonlinear interfaces
+subsection Load path
   set Load steps = 2
   set Target = %g
 end

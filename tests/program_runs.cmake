@@ -61,13 +61,13 @@ add_test(NAME program_disc_gap
 set_tests_properties(program_disc_gap PROPERTIES
   PASS_REGULAR_EXPRESSION "load-displacement curve written to")
 
-# A load step that does not converge: one line naming Nonlinear interfaces,
+# A load step that does not converge: one line naming Load path,
 # non-zero exit, no result file. Not a bad_*.prm (those also run under
 # mpirun): its 2-rank variant is tests/mpi/ mpi_input_nonconverging_coulomb_step.
 add_test(NAME input_nonconverging_coulomb_step
   COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi>
           -DPRM=${CMAKE_CURRENT_SOURCE_DIR}/prm/nonconverging_coulomb_step.prm
-          "-DEXPECTED=Nonlinear interfaces: load step 1 of 1 \\(after 1 cuts\\) did not converge"
+          "-DEXPECTED=Load path: load step 1 of 1 \\(after 1 cuts\\) did not converge"
           -DOUTPUT_DIR=${CMAKE_CURRENT_BINARY_DIR}/bad_output
           -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}
           -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_failure.cmake)

@@ -133,7 +133,7 @@ check_removed(linear_renamed.prm "other.csv" "linear_renamed_refused.prm")
 # 3. A coulomb interface (the disc of tests/prm/nonconverging_coulomb_step.prm
 #    with enough iterations to converge).
 file(READ ${SOURCE_DIR}/tests/prm/nonconverging_coulomb_step.prm coulomb)
-set(converging "subsection Nonlinear interfaces
+set(converging "subsection Load path
   set Load steps = 2
   set Maximum iterations = 60
 end")
@@ -150,7 +150,7 @@ subsection Interfaces
   set Interfaces = 5: coulomb, kn=1e6, ks=1e6, c=0, phi=90, sigma_t=0
 end")
 write_prm(coulomb_control_foo "${coulomb}" "${converging}\n${coulomb_output}
-subsection Nonlinear interfaces
+subsection Load path
   set Control = foo
 end")
 check_removed(coulomb.prm
@@ -159,7 +159,7 @@ check_removed(coulomb.prm
 
 # 4. Plastic soil: prm/footing-capacity.prm cut to two steps.
 file(READ ${SOURCE_DIR}/prm/footing-capacity.prm plastic)
-set(plastic_output "subsection Nonlinear interfaces
+set(plastic_output "subsection Load path
   set Load steps = 2
   set Target = -0.01
 end
@@ -188,7 +188,7 @@ subsection Mesh
   set R growth = 1, 1.5
   set Z cells = 1, 4
 end
-subsection Nonlinear interfaces
+subsection Load path
   set Theta samples = 8
   set Load steps = 2
   set Target = 0.02

@@ -382,10 +382,10 @@ def read_scene(args):
     if entries.get("Mesh/Type", "rectangle") != "rectangle":
         fail(args.prm + ": Mesh/Type must be rectangle (the levels scale its "
              "cell counts)")
-    if entries.get("Nonlinear interfaces/Control") != "displacement":
-        fail(args.prm + ": Nonlinear interfaces/Control must be displacement "
+    if entries.get("Load path/Control") != "displacement":
+        fail(args.prm + ": Load path/Control must be displacement "
              "(a load-controlled curve has no plateau to read)")
-    motion = entries.get("Nonlinear interfaces/Controlled motion", "")
+    motion = entries.get("Load path/Controlled motion", "")
     if motion not in LOAD_OF_MOTION:
         fail(args.prm + ": Controlled motion = %s is not one of %s" % (
             motion, ", ".join(LOAD_OF_MOTION)))

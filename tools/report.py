@@ -37,7 +37,7 @@ from matplotlib.patches import Patch, Rectangle  # noqa: E402
 STATES = ["stick", "slip", "open"]
 STATE_COLOURS = {"stick": "#4c72b0", "slip": "#dd8452", "open": "#c44e52"}
 # load-displacement.csv: the load column and the motion column of each
-# controllable motion (Nonlinear interfaces/Controlled motion).
+# controllable motion (Load path/Controlled motion).
 CURVE_COLUMNS = {"vertical": ("V", "V_kN", "vertical_m", "kN", "m"),
                  "horizontal": ("H", "H_kN", "horizontal_m", "kN", "m"),
                  "rotation": ("M", "M_kNm", "rotation_rad", "kN.m", "rad"),
@@ -422,8 +422,8 @@ def geometry_panel(fig, spec, prm):
 def controlled_motion(prm, rows):
     """The motion the curve drives: the prm's entry, else the load named by
     the capacity or end-load row, else the load that moved most."""
-    if prm and "Nonlinear interfaces/Controlled motion" in prm:
-        return prm["Nonlinear interfaces/Controlled motion"]
+    if prm and "Load path/Controlled motion" in prm:
+        return prm["Load path/Controlled motion"]
     for row in rows:
         m = re.fullmatch(r"(?:capacity|end_load)_([VHMT])", row["quantity"])
         if m:

@@ -96,7 +96,7 @@ subsection Rigid foundation
   set Held motions           = {held}
   set Capacity normalisation = {name} = {scale}
 end
-subsection Nonlinear interfaces
+subsection Load path
   set Control            = displacement
   set Controlled motion  = {motion}
   set Target             = {target}

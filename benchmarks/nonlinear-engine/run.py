@@ -13,7 +13,7 @@ Four solvers side by side in this one invocation, RUNS times each
 (default 3, medians; a case that fails or times out is run once):
   * newton65: this build, Stiffness = tangent, Theta samples = 65 =
     2 n_max + 1 (one sample per degree of freedom of the band-limited gap);
-  * newton:  this build, Nonlinear interfaces/Stiffness = tangent, the
+  * newton:  this build, Load path/Stiffness = tangent, the
     default Theta samples 4 (n_max + 1) = 132;
   * initial: this build, Stiffness = initial, Acceleration = anderson (the
     same iteration as before, with the convergence test against the
@@ -63,7 +63,7 @@ def scene(kappa, solver, out):
     text = re.sub(r"set Directory *= [^\n]*", "set Directory = " + out, text)
     text += "\nsubsection Discretization\n  set Harmonics = %s\nend\n" % (
         ", ".join(str(n) for n in range(33)))
-    text += "\nsubsection Nonlinear interfaces\n  set Acceleration = anderson\n"
+    text += "\nsubsection Load path\n  set Acceleration = anderson\n"
     if solver.startswith("newton") or solver == "main65":
         text += "  set Stiffness = tangent\n"
         if solver in ("newton65", "main65"):

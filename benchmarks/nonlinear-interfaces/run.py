@@ -84,7 +84,7 @@ def run_case(exe, scene, n_max, steps, target, acc, work, listed=None,
     out = os.path.join(work, "out")
     text += (
         "\nsubsection Discretization\n  set Harmonics = %s\nend\n"
-        "subsection Nonlinear interfaces\n  set Load steps = %d\n"
+        "subsection Load path\n  set Load steps = %d\n"
         "  set Target = %s\n  set Acceleration = %s\n"
         "  set Maximum harmonic = %d\nend\n"
         "subsection Output\n  set Directory = %s\nend\n"

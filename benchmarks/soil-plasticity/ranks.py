@@ -72,7 +72,7 @@ def run_case(exe, case, work, launcher):
         text = f.read()
     out = os.path.join(work, "out")
     text += ("\nsubsection Discretization\n  set Harmonics = %s\nend\n"
-             "subsection Nonlinear interfaces\n  set Load steps = %d\n"
+             "subsection Load path\n  set Load steps = %d\n"
              "  set Target = %s\nend\n"
              "subsection Soil plasticity\n  set Stiffness = elastic\nend\n"
              "subsection Output\n  set Directory = %s\nend\n"

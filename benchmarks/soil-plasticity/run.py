@@ -60,7 +60,7 @@ def run_case(exe, n_max, work, stiffness="tangent", scene=SCENE,
     if shortened:
         text += (
             "\nsubsection Discretization\n  set Harmonics = %s\nend\n"
-            "subsection Nonlinear interfaces\n  set Load steps = %d\n"
+            "subsection Load path\n  set Load steps = %d\n"
             "  set Target = %s\nend\n" % (harmonics(n_max), STEPS, TARGET))
     text += ("\nsubsection Soil plasticity\n  set Stiffness = %s\nend\n"
              "subsection Output\n  set Directory = %s\nend\n"

@@ -47,7 +47,7 @@ namespace FourierSSI
     , mixing(mixing)
   {
     AssertThrow(depth >= 1,
-                ExcMessage("Nonlinear interfaces/Anderson depth: must be at "
+                ExcMessage("Load path/Anderson depth: must be at "
                            "least 1"));
   }
 

@@ -1,4 +1,4 @@
-// Newton for the interface-only coupled iteration (Nonlinear interfaces/
+// Newton for the interface-only coupled iteration (Load path/
 // Stiffness = tangent, doc/nonlinear-interfaces.md section 5b): the unknown
 // is the correction load c on the write DoFs of every harmonic, the
 // residual R(c) = G(c) - c, and

@@ -13,7 +13,7 @@ namespace FourierSSI
 {
   namespace
   {
-    const std::string entry = "Nonlinear interfaces";
+    const std::string entry = "Load path";
 
     /**
      * Contact (augmented Lagrangian): the multipliers have converged when
@@ -35,7 +35,7 @@ namespace FourierSSI
      */
     unsigned int
     theta_samples_for(const std::vector<Harmonic>        &list,
-                      const NonlinearInterfaceParameters &settings,
+                      const LoadPathParameters &settings,
                       const InterfaceParameters          &interfaces)
     {
       const unsigned int n_max =
@@ -56,9 +56,9 @@ namespace FourierSSI
     }
 
     std::string
-    name_of(const NonlinearInterfaceParameters &settings)
+    name_of(const LoadPathParameters &settings)
     {
-      using Kind = NonlinearInterfaceParameters::Acceleration;
+      using Kind = LoadPathParameters::Acceleration;
       if (settings.tangent_stiffness)
         return ", Newton (consistent tangent, line search)";
       return settings.acceleration == Kind::anderson ?
@@ -109,7 +109,7 @@ namespace FourierSSI
     const AllParameters &parameters)
     : set(set)
     , parameters(parameters)
-    , settings(parameters.nonlinear_interfaces)
+    , settings(parameters.load_path)
     , harmonics(set.get_harmonics())
     , sampling(harmonics,
                theta_samples_for(harmonics, settings, parameters.interfaces))
@@ -169,7 +169,7 @@ namespace FourierSSI
           Vector<double>(set.problem(h).get_dof_handler().n_dofs()));
     pattern_relative =
       interface.relative_displacements(pattern_solution, sampling);
-    if (settings.control == NonlinearInterfaceParameters::Control::displacement)
+    if (settings.control == LoadPathParameters::Control::displacement)
       {
         const unsigned int h = controlled_harmonic();
         pattern_motion       = from_owner(
@@ -212,7 +212,7 @@ namespace FourierSSI
           b[h][0] :
           Vector<double>(set.problem(h).get_dof_handler().n_dofs()));
     held_relative = interface.relative_displacements(held_solution, sampling);
-    if (settings.control == NonlinearInterfaceParameters::Control::displacement)
+    if (settings.control == LoadPathParameters::Control::displacement)
       {
         const unsigned int h = controlled_harmonic();
         held_motion          = from_owner(
@@ -224,7 +224,7 @@ namespace FourierSSI
   CoupledInterfaceSolver::controls_motion() const
   {
     return settings.control ==
-             NonlinearInterfaceParameters::Control::displacement &&
+             LoadPathParameters::Control::displacement &&
            !holding_stage;
   }
 
@@ -296,7 +296,7 @@ namespace FourierSSI
   CoupledInterfaceSolver::condense(const unsigned int first)
   {
     const bool displacement_control =
-      settings.control == NonlinearInterfaceParameters::Control::displacement;
+      settings.control == LoadPathParameters::Control::displacement;
     const unsigned int controlled =
       displacement_control ? controlled_harmonic() : set.size();
     condensed.resize(set.size());
@@ -419,7 +419,7 @@ namespace FourierSSI
     // Restart the next step's condensed view from the exact field (no
     // accumulation of round-off over the steps).
     state.interface_solution = state.correction_solution;
-    if (settings.control == NonlinearInterfaceParameters::Control::displacement)
+    if (settings.control == LoadPathParameters::Control::displacement)
       {
         const unsigned int h = controlled_harmonic();
         state.controlled_motion =
@@ -771,7 +771,7 @@ namespace FourierSSI
   CoupledInterfaceSolver::run(std::ostream &log)
   {
     const bool load_control =
-      settings.control == NonlinearInterfaceParameters::Control::load;
+      settings.control == LoadPathParameters::Control::load;
     log << "nonlinear interfaces: " << points.size() << " points x "
         << sampling.n_samples() << " theta samples, " << set.size()
         << " harmonics";

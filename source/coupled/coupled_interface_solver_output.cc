@@ -12,7 +12,7 @@ namespace FourierSSI
 {
   namespace
   {
-    const std::string entry_name = "Nonlinear interfaces";
+    const std::string entry_name = "Load path";
 
   } // namespace
 

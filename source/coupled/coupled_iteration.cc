@@ -65,9 +65,9 @@ namespace FourierSSI
   }
 
   Harmonic
-  controlled_harmonic(const NonlinearInterfaceParameters::Motion motion)
+  controlled_harmonic(const LoadPathParameters::Motion motion)
   {
-    using M = NonlinearInterfaceParameters::Motion;
+    using M = LoadPathParameters::Motion;
     if (motion == M::vertical)
       return {0, Family::symmetric};
     if (motion == M::twist)
@@ -77,9 +77,9 @@ namespace FourierSSI
 
   double
   controlled_component(const RigidMotion                         &motion,
-                       const NonlinearInterfaceParameters::Motion controlled)
+                       const LoadPathParameters::Motion controlled)
   {
-    using M = NonlinearInterfaceParameters::Motion;
+    using M = LoadPathParameters::Motion;
     switch (controlled)
       {
         case M::vertical:
@@ -122,9 +122,9 @@ namespace FourierSSI
   NamedLoad
   conjugate_load(const std::array<double, 6>               &loads,
                  const RigidFoundationParameters           &foundation,
-                 const NonlinearInterfaceParameters::Motion controlled)
+                 const LoadPathParameters::Motion controlled)
   {
-    using M = NonlinearInterfaceParameters::Motion;
+    using M = LoadPathParameters::Motion;
     switch (controlled)
       {
         case M::vertical:
@@ -165,7 +165,7 @@ namespace FourierSSI
                            const unsigned int                  n_steps,
                            const bool                          held,
                            const unsigned int                  converged_steps,
-                           const NonlinearInterfaceParameters &settings)
+                           const LoadPathParameters &settings)
   {
     // The step whose interval [k-1, k] / n_steps the path was in; the
     // round-off guard keeps a completed step's end out of the next.

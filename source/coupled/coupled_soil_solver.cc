@@ -32,22 +32,22 @@ namespace FourierSSI
      * The acceleration of the out-of-balance iteration: Newton updates are
      * taken as they are (relaxing them by Aitken or Anderson was measured
      * to double the iterations, doc/soil-plasticity.md section 3); the
-     * initial-stiffness iteration takes Nonlinear interfaces/Acceleration.
+     * initial-stiffness iteration takes Load path/Acceleration.
      */
-    NonlinearInterfaceParameters::Acceleration
-    acceleration_of(const NonlinearInterfaceParameters &settings,
+    LoadPathParameters::Acceleration
+    acceleration_of(const LoadPathParameters &settings,
                     const bool                          tangent)
     {
-      return tangent ? NonlinearInterfaceParameters::Acceleration::none :
+      return tangent ? LoadPathParameters::Acceleration::none :
                        settings.acceleration;
     }
 
     /** How the log names the iteration. */
     std::string
-    iteration_name(const NonlinearInterfaceParameters &settings,
+    iteration_name(const LoadPathParameters &settings,
                    const bool                          tangent)
     {
-      using Acceleration = NonlinearInterfaceParameters::Acceleration;
+      using Acceleration = LoadPathParameters::Acceleration;
       if (tangent)
         return "Newton on the coupled tangent, backtracking";
       return settings.acceleration == Acceleration::aitken ?
@@ -89,11 +89,11 @@ namespace FourierSSI
                                        const AllParameters &parameters)
     : set(set)
     , parameters(parameters)
-    , settings(parameters.nonlinear_interfaces)
+    , settings(parameters.load_path)
     , harmonics(set.get_harmonics())
     , sampling(harmonics,
                theta_samples_for(highest_harmonic(harmonics),
-                                 parameters.nonlinear_interfaces.theta_samples))
+                                 parameters.load_path.theta_samples))
   {
     for (const Harmonic &h : harmonics)
       operators.emplace_back(h);
@@ -748,7 +748,7 @@ namespace FourierSSI
   {
     const RigidFoundation *foundation = set.problem(h).get_foundation();
     AssertThrow(foundation != nullptr,
-                ExcMessage("Nonlinear interfaces/Control: displacement "
+                ExcMessage("Load path/Control: displacement "
                            "control needs a Rigid foundation"));
     return controlled_component(foundation->motion(v), settings.motion);
   }
@@ -775,13 +775,13 @@ namespace FourierSSI
           set.sum_over_ranks(motion);
           const double by_pattern = motion[0], now = motion[1];
           AssertThrow(by_pattern != 0.,
-                      ExcMessage("Nonlinear interfaces/Controlled motion: "
+                      ExcMessage("Load path/Controlled motion: "
                                  "the Rigid foundation loads do not drive "
                                  "this motion (give the load that does)"));
           return (target - now) / by_pattern;
         }
     AssertThrow(false,
-                ExcMessage("Nonlinear interfaces/Controlled motion: its "
+                ExcMessage("Load path/Controlled motion: its "
                            "harmonic is not solved"));
     return 0.;
   }
@@ -1019,7 +1019,7 @@ namespace FourierSSI
     // Holding: the held loads come on at a fixed load factor.
     const bool displacement_control =
       !holding &&
-      settings.control == NonlinearInterfaceParameters::Control::displacement;
+      settings.control == LoadPathParameters::Control::displacement;
     if (holding)
       state.held_fraction = target;
     const bool tangent_stiffness = parameters.soil_plasticity.tangent;
@@ -1252,7 +1252,7 @@ namespace FourierSSI
   CoupledSoilSolver::run(std::ostream &log)
   {
     const bool load_control =
-      settings.control == NonlinearInterfaceParameters::Control::load;
+      settings.control == LoadPathParameters::Control::load;
     log << "plastic soil: " << points.size() << " quadrature points x "
         << sampling.n_samples() << " theta samples, " << set.size()
         << " harmonics"
@@ -1322,7 +1322,7 @@ namespace FourierSSI
                                std::ostream      &log)
   {
     const bool load_control =
-      settings.control == NonlinearInterfaceParameters::Control::load;
+      settings.control == LoadPathParameters::Control::load;
     // Displacement control moves from where the held loads left the
     // controlled motion to Target.
     const double start =

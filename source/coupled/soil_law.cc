@@ -386,7 +386,7 @@ namespace FourierSSI
       "the undrained strength s_u = S + K depth [kPa, kPa/m], or "
       "'id: mohr-coulomb, c=C, phi=PHI[, psi=PSI]' with c' [kPa], phi' and "
       "the dilation angle psi [degrees, 0 < phi < 90, 0 <= psi <= phi]. "
-      "The loading and the iteration are set in 'Nonlinear interfaces'.");
+      "The loading and the iteration are set in 'Load path'.");
     prm.declare_entry(
       "Stiffness",
       "tangent",

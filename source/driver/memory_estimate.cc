@@ -111,7 +111,7 @@ namespace FourierSSI
     const unsigned int samples =
       parameters.soil_plasticity.any() ?
         theta_samples_for(highest_harmonic(plan.harmonics),
-                          parameters.nonlinear_interfaces.theta_samples) :
+                          parameters.load_path.theta_samples) :
         0;
     const double theta_state = samples *
                                plastic_points(parameters, triangulation) *
@@ -124,7 +124,7 @@ namespace FourierSSI
     dofs << static_cast<long long>(n_dofs) << " DoFs per harmonic";
     if (theta_state >= std::max(factorizations, coupled_tangent))
       {
-        estimate.driving_entry = "Nonlinear interfaces/Theta samples";
+        estimate.driving_entry = "Load path/Theta samples";
         estimate.largest_part =
           gigabytes(theta_state) + " for the plastic state, " +
           std::to_string(samples) + " theta samples x " +

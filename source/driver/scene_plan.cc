@@ -398,7 +398,7 @@ namespace FourierSSI
     if (parameters.soil_plasticity.any())
       return RunMode::plastic_soil;
     if (parameters.interfaces.any_nonlinear())
-      return RunMode::nonlinear_interfaces;
+      return RunMode::load_path;
     if (parameters.discretization.target_accuracy > 0.)
       return RunMode::linear_target;
     return RunMode::linear_cycles;

@@ -35,7 +35,7 @@ namespace FourierSSI
             case RunMode::plastic_soil:
               solve_plastic_soil(log);
               break;
-            case RunMode::nonlinear_interfaces:
+            case RunMode::load_path:
               solve_nonlinear_interfaces(log);
               break;
             case RunMode::linear_target:

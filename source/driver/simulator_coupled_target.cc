@@ -250,7 +250,7 @@ namespace FourierSSI
     // 4, n_max / 2, n_max); on every member the plateau's error (capacity
     // runs). The answer is the last member's value.
     const double target = parameters.discretization.target_accuracy;
-    const bool   growth = parameters.nonlinear_interfaces.maximum_harmonic >
+    const bool   growth = parameters.load_path.maximum_harmonic >
                         highest_harmonic(plan.harmonics);
     Timer               run_timer;
     double              last_member_time = 0.;
@@ -338,7 +338,7 @@ namespace FourierSSI
           {
             target_unmet(target,
                          "the curve does not bend over by its end (no "
-                         "plateau: raise Nonlinear interfaces/Target)",
+                         "plateau: raise Load path/Target)",
                          log);
             break;
           }
@@ -387,7 +387,7 @@ namespace FourierSSI
                 number(relative(goal.plateau_error)) +
                 " do not fall with the mesh: list more harmonics "
                 "(Discretization/Harmonics) or take the path further "
-                "(Nonlinear interfaces/Target)",
+                "(Load path/Target)",
               log);
             break;
           }

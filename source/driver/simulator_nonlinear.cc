@@ -12,7 +12,7 @@ namespace FourierSSI
 {
   namespace
   {
-    const std::string entry = "Nonlinear interfaces";
+    const std::string entry = "Load path";
 
     /** What the coupled path does not do yet: one line each. */
     void
@@ -58,7 +58,7 @@ namespace FourierSSI
         conjugate_load(solver->applied_loads(steps.back().load_factor,
                                              steps.back().held_fraction),
                        parameters.rigid_foundation,
-                       parameters.nonlinear_interfaces.motion);
+                       parameters.load_path.motion);
       return CoupledGoal{load.name,
                          load.unit,
                          load.value,

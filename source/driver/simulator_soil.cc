@@ -26,11 +26,11 @@ namespace FourierSSI
       // The plastic soil iterates on the harmonics given (with or without
       // coulomb interfaces, one correction load for both): no growth, so a
       // Maximum harmonic above them would be ignored.
-      const NonlinearInterfaceParameters &settings =
-        parameters.nonlinear_interfaces;
+      const LoadPathParameters &settings =
+        parameters.load_path;
       AssertThrow(settings.maximum_harmonic <=
                     highest_harmonic(parameters.discretization.harmonics),
-                  ExcMessage("Nonlinear interfaces/Maximum harmonic: not "
+                  ExcMessage("Load path/Maximum harmonic: not "
                              "yet with plastic soil (the harmonics do not "
                              "grow); list them in Discretization/Harmonics"));
       AssertThrow(parameters.discretization.refinement_cycles == 1,
@@ -117,8 +117,8 @@ namespace FourierSSI
     capacity_of(const CoupledSoilSolver &solver,
                 const AllParameters     &parameters)
     {
-      const NonlinearInterfaceParameters &settings =
-        parameters.nonlinear_interfaces;
+      const LoadPathParameters &settings =
+        parameters.load_path;
       const auto &steps   = solver.get_steps();
       const auto  load_at = [&](const SoilStepResult &s) {
         return conjugate_load(solver.applied_loads(s.load_factor,
@@ -159,8 +159,8 @@ namespace FourierSSI
     has_capacity(const CoupledSoilSolver &solver,
                  const AllParameters     &parameters)
     {
-      return parameters.nonlinear_interfaces.control ==
-               NonlinearInterfaceParameters::Control::displacement &&
+      return parameters.load_path.control ==
+               LoadPathParameters::Control::displacement &&
              solver.get_steps().size() >= 2;
     }
 
@@ -339,8 +339,8 @@ namespace FourierSSI
     // Displacement control aims at the capacity; load control at the work
     // of the loads at the end of the path (the scene's loads are reached:
     // a load step that does not converge stops the run).
-    const bool load_control = parameters.nonlinear_interfaces.control ==
-                              NonlinearInterfaceParameters::Control::load;
+    const bool load_control = parameters.load_path.control ==
+                              LoadPathParameters::Control::load;
     std::unique_ptr<CoupledSoilSolver> solver;
     CoupledCurveRun                    run;
     run.goal_prefix = load_control ? "end_" : "capacity_";

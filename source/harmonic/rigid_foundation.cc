@@ -258,7 +258,7 @@ namespace FourierSSI
       "held for pure H, also w and twist. Linear and nonlinear runs; "
       "the log prints the load that holds each (kN, kN m). A held motion "
       "takes no load (Horizontal force with u, Moment with rotation, "
-      "...), is not the Nonlinear interfaces/Controlled motion, and "
+      "...), is not the Load path/Controlled motion, and "
       "excludes Stiffness coefficients. Empty: none held.");
     prm.declare_entry("Stiffness coefficients",
                       "false",

@@ -381,7 +381,7 @@ namespace FourierSSI
     AdaptivityParameters::declare_parameters(prm);
     LoadParameters::declare_parameters(prm);
     InitialStressParameters::declare_parameters(prm);
-    NonlinearInterfaceParameters::declare_parameters(prm);
+    LoadPathParameters::declare_parameters(prm);
     SoilPlasticityParameters::declare_parameters(prm);
   }
 
@@ -425,10 +425,10 @@ namespace FourierSSI
           VolumetricStrain::bbar :
           VolumetricStrain::standard;
     initial_stress.parse_parameters(prm);
-    nonlinear_interfaces.parse_parameters(prm);
+    load_path.parse_parameters(prm);
     // Newton on the interface-only iteration assembles coulomb springs no
     // stiffer than interface_iteration_stiffness G / l (interface_law.h).
-    if (nonlinear_interfaces.tangent_stiffness && !soil_plasticity.any())
+    if (load_path.tangent_stiffness && !soil_plasticity.any())
       interfaces.iteration_stiffness_cap = interface_iteration_stiffness;
     for (const auto &[id, law] : interfaces.laws)
       AssertThrow(!law.contact || !soil_plasticity.any(),
@@ -455,8 +455,7 @@ namespace FourierSSI
         // the condensed load vector is the work's only with homogeneous
         // constraints.
         const bool load_control =
-          coupled() && nonlinear_interfaces.control ==
-                         NonlinearInterfaceParameters::Control::load;
+          coupled() && load_path.control == LoadPathParameters::Control::load;
         AssertThrow(!load_control || soil_plasticity.any(),
                     ExcMessage("Discretization/Target accuracy: with a "
                                "coulomb interface on elastic soil the goal "
@@ -484,6 +483,33 @@ namespace FourierSSI
 
   namespace
   {
+    /**
+     * The subsection that steers every nonlinear load path (interfaces and
+     * plastic soil) was called "Nonlinear interfaces"; a file written for
+     * that name gets the new one in its error line instead of the parser's
+     * generic "undeclared subsection".
+     */
+    void
+    refuse_renamed_subsection(const std::string &content,
+                              const std::string &filename)
+    {
+      std::istringstream lines(content);
+      std::string        line;
+      for (unsigned int number = 1; std::getline(lines, line); ++number)
+        {
+          std::istringstream words(line);
+          std::string        keyword, name;
+          words >> keyword;
+          std::getline(words, name);
+          AssertThrow(keyword != "subsection" ||
+                        Utilities::trim(name) != "Nonlinear interfaces",
+                      ExcMessage(filename + ": line " + std::to_string(number) +
+                                 ": subsection 'Nonlinear interfaces' is now "
+                                 "'Load path' (it steers plastic soil as well "
+                                 "as interfaces): rename it"));
+        }
+    }
+
     /**
      * The text of a parameter file, without a UTF-8 byte-order mark (editors
      * on some systems start files with one; it carries no meaning here).
@@ -517,6 +543,7 @@ namespace FourierSSI
       const std::string byte_order_mark = "\xEF\xBB\xBF";
       if (content.compare(0, byte_order_mark.size(), byte_order_mark) == 0)
         content.erase(0, byte_order_mark.size());
+      refuse_renamed_subsection(content, filename);
       return content;
     }
 

@@ -12,13 +12,13 @@ namespace FourierSSI
     void
     check_displacement_target(const AllParameters &parameters)
     {
-      const NonlinearInterfaceParameters &path =
-        parameters.nonlinear_interfaces;
+      const LoadPathParameters &path =
+        parameters.load_path;
       AssertThrow(!parameters.coupled() ||
                     path.control !=
-                      NonlinearInterfaceParameters::Control::displacement ||
+                      LoadPathParameters::Control::displacement ||
                     path.target != 0.,
-                  ExcMessage("Nonlinear interfaces/Target: 0 with Control = "
+                  ExcMessage("Load path/Target: 0 with Control = "
                              "displacement, the controlled motion would not "
                              "move; give its final value [m or rad]"));
     }
@@ -30,12 +30,12 @@ namespace FourierSSI
     void
     check_controlled_motion_not_held(const AllParameters &parameters)
     {
-      const NonlinearInterfaceParameters &path =
-        parameters.nonlinear_interfaces;
+      const LoadPathParameters &path =
+        parameters.load_path;
       if (!parameters.coupled() ||
-          path.control != NonlinearInterfaceParameters::Control::displacement)
+          path.control != LoadPathParameters::Control::displacement)
         return;
-      using M = NonlinearInterfaceParameters::Motion;
+      using M = LoadPathParameters::Motion;
       const FoundationMotion driven =
         path.motion == M::vertical   ? FoundationMotion::w :
         path.motion == M::twist      ? FoundationMotion::twist :
@@ -44,7 +44,7 @@ namespace FourierSSI
       AssertThrow(!parameters.rigid_foundation.holds(driven),
                   ExcMessage("Rigid foundation/Held motions: '" +
                              name_of(driven) +
-                             "' is also the Nonlinear interfaces/Controlled "
+                             "' is also the Load path/Controlled "
                              "motion; hold another motion or drive another"));
     }
 
@@ -82,10 +82,10 @@ namespace FourierSSI
     check_load_control_has_load(const AllParameters &parameters)
     {
       AssertThrow(!parameters.coupled() ||
-                    parameters.nonlinear_interfaces.control !=
-                      NonlinearInterfaceParameters::Control::load ||
+                    parameters.load_path.control !=
+                      LoadPathParameters::Control::load ||
                     scene_has_load(parameters),
-                  ExcMessage("Nonlinear interfaces/Control = load: every "
+                  ExcMessage("Load path/Control = load: every "
                              "load is zero (Rigid foundation, Loads, "
                              "Boundary conditions, Body force), the path "
                              "has nothing to scale"));

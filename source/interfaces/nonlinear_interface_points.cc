@@ -13,7 +13,7 @@ namespace FourierSSI
 {
   namespace
   {
-    const std::string entry = "Nonlinear interfaces";
+    const std::string entry = "Load path";
 
     /** Lagrange basis of the equidistant nodes k / p at xi. */
     std::vector<double>

@@ -76,7 +76,7 @@ namespace
       harmonics += ", " + std::to_string(n);
     text = coupled_test::with_entry(text, "Harmonics", harmonics);
     return text +
-           "\nsubsection Nonlinear interfaces\n  set Stiffness = tangent\n"
+           "\nsubsection Load path\n  set Stiffness = tangent\n"
            "  set Theta samples = " +
            std::to_string(samples) + "\nend\n";
   }

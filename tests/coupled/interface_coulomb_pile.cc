@@ -85,7 +85,7 @@ subsection Rigid foundation
   )" + loads +
            R"(
 end
-subsection Nonlinear interfaces
+subsection Load path
   )" + nonlinear +
            R"(
 end

@@ -42,7 +42,7 @@ namespace
     text             = with_entry(text, "Load steps", "1");
     text             = with_entry(text, "Target", "1e-3");
     // One theta sampling for every n_max, so that only the harmonics change.
-    text += "subsection Nonlinear interfaces\n  set Theta samples = " +
+    text += "subsection Load path\n  set Theta samples = " +
             std::to_string(theta_samples) + "\nend\n";
     std::vector<double> result;
     for (const unsigned int top : n_max)

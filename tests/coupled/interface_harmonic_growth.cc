@@ -1,5 +1,5 @@
 // Harmonics chosen by the solution (doc/nonlinear-interfaces.md section 5,
-// `Nonlinear interfaces/Maximum harmonic`): after a converged step, every
+// `Load path/Maximum harmonic`): after a converged step, every
 // harmonic n <= Maximum harmonic whose amplitude in the interface traction
 // t - t0 exceeds Harmonic tolerance (1e-3) of the largest is added to the
 // HarmonicSet (its own factorization) and the step is solved again.
@@ -30,7 +30,7 @@ using coupled_test::with_entry;
 
 namespace
 {
-  const std::string growth = "subsection Nonlinear interfaces\n"
+  const std::string growth = "subsection Load path\n"
                              "  set Maximum harmonic = ";
 
   void

@@ -1,6 +1,6 @@
 // Requirement "loads mean what the documentation says", coulomb interfaces:
 // with a Rigid foundation, a traction (Boundary conditions/Traction) is a
-// held load: applied in full by the held stage (Nonlinear interfaces/Held
+// held load: applied in full by the held stage (Load path/Held
 // load steps), then constant while the load factor scales only the
 // foundation's load (CoupledInterfaceSolver::run_stage, held_stage_load).
 //
@@ -77,7 +77,7 @@ subsection Rigid foundation
   set Id             = 1
   set Vertical force = 1
 end
-subsection Nonlinear interfaces
+subsection Load path
   set Control           = displacement
   set Controlled motion = vertical
   set Target            = 0.04

@@ -1,4 +1,4 @@
-// Newton for interface-only scenes (Nonlinear interfaces/Stiffness =
+// Newton for interface-only scenes (Load path/Stiffness =
 // tangent, doc/nonlinear-interfaces.md section 5b) and the convergence test
 // against the internal force scale, on the disc in a ring of
 // prm/disc-gap.prm (rigid disc r0 = 0.5 m pushed along x in an elastic ring,
@@ -67,7 +67,7 @@ namespace
       harmonics += ", " + std::to_string(n);
     text = coupled_test::with_entry(text, "Harmonics", harmonics);
     return text +
-           "\nsubsection Nonlinear interfaces\n  set Stiffness = " + stiffness +
+           "\nsubsection Load path\n  set Stiffness = " + stiffness +
            "\n  set Acceleration = anderson\n  set Maximum iterations = "
            "20000\n  set Theta samples = " +
            std::to_string(samples) + "\nend\n";

@@ -1,6 +1,6 @@
 // Requirement "loads mean what the documentation says", plastic soil: with a
 // Rigid foundation, the Body force and the tractions are held loads, applied
-// in full by the held stage (Nonlinear interfaces/Held load steps) and then
+// in full by the held stage (Load path/Held load steps) and then
 // constant while the load factor scales only the foundation's loads or
 // motion (CoupledSoilSolver::solve_held_loads, run_stage; held_stage_load).
 // Checks, with their reasons:
@@ -74,7 +74,7 @@ namespace
     std::string  text = scene(joined(
       {{"Target", target}, {"Load steps", steps}, {"Tolerance", "1e-10"}},
       footing_mesh(true)));
-    text += "subsection Nonlinear interfaces\n  set Held load steps = 2\nend\n"
+    text += "subsection Load path\n  set Held load steps = 2\nend\n"
             "subsection Boundary conditions\n  set Traction = 3: z=-5\nend\n"
             "subsection Body force\n  set Axial = -18\nend\n";
     Run run(text);

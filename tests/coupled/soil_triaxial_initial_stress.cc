@@ -73,7 +73,7 @@ subsection Rigid foundation
   set Tied components = normal
   set Vertical force  = -1
 end
-subsection Nonlinear interfaces
+subsection Load path
   set Theta samples      = 1
   set Control            = displacement
   set Controlled motion  = vertical

@@ -129,7 +129,7 @@ main(int argc, char **argv)
       compare("pile", pile, false, root);
       std::string disc = test_support::bundled_prm("prm/disc-gap.prm");
       disc             = with_entry(disc, "Harmonics", "1");
-      disc += "subsection Nonlinear interfaces\n"
+      disc += "subsection Load path\n"
               "  set Maximum harmonic = 16\n"
               "end\n";
       compare("disc grown from n = 1", disc, true, root);

@@ -41,7 +41,7 @@ OVERRIDES = """
 subsection Discretization
   set Harmonics = 0, 1, 2
 end
-subsection Nonlinear interfaces
+subsection Load path
   set Load steps = 4
   set Target     = 0.02
 end

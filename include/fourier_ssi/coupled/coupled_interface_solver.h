@@ -55,7 +55,7 @@
 #include <fourier_ssi/coupled/initial_stress.h>
 #include <fourier_ssi/fourier/theta_sampling.h>
 #include <fourier_ssi/harmonic/harmonic_set.h>
-#include <fourier_ssi/input/nonlinear_interface_parameters.h>
+#include <fourier_ssi/input/load_path_parameters.h>
 #include <fourier_ssi/input/parameters.h>
 #include <fourier_ssi/interfaces/interface_law.h>
 #include <fourier_ssi/interfaces/nonlinear_interface_points.h>
@@ -107,7 +107,7 @@ namespace FourierSSI
     /**
      * `set` must be assembled and factorized; its harmonics' matrices hold
      * the elastic interface stiffness kn, ks of every interface. With
-     * `Nonlinear interfaces/Maximum harmonic` above the highest harmonic of
+     * `Load path/Maximum harmonic` above the highest harmonic of
      * the set, harmonics the interface tractions call for are added to it.
      */
     CoupledInterfaceSolver(HarmonicSet &set, const AllParameters &parameters);
@@ -430,7 +430,7 @@ namespace FourierSSI
 
     HarmonicSet                 &set;
     const AllParameters         &parameters;
-    NonlinearInterfaceParameters settings;
+    LoadPathParameters settings;
     std::vector<Harmonic>        harmonics;
     ThetaSampling                sampling;
     /** Every candidate harmonic n <= Maximum harmonic (growth only). */

@@ -17,7 +17,7 @@
 #include <fourier_ssi/fourier/harmonic.h>
 #include <fourier_ssi/harmonic/rigid_foundation.h>
 #include <fourier_ssi/input/atomic_file.h>
-#include <fourier_ssi/input/nonlinear_interface_parameters.h>
+#include <fourier_ssi/input/load_path_parameters.h>
 #include <fourier_ssi/postprocess/results_table.h>
 #include <fstream>
 #include <iomanip>
@@ -41,7 +41,7 @@ namespace FourierSSI
 
   /**
    * The held loads F_held of a nonlinear run (condensed): brought on in full
-   * by the held stage (Nonlinear interfaces/Held load steps), then constant
+   * by the held stage (Load path/Held load steps), then constant
    * while lambda scales load_factor_pattern(). With a Rigid foundation they
    * are its Held ... loads, the Body force and the tractions (Boundary
    * conditions/Traction, Loads/Traction): self-weight and surcharges are in
@@ -119,12 +119,12 @@ namespace FourierSSI
    * (horizontal, rotation).
    */
   Harmonic
-  controlled_harmonic(const NonlinearInterfaceParameters::Motion motion);
+  controlled_harmonic(const LoadPathParameters::Motion motion);
 
   /** The component of a rigid motion that a load step controls. */
   double
   controlled_component(const RigidMotion                         &motion,
-                       const NonlinearInterfaceParameters::Motion controlled);
+                       const LoadPathParameters::Motion controlled);
 
   /**
    * The foundation loads of a load step, load_factor times the given ones,
@@ -162,7 +162,7 @@ namespace FourierSSI
   NamedLoad
   conjugate_load(const std::array<double, 6>               &loads,
                  const RigidFoundationParameters           &foundation,
-                 const NonlinearInterfaceParameters::Motion controlled);
+                 const LoadPathParameters::Motion controlled);
 
   /** The leading columns of every load-displacement.csv (both solvers). */
   constexpr const char *load_step_csv_header =
@@ -272,7 +272,7 @@ namespace FourierSSI
                            const unsigned int                  n_steps,
                            const bool                          held,
                            const unsigned int                  converged_steps,
-                           const NonlinearInterfaceParameters &settings);
+                           const LoadPathParameters &settings);
 
   /**
    * Runs a coupled solver's load steps; if one fails, the converged steps
@@ -307,7 +307,7 @@ namespace FourierSSI
   class FixedPointAcceleration
   {
   public:
-    using Kind = NonlinearInterfaceParameters::Acceleration;
+    using Kind = LoadPathParameters::Acceleration;
 
     FixedPointAcceleration(const Kind kind, const unsigned int anderson_depth);
 

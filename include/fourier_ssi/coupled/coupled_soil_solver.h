@@ -21,7 +21,7 @@
  *      the harmonics); else c <- c + omega R, all harmonics re-solved with
  *      their kept factorizations, omega by Aitken's Delta^2 rule.
  * Loading (load or displacement control of the rigid foundation), step
- * cutting and the settings are those of subsection "Nonlinear interfaces".
+ * cutting and the settings are those of subsection "Load path".
  * Coulomb interfaces in the scene iterate with the soil: their
  * out-of-balance load (NonlinearInterfacePoints) joins G in step 3, and
  * their part of the tangent joins K_t (doc/soil-plasticity.md 6b).
@@ -45,7 +45,7 @@
 #include <fourier_ssi/harmonic/bbar_projection.h>
 #include <fourier_ssi/coupled/coupled_tangent.h>
 #include <fourier_ssi/harmonic/harmonic_set.h>
-#include <fourier_ssi/input/nonlinear_interface_parameters.h>
+#include <fourier_ssi/input/load_path_parameters.h>
 #include <fourier_ssi/interfaces/nonlinear_interface_points.h>
 #include <fourier_ssi/input/parameters.h>
 #include <fourier_ssi/coupled/soil_law.h>
@@ -479,7 +479,7 @@ namespace FourierSSI
 
     const HarmonicSet            &set;
     const AllParameters          &parameters;
-    NonlinearInterfaceParameters  settings;
+    LoadPathParameters  settings;
     std::vector<Harmonic>         harmonics;
     std::vector<HarmonicOperator> operators;
     ThetaSampling                 sampling;

@@ -32,7 +32,7 @@ namespace FourierSSI
   {
     linear_cycles,
     linear_target,
-    nonlinear_interfaces,
+    load_path,
     plastic_soil
   };
 

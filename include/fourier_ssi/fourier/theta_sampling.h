@@ -57,7 +57,7 @@ namespace FourierSSI
    * The number of theta samples of a coupled iteration whose fields reach
    * n_max: automatic (requested = 0) N = 4 (n_max + 1), else the requested
    * N, which must exceed 2 n_max (else the harmonics alias; one-line error
-   * naming Nonlinear interfaces/Theta samples).
+   * naming Load path/Theta samples).
    */
   unsigned int
   theta_samples_for(const unsigned int n_max, const unsigned int requested);

@@ -13,7 +13,7 @@
 #include <fourier_ssi/fourier/load_decomposition.h>
 #include <fourier_ssi/fourier/material.h>
 #include <fourier_ssi/harmonic/rigid_foundation.h>
-#include <fourier_ssi/input/nonlinear_interface_parameters.h>
+#include <fourier_ssi/input/load_path_parameters.h>
 #include <fourier_ssi/interfaces/interface_pairing.h>
 #include <fourier_ssi/linear_algebra/linear_solver.h>
 #include <fourier_ssi/mesh/adaptivity.h>
@@ -179,7 +179,7 @@ namespace FourierSSI
     AdaptivityParameters         adaptivity;
     LoadParameters               loads;
     InitialStressParameters      initial_stress;
-    NonlinearInterfaceParameters nonlinear_interfaces;
+    LoadPathParameters load_path;
     SoilPlasticityParameters     soil_plasticity;
   };
 } // namespace FourierSSI

@@ -85,7 +85,7 @@ namespace FourierSSI
    * The stiffest interface spring the condensed interface iteration is
    * given, in units of G / l (G the shear modulus of the softer side at the
    * face, l the interface's mean face length): the augmentation of
-   * `contact`, and under Newton (Nonlinear interfaces/Stiffness = tangent)
+   * `contact`, and under Newton (Load path/Stiffness = tangent)
    * the cap on the springs of a coulomb interface assembled into K (its
    * own kn, ks stay in the return mapping). Stiffer springs make K^-1 and
    * the correction load c = int B^T (D d - (t - t0)) carry about kappa

@@ -1,11 +1,11 @@
-#include <fourier_ssi/input/nonlinear_interface_parameters.h>
+#include <fourier_ssi/input/load_path_parameters.h>
 
 namespace FourierSSI
 {
   void
-  NonlinearInterfaceParameters::declare_parameters(ParameterHandler &prm)
+  LoadPathParameters::declare_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Nonlinear interfaces");
+    prm.enter_subsection("Load path");
     prm.declare_entry(
       "Theta samples",
       "0",
@@ -129,9 +129,9 @@ namespace FourierSSI
   }
 
   void
-  NonlinearInterfaceParameters::parse_parameters(ParameterHandler &prm)
+  LoadPathParameters::parse_parameters(ParameterHandler &prm)
   {
-    prm.enter_subsection("Nonlinear interfaces");
+    prm.enter_subsection("Load path");
     theta_samples   = prm.get_integer("Theta samples");
     load_steps      = prm.get_integer("Load steps");
     held_load_steps = prm.get_integer("Held load steps");
@@ -146,7 +146,7 @@ namespace FourierSSI
     tolerance           = prm.get_double("Tolerance");
     AssertThrow(tolerance > 0. && tolerance < largest_tolerance,
                 ExcMessage(
-                  "Nonlinear interfaces/Tolerance: " + prm.get("Tolerance") +
+                  "Load path/Tolerance: " + prm.get("Tolerance") +
                   " is outside 0 < Tolerance < 1e-2 (a step would "
                   "be accepted with that fraction of the load out "
                   "of balance, at 1 without iterating)"));

@@ -1,10 +1,10 @@
 /**
- * Subsection "Nonlinear interfaces": how the coupled iteration of
+ * Subsection "Load path": how the coupled iteration of
  * CoupledInterfaceSolver loads the scene and when it has converged
  * (doc/nonlinear-interfaces.md, section 5).
  */
-#ifndef fourier_ssi_nonlinear_interface_parameters_h
-#define fourier_ssi_nonlinear_interface_parameters_h
+#ifndef fourier_ssi_load_path_parameters_h
+#define fourier_ssi_load_path_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -12,8 +12,8 @@ namespace FourierSSI
 {
   using namespace dealii;
 
-  /** Subsection "Nonlinear interfaces" of the .prm file. */
-  struct NonlinearInterfaceParameters
+  /** Subsection "Load path" of the .prm file. */
+  struct LoadPathParameters
   {
     static void
     declare_parameters(ParameterHandler &prm);
