@@ -6,6 +6,40 @@
 
 namespace FourierSSI
 {
+  namespace
+  {
+    /**
+     * The distinct indices of `dofs`, sorted. deal.II's pattern and matrix
+     * insertion (add_entries_local_to_global, distribute_local_to_global)
+     * take each index once: a repeated one becomes a repeated column of the
+     * pattern (UMFPACK status -8) and a value written to one copy only. An
+     * interface pair repeats indices where its line ends inside the body:
+     * the end node is one node of both faces.
+     */
+    std::vector<types::global_dof_index>
+    distinct(const std::vector<types::global_dof_index> &dofs)
+    {
+      std::vector<types::global_dof_index> result(dofs);
+      std::sort(result.begin(), result.end());
+      result.erase(std::unique(result.begin(), result.end()), result.end());
+      return result;
+    }
+
+    /** Where each entry of `dofs` is among `distinct_dofs`. */
+    std::vector<unsigned int>
+    positions_among(const std::vector<types::global_dof_index> &dofs,
+                    const std::vector<types::global_dof_index> &distinct_dofs)
+    {
+      std::vector<unsigned int> position(dofs.size());
+      for (unsigned int k = 0; k < dofs.size(); ++k)
+        position[k] = std::lower_bound(distinct_dofs.begin(),
+                                       distinct_dofs.end(),
+                                       dofs[k]) -
+                      distinct_dofs.begin();
+      return position;
+    }
+  } // namespace
+
   CoupledTangent::CoupledTangent(
     const HarmonicSet &set,
     const std::vector<std::vector<std::vector<types::global_dof_index>>>
@@ -34,9 +68,9 @@ namespace FourierSSI
         for (const auto &dofs : cell_dofs)
           for (unsigned int g = 0; g < H; ++g)
             rows.add_entries_local_to_global(
-              dofs[h],
+              distinct(dofs[h]),
               set.problem(g).get_homogeneous_constraints(),
-              dofs[g],
+              distinct(dofs[g]),
               dsp.block(h, g),
               false);
       }
@@ -118,12 +152,28 @@ namespace FourierSSI
                       const std::vector<types::global_dof_index> &row_dofs,
                       const std::vector<types::global_dof_index> &column_dofs)
   {
-    set.problem(h).get_homogeneous_constraints().distribute_local_to_global(
-      local,
-      row_dofs,
-      set.problem(g).get_homogeneous_constraints(),
-      column_dofs,
-      matrix.block(h, g));
+    const auto &row_constraints = set.problem(h).get_homogeneous_constraints();
+    const auto &column_constraints =
+      set.problem(g).get_homogeneous_constraints();
+    const std::vector<types::global_dof_index> rows    = distinct(row_dofs),
+                                               columns = distinct(column_dofs);
+    if (rows.size() == row_dofs.size() && columns.size() == column_dofs.size())
+      {
+        row_constraints.distribute_local_to_global(
+          local, row_dofs, column_constraints, column_dofs, matrix.block(h, g));
+        return;
+      }
+    // Repeated indices: the entries of one DoF summed first (the virtual
+    // work of a shared node is that of both faces).
+    const std::vector<unsigned int> row_at = positions_among(row_dofs, rows),
+                                    column_at =
+                                      positions_among(column_dofs, columns);
+    FullMatrix<double> merged(rows.size(), columns.size());
+    for (unsigned int i = 0; i < row_dofs.size(); ++i)
+      for (unsigned int j = 0; j < column_dofs.size(); ++j)
+        merged(row_at[i], column_at[j]) += local(i, j);
+    row_constraints.distribute_local_to_global(
+      merged, rows, column_constraints, columns, matrix.block(h, g));
   }
 
   void

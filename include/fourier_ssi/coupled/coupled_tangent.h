@@ -33,7 +33,9 @@ namespace FourierSSI
     /**
      * `cell_dofs[c][h]`: the DoF indices of harmonic h on the c-th cell
      * whose law can yield (their couplings between harmonics are the only
-     * ones the softening adds).
+     * ones the softening adds). An index may repeat (an interface pair
+     * whose line ends inside the body lists its end node on both faces):
+     * the pattern takes it once.
      */
     CoupledTangent(
       const HarmonicSet &set,
@@ -46,7 +48,8 @@ namespace FourierSSI
 
     /**
      * Block (h, g) += the condensed local matrix (the softening enters
-     * negated; thread-safe per block row h).
+     * negated; thread-safe per block row h). The rows and columns of a
+     * repeated index are summed first.
      */
     void
     add(const unsigned int                          h,
