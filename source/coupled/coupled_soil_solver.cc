@@ -35,8 +35,7 @@ namespace FourierSSI
      * initial-stiffness iteration takes Load path/Acceleration.
      */
     LoadPathParameters::Acceleration
-    acceleration_of(const LoadPathParameters &settings,
-                    const bool                          tangent)
+    acceleration_of(const LoadPathParameters &settings, const bool tangent)
     {
       return tangent ? LoadPathParameters::Acceleration::none :
                        settings.acceleration;
@@ -44,8 +43,7 @@ namespace FourierSSI
 
     /** How the log names the iteration. */
     std::string
-    iteration_name(const LoadPathParameters &settings,
-                   const bool                          tangent)
+    iteration_name(const LoadPathParameters &settings, const bool tangent)
     {
       using Acceleration = LoadPathParameters::Acceleration;
       if (tangent)
@@ -1018,8 +1016,7 @@ namespace FourierSSI
   {
     // Holding: the held loads come on at a fixed load factor.
     const bool displacement_control =
-      !holding &&
-      settings.control == LoadPathParameters::Control::displacement;
+      !holding && settings.control == LoadPathParameters::Control::displacement;
     if (holding)
       state.held_fraction = target;
     const bool tangent_stiffness = parameters.soil_plasticity.tangent;
@@ -1052,23 +1049,34 @@ namespace FourierSSI
         //    coulomb interfaces add theirs (one c for both sources).
         std::vector<Vector<double>> residual = load_of(plastic);
         std::vector<LocalVector>    relative;
+        double                      interface_load_norm = 0.;
         if (interface)
           {
-            relative       = relative_samples(state.correction_solution,
+            relative = relative_samples(state.correction_solution,
                                         state.load_factor,
                                         state.held_fraction);
-            result.contact = add_interface_load(relative,
+            std::vector<Vector<double>> interface_load(set.size());
+            for (unsigned int h = 0; h < set.size(); ++h)
+              interface_load[h].reinit(residual[h].size());
+            result.contact      = add_interface_load(relative,
                                                 interface_plastic,
                                                 result.interface_state,
-                                                residual);
+                                                interface_load);
+            interface_load_norm = norm_over_harmonics(interface_load);
+            for (unsigned int h = 0; h < set.size(); ++h)
+              residual[h] += interface_load[h];
             result.largest_interface_yield_value =
               interface->largest_yield_value(result.interface_state.traction);
           }
-        const double load_norm = norm_over_harmonics(residual);
         for (unsigned int h = 0; h < set.size(); ++h)
           residual[h] -= state.correction_load[h];
-        const double     residual_norm = norm_over_harmonics(residual);
-        const ForceScale scale         = {applied_load_norm(state), load_norm};
+        const double residual_norm = norm_over_harmonics(residual);
+        // The scale is |lambda F| and the interfaces' G (kn times a gap, the
+        // internal force of a stiff penalty), never the soil's G: that is
+        // D times the plastic strain, which grows without bound when the
+        // soil collapses, and would pass a residual of any size.
+        const ForceScale scale = {applied_load_norm(state),
+                                  interface_load_norm};
         if (!std::isfinite(residual_norm))
           return false;
         if (scale.converged(residual_norm, settings.tolerance))
