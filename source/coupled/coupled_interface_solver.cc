@@ -34,9 +34,9 @@ namespace FourierSSI
      * state kept at them) stay valid when harmonics are added.
      */
     unsigned int
-    theta_samples_for(const std::vector<Harmonic>        &list,
-                      const LoadPathParameters &settings,
-                      const InterfaceParameters          &interfaces)
+    theta_samples_for(const std::vector<Harmonic> &list,
+                      const LoadPathParameters    &settings,
+                      const InterfaceParameters   &interfaces)
     {
       const unsigned int n_max =
         std::max(highest_harmonic(list), settings.maximum_harmonic);
@@ -223,8 +223,7 @@ namespace FourierSSI
   bool
   CoupledInterfaceSolver::controls_motion() const
   {
-    return settings.control ==
-             LoadPathParameters::Control::displacement &&
+    return settings.control == LoadPathParameters::Control::displacement &&
            !holding_stage;
   }
 

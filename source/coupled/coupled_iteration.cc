@@ -76,7 +76,7 @@ namespace FourierSSI
   }
 
   double
-  controlled_component(const RigidMotion                         &motion,
+  controlled_component(const RigidMotion               &motion,
                        const LoadPathParameters::Motion controlled)
   {
     using M = LoadPathParameters::Motion;
@@ -120,8 +120,8 @@ namespace FourierSSI
   }
 
   NamedLoad
-  conjugate_load(const std::array<double, 6>               &loads,
-                 const RigidFoundationParameters           &foundation,
+  conjugate_load(const std::array<double, 6>     &loads,
+                 const RigidFoundationParameters &foundation,
                  const LoadPathParameters::Motion controlled)
   {
     using M = LoadPathParameters::Motion;
@@ -160,11 +160,11 @@ namespace FourierSSI
   }
 
   std::string
-  unconverged_step_message(const std::string                  &entry,
-                           const double                        done,
-                           const unsigned int                  n_steps,
-                           const bool                          held,
-                           const unsigned int                  converged_steps,
+  unconverged_step_message(const std::string        &entry,
+                           const double              done,
+                           const unsigned int        n_steps,
+                           const bool                held,
+                           const unsigned int        converged_steps,
                            const LoadPathParameters &settings)
   {
     // The step whose interval [k-1, k] / n_steps the path was in; the

@@ -250,8 +250,8 @@ namespace FourierSSI
     // 4, n_max / 2, n_max); on every member the plateau's error (capacity
     // runs). The answer is the last member's value.
     const double target = parameters.discretization.target_accuracy;
-    const bool   growth = parameters.load_path.maximum_harmonic >
-                        highest_harmonic(plan.harmonics);
+    const bool   growth =
+      parameters.load_path.maximum_harmonic > highest_harmonic(plan.harmonics);
     Timer               run_timer;
     double              last_member_time = 0.;
     std::vector<double> mesh_values;

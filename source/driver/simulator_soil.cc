@@ -26,8 +26,7 @@ namespace FourierSSI
       // The plastic soil iterates on the harmonics given (with or without
       // coulomb interfaces, one correction load for both): no growth, so a
       // Maximum harmonic above them would be ignored.
-      const LoadPathParameters &settings =
-        parameters.load_path;
+      const LoadPathParameters &settings = parameters.load_path;
       AssertThrow(settings.maximum_harmonic <=
                     highest_harmonic(parameters.discretization.harmonics),
                   ExcMessage("Load path/Maximum harmonic: not "
@@ -117,10 +116,9 @@ namespace FourierSSI
     capacity_of(const CoupledSoilSolver &solver,
                 const AllParameters     &parameters)
     {
-      const LoadPathParameters &settings =
-        parameters.load_path;
-      const auto &steps   = solver.get_steps();
-      const auto  load_at = [&](const SoilStepResult &s) {
+      const LoadPathParameters &settings = parameters.load_path;
+      const auto               &steps    = solver.get_steps();
+      const auto                load_at  = [&](const SoilStepResult &s) {
         return conjugate_load(solver.applied_loads(s.load_factor,
                                                    s.held_fraction),
                               parameters.rigid_foundation,
@@ -339,8 +337,8 @@ namespace FourierSSI
     // Displacement control aims at the capacity; load control at the work
     // of the loads at the end of the path (the scene's loads are reached:
     // a load step that does not converge stops the run).
-    const bool load_control = parameters.load_path.control ==
-                              LoadPathParameters::Control::load;
+    const bool load_control =
+      parameters.load_path.control == LoadPathParameters::Control::load;
     std::unique_ptr<CoupledSoilSolver> solver;
     CoupledCurveRun                    run;
     run.goal_prefix = load_control ? "end_" : "capacity_";

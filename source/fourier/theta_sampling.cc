@@ -67,9 +67,9 @@ namespace FourierSSI
       return 4 * (n_max + 1);
     AssertThrow(requested >= minimum_theta_samples(n_max),
                 dealii::ExcMessage(
-                  "Load path/Theta samples: " +
-                  std::to_string(requested) + " must exceed 2 n_max = " +
-                  std::to_string(2 * n_max) + " (else the harmonics alias)"));
+                  "Load path/Theta samples: " + std::to_string(requested) +
+                  " must exceed 2 n_max = " + std::to_string(2 * n_max) +
+                  " (else the harmonics alias)"));
     return requested;
   }
 

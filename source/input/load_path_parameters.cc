@@ -145,11 +145,10 @@ namespace FourierSSI
     target              = prm.get_double("Target");
     tolerance           = prm.get_double("Tolerance");
     AssertThrow(tolerance > 0. && tolerance < largest_tolerance,
-                ExcMessage(
-                  "Load path/Tolerance: " + prm.get("Tolerance") +
-                  " is outside 0 < Tolerance < 1e-2 (a step would "
-                  "be accepted with that fraction of the load out "
-                  "of balance, at 1 without iterating)"));
+                ExcMessage("Load path/Tolerance: " + prm.get("Tolerance") +
+                           " is outside 0 < Tolerance < 1e-2 (a step would "
+                           "be accepted with that fraction of the load out "
+                           "of balance, at 1 without iterating)"));
     maximum_iterations  = prm.get_integer("Maximum iterations");
     const std::string a = prm.get("Acceleration");
     acceleration        = a == "anderson" ? Acceleration::anderson :

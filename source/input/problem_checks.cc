@@ -12,11 +12,9 @@ namespace FourierSSI
     void
     check_displacement_target(const AllParameters &parameters)
     {
-      const LoadPathParameters &path =
-        parameters.load_path;
+      const LoadPathParameters &path = parameters.load_path;
       AssertThrow(!parameters.coupled() ||
-                    path.control !=
-                      LoadPathParameters::Control::displacement ||
+                    path.control != LoadPathParameters::Control::displacement ||
                     path.target != 0.,
                   ExcMessage("Load path/Target: 0 with Control = "
                              "displacement, the controlled motion would not "
@@ -30,8 +28,7 @@ namespace FourierSSI
     void
     check_controlled_motion_not_held(const AllParameters &parameters)
     {
-      const LoadPathParameters &path =
-        parameters.load_path;
+      const LoadPathParameters &path = parameters.load_path;
       if (!parameters.coupled() ||
           path.control != LoadPathParameters::Control::displacement)
         return;

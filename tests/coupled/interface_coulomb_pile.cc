@@ -20,9 +20,9 @@
 //     the base: tensionless, it opens, and its initial compression
 //     gamma' L pi a^2 is released (the applied V is the change from the
 //     geostatic state, so that release is resisted load).
-//     Tolerance 0.5 % (the requirement's): the plateau is approached as the last
-//     sticking points slip; the Gauss rule integrates the linear-in-z limit
-//     shear exactly.
+//     Tolerance 0.5 % (the requirement's): the plateau is approached as the
+//     last sticking points slip; the Gauss rule integrates the linear-in-z
+//     limit shear exactly.
 // (3) Equilibrium at every converged step: the interface tractions (change
 //     from the initial state) integrated over shaft and base and the
 //     circumference equal the applied foundation load to 1e-8 relative (the

@@ -66,8 +66,7 @@ namespace
     for (unsigned int n = 1; n <= 32; ++n)
       harmonics += ", " + std::to_string(n);
     text = coupled_test::with_entry(text, "Harmonics", harmonics);
-    return text +
-           "\nsubsection Load path\n  set Stiffness = " + stiffness +
+    return text + "\nsubsection Load path\n  set Stiffness = " + stiffness +
            "\n  set Acceleration = anderson\n  set Maximum iterations = "
            "20000\n  set Theta samples = " +
            std::to_string(samples) + "\nend\n";

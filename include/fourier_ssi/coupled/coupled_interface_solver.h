@@ -428,11 +428,11 @@ namespace FourierSSI
     void
     grow(const std::vector<Harmonic> &added);
 
-    HarmonicSet                 &set;
-    const AllParameters         &parameters;
-    LoadPathParameters settings;
-    std::vector<Harmonic>        harmonics;
-    ThetaSampling                sampling;
+    HarmonicSet          &set;
+    const AllParameters  &parameters;
+    LoadPathParameters    settings;
+    std::vector<Harmonic> harmonics;
+    ThetaSampling         sampling;
     /** Every candidate harmonic n <= Maximum harmonic (growth only). */
     std::vector<Harmonic> candidates;
     ThetaSampling         spectrum;

@@ -123,7 +123,7 @@ namespace FourierSSI
 
   /** The component of a rigid motion that a load step controls. */
   double
-  controlled_component(const RigidMotion                         &motion,
+  controlled_component(const RigidMotion               &motion,
                        const LoadPathParameters::Motion controlled);
 
   /**
@@ -160,8 +160,8 @@ namespace FourierSSI
    * (applied_foundation_loads).
    */
   NamedLoad
-  conjugate_load(const std::array<double, 6>               &loads,
-                 const RigidFoundationParameters           &foundation,
+  conjugate_load(const std::array<double, 6>     &loads,
+                 const RigidFoundationParameters &foundation,
                  const LoadPathParameters::Motion controlled);
 
   /** The leading columns of every load-displacement.csv (both solvers). */
@@ -267,11 +267,11 @@ namespace FourierSSI
    * converged cut steps; `held` says it is a step of the held loads.
    */
   std::string
-  unconverged_step_message(const std::string                  &entry,
-                           const double                        done,
-                           const unsigned int                  n_steps,
-                           const bool                          held,
-                           const unsigned int                  converged_steps,
+  unconverged_step_message(const std::string        &entry,
+                           const double              done,
+                           const unsigned int        n_steps,
+                           const bool                held,
+                           const unsigned int        converged_steps,
                            const LoadPathParameters &settings);
 
   /**

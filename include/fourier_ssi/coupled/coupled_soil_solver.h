@@ -42,14 +42,14 @@
 
 #include <array>
 #include <deal.II/lac/vector.h>
-#include <fourier_ssi/harmonic/bbar_projection.h>
 #include <fourier_ssi/coupled/coupled_tangent.h>
-#include <fourier_ssi/harmonic/harmonic_set.h>
-#include <fourier_ssi/input/load_path_parameters.h>
-#include <fourier_ssi/interfaces/nonlinear_interface_points.h>
-#include <fourier_ssi/input/parameters.h>
 #include <fourier_ssi/coupled/soil_law.h>
 #include <fourier_ssi/fourier/theta_sampling.h>
+#include <fourier_ssi/harmonic/bbar_projection.h>
+#include <fourier_ssi/harmonic/harmonic_set.h>
+#include <fourier_ssi/input/load_path_parameters.h>
+#include <fourier_ssi/input/parameters.h>
+#include <fourier_ssi/interfaces/nonlinear_interface_points.h>
 #include <functional>
 #include <memory>
 #include <ostream>
@@ -479,7 +479,7 @@ namespace FourierSSI
 
     const HarmonicSet            &set;
     const AllParameters          &parameters;
-    LoadPathParameters  settings;
+    LoadPathParameters            settings;
     std::vector<Harmonic>         harmonics;
     std::vector<HarmonicOperator> operators;
     ThetaSampling                 sampling;

@@ -167,20 +167,20 @@ namespace FourierSSI
     void
     read_string(const std::string &text);
 
-    DiscretizationParameters     discretization;
-    MeshBuilder                  mesh;
-    MaterialLibrary              materials;
-    BoundaryConditions           boundary_conditions;
-    LinearSolver                 solver;
-    ExactSolutionParameters      exact_solution;
-    OutputParameters             output;
-    InterfaceParameters          interfaces;
-    RigidFoundationParameters    rigid_foundation;
-    AdaptivityParameters         adaptivity;
-    LoadParameters               loads;
-    InitialStressParameters      initial_stress;
-    LoadPathParameters load_path;
-    SoilPlasticityParameters     soil_plasticity;
+    DiscretizationParameters  discretization;
+    MeshBuilder               mesh;
+    MaterialLibrary           materials;
+    BoundaryConditions        boundary_conditions;
+    LinearSolver              solver;
+    ExactSolutionParameters   exact_solution;
+    OutputParameters          output;
+    InterfaceParameters       interfaces;
+    RigidFoundationParameters rigid_foundation;
+    AdaptivityParameters      adaptivity;
+    LoadParameters            loads;
+    InitialStressParameters   initial_stress;
+    LoadPathParameters        load_path;
+    SoilPlasticityParameters  soil_plasticity;
   };
 } // namespace FourierSSI
 
