@@ -215,4 +215,18 @@ namespace FourierSSI
                change_sqr :
              omega;
   }
+
+  Vector<double>
+  total_displacement(const Vector<double> &pattern,
+                     const double          load_factor,
+                     const Vector<double> &correction,
+                     const Vector<double> *held,
+                     const double          held_fraction)
+  {
+    Vector<double> u = pattern;
+    u.sadd(load_factor, 1., correction);
+    if (held != nullptr)
+      u.add(held_fraction, *held);
+    return u;
+  }
 } // namespace FourierSSI

@@ -1218,11 +1218,13 @@ namespace FourierSSI
   CoupledSoilSolver::total_displacement(const StepState   &state,
                                         const unsigned int h) const
   {
-    Vector<double> u = pattern_solution[h];
-    u.sadd(state.load_factor, 1., state.correction_solution[h]);
-    if (!held_solution.empty())
-      u.add(state.held_fraction, held_solution[h]);
-    return u;
+    return FourierSSI::total_displacement(pattern_solution[h],
+                                          state.load_factor,
+                                          state.correction_solution[h],
+                                          held_solution.empty() ?
+                                            nullptr :
+                                            &held_solution[h],
+                                          state.held_fraction);
   }
 
   Vector<double>

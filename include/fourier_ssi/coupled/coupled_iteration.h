@@ -62,6 +62,19 @@ namespace FourierSSI
                      const double pattern_held_dot,
                      const double held_norm);
 
+  /**
+   * One harmonic's total displacement in both coupled solvers:
+   * u = lambda u_F + v + rho u_held (the pattern solution scaled by the load
+   * factor, the correction solution, the held-stage solution scaled by the
+   * held fraction; `held` null without a held stage).
+   */
+  Vector<double>
+  total_displacement(const Vector<double> &pattern,
+                     const double          load_factor,
+                     const Vector<double> &correction,
+                     const Vector<double> *held,
+                     const double          held_fraction);
+
   /** sqrt(sum_h |v_h|^2): the norm of a field given per harmonic. */
   double
   norm_over_harmonics(const std::vector<Vector<double>> &vectors);
