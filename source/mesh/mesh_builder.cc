@@ -137,6 +137,7 @@ namespace FourierSSI
                       "Rectangle only: 'id: r0, r1, z0, z1; ...' gives the "
                       "cells whose centre lies in each box that material id "
                       "(later boxes win; default material 0).");
+    declare_soil_layers_entry(prm);
     prm.declare_entry("Removed regions",
                       "",
                       Patterns::Anything(),
@@ -208,6 +209,7 @@ namespace FourierSSI
                                       parse_box(item.substr(colon + 1),
                                                 "Mesh/Material regions"));
       }
+    soil_layers = parse_soil_layers(prm.get("Soil layers"));
     removed_regions.clear();
     for (const std::string &item :
          split_top_level(prm.get("Removed regions"), ';'))
