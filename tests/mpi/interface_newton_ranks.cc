@@ -14,10 +14,16 @@
 //    initial-stiffness iteration would need ~1e6 iterations);
 // 2. `contact` (augmented Lagrangian, a Newton solve per multiplier
 //    update).
+// 3. The lateral pile of prm/pile-lateral-slip.prm (7 harmonics: 4 on rank
+//    0, 3 on rank 1; 57 interface points) shortened to 4 steps to
+//    u = 0.02 m, as in coupled_interface_ranks.cc: the slip spreads down
+//    the shaft from step to step, so Newton iterates in every step, and
+//    the pile head's rotation is a response (not controlled).
 // At every step, 2 ranks against 1:
 //  * the applied load H and the motion u to 1e-8 relative (u is the
 //    controlled motion, on its target by the step's own check; H is the
-//    test; the other motions are zero up to round-off by symmetry). Both runs
+//    test), and the pile's rotation (the disc's is zero up to round-off by
+//    symmetry: not compared). Both runs
 //    stop at |R| <= 1e-10 of the force scale; the distributed iterates are the
 //    serial ones up to round-off (the same factorizations and Jacobian
 //    columns, the columns summed exactly since each comes from one rank),
@@ -60,6 +66,18 @@ namespace
                   "  set Maximum iterations = 50\nend\n";
   }
 
+  /** The lateral pile to u = 0.02 m in 4 steps, Newton. */
+  std::string
+  pile_scene()
+  {
+    using coupled_test::with_entry;
+    std::string text = test_support::bundled_prm("prm/pile-lateral-slip.prm");
+    text             = with_entry(text, "Target", "0.02");
+    text             = with_entry(text, "Load steps", "4");
+    return text + "\nsubsection Load path\n  set Stiffness = tangent\n"
+                  "  set Maximum iterations = 50\nend\n";
+  }
+
   std::string
   friction_angle()
   {
@@ -96,7 +114,8 @@ namespace
                const LoadStepResult &d,
                const LoadStepResult &r,
                const double          H_distributed,
-               const double          H_serial)
+               const double          H_serial,
+               const bool            rotation_is_response)
   {
     check::relative(step + ": H [kN], 2 ranks vs 1",
                     H_distributed,
@@ -106,6 +125,11 @@ namespace
                     d.motion.horizontal_displacement,
                     r.motion.horizontal_displacement,
                     1e-8);
+    if (rotation_is_response)
+      check::relative(step + ": rotation [rad], 2 ranks vs 1",
+                      d.motion.rotation,
+                      r.motion.rotation,
+                      1e-8);
     check::equal(step + ": Newton iterations, 2 ranks vs 1",
                  d.iterations,
                  r.iterations);
@@ -129,7 +153,10 @@ namespace
   }
 
   void
-  compare(const std::string &name, const std::string &text, const bool root)
+  compare(const std::string &name,
+          const std::string &text,
+          const bool         rotation_is_response,
+          const bool         root)
   {
     std::ostream  silent(nullptr);
     std::ostream &log    = root ? std::cout : silent;
@@ -149,7 +176,8 @@ namespace
                    distributed.steps[s],
                    serial.steps[s],
                    distributed.applied[s],
-                   serial.applied[s]);
+                   serial.applied[s],
+                   rotation_is_response);
     std::cout << "  " << name << ": load steps " << serial.seconds
               << " s on 1 rank, " << distributed.seconds << " s on 2"
               << std::endl;
@@ -173,8 +201,12 @@ main(int argc, char **argv)
       penalty << std::setprecision(17) << "coulomb, kn=" << 1e6 * G / r0
               << ", ks=" << 1e6 * G / r0 << ", c=0, phi=" << friction_angle()
               << ", sigma_t=0";
-      compare("coulomb kn = 1e6 G/r0", scene(penalty.str()), root);
-      compare("contact", scene("contact, c=0, phi=" + friction_angle()), root);
+      compare("coulomb kn = 1e6 G/r0", scene(penalty.str()), false, root);
+      compare("contact",
+              scene("contact, c=0, phi=" + friction_angle()),
+              false,
+              root);
+      compare("pile", pile_scene(), true, root);
     }
   catch (const std::exception &e)
     {
