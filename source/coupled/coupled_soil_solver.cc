@@ -1184,8 +1184,8 @@ namespace FourierSSI
   std::vector<std::pair<FoundationMotion, double>>
   CoupledSoilSolver::held_reactions(const StepState &state) const
   {
-    const std::vector<FoundationMotion> &held =
-      parameters.rigid_foundation.held_motions;
+    const std::vector<FoundationMotion> held =
+      parameters.rigid_foundation.reported_motions();
     if (held.empty() || interface)
       return {};
     const std::vector<Vector<double>> plastic_load =
@@ -1441,7 +1441,7 @@ namespace FourierSSI
     if (torque)
       log << ", twist " << motion.twist << " rad";
     for (const auto &[held, load] : result.held_reactions)
-      log << "; " << name_of(held) << " held by " << load_name_of(held) << " "
+      log << "; " << parameters.rigid_foundation.reaction_label(held) << " "
           << load << " " << load_unit_of(held);
     if (!parameters.rigid_foundation.held_motions.empty() && interface)
       log << "; the loads that hold the held motions: not yet with coulomb "

@@ -157,8 +157,11 @@ namespace FourierSSI
     has_capacity(const CoupledSoilSolver &solver,
                  const AllParameters     &parameters)
     {
+      // A direction probe's capacity is the point (probe_H, probe_M), not
+      // the applied load that drives it.
       return parameters.load_path.control ==
                LoadPathParameters::Control::displacement &&
+             !parameters.rigid_foundation.probes_direction() &&
              solver.get_steps().size() >= 2;
     }
 
@@ -275,7 +278,7 @@ namespace FourierSSI
     keep_last_step(solver);
     const Harmonic any{0, Family::symmetric};
     for (const auto &[motion, load] : solver.get_steps().back().held_reactions)
-      results.add("held_" + name_of(motion) + "_reaction",
+      results.add(parameters.rigid_foundation.reaction_row(motion),
                   any,
                   solver.get_steps().size(),
                   load,

@@ -139,17 +139,24 @@ namespace FourierSSI
   {
     void
     held_motion_reactions(
+      const RigidFoundationParameters                        &foundation,
       const std::vector<std::pair<FoundationMotion, double>> &reactions,
       HarmonicReport                                         &report)
     {
       for (const auto &[motion, load] : reactions)
         {
-          report.add("held_" + name_of(motion) + "_reaction",
+          report.add(foundation.reaction_row(motion),
                      load,
                      load_unit_of(motion));
-          report.log << "\n    " << name_of(motion)
-                     << " held at zero; the load that holds it: "
-                     << load_name_of(motion) << " = " << std::setprecision(7)
+          report.log << "\n    ";
+          if (foundation.holds(motion))
+            report.log << name_of(motion)
+                       << " held at zero; the load that holds it: ";
+          else
+            report.log << "along Motion direction '"
+                       << foundation.motion_direction
+                       << "', the load on the foundation: ";
+          report.log << load_name_of(motion) << " = " << std::setprecision(7)
                      << load << " " << load_unit_of(motion);
         }
     }
@@ -228,7 +235,8 @@ namespace FourierSSI
       report.add("foundation_twist", m.twist, "rad");
       const double z_ref = parameters.rigid_foundation.reference_elevation;
       if (foundation->holds_motion())
-        held_motion_reactions(foundation->held_reactions(
+        held_motion_reactions(parameters.rigid_foundation,
+                              foundation->held_reactions(
                                 solution.problem->nodal_forces(
                                   solution.problem->get_solution())),
                               report);

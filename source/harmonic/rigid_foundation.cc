@@ -4,6 +4,7 @@
 #include <deal.II/fe/mapping_q1.h>
 #include <fourier_ssi/harmonic/rigid_foundation.h>
 #include <map>
+#include <set>
 
 namespace FourierSSI
 {
@@ -163,6 +164,16 @@ namespace FourierSSI
                       ExcMessage(entry + ": '" + name_of(m) +
                                  "' is not a rigid motion with 'Tied "
                                  "components = normal'"));
+          // A swipe (Tan 1990; Gottardi, Houlsby & Butterfield 1999) holds w
+          // at the value a vertical preload reached, not at zero.
+          AssertThrow(!(m == FoundationMotion::w &&
+                        f.held_vertical_force != 0.),
+                      ExcMessage(entry + ": 'w' with a Held vertical force "
+                                         "is a swipe test, not yet available: "
+                                         "w would be held from the end of the "
+                                         "held-load stage, and the coupled "
+                                         "solvers keep one set of constraints "
+                                         "for the whole path"));
           for (const auto &[load, value] : loads_on(m, f))
             AssertThrow(value == 0.,
                         ExcMessage(entry + ": '" + name_of(m) +
@@ -171,162 +182,324 @@ namespace FourierSSI
                                    load + " at once; drop one"));
         }
     }
+
+    /** 'u: 1, rotation: 0.25' -> the components; one line for bad text. */
+    void
+    parse_motion_direction(const std::string         &text,
+                           RigidFoundationParameters &f)
+    {
+      const std::string entry = "Rigid foundation/Motion direction";
+      f.motion_direction      = Utilities::trim(text);
+      f.direction_u = f.direction_rotation = 0.;
+      std::set<std::string> named;
+      for (const std::string &item :
+           Utilities::split_string_list(f.motion_direction))
+        {
+          const auto colon = item.find(':');
+          AssertThrow(colon != std::string::npos,
+                      ExcMessage(entry + ": '" + item +
+                                 "' is not 'MOTION: COMPONENT' (e.g. 'u: 1, "
+                                 "rotation: 0.25')"));
+          const std::string name  = Utilities::trim(item.substr(0, colon));
+          const std::string value = Utilities::trim(item.substr(colon + 1));
+          AssertThrow(name != "w" && name != "twist",
+                      ExcMessage(entry + ": '" + name +
+                                 "' not yet: w and twist are carried by "
+                                 "harmonic 0, u and rotation by harmonic 1, "
+                                 "solved as separate systems, and a "
+                                 "direction across harmonics needs a "
+                                 "constraint between them"));
+          AssertThrow(name == "u" || name == "rotation",
+                      ExcMessage(entry + ": '" + name +
+                                 "' is not a motion of the probe (u, "
+                                 "rotation)"));
+          AssertThrow(named.insert(name).second,
+                      ExcMessage(entry + ": '" + name + "' is named twice"));
+          double      component = 0.;
+          std::size_t used      = 0;
+          try
+            {
+              component = std::stod(value, &used);
+            }
+          catch (const std::exception &)
+            {
+              used = 0;
+            }
+          AssertThrow(used > 0 && used == value.size() &&
+                        std::isfinite(component),
+                      ExcMessage(entry + ": the component '" + value +
+                                 "' of '" + name + "' is not a finite number"));
+          (name == "u" ? f.direction_u : f.direction_rotation) = component;
+        }
+    }
+
+    /** One line for a direction probe that contradicts the other entries. */
+    void
+    check_motion_direction(const RigidFoundationParameters &f)
+    {
+      const std::string entry = "Rigid foundation/Motion direction";
+      if (!f.probes_direction())
+        return;
+      AssertThrow(f.direction_u != 0. || f.direction_rotation != 0.,
+                  ExcMessage(entry + ": '" + f.motion_direction +
+                             "' has zero length; give the ratio u : L "
+                             "theta of the probe (e.g. 'u: 1, rotation: "
+                             "0.25')"));
+      AssertThrow(f.enabled,
+                  ExcMessage(entry + ": the probe moves the rigid "
+                                     "foundation; set Enabled = true"));
+      AssertThrow(!f.normal_only,
+                  ExcMessage(entry + ": 'Tied components = normal' has no "
+                                     "rigid horizontal motion u"));
+      AssertThrow(!f.stiffness_coefficients,
+                  ExcMessage(entry + ": the stiffness coefficients (and "
+                                     "Stiffness matrix) are those of the free "
+                                     "foundation; probe in another run"));
+      for (const FoundationMotion m :
+           {FoundationMotion::u, FoundationMotion::rotation})
+        AssertThrow(!f.holds(m),
+                    ExcMessage(entry + ": '" + name_of(m) +
+                               "' is also in Held motions; the direction "
+                               "fixes u : L theta already, hold neither"));
+      AssertThrow(f.direction_length > 0. ||
+                    f.direction_u * f.direction_rotation == 0.,
+                  ExcMessage("Rigid foundation/Direction length: give the "
+                             "length L [m] of u : L theta (e.g. the "
+                             "diameter D) for the direction '" +
+                             f.motion_direction + "'"));
+      // The loads along the direction drive it: their work on the unit
+      // motion (u, theta) = (d_u, d_theta / L).
+      const double L    = f.direction_length > 0. ? f.direction_length : 1.;
+      const double work = f.horizontal_force * f.direction_u +
+                          f.moment * f.direction_rotation / L;
+      AssertThrow(work != 0.,
+                  ExcMessage(entry +
+                             ": Horizontal force and Moment do no "
+                             "work along '" +
+                             f.motion_direction +
+                             "' (H d_u + M d_theta / L = 0): nothing drives "
+                             "the probe"));
+    }
+  } // namespace
+
+  namespace
+  {
+    /** Where the rigid body is and how it is tied. */
+    void
+    declare_tie_entries(ParameterHandler &prm)
+    {
+      prm.declare_entry("Enabled",
+                        "false",
+                        Patterns::Bool(),
+                        "Tie DoFs to an exact rigid-body motion.");
+      prm.declare_entry("Tie",
+                        "material",
+                        Patterns::Selection("material|boundary"),
+                        "material: all DoFs of cells with material id 'Id' (a "
+                        "rigid footing or pile body); boundary: the DoFs on "
+                        "boundary id 'Id' (a rigid plate in contact).");
+      prm.declare_entry("Id", "1", Patterns::Integer(0, 254), "See 'Tie'.");
+      prm.declare_entry("Tied components",
+                        "all",
+                        Patterns::Selection("all|normal"),
+                        "all: u, v, w follow the rigid motion; normal: only "
+                        "the axial component v (frictionless horizontal "
+                        "contact).");
+      prm.declare_entry("Reference elevation",
+                        "0",
+                        Patterns::Double(),
+                        "z [m] of the point on the axis about which M and "
+                        "Theta are taken (default: ground surface z = 0).");
+    }
+
+    /** The loads on the foundation, scaled along a nonlinear path. */
+    void
+    declare_load_entries(ParameterHandler &prm)
+    {
+      prm.declare_entry("Horizontal force",
+                        "0",
+                        Patterns::Double(),
+                        "H_x [kN] along x (harmonic 1, symmetric).");
+      prm.declare_entry("Horizontal force y",
+                        "0",
+                        Patterns::Double(),
+                        "H_y [kN] along y (harmonic 1, antisymmetric).");
+      prm.declare_entry("Moment x",
+                        "0",
+                        Patterns::Double(),
+                        "M_x [kN.m] about +x through the reference point "
+                        "(harmonic 1, antisymmetric).");
+      prm.declare_entry("Moment",
+                        "0",
+                        Patterns::Double(),
+                        "M_y [kN.m] about +y through the reference point "
+                        "(harmonic 1, symmetric).");
+      prm.declare_entry("Vertical force",
+                        "0",
+                        Patterns::Double(),
+                        "V [kN] along +z (harmonic 0, symmetric).");
+      prm.declare_entry("Torque",
+                        "0",
+                        Patterns::Double(),
+                        "T [kN.m] about +z (harmonic 0, antisymmetric).");
+    }
+
+    /** Held loads, held motions and the probe direction. */
+    void
+    declare_held_entries(ParameterHandler &prm)
+    {
+      prm.declare_entry("Held vertical force",
+                        "0",
+                        Patterns::Double(),
+                        "Nonlinear runs: V [kN] applied first (Nonlinear "
+                        "interfaces/Held load steps, with the body force and "
+                        "tractions) and then held while the loads above are "
+                        "scaled by the load or displacement control: a "
+                        "combined loading path (a fixed V, then H or M).");
+      prm.declare_entry("Held horizontal force",
+                        "0",
+                        Patterns::Double(),
+                        "Nonlinear runs: held H_x [kN] (see Held vertical "
+                        "force).");
+      prm.declare_entry("Held moment",
+                        "0",
+                        Patterns::Double(),
+                        "Nonlinear runs: held M_y [kN.m] about the reference "
+                        "point (see Held vertical force).");
+      prm.declare_entry("Held torque",
+                        "0",
+                        Patterns::Double(),
+                        "Nonlinear runs: held T [kN.m] (see Held vertical "
+                        "force).");
+      prm.declare_entry(
+        "Held motions",
+        "",
+        Patterns::List(Patterns::Selection("u|w|twist|rotation"), 0, 4),
+        "Rigid motions held at zero (their master DoF constrained), for "
+        "the probes of the foundation literature: u (translation along x) "
+        "held for pure M, rotation (about y, through the reference point) "
+        "held for pure H, also w and twist. Linear and nonlinear runs; "
+        "the log prints the load that holds each (kN, kN m). A held motion "
+        "takes no load (Horizontal force with u, Moment with rotation, "
+        "...), is not the Load path/Controlled motion, and "
+        "excludes Stiffness coefficients. Empty: none held.");
+      prm.declare_entry(
+        "Motion direction",
+        "",
+        Patterns::Anything(),
+        "A displacement probe: 'u: D_U, rotation: D_THETA' keeps the "
+        "foundation's motion in the x-z plane along u : L theta = D_U : "
+        "D_THETA (L the Direction length; theta about y through the "
+        "reference point), the probe of the offshore literature that "
+        "drives a fixed ratio of horizontal displacement to rotation "
+        "(doc/offshore-foundations.md 7). The complementary combination "
+        "D_THETA u - D_U L theta is held at zero as Held motions holds a "
+        "motion, so any load that works on the direction drives it: "
+        "Horizontal force (or Moment), with Load path/Controlled motion = "
+        "horizontal (or rotation) under displacement control. The log "
+        "prints and the rows probe_H, probe_M give the H and M on the "
+        "foundation (applied plus the load that keeps the direction). "
+        "u and rotation are then not Held motions. Empty: no probe.");
+      prm.declare_entry("Direction length",
+                        "0",
+                        Patterns::Double(0.),
+                        "L [m] of Motion direction's u : L theta, e.g. the "
+                        "foundation diameter D; needed when both components "
+                        "are non-zero.");
+    }
+
+    /** The stiffness coefficients and matrix, and their normalisation. */
+    void
+    declare_stiffness_entries(ParameterHandler &prm)
+    {
+      prm.declare_entry(
+        "Stiffness coefficients",
+        "false",
+        Patterns::Bool(),
+        "For n = 1: also solve unit H and unit M and report "
+        "I_H, I_M, I_MH and K_H, K_M, K_MH (thesis eqs 4.2-4.5), "
+        "normalised with the two entries below.");
+      prm.declare_entry("Stiffness matrix",
+                        "false",
+                        Patterns::Bool(),
+                        "Also solve a unit V (n = 0 symmetric) and a unit T "
+                        "(n = 0 antisymmetric), and write the 6x6 stiffness "
+                        "matrix at the reference point (axis, Reference "
+                        "elevation) in SI units with its error bars: "
+                        "foundation-stiffness.csv and the SubDyn SSI file "
+                        "foundation-stiffness-subdyn.txt in Output/Directory "
+                        "(doc/foundation-stiffness.md). Implies Stiffness "
+                        "coefficients.");
+      prm.declare_entry("Reference shear modulus",
+                        "1",
+                        Patterns::Double(0.),
+                        "G [kPa] of the normalisation: G at depth e for an "
+                        "embedded footing (thesis eq. 4.2), at depth L for a "
+                        "pile (eq. 6.1).");
+      prm.declare_entry(
+        "Reference length",
+        "1",
+        Patterns::Double(0.),
+        "Length [m] of the normalisation: footing radius a, pile "
+        "radius r.");
+      prm.declare_entry("Reference Poisson ratio",
+                        "-1",
+                        Patterns::Double(-1., 0.5),
+                        "nu of the soil (< 0: not given). When given, the log "
+                        "also prints the compliances with E = 2 G (1 + nu) "
+                        "(e.g. theta E a^3 / M, thesis Table 4.1) and, next to "
+                        "each computed stiffness, the closed form of a rigid "
+                        "disc on the surface of an elastic half-space with G "
+                        "and a above (vertical 4 G a / (1 - nu), rocking "
+                        "8 G a^3 / (3 (1 - nu)): Poulos & Davis 1974, thesis "
+                        "eq. 4.1; horizontal 32 (1 - nu) G a / (7 - 8 nu), "
+                        "torsion 16 G a^3 / 3: Gazetas 1991).");
+    }
+
+    /** The pile formula and the capacity's normalisation. */
+    void
+    declare_reference_entries(ParameterHandler &prm)
+    {
+      prm.declare_entry("Pile diameter",
+                        "0",
+                        Patterns::Double(0.),
+                        "D [m] of a pile for the formula printed beside K_H, "
+                        "K_M, K_MH (Randolph 1981, flexible pile; soil: "
+                        "material 0). 0: no formula.");
+      prm.declare_entry("Pile length",
+                        "0",
+                        Patterns::Double(0.),
+                        "L [m] of that pile (the formula holds for L >= its "
+                        "critical length l_c, printed).");
+      prm.declare_entry("Pile Young modulus",
+                        "0",
+                        Patterns::Double(0.),
+                        "E_p [kPa] of the solid circular pile with the same "
+                        "bending stiffness as that pile: E I / (pi D^4 / 64).");
+      prm.declare_entry(
+        "Capacity normalisation",
+        "",
+        Patterns::Anything(),
+        "'NAME = FORCE': a plastic run under displacement "
+        "control also prints its capacity as NAME = |capacity| "
+        "/ FORCE with the same relative error bar, and writes "
+        "the row capacity_normalised. FORCE [kN, or kN m for a "
+        "moment] is the product the literature divides by, e.g. "
+        "'N_p = 100' for a pile's s_u d L = 10 kPa x 1 m x 10 m, "
+        "'N_c = 31.4159' for a footing's s_u pi a^2. Empty: "
+        "not printed.");
+    }
   } // namespace
 
   void
   RigidFoundationParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Rigid foundation");
-    prm.declare_entry("Enabled",
-                      "false",
-                      Patterns::Bool(),
-                      "Tie DoFs to an exact rigid-body motion.");
-    prm.declare_entry("Tie",
-                      "material",
-                      Patterns::Selection("material|boundary"),
-                      "material: all DoFs of cells with material id 'Id' (a "
-                      "rigid footing or pile body); boundary: the DoFs on "
-                      "boundary id 'Id' (a rigid plate in contact).");
-    prm.declare_entry("Id", "1", Patterns::Integer(0, 254), "See 'Tie'.");
-    prm.declare_entry("Tied components",
-                      "all",
-                      Patterns::Selection("all|normal"),
-                      "all: u, v, w follow the rigid motion; normal: only "
-                      "the axial component v (frictionless horizontal "
-                      "contact).");
-    prm.declare_entry("Reference elevation",
-                      "0",
-                      Patterns::Double(),
-                      "z [m] of the point on the axis about which M and "
-                      "Theta are taken (default: ground surface z = 0).");
-    prm.declare_entry("Horizontal force",
-                      "0",
-                      Patterns::Double(),
-                      "H_x [kN] along x (harmonic 1, symmetric).");
-    prm.declare_entry("Horizontal force y",
-                      "0",
-                      Patterns::Double(),
-                      "H_y [kN] along y (harmonic 1, antisymmetric).");
-    prm.declare_entry("Moment x",
-                      "0",
-                      Patterns::Double(),
-                      "M_x [kN.m] about +x through the reference point "
-                      "(harmonic 1, antisymmetric).");
-    prm.declare_entry("Moment",
-                      "0",
-                      Patterns::Double(),
-                      "M_y [kN.m] about +y through the reference point "
-                      "(harmonic 1, symmetric).");
-    prm.declare_entry("Vertical force",
-                      "0",
-                      Patterns::Double(),
-                      "V [kN] along +z (harmonic 0, symmetric).");
-    prm.declare_entry("Torque",
-                      "0",
-                      Patterns::Double(),
-                      "T [kN.m] about +z (harmonic 0, antisymmetric).");
-    prm.declare_entry("Held vertical force",
-                      "0",
-                      Patterns::Double(),
-                      "Nonlinear runs: V [kN] applied first (Nonlinear "
-                      "interfaces/Held load steps, with the body force and "
-                      "tractions) and then held while the loads above are "
-                      "scaled by the load or displacement control: a "
-                      "combined loading path (a fixed V, then H or M).");
-    prm.declare_entry("Held horizontal force",
-                      "0",
-                      Patterns::Double(),
-                      "Nonlinear runs: held H_x [kN] (see Held vertical "
-                      "force).");
-    prm.declare_entry("Held moment",
-                      "0",
-                      Patterns::Double(),
-                      "Nonlinear runs: held M_y [kN.m] about the reference "
-                      "point (see Held vertical force).");
-    prm.declare_entry("Held torque",
-                      "0",
-                      Patterns::Double(),
-                      "Nonlinear runs: held T [kN.m] (see Held vertical "
-                      "force).");
-    prm.declare_entry(
-      "Held motions",
-      "",
-      Patterns::List(Patterns::Selection("u|w|twist|rotation"), 0, 4),
-      "Rigid motions held at zero (their master DoF constrained), for "
-      "the probes of the foundation literature: u (translation along x) "
-      "held for pure M, rotation (about y, through the reference point) "
-      "held for pure H, also w and twist. Linear and nonlinear runs; "
-      "the log prints the load that holds each (kN, kN m). A held motion "
-      "takes no load (Horizontal force with u, Moment with rotation, "
-      "...), is not the Load path/Controlled motion, and "
-      "excludes Stiffness coefficients. Empty: none held.");
-    prm.declare_entry("Stiffness coefficients",
-                      "false",
-                      Patterns::Bool(),
-                      "For n = 1: also solve unit H and unit M and report "
-                      "I_H, I_M, I_MH and K_H, K_M, K_MH (thesis eqs 4.2-4.5), "
-                      "normalised with the two entries below.");
-    prm.declare_entry("Stiffness matrix",
-                      "false",
-                      Patterns::Bool(),
-                      "Also solve a unit V (n = 0 symmetric) and a unit T "
-                      "(n = 0 antisymmetric), and write the 6x6 stiffness "
-                      "matrix at the reference point (axis, Reference "
-                      "elevation) in SI units with its error bars: "
-                      "foundation-stiffness.csv and the SubDyn SSI file "
-                      "foundation-stiffness-subdyn.txt in Output/Directory "
-                      "(doc/foundation-stiffness.md). Implies Stiffness "
-                      "coefficients.");
-    prm.declare_entry("Reference shear modulus",
-                      "1",
-                      Patterns::Double(0.),
-                      "G [kPa] of the normalisation: G at depth e for an "
-                      "embedded footing (thesis eq. 4.2), at depth L for a "
-                      "pile (eq. 6.1).");
-    prm.declare_entry("Reference length",
-                      "1",
-                      Patterns::Double(0.),
-                      "Length [m] of the normalisation: footing radius a, pile "
-                      "radius r.");
-    prm.declare_entry("Reference Poisson ratio",
-                      "-1",
-                      Patterns::Double(-1., 0.5),
-                      "nu of the soil (< 0: not given). When given, the log "
-                      "also prints the compliances with E = 2 G (1 + nu) "
-                      "(e.g. theta E a^3 / M, thesis Table 4.1) and, next to "
-                      "each computed stiffness, the closed form of a rigid "
-                      "disc on the surface of an elastic half-space with G "
-                      "and a above (vertical 4 G a / (1 - nu), rocking "
-                      "8 G a^3 / (3 (1 - nu)): Poulos & Davis 1974, thesis "
-                      "eq. 4.1; horizontal 32 (1 - nu) G a / (7 - 8 nu), "
-                      "torsion 16 G a^3 / 3: Gazetas 1991).");
-    prm.declare_entry("Pile diameter",
-                      "0",
-                      Patterns::Double(0.),
-                      "D [m] of a pile for the formula printed beside K_H, "
-                      "K_M, K_MH (Randolph 1981, flexible pile; soil: "
-                      "material 0). 0: no formula.");
-    prm.declare_entry("Pile length",
-                      "0",
-                      Patterns::Double(0.),
-                      "L [m] of that pile (the formula holds for L >= its "
-                      "critical length l_c, printed).");
-    prm.declare_entry("Pile Young modulus",
-                      "0",
-                      Patterns::Double(0.),
-                      "E_p [kPa] of the solid circular pile with the same "
-                      "bending stiffness as that pile: E I / (pi D^4 / 64).");
-    prm.declare_entry("Capacity normalisation",
-                      "",
-                      Patterns::Anything(),
-                      "'NAME = FORCE': a plastic run under displacement "
-                      "control also prints its capacity as NAME = |capacity| "
-                      "/ FORCE with the same relative error bar, and writes "
-                      "the row capacity_normalised. FORCE [kN, or kN m for a "
-                      "moment] is the product the literature divides by, e.g. "
-                      "'N_p = 100' for a pile's s_u d L = 10 kPa x 1 m x 10 m, "
-                      "'N_c = 31.4159' for a footing's s_u pi a^2. Empty: "
-                      "not printed.");
+    declare_tie_entries(prm);
+    declare_load_entries(prm);
+    declare_held_entries(prm);
+    declare_stiffness_entries(prm);
+    declare_reference_entries(prm);
     prm.leave_subsection();
   }
 
@@ -388,9 +561,38 @@ namespace FourierSSI
       capacity_normalisation(prm.get("Capacity normalisation"));
     held_motions = held_motions_of(prm.get("Held motions"));
     check_held_motions(*this);
+    direction_length = prm.get_double("Direction length");
+    parse_motion_direction(prm.get("Motion direction"), *this);
+    check_motion_direction(*this);
     prm.leave_subsection();
   }
 
+
+  std::vector<FoundationMotion>
+  RigidFoundationParameters::reported_motions() const
+  {
+    std::vector<FoundationMotion> motions = held_motions;
+    if (probes_direction())
+      motions.insert(motions.end(),
+                     {FoundationMotion::u, FoundationMotion::rotation});
+    return motions;
+  }
+
+  std::string
+  RigidFoundationParameters::reaction_row(const FoundationMotion motion) const
+  {
+    // A direction probe excludes holding u or rotation (check above).
+    if (holds(motion))
+      return "held_" + name_of(motion) + "_reaction";
+    return "probe_" + load_name_of(motion);
+  }
+
+  std::string
+  RigidFoundationParameters::reaction_label(const FoundationMotion motion) const
+  {
+    return (holds(motion) ? name_of(motion) + " held by " : "probe ") +
+           load_name_of(motion);
+  }
 
   RigidFoundation::RigidFoundation(const RigidFoundationParameters &parameters,
                                    const Harmonic                  &harmonic)
@@ -402,17 +604,25 @@ namespace FourierSSI
   RigidFoundation::add_constraints(const DoFHandler<2>       &dof_handler,
                                    AffineConstraints<double> &constraints)
   {
+    const TiedNodes nodes = tied_nodes(dof_handler);
+    AssertThrow(!nodes.empty(),
+                ExcMessage("Rigid foundation: no DoFs found on " +
+                           name_of(parameters.tie) + " id " +
+                           std::to_string(parameters.id)));
+    choose_master(nodes, constraints);
+    tie_to_master(nodes, constraints);
+    fix_unmoved_masters(constraints);
+  }
+
+  RigidFoundation::TiedNodes
+  RigidFoundation::tied_nodes(const DoFHandler<2> &dof_handler) const
+  {
     const FiniteElement<2> &fe = dof_handler.get_fe();
     const MappingQ1<2>      mapping;
     const auto             &unit_points = fe.get_unit_support_points();
     const auto             &face_points = fe.get_unit_face_support_points();
-
-    // Tied nodes: position -> DoF of each component.
-    std::map<std::pair<double, double>, std::array<types::global_dof_index, 3>>
-                                         nodes;
-    std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
-    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
-    const auto                           record = [&](const Point<2>               &x,
+    TiedNodes               nodes;
+    const auto              record = [&](const Point<2>               &x,
                             const unsigned int            component,
                             const types::global_dof_index dof) {
       auto &entry = nodes
@@ -424,6 +634,8 @@ namespace FourierSSI
                       .first->second;
       entry[component] = dof;
     };
+    std::vector<types::global_dof_index> cell_dofs(fe.n_dofs_per_cell());
+    std::vector<types::global_dof_index> face_dofs(fe.n_dofs_per_face());
     for (const auto &cell : dof_handler.active_cell_iterators())
       {
         if (parameters.tie == FoundationTie::material)
@@ -443,25 +655,24 @@ namespace FourierSSI
                   cell->face(f)->boundary_id() != parameters.id)
                 continue;
               cell->face(f)->get_dof_indices(face_dofs);
+              // Face support points mapped through the straight face.
+              const Point<2> a = cell->face(f)->vertex(0),
+                             b = cell->face(f)->vertex(1);
               for (unsigned int i = 0; i < fe.n_dofs_per_face(); ++i)
-                {
-                  // Face support points mapped through the straight face.
-                  const Point<2> a = cell->face(f)->vertex(0),
-                                 b = cell->face(f)->vertex(1);
-                  const Point<2> x = a + face_points[i][0] * (b - a);
-                  record(x,
-                         fe.face_system_to_component_index(i).first,
-                         face_dofs[i]);
-                }
+                record(a + face_points[i][0] * (b - a),
+                       fe.face_system_to_component_index(i).first,
+                       face_dofs[i]);
             }
       }
-    AssertThrow(!nodes.empty(),
-                ExcMessage("Rigid foundation: no DoFs found on " +
-                           name_of(parameters.tie) + " id " +
-                           std::to_string(parameters.id)));
+    return nodes;
+  }
 
-    // Master node: the tied node farthest from the axis whose DoFs are free
-    // (r_A > 0 is needed to read the rotation from V_A = -Theta r_A).
+  void
+  RigidFoundation::choose_master(const TiedNodes                 &nodes,
+                                 const AffineConstraints<double> &constraints)
+  {
+    // The tied node farthest from the axis whose DoFs are free (r_A > 0 is
+    // needed to read the rotation from V_A = -Theta r_A).
     double best_r = 0.;
     for (const auto &[x, dofs] : nodes)
       if (x.first > best_r && !constraints.is_constrained(dofs[0]) &&
@@ -476,7 +687,12 @@ namespace FourierSSI
         }
     AssertThrow(best_r > 0.,
                 ExcMessage("Rigid foundation: no free tied node off the axis"));
+  }
 
+  void
+  RigidFoundation::tie_to_master(const TiedNodes           &nodes,
+                                 AffineConstraints<double> &constraints)
+  {
     // The components that follow the rigid motion: V always, U and W unless
     // only the normal component is tied; for n = 0 not the component that
     // carries no stiffness (W symmetric, U and V antisymmetric), which
@@ -502,57 +718,60 @@ namespace FourierSSI
         const auto d  = displacement_at(master_position, unit_master[k]);
         moves_body[k] = d[0] != 0. || d[1] != 0. || d[2] != 0.;
       }
-    const auto tie =
-      [&](const types::global_dof_index dof,
-          const std::vector<std::pair<types::global_dof_index, double>>
-            &entries) {
-        if (dof == numbers::invalid_dof_index ||
-            constraints.is_constrained(dof))
-          return;
-        constraints.add_line(dof);
-        for (const auto &[master, weight] : entries)
-          if (weight != 0.)
-            constraints.add_entry(dof, master, weight);
-        ++n_tied;
-      };
-
     for (const auto &[x, dofs] : nodes)
       {
         const Point<2> position(x.first, x.second);
         for (unsigned int c = 0; c < 3; ++c)
           {
-            if (!follows[c])
+            if (!follows[c] || dofs[c] == numbers::invalid_dof_index ||
+                constraints.is_constrained(dofs[c]))
               continue;
             bool is_unknown = false;
             for (unsigned int k = 0; k < 3; ++k)
               is_unknown |= moves_body[k] && dofs[c] == masters[k];
             if (is_unknown)
               continue;
-            std::vector<std::pair<types::global_dof_index, double>> entries;
+            constraints.add_line(dofs[c]);
             for (unsigned int k = 0; k < 3; ++k)
-              entries.emplace_back(masters[k],
-                                   displacement_at(position,
-                                                   unit_master[k])[c]);
-            tie(dofs[c], entries);
+              {
+                const double weight =
+                  displacement_at(position, unit_master[k])[c];
+                if (weight != 0.)
+                  constraints.add_entry(dofs[c], masters[k], weight);
+              }
+            ++n_tied;
           }
       }
-    // Master DoFs that a harmonic does not move are fixed too.
+  }
+
+  void
+  RigidFoundation::fix_unmoved_masters(AffineConstraints<double> &constraints)
+  {
+    // Master DoFs that a harmonic does not move are fixed (n >= 2: all;
+    // n = 0 antisymmetric: U_A, V_A; n = 0 symmetric: U_A), unless only
+    // the normal component is tied (then U and W are soil DoFs).
+    const bool                           tie_uw = !parameters.normal_only;
+    std::vector<types::global_dof_index> unmoved;
     if (harmonic.n >= 2)
-      {
-        tie(master_U, {});
-        tie(master_V, {});
-        tie(master_W, {});
-      }
-    else if (harmonic.n == 0 && harmonic.family == Family::antisymmetric)
-      {
-        if (tie_uw)
-          {
-            tie(master_U, {});
-            tie(master_V, {});
-          }
-      }
+      unmoved = {master_U, master_V, master_W};
+    else if (harmonic.n == 0 && harmonic.family == Family::antisymmetric &&
+             tie_uw)
+      unmoved = {master_U, master_V};
     else if (harmonic.n == 0 && tie_uw)
-      tie(master_U, {});
+      unmoved = {master_U};
+    for (const types::global_dof_index dof : unmoved)
+      if (dof != numbers::invalid_dof_index && !constraints.is_constrained(dof))
+        {
+          constraints.add_line(dof);
+          ++n_tied;
+        }
+  }
+
+  bool
+  RigidFoundation::carries_direction() const
+  {
+    return parameters.probes_direction() && harmonic.n == 1 &&
+           harmonic.family == Family::symmetric;
   }
 
   void
@@ -565,43 +784,70 @@ namespace FourierSSI
       if (harmonic_of(m).n == harmonic.n &&
           harmonic_of(m).family == harmonic.family)
         held_here.push_back(m);
-    if (held_here.empty())
+    direction_here = carries_direction();
+    if (held_here.empty() && !direction_here)
       return;
     constraints_without_hold.clear();
     constraints_without_hold.copy_from(constraints);
     constraints_without_hold.close();
+    // Each motion is linear in the masters: g_k = its value under a unit
+    // amplitude of master k, and sum_k g_k m_k = 0 holds it.
+    const auto gradient = [this](const auto &value_of) {
+      MasterValues g;
+      for (unsigned int k = 0; k < 3; ++k)
+        {
+          MasterValues unit = {{0., 0., 0.}};
+          unit[k]           = 1.;
+          g[k]              = value_of(motion_of(unit));
+        }
+      return g;
+    };
+    for (const FoundationMotion m : held_here)
+      hold_combination(gradient(
+                         [m](const RigidMotion &r) { return component(r, m); }),
+                       "Rigid foundation/Held motions: '" + name_of(m) + "'",
+                       constraints);
+    if (direction_here)
+      {
+        // u : L theta = d_u : d_theta holds d_theta u - d_u L theta = 0.
+        const double d_u     = parameters.direction_u,
+                     d_theta = parameters.direction_rotation;
+        const double L =
+          parameters.direction_length > 0. ? parameters.direction_length : 1.;
+        hold_combination(gradient([&](const RigidMotion &r) {
+                           return d_theta * r.horizontal_displacement -
+                                  d_u * L * r.rotation;
+                         }),
+                         "Rigid foundation/Motion direction",
+                         constraints);
+      }
+  }
+
+  void
+  RigidFoundation::hold_combination(const MasterValues        &g,
+                                    const std::string         &what,
+                                    AffineConstraints<double> &constraints)
+  {
     const std::array<types::global_dof_index, 3> masters = {
       {master_U, master_V, master_W}};
-    for (const FoundationMotion m : held_here)
-      {
-        // The motion is linear in the masters: sum_k g_k m_k = 0 holds it.
-        std::array<double, 3> g;
-        for (unsigned int k = 0; k < 3; ++k)
-          {
-            MasterValues unit = {{0., 0., 0.}};
-            unit[k]           = 1.;
-            g[k]              = component(motion_of(unit), m);
-          }
-        // Solve for a free master with weight (a master held by an earlier
-        // motion is constrained already): U_A unless V_A weighs twice as
-        // much (|z_A - z_ref| > 2 r_A for U_h), a well-scaled line.
-        unsigned int held = 3;
-        for (unsigned int k = 0; k < 3; ++k)
-          if (g[k] != 0. && !constraints.is_constrained(masters[k]) &&
-              (held == 3 || std::abs(g[k]) > 2. * std::abs(g[held])))
-            held = k;
-        AssertThrow(held < 3,
-                    ExcMessage("Rigid foundation/Held motions: '" + name_of(m) +
-                               "' has no free master DoF in harmonic " +
-                               harmonic.name()));
-        std::vector<std::pair<types::global_dof_index, double>> line;
-        for (unsigned int k = 0; k < 3; ++k)
-          if (k != held && g[k] != 0.)
-            line.emplace_back(masters[k], -g[k] / g[held]);
-        constraints.add_line(masters[held]);
-        constraints.add_entries(masters[held], line);
-        held_lines.emplace(masters[held], line);
-      }
+    // Solve for a free master with weight (a master held by an earlier
+    // motion is constrained already): U_A unless V_A weighs twice as
+    // much (|z_A - z_ref| > 2 r_A for U_h), a well-scaled line.
+    unsigned int held = 3;
+    for (unsigned int k = 0; k < 3; ++k)
+      if (g[k] != 0. && !constraints.is_constrained(masters[k]) &&
+          (held == 3 || std::abs(g[k]) > 2. * std::abs(g[held])))
+        held = k;
+    AssertThrow(held < 3,
+                ExcMessage(what + " has no free master DoF in harmonic " +
+                           harmonic.name()));
+    std::vector<std::pair<types::global_dof_index, double>> line;
+    for (unsigned int k = 0; k < 3; ++k)
+      if (k != held && g[k] != 0.)
+        line.emplace_back(masters[k], -g[k] / g[held]);
+    constraints.add_line(masters[held]);
+    constraints.add_entries(masters[held], line);
+    held_lines.emplace(masters[held], line);
   }
 
   double
@@ -664,8 +910,15 @@ namespace FourierSSI
       }
     const std::array<types::global_dof_index, 3> masters = {
       {master_U, master_V, master_W}};
+    std::vector<FoundationMotion> reported = held_here;
+    // The probe's H and M: the work on the unit u (theta = 0) and the unit
+    // rotation (u = 0), which the applied loads share with the load that
+    // keeps the direction.
+    if (direction_here)
+      reported.insert(reported.end(),
+                      {FoundationMotion::u, FoundationMotion::rotation});
     std::vector<std::pair<FoundationMotion, double>> reactions;
-    for (const FoundationMotion m : held_here)
+    for (const FoundationMotion m : reported)
       {
         const MasterValues e    = unit_motion(m);
         double             work = 0.;

@@ -45,6 +45,43 @@ namespace FourierSSI
                              "motion; hold another motion or drive another"));
     }
 
+    /**
+     * A direction probe (Rigid foundation/Motion direction) moves u and
+     * theta in a fixed ratio: displacement control must drive a motion
+     * with a component along it, and what is not written for the probe yet
+     * (its loads with coulomb interfaces, a capacity with error bars) is
+     * refused rather than reported from the applied loads alone.
+     */
+    void
+    check_motion_direction_path(const AllParameters &parameters)
+    {
+      const RigidFoundationParameters &f = parameters.rigid_foundation;
+      if (!f.probes_direction() || !parameters.coupled())
+        return;
+      const std::string entry = "Rigid foundation/Motion direction";
+      AssertThrow(!parameters.interfaces.any_nonlinear(),
+                  ExcMessage(entry + ": not yet with coulomb interfaces (the "
+                                     "probe's H and M are read from the "
+                                     "soil's nodal forces, which the "
+                                     "interface solver does not report)"));
+      AssertThrow(parameters.discretization.target_accuracy == 0.,
+                  ExcMessage(entry + ": not yet with Discretization/Target "
+                                     "accuracy (the capacity with error bars "
+                                     "is that of the applied load, not of "
+                                     "the probe's H and M)"));
+      const LoadPathParameters &path = parameters.load_path;
+      if (path.control != LoadPathParameters::Control::displacement)
+        return;
+      using M = LoadPathParameters::Motion;
+      AssertThrow(!(path.motion == M::horizontal && f.direction_u == 0.) &&
+                    !(path.motion == M::rotation && f.direction_rotation == 0.),
+                  ExcMessage("Load path/Controlled motion: it does not move "
+                             "along " +
+                             entry + " = '" + f.motion_direction +
+                             "' (its component there is 0); control the "
+                             "other motion"));
+    }
+
     /** True if some load of the scene is not zero. */
     bool
     scene_has_load(const AllParameters &parameters)
@@ -108,6 +145,7 @@ namespace FourierSSI
   check_problem_is_meaningful(const AllParameters &parameters)
   {
     check_controlled_motion_not_held(parameters);
+    check_motion_direction_path(parameters);
     check_displacement_target(parameters);
     check_load_control_has_load(parameters);
     check_exact_solution_linear(parameters);

@@ -79,10 +79,13 @@ namespace FourierSSI
 
     /**
      * The load that holds each held motion (Rigid foundation/Held
-     * motions): rows held_<motion>_reaction [kN or kN.m] and a log line.
+     * motions): rows held_<motion>_reaction [kN or kN.m]; in a direction
+     * probe (Motion direction) the H and M on the foundation: rows
+     * probe_H, probe_M; a log line each.
      */
     void
     held_motion_reactions(
+      const RigidFoundationParameters                        &foundation,
       const std::vector<std::pair<FoundationMotion, double>> &reactions,
       HarmonicReport                                         &report);
 

@@ -130,6 +130,35 @@ namespace FourierSSI
       return std::find(held_motions.begin(), held_motions.end(), motion) !=
              held_motions.end();
     }
+    /**
+     * A displacement probe (Motion direction): the n = 1 rigid motion kept
+     * along u : L theta = direction_u : direction_rotation (L the Direction
+     * length), i.e. the combination direction_rotation u - direction_u L
+     * theta held at zero; the foundation moves along the direction only.
+     */
+    std::string motion_direction; // the entry as given; empty: no probe
+    double      direction_u        = 0.;
+    double      direction_rotation = 0.;
+    double      direction_length   = 0.; // L [m]; 0: not given
+
+    bool
+    probes_direction() const
+    {
+      return !motion_direction.empty();
+    }
+    /**
+     * The motions whose load is reported at every step: the held motions
+     * (the load that holds each) and, in a direction probe, u and rotation
+     * (the H and M on the foundation along the probe).
+     */
+    std::vector<FoundationMotion>
+    reported_motions() const;
+    /** The results row of that load: held_<motion>_reaction or probe_H/M. */
+    std::string
+    reaction_row(const FoundationMotion motion) const;
+    /** The log's words before its value: 'rotation held by M', 'probe H'. */
+    std::string
+    reaction_label(const FoundationMotion motion) const;
     /** Also solve the unit H and unit M cases (thesis eqs 4.2-4.5). */
     bool stiffness_coefficients = false;
     /**
@@ -225,11 +254,14 @@ namespace FourierSSI
     void
     add_held_motion_constraints(AffineConstraints<double> &constraints);
 
-    /** True if this harmonic holds some motion. */
+    /**
+     * True if this harmonic holds some motion or carries the Motion
+     * direction: held_reactions() has loads to report.
+     */
     bool
     holds_motion() const
     {
-      return !held_here.empty();
+      return !held_here.empty() || direction_here;
     }
 
     /**
@@ -240,7 +272,9 @@ namespace FourierSSI
      * other rigid motions of the harmonic zero), phi = C e through the
      * constraints without the hold. The applied foundation loads do no
      * work on a held motion (a load on it is refused), so phi . r is all
-     * of it.
+     * of it. In a direction probe also the H and M on the foundation, the
+     * work of r on the unit u and the unit rotation: the applied loads plus
+     * the load that keeps the direction.
      */
     std::vector<std::pair<FoundationMotion, double>>
     held_reactions(const Vector<double> &nodal_forces) const;
@@ -301,6 +335,30 @@ namespace FourierSSI
   private:
     /** Amplitudes (U_A, V_A, W_A) of the master node, or forces on them. */
     using MasterValues = std::array<double, 3>;
+    /** Tied nodes: position (r, z) -> DoF of each component. */
+    using TiedNodes = std::map<std::pair<double, double>,
+                               std::array<types::global_dof_index, 3>>;
+
+    /** Steps of add_constraints(). */
+    TiedNodes
+    tied_nodes(const DoFHandler<2> &dof_handler) const;
+    void
+    choose_master(const TiedNodes                 &nodes,
+                  const AffineConstraints<double> &constraints);
+    void
+    tie_to_master(const TiedNodes           &nodes,
+                  AffineConstraints<double> &constraints);
+    void
+    fix_unmoved_masters(AffineConstraints<double> &constraints);
+    /** Constrain a free master DoF so that sum_k g_k m_k = 0 (`what` names it).
+     */
+    void
+    hold_combination(const MasterValues        &g,
+                     const std::string         &what,
+                     AffineConstraints<double> &constraints);
+    /** True if this harmonic carries the Motion direction (n = 1 symmetric). */
+    bool
+    carries_direction() const;
 
     /**
      * The rigid-body kinematics of this harmonic (the table above), the one
@@ -350,6 +408,8 @@ namespace FourierSSI
     const Harmonic                   harmonic;
     /** The held motions that this harmonic carries. */
     std::vector<FoundationMotion> held_here;
+    /** This harmonic carries the Motion direction's constraint. */
+    bool direction_here = false;
     /** The constraint of each held master DoF: (master, weight) entries. */
     std::map<types::global_dof_index,
              std::vector<std::pair<types::global_dof_index, double>>>
