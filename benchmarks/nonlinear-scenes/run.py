@@ -6,9 +6,12 @@ with the same answers within their tolerances" of the requirement "one
 nonlinear engine".
 
     /usr/bin/python3 benchmarks/nonlinear-scenes/run.py [NEW_EXE] [OLD_EXE] [RUNS]
+                     [SCENE,SCENE,...] [TAG]
 
 NEW_EXE defaults to build/fourier-ssi of this tree, OLD_EXE to
 /work/wt-oldmain/build/fourier-ssi (b759ea2 built in Release), RUNS to 3.
+A list of scenes runs only those; TAG writes results-TAG.csv/.md instead
+(a supplementary run that leaves the main table alone).
 
 The scenes: every prm/*.prm that runs a nonlinear load path (a `Load path`
 subsection, soil plasticity laws, or coulomb/contact interfaces), run exactly
@@ -59,6 +62,7 @@ OLD_COMMIT = "b759ea2"
 TIMEOUT = 600.
 SHORT = 20.
 MOST_DROPPED_ENTRIES = 10
+RESULTS = "results"
 FIELDS = ["scene", "binary", "run", "exit", "wall_s", "solve_s", "steps",
           "iterations", "cuts", "goal_quantity", "goal_value", "goal_error",
           "dropped_entries", "message"]
@@ -490,7 +494,7 @@ def write_table(summaries, runs, uptimes, new_exe, old_exe):
     out += ["- " + l for l in slower] or ["None."]
     out += ["", "## Answers that moved beyond a check's tolerance", ""]
     out += ["- " + l for l in changed] or ["None."]
-    with open(os.path.join(HERE, "results.md"), "w") as f:
+    with open(os.path.join(HERE, RESULTS + ".md"), "w") as f:
         f.write("\n".join(out) + "\n")
 
 
@@ -505,7 +509,11 @@ def main():
     old_exe = sys.argv[2] if len(sys.argv) > 2 else \
         "/work/wt-oldmain/build/fourier-ssi"
     runs = int(sys.argv[3]) if len(sys.argv) > 3 else 3
-    only = sys.argv[4].split(",") if len(sys.argv) > 4 else None
+    only = sys.argv[4].split(",") if len(sys.argv) > 4 and sys.argv[4] \
+        else None
+    global RESULTS
+    if len(sys.argv) > 5:
+        RESULTS = "results-" + sys.argv[5]
     new_exe, old_exe = os.path.abspath(new_exe), os.path.abspath(old_exe)
     exes = {"new": new_exe, "old": old_exe}
     uptimes = [uptime()]
@@ -514,7 +522,8 @@ def main():
     def writer(row):
         # results.csv after every run: a benchmark cut short keeps its rows.
         rows.append(row)
-        with open(os.path.join(HERE, "results.csv"), "w", newline="") as f:
+        with open(os.path.join(HERE, RESULTS + ".csv"), "w",
+                  newline="") as f:
             w = csv.DictWriter(f, fieldnames=FIELDS)
             w.writeheader()
             w.writerows(rows)
