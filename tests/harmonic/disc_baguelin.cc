@@ -144,23 +144,6 @@ namespace
        {"Horizontal force", "1"}});
   }
 
-  std::vector<std::vector<double>>
-  read_csv(const std::string &filename)
-  {
-    std::ifstream                    in(filename);
-    std::string                      line;
-    std::vector<std::vector<double>> rows;
-    std::getline(in, line);
-    while (std::getline(in, line))
-      {
-        std::vector<double> row;
-        for (const auto &s : Utilities::split_string_list(line, ','))
-          row.push_back(std::stod(s));
-        rows.push_back(row);
-      }
-    return rows;
-  }
-
   /** FE stress amplitudes (Sr, St, T) at (r, z). */
   std::array<double, 3>
   fe_stress(const HarmonicProblem &problem, const Point<2> &x)
@@ -251,7 +234,7 @@ namespace
         // Table 7.1: jumps = traction / k at every node pair, tiny jumps, and
         // both sides of the interface follow the disc.
         problem.get_interfaces()->write_csv(5, problem.get_solution(), csv);
-        const auto  rows  = read_csv(csv);
+        const auto  rows  = test_support::read_csv_numbers(csv);
         const auto &kk    = problem.get_interfaces()->get_stiffness().at(0);
         double      t_max = 0., consistency = 0., jump = 0.;
         for (const auto &row : rows)

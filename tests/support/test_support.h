@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdlib>
 #include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
 #include <fourier_ssi/driver/simulator.h>
 #include <fourier_ssi/input/parameters.h>
 #include <fourier_ssi/mesh/adaptivity.h>
@@ -210,6 +211,24 @@ namespace test_support
            "*r\nend\n"
            "subsection Exact solution\n set Enabled = true\n set U = " +
            U + "\n set V = " + V + "\n set W = " + W + "\nend\n";
+  }
+
+  /** The rows of a CSV file of numbers, its header line skipped. */
+  inline std::vector<std::vector<double>>
+  read_csv_numbers(const std::string &filename)
+  {
+    std::ifstream                    in(filename);
+    std::string                      line;
+    std::vector<std::vector<double>> rows;
+    std::getline(in, line);
+    while (std::getline(in, line))
+      {
+        std::vector<double> row;
+        for (const auto &s : dealii::Utilities::split_string_list(line, ','))
+          row.push_back(std::stod(s));
+        rows.push_back(row);
+      }
+    return rows;
   }
 
   /** Full-precision text of a number (std::to_string keeps 6 decimals). */
