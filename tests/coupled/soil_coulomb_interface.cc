@@ -85,13 +85,7 @@ namespace
                    const double                       c)
   {
     check_equilibrium_and_yield(name + ": ", steps, 10.);
-    double worst = -1e300;
-    for (const SoilStepResult &s : steps)
-      worst = std::max(worst, s.largest_interface_yield_value);
-    check::in_range(name + ": max f(t) over the interface [kPa]",
-                    worst,
-                    -1e300,
-                    1e-9 * c);
+    check_interface_admissible(name, steps, 1e-9 * c);
   }
 } // namespace
 

@@ -74,13 +74,7 @@ namespace
     for (const SoilStepResult &s : steps)
       most = std::max(most, s.iterations);
     check::in_range(name + ": Newton iterations per step (most)", most, 1, 15);
-    double worst = -1e300;
-    for (const SoilStepResult &s : steps)
-      worst = std::max(worst, s.largest_interface_yield_value);
-    check::in_range(name + ": max f(t) over the interface [kPa]",
-                    worst,
-                    -1e300,
-                    1e-9);
+    check_interface_admissible(name, steps, 1e-9);
   }
 } // namespace
 

@@ -198,6 +198,25 @@ namespace soil_test
   }
 
   /**
+   * Every interface sample of every converged step on or inside its slip
+   * surface: max f(t) <= bound [kPa] (the bound and its reason are the
+   * caller's).
+   */
+  inline void
+  check_interface_admissible(const std::string                 &name,
+                             const std::vector<SoilStepResult> &steps,
+                             const double                       bound)
+  {
+    double worst = -1e300;
+    for (const SoilStepResult &s : steps)
+      worst = std::max(worst, s.largest_interface_yield_value);
+    check::in_range(name + ": max f(t) over the interface [kPa]",
+                    worst,
+                    -1e300,
+                    bound);
+  }
+
+  /**
    * Check (0) of the coulomb-interface tests on plastic soil: at random
    * fields u with jumps of ~1e-2 m, the coupled tangent applied to a random
    * x equals K x minus the central difference (e = 1e-9) of the
