@@ -28,6 +28,9 @@ import shutil
 import subprocess
 import sys
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from vtu_reader import data_arrays  # noqa: E402
+
 exe, source_dir, work = sys.argv[1:4]
 shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)
@@ -94,8 +97,8 @@ check("solution-3d.vtu written",
 vtu = open(os.path.join(out, "interface-state-3d.vtu")).read()
 check("interface-state-3d.vtu: 108 sample points",
       'NumberOfPoints="108"' in vtu)
-states = vtu.split('Name="state" format="ascii">')[1].split("</DataArray>")[0]
-n_open_vtu = states.split().count("2")
+states = data_arrays(os.path.join(out, "interface-state-3d.vtu"))["state"][1]
+n_open_vtu = states.count(2.)
 check("interface-state-3d.vtu: open points %d = last step's %s"
       % (n_open_vtu, curve[-1]["open"]), n_open_vtu == int(curve[-1]["open"]))
 png = os.path.join(work, "state.png")

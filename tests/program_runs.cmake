@@ -1,5 +1,33 @@
 # Whole-program runs of the fourier-ssi executable.
 
+# The program on PRM stops with one line matching EXPECTED, a non-zero exit
+# and no result file (SCRIPT, default expect_failure.cmake; with
+# expect_incomplete_curve.cmake the converged steps' curve is kept).
+function(fssi_expect_failure name prm expected)
+  set(script expect_failure.cmake)
+  if(ARGN)
+    set(script ${ARGN})
+  endif()
+  add_test(NAME input_${name}
+    COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi> -DPRM=${prm}
+            "-DEXPECTED=${expected}"
+            -DOUTPUT_DIR=${CMAKE_CURRENT_BINARY_DIR}/bad_output
+            -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}
+            -P ${CMAKE_CURRENT_SOURCE_DIR}/${script})
+  set_tests_properties(input_${name} PROPERTIES RESOURCE_LOCK bad_output)
+endfunction()
+
+# A Target accuracy out of reach: one line matching EXPECTED, exit 3, the
+# results written but marked not converged (run in WORK_DIR; further
+# arguments: more -D definitions of expect_unconverged.cmake, APPEND, GOAL).
+function(fssi_expect_unconverged name prm work_dir expected)
+  add_test(NAME program_${name}
+    COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi> -DPRM=${prm}
+            ${ARGN} "-DEXPECTED=${expected}"
+            -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/${work_dir}
+            -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_unconverged.cmake)
+endfunction()
+
 # Bad input: one-line error naming the file/entry, non-zero exit, no output.
 # Each tests/prm/bad_*.prm starts with a line "# expect: <regex>".
 file(GLOB FSSI_BAD_PRMS ${CMAKE_CURRENT_SOURCE_DIR}/prm/bad_*.prm)
@@ -21,15 +49,9 @@ endforeach()
 
 # A directory given as the .prm (an ifstream would read it as an empty file
 # and run the default of every entry).
-add_test(NAME input_prm_is_a_directory
-  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi>
-          -DPRM=${CMAKE_CURRENT_SOURCE_DIR}/prm
-          "-DEXPECTED=prm: is a directory, not a parameter file"
-          -DOUTPUT_DIR=${CMAKE_CURRENT_BINARY_DIR}/bad_output
-          -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}
-          -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_failure.cmake)
-set_tests_properties(input_prm_is_a_directory PROPERTIES
-  RESOURCE_LOCK bad_output)
+fssi_expect_failure(prm_is_a_directory
+  ${CMAKE_CURRENT_SOURCE_DIR}/prm
+  "prm: is a directory, not a parameter file")
 
 # A .prm that starts with a UTF-8 byte-order mark runs like any other.
 add_test(NAME program_prm_with_byte_order_mark
@@ -64,35 +86,25 @@ set_tests_properties(program_disc_gap PROPERTIES
 # A load step that does not converge: one line naming Load path,
 # non-zero exit, no result file. Not a bad_*.prm (those also run under
 # mpirun): its 2-rank variant is tests/mpi/ mpi_input_nonconverging_coulomb_step.
-add_test(NAME input_nonconverging_coulomb_step
-  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi>
-          -DPRM=${CMAKE_CURRENT_SOURCE_DIR}/prm/nonconverging_coulomb_step.prm
-          "-DEXPECTED=Load path: load step 1 of 1 \\(after 1 cuts\\) did not converge"
-          -DOUTPUT_DIR=${CMAKE_CURRENT_BINARY_DIR}/bad_output
-          -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}
-          -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_failure.cmake)
-set_tests_properties(input_nonconverging_coulomb_step PROPERTIES
-  RESOURCE_LOCK bad_output)
+fssi_expect_failure(nonconverging_coulomb_step
+  ${CMAKE_CURRENT_SOURCE_DIR}/prm/nonconverging_coulomb_step.prm
+  "Load path: load step 1 of 1 \\(after 1 cuts\\) did not converge")
 
 # Discretization/Target accuracy out of the reach of Adaptivity/Maximum DoFs:
 # one line with the accuracy reached and the limit, non-zero exit, and the
 # results written but marked not converged.
-add_test(NAME program_target_accuracy_unreachable
-  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi>
-          -DPRM=${CMAKE_CURRENT_SOURCE_DIR}/accuracy/unreachable_target.prm
-          "-DEXPECTED=Discretization/Target accuracy 1e-08 not reached: estimated relative error [0-9.e+-]+ with [0-9]+ DoFs; the next mesh \\(about [0-9]+ DoFs\\) exceeds Adaptivity/Maximum DoFs = 100000"
-          -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/target_unreachable
-          -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_unconverged.cmake)
+fssi_expect_unconverged(target_accuracy_unreachable
+  ${CMAKE_CURRENT_SOURCE_DIR}/accuracy/unreachable_target.prm
+  target_unreachable
+  "Discretization/Target accuracy 1e-08 not reached: estimated relative error [0-9.e+-]+ with [0-9]+ DoFs; the next mesh \\(about [0-9]+ DoFs\\) exceeds Adaptivity/Maximum DoFs = 100000")
 
 # The same target with the bound in Mesh/Maximum DoFs: the mesh builder
 # refusing a later member of the design is an unmet target (exit 3, results
 # marked), not an input error.
-add_test(NAME program_target_accuracy_mesh_limit
-  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi>
-          -DPRM=${CMAKE_CURRENT_SOURCE_DIR}/accuracy/unreachable_target_mesh_limit.prm
-          "-DEXPECTED=Discretization/Target accuracy 1e-08 not reached: estimated relative error [0-9.e+-]+ with [0-9]+ DoFs; the next mesh: Mesh/Global refinements: .* above Mesh/Maximum DoFs = 1e\\+05"
-          -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/target_mesh_limit
-          -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_unconverged.cmake)
+fssi_expect_unconverged(target_accuracy_mesh_limit
+  ${CMAKE_CURRENT_SOURCE_DIR}/accuracy/unreachable_target_mesh_limit.prm
+  target_mesh_limit
+  "Discretization/Target accuracy 1e-08 not reached: estimated relative error [0-9.e+-]+ with [0-9]+ DoFs; the next mesh: Mesh/Global refinements: .* above Mesh/Maximum DoFs = 1e\\+05")
 
 # Plastic soil: the capacity of prm/pile-capacity.prm asked to 1e-2, whose
 # n <= 8 truncation (2.2e-2) needs the harmonics doubled, with a work bound
@@ -100,97 +112,61 @@ add_test(NAME program_target_accuracy_mesh_limit
 # naming the truncation and the bound, non-zero exit, results marked (about
 # 5 s); and asked to 5e-2 (no doubling needed) with a bound that the second
 # mesh exceeds.
-add_test(NAME program_capacity_target_harmonics_unreachable
-  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi>
-          -DPRM=${CMAKE_SOURCE_DIR}/prm/pile-capacity.prm
-          -DAPPEND=${CMAKE_CURRENT_SOURCE_DIR}/accuracy/capacity_target_harmonics_bound.prm
-          -DGOAL=capacity_H
-          "-DEXPECTED=Discretization/Target accuracy 0.01 not reached: the harmonic truncation \\(n <= 8\\) alone is [0-9.e+-]+; doubling the harmonics \\(about [0-9]+ DoFs\\) would exceed Adaptivity/Maximum DoFs = 6000"
-          -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/capacity_target_harmonics
-          -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_unconverged.cmake)
-add_test(NAME program_capacity_target_dofs_unreachable
-  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi>
-          -DPRM=${CMAKE_SOURCE_DIR}/prm/pile-capacity.prm
-          -DAPPEND=${CMAKE_CURRENT_SOURCE_DIR}/accuracy/capacity_target_dofs.prm
-          -DGOAL=capacity_H
-          "-DEXPECTED=Discretization/Target accuracy 0.05 not reached: estimated relative error of the capacity H unknown \\(one mesh solved\\) with [0-9]+ DoFs \\(all harmonics\\); the next mesh \\(about [0-9]+\\) exceeds Adaptivity/Maximum DoFs = 5000"
-          -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}/capacity_target_dofs
-          -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_unconverged.cmake)
+fssi_expect_unconverged(capacity_target_harmonics_unreachable
+  ${CMAKE_SOURCE_DIR}/prm/pile-capacity.prm
+  capacity_target_harmonics
+  "Discretization/Target accuracy 0.01 not reached: the harmonic truncation \\(n <= 8\\) alone is [0-9.e+-]+; doubling the harmonics \\(about [0-9]+ DoFs\\) would exceed Adaptivity/Maximum DoFs = 6000"
+  -DAPPEND=${CMAKE_CURRENT_SOURCE_DIR}/accuracy/capacity_target_harmonics_bound.prm
+  -DGOAL=capacity_H)
+fssi_expect_unconverged(capacity_target_dofs_unreachable
+  ${CMAKE_SOURCE_DIR}/prm/pile-capacity.prm
+  capacity_target_dofs
+  "Discretization/Target accuracy 0.05 not reached: estimated relative error of the capacity H unknown \\(one mesh solved\\) with [0-9]+ DoFs \\(all harmonics\\); the next mesh \\(about [0-9]+\\) exceeds Adaptivity/Maximum DoFs = 5000"
+  -DAPPEND=${CMAKE_CURRENT_SOURCE_DIR}/accuracy/capacity_target_dofs.prm
+  -DGOAL=capacity_H)
 
 # Plastic soil: a load step that does not converge stops with one line
 # naming Soil plasticity, non-zero exit, no result file (serial only, as
 # the interface case above).
-add_test(NAME input_nonconverging_soil_step
-  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi>
-          -DPRM=${CMAKE_CURRENT_SOURCE_DIR}/prm/nonconverging_soil_step.prm
-          "-DEXPECTED=Soil plasticity: load step 1 of 1 \\(after 0 cuts\\) did not converge"
-          -DOUTPUT_DIR=${CMAKE_CURRENT_BINARY_DIR}/bad_output
-          -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}
-          -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_failure.cmake)
-set_tests_properties(input_nonconverging_soil_step PROPERTIES
-  RESOURCE_LOCK bad_output)
+fssi_expect_failure(nonconverging_soil_step
+  ${CMAKE_CURRENT_SOURCE_DIR}/prm/nonconverging_soil_step.prm
+  "Soil plasticity: load step 1 of 1 \\(after 0 cuts\\) did not converge")
 
 # Mohr-Coulomb limit load from above: the thick cylinder of
 # prm/cylinder-mohr-coulomb.prm loaded in one step to 1.02 times its
 # closed-form limit pressure cannot converge (no equilibrium exists); the
 # scene variant cylinder_mohr_coulomb_below_limit converges at 0.98 times it.
-add_test(NAME input_cylinder_mohr_coulomb_above_limit
-  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi>
-          -DPRM=${CMAKE_CURRENT_SOURCE_DIR}/prm/cylinder_mohr_coulomb_above_limit.prm
-          "-DEXPECTED=Soil plasticity: load step 1 of 1 \\(after 0 cuts\\) did not converge"
-          -DOUTPUT_DIR=${CMAKE_CURRENT_BINARY_DIR}/bad_output
-          -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}
-          -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_failure.cmake)
-set_tests_properties(input_cylinder_mohr_coulomb_above_limit PROPERTIES
-  RESOURCE_LOCK bad_output)
+fssi_expect_failure(cylinder_mohr_coulomb_above_limit
+  ${CMAKE_CURRENT_SOURCE_DIR}/prm/cylinder_mohr_coulomb_above_limit.prm
+  "Soil plasticity: load step 1 of 1 \\(after 0 cuts\\) did not converge")
 
 # Step numbers in messages count the Load steps, not the cut steps: the
 # cylinder above its limit in two steps with four cuts fails in step 2 of 2
 # (after 19 converged cut steps: "load step 20" before).
-add_test(NAME input_step_number_counts_load_steps
-  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi>
-          -DPRM=${CMAKE_CURRENT_SOURCE_DIR}/prm/step_number_counts_load_steps.prm
-          "-DEXPECTED=Soil plasticity: load step 2 of 2 \\(after 4 cuts\\) did not converge in 3000 iterations; the [0-9]+ converged steps are kept"
-          -DOUTPUT_DIR=${CMAKE_CURRENT_BINARY_DIR}/bad_output
-          -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}
-          -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_incomplete_curve.cmake)
-set_tests_properties(input_step_number_counts_load_steps PROPERTIES
-  RESOURCE_LOCK bad_output)
+fssi_expect_failure(step_number_counts_load_steps
+  ${CMAKE_CURRENT_SOURCE_DIR}/prm/step_number_counts_load_steps.prm
+  "Soil plasticity: load step 2 of 2 \\(after 4 cuts\\) did not converge in 3000 iterations; the [0-9]+ converged steps are kept"
+  expect_incomplete_curve.cmake)
 
 # A misspelt option is an unknown option, not a parameter file that cannot
 # be opened.
-add_test(NAME input_unknown_option
-  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi> -DPRM=--frobnicate
-          "-DEXPECTED=^fourier-ssi: error: unknown option '--frobnicate' \\(fourier-ssi --help lists the options\\)$"
-          -DOUTPUT_DIR=${CMAKE_CURRENT_BINARY_DIR}/bad_output
-          -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}
-          -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_failure.cmake)
-set_tests_properties(input_unknown_option PROPERTIES RESOURCE_LOCK bad_output)
+fssi_expect_failure(unknown_option
+  --frobnicate
+  "^fourier-ssi: error: unknown option '--frobnicate' \\(fourier-ssi --help lists the options\\)$")
 
 # A parameter file with a NUL byte (prm/nul_byte.prm: a valid scene whose
 # line 4 holds one) is refused; the parser used to stop reading there and
 # run the rest at the defaults.
-add_test(NAME input_nul_byte
-  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi>
-          -DPRM=${CMAKE_CURRENT_SOURCE_DIR}/prm/nul_byte.prm
-          "-DEXPECTED=nul_byte.prm: line 4 contains a NUL byte: not a text parameter file"
-          -DOUTPUT_DIR=${CMAKE_CURRENT_BINARY_DIR}/bad_output
-          -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}
-          -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_failure.cmake)
-set_tests_properties(input_nul_byte PROPERTIES RESOURCE_LOCK bad_output)
+fssi_expect_failure(nul_byte
+  ${CMAKE_CURRENT_SOURCE_DIR}/prm/nul_byte.prm
+  "nul_byte.prm: line 4 contains a NUL byte: not a text parameter file")
 
 # An output folder that cannot be created gets one line naming the entry
 # and the cause, not the file system's exception (prm/output_under_file.prm
 # puts it under CTestTestfile.cmake, a file in the tests' working folder).
-add_test(NAME input_output_directory_unwritable
-  COMMAND ${CMAKE_COMMAND} -DEXE=$<TARGET_FILE:fourier-ssi>
-          -DPRM=${CMAKE_CURRENT_SOURCE_DIR}/prm/output_under_file.prm
-          "-DEXPECTED=Output/Directory: 'CTestTestfile.cmake/output' cannot be created: '.*CTestTestfile.cmake' is a file$"
-          -DOUTPUT_DIR=${CMAKE_CURRENT_BINARY_DIR}/bad_output
-          -DWORK_DIR=${CMAKE_CURRENT_BINARY_DIR}
-          -P ${CMAKE_CURRENT_SOURCE_DIR}/expect_failure.cmake)
-set_tests_properties(input_output_directory_unwritable PROPERTIES
-  RESOURCE_LOCK bad_output)
+fssi_expect_failure(output_directory_unwritable
+  ${CMAKE_CURRENT_SOURCE_DIR}/prm/output_under_file.prm
+  "Output/Directory: 'CTestTestfile.cmake/output' cannot be created: '.*CTestTestfile.cmake' is a file$")
 
 # Cohesionless Mohr-Coulomb soil without Initial stress: warned before the
 # path starts (the run itself then fails to converge, as the warning says).

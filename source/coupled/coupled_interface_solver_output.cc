@@ -5,6 +5,7 @@
 #include <fourier_ssi/coupled/coupled_interface_solver.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/input/atomic_file.h>
+#include <fourier_ssi/postprocess/vtu_output.h>
 #include <fstream>
 #include <iomanip>
 
@@ -43,51 +44,32 @@ namespace FourierSSI
   {
     AssertThrow(!snapshots.empty(),
                 ExcMessage(entry_name + ": no converged step to write"));
-    AtomicFile               file(filename);
-    std::ostream            &out  = file.stream();
     const InterfaceSnapshot &last = snapshots.back();
-    const unsigned int       N = sampling.n_samples(), P = points.size() * N;
-    // One VTK_VERTEX (type 1) per (point, theta) sample.
-    out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" "
-           "version=\"0.1\" byte_order=\"LittleEndian\">\n<UnstructuredGrid>"
-           "\n<Piece NumberOfPoints=\""
-        << P << "\" NumberOfCells=\"" << P << "\">\n"
-        << "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" "
-           "format=\"ascii\">\n"
-        << std::setprecision(10);
+    const unsigned int       N    = sampling.n_samples();
+    // One point per (Gauss point, theta) sample, in the snapshot's order.
+    std::vector<Point<3>>            positions;
+    std::vector<std::vector<double>> values(3);
     for (unsigned int i = 0; i < points.size(); ++i)
       for (unsigned int j = 0; j < N; ++j)
-        out << points[i].position[0] * std::cos(sampling.angle(j)) << ' '
-            << points[i].position[0] * std::sin(sampling.angle(j)) << ' '
-            << points[i].position[1] << '\n';
-    out << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int32\" "
-           "Name=\"connectivity\" format=\"ascii\">\n";
-    for (unsigned int k = 0; k < P; ++k)
-      out << k << '\n';
-    out << "</DataArray>\n<DataArray type=\"Int32\" Name=\"offsets\" "
-           "format=\"ascii\">\n";
-    for (unsigned int k = 0; k < P; ++k)
-      out << k + 1 << '\n';
-    out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" "
-           "format=\"ascii\">\n";
-    for (unsigned int k = 0; k < P; ++k)
-      out << "1\n";
-    out << "</DataArray>\n</Cells>\n<PointData Scalars=\"state\">\n"
-           "<DataArray type=\"Int32\" Name=\"state\" format=\"ascii\">\n";
-    for (unsigned int k = 0; k < P; ++k)
-      out << static_cast<int>(last.state[k]) << '\n';
-    out << "</DataArray>\n";
-    const auto vectors = [&](const std::string              &name,
-                             const std::vector<LocalVector> &values) {
-      out << "<DataArray type=\"Float64\" Name=\"" << name
-          << "\" NumberOfComponents=\"3\" format=\"ascii\">\n";
-      for (const LocalVector &v : values)
-        out << v[0] << ' ' << v[1] << ' ' << v[2] << '\n';
-      out << "</DataArray>\n";
-    };
-    vectors("traction_s_n_theta_kPa", last.traction);
-    vectors("relative_displacement_s_n_theta_m", last.relative);
-    out << "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
-    file.commit();
+        positions.emplace_back(points[i].position[0] *
+                                 std::cos(sampling.angle(j)),
+                               points[i].position[0] *
+                                 std::sin(sampling.angle(j)),
+                               points[i].position[1]);
+    for (unsigned int k = 0; k < positions.size(); ++k)
+      {
+        values[0].push_back(static_cast<int>(last.state[k]));
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            values[1].push_back(last.traction[k][c]);
+            values[2].push_back(last.relative[k][c]);
+          }
+      }
+    write_point_samples_vtu(positions,
+                            {{"state", 1},
+                             {"traction_s_n_theta_kPa", 3},
+                             {"relative_displacement_s_n_theta_m", 3}},
+                            values,
+                            filename);
   }
 } // namespace FourierSSI

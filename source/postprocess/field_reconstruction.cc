@@ -6,6 +6,7 @@
 #include <fourier_ssi/harmonic/stress_postprocessor.h>
 #include <fourier_ssi/input/atomic_file.h>
 #include <fourier_ssi/postprocess/field_reconstruction.h>
+#include <fourier_ssi/postprocess/vtu_output.h>
 #include <fstream>
 #include <iomanip>
 
@@ -142,14 +143,11 @@ namespace FourierSSI
     file.commit();
   }
 
-  void
-  FieldReconstruction::write_revolved_vtu(const unsigned int divisions,
-                                          const std::string &filename) const
+  std::vector<std::array<double, 3>>
+  FieldReconstruction::revolved_displacement(const unsigned int divisions) const
   {
-    AssertThrow(!problems.empty(), ExcMessage("3D VTU: nothing solved"));
-    const Triangulation<2> &tria =
-      problems.front()->get_dof_handler().get_triangulation();
-    const unsigned int n_vertices = tria.n_vertices();
+    const unsigned int n_vertices =
+      problems.front()->get_dof_handler().get_triangulation().n_vertices();
     // Amplitudes at the vertices, per harmonic: the vertex DoFs of FE_Q.
     std::vector<std::vector<std::array<double, 3>>> amplitude(
       problems.size(), std::vector<std::array<double, 3>>(n_vertices));
@@ -161,89 +159,66 @@ namespace FourierSSI
             amplitude[h][cell->vertex_index(v)][c] =
               problems[h]->get_solution()(cell->vertex_dof_index(v, c));
 
-    AtomicFile    file(filename);
-    std::ostream &out = file.stream();
-    out << std::setprecision(9);
-    const unsigned int n_points = n_vertices * divisions;
-    const unsigned int n_cells  = tria.n_active_cells() * divisions;
-    out << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" "
-           "version=\"0.1\" byte_order=\"LittleEndian\">\n<UnstructuredGrid>\n"
-        << "<Piece NumberOfPoints=\"" << n_points << "\" NumberOfCells=\""
-        << n_cells << "\">\n<Points>\n<DataArray type=\"Float64\" "
-        << "NumberOfComponents=\"3\" format=\"ascii\">\n";
-    const std::vector<Point<2>> &vertices = tria.get_vertices();
+    std::vector<std::array<double, 3>> cylindrical(n_vertices * divisions,
+                                                   {{0., 0., 0.}});
     for (unsigned int k = 0; k < divisions; ++k)
-      {
-        const double theta = 2. * numbers::PI * k / divisions;
-        for (unsigned int i = 0; i < n_vertices; ++i)
-          out << vertices[i][0] * std::cos(theta) << ' '
-              << vertices[i][0] * std::sin(theta) << ' ' << vertices[i][1]
-              << '\n';
-      }
-    out << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" "
-           "Name=\"connectivity\" format=\"ascii\">\n";
+      for (unsigned int h = 0; h < problems.size(); ++h)
+        {
+          const auto [c, s] =
+            trig_factors(problems[h]->get_operator().get_harmonic(),
+                         2. * numbers::PI * k / divisions);
+          for (unsigned int i = 0; i < n_vertices; ++i)
+            {
+              std::array<double, 3> &u = cylindrical[k * n_vertices + i];
+              u[0] += amplitude[h][i][0] * c;
+              u[1] += amplitude[h][i][1] * c;
+              u[2] += amplitude[h][i][2] * s;
+            }
+        }
+    return cylindrical;
+  }
+
+  void
+  FieldReconstruction::write_revolved_vtu(const unsigned int divisions,
+                                          const std::string &filename) const
+  {
+    AssertThrow(!problems.empty(), ExcMessage("3D VTU: nothing solved"));
+    const Triangulation<2> &tria =
+      problems.front()->get_dof_handler().get_triangulation();
+    const std::vector<std::array<double, 3>> cylindrical =
+      revolved_displacement(divisions);
+    const unsigned int n_vertices = tria.n_vertices();
+    // One hexahedron per cell and sector k: patch vertices 0-3 are the
+    // cell's vertices at theta_k, 4-7 the same at theta_(k+1) (deal.II's
+    // lexicographic order, which DataOutBase turns into VTK's).
+    std::vector<DataOutBase::Patch<3, 3>> patches;
     for (unsigned int k = 0; k < divisions; ++k)
-      {
-        const unsigned int a = k * n_vertices;
-        const unsigned int b = ((k + 1) % divisions) * n_vertices;
-        for (const auto &cell : tria.active_cell_iterators())
-          {
-            // deal.II vertex order 0,1,3,2 walks the quadrilateral.
-            const unsigned int q[4] = {cell->vertex_index(0),
-                                       cell->vertex_index(1),
-                                       cell->vertex_index(3),
-                                       cell->vertex_index(2)};
-            for (const unsigned int v : q)
-              out << a + v << ' ';
-            for (const unsigned int v : q)
-              out << b + v << ' ';
-            out << '\n';
-          }
-      }
-    out << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" "
-           "format=\"ascii\">\n";
-    for (unsigned int c = 1; c <= n_cells; ++c)
-      out << 8 * c << '\n';
-    out << "</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" "
-           "format=\"ascii\">\n";
-    for (unsigned int c = 0; c < n_cells; ++c)
-      out << "12\n"; // VTK_HEXAHEDRON
-    out << "</DataArray>\n</Cells>\n<PointData Vectors=\"displacement\">\n"
-        << "<DataArray type=\"Float64\" Name=\"displacement\" "
-           "NumberOfComponents=\"3\" format=\"ascii\">\n";
-    std::vector<std::array<double, 3>> cylindrical(n_points);
-    for (unsigned int k = 0; k < divisions; ++k)
-      {
-        const double theta = 2. * numbers::PI * k / divisions;
-        const double ct = std::cos(theta), st = std::sin(theta);
-        for (unsigned int i = 0; i < n_vertices; ++i)
-          {
-            std::array<double, 3> u = {{0., 0., 0.}};
-            for (unsigned int h = 0; h < problems.size(); ++h)
-              {
-                const auto [c, s] =
-                  trig_factors(problems[h]->get_operator().get_harmonic(),
-                               theta);
-                u[0] += amplitude[h][i][0] * c;
-                u[1] += amplitude[h][i][1] * c;
-                u[2] += amplitude[h][i][2] * s;
-              }
-            cylindrical[k * n_vertices + i] = u;
-            out << u[0] * ct - u[2] * st << ' ' << u[0] * st + u[2] * ct << ' '
-                << u[1] << '\n';
-          }
-      }
-    out << "</DataArray>\n";
-    const char *names[3] = {"u_r", "u_z", "u_theta"};
-    for (unsigned int c = 0; c < 3; ++c)
-      {
-        out << "<DataArray type=\"Float64\" Name=\"" << names[c]
-            << "\" format=\"ascii\">\n";
-        for (const auto &u : cylindrical)
-          out << u[c] << '\n';
-        out << "</DataArray>\n";
-      }
-    out << "</PointData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n";
-    file.commit();
+      for (const auto &cell : tria.active_cell_iterators())
+        {
+          DataOutBase::Patch<3, 3> patch;
+          patch.patch_index    = patches.size();
+          patch.reference_cell = ReferenceCells::Hexahedron;
+          patch.data.reinit(6, 8);
+          for (unsigned int v = 0; v < 8; ++v)
+            {
+              const unsigned int sector = (k + v / 4) % divisions;
+              const Point<2>    &p      = cell->vertex(v % 4);
+              const double       theta  = 2. * numbers::PI * sector / divisions;
+              const double       ct = std::cos(theta), st = std::sin(theta);
+              const std::array<double, 3> &u =
+                cylindrical[sector * n_vertices + cell->vertex_index(v % 4)];
+              patch.vertices[v] = Point<3>(p[0] * ct, p[0] * st, p[1]);
+              patch.data(0, v)  = u[0] * ct - u[2] * st;
+              patch.data(1, v)  = u[0] * st + u[2] * ct;
+              patch.data(2, v)  = u[1];
+              for (unsigned int c = 0; c < 3; ++c)
+                patch.data(3 + c, v) = u[c];
+            }
+          patches.push_back(std::move(patch));
+        }
+    write_patches_vtu(
+      patches,
+      {{"displacement", 3}, {"u_r", 1}, {"u_z", 1}, {"u_theta", 1}},
+      filename);
   }
 } // namespace FourierSSI

@@ -32,6 +32,7 @@
 //     pull V, so the pull-out runs take Tolerance = 1e-12).
 #include "check.h"
 #include "factorized_scene.h"
+#include "rigid_pile_scene.h"
 
 #include <fourier_ssi/coupled/coupled_interface_solver.h>
 
@@ -41,55 +42,18 @@ namespace
 {
   const double a = 0.5, L = 5., gamma = 10., K0 = 0.5;
 
+  /** The rigid pile with the interface laws, foundation loads and Load
+   * path entries (text of `set` lines) of one check. */
   std::string
   pile_scene(const std::string &family,
              const std::string &law,
              const std::string &loads,
              const std::string &nonlinear)
   {
-    return R"(
-subsection Discretization
-  set Harmonics         = 0
-  set Family            = )" +
-           family + R"(
-  set Polynomial degree = 2
-end
-subsection Mesh
-  set R breakpoints   = 0, 0.5, 10
-  set R cells         = 2, 8
-  set R growth        = 1, 1.4
-  set Z breakpoints   = -10, -5, 0
-  set Z cells         = 5, 6
-  set Z growth        = 0.8, 1
-  set Material regions = 1: 0, 0.5, -5, 0
-  set Interface lines = 5: r=0.5, z=-5..0; 6: z=-5, r=0..0.5
-end
-subsection Materials
-  set Materials = 0: G=10000, nu=0.3; 1: G=1e7, nu=0.2
-end
-subsection Interfaces
-  set Interfaces = )" +
-           law + R"(
-end
-subsection Initial stress
-  set Effective unit weight = 10
-  set K0                    = 0.5
-end
-subsection Boundary conditions
-  set Dirichlet = 1: u=0, v=0, w=0; 2: u=0, v=0, w=0
-end
-subsection Rigid foundation
-  set Enabled = true
-  set Tie     = material
-  set Id      = 1
-  )" + loads +
-           R"(
-end
-subsection Load path
-  )" + nonlinear +
-           R"(
-end
-)";
+    return test_support::rigid_pile_scene(family) +
+           test_support::entries("Interfaces", {{"Interfaces", law}}) +
+           "subsection Rigid foundation\n  " + loads +
+           "\nend\nsubsection Load path\n  " + nonlinear + "\nend\n";
   }
 
   /** Everything a run leaves: steps, applied loads, solutions. */
@@ -159,14 +123,13 @@ end
   {
     std::cout << "(0) out-of-balance load projection = closed-form K u"
               << std::endl;
-    std::string text = pile_scene(
-      "both",
-      "5: coulomb, kn=1e5, ks=3e4, phi=25; 6: coulomb, kn=1e5, ks=3e4, phi=25",
-      "set Horizontal force = 1",
-      "");
-    text.replace(text.find("set Harmonics         = 0"),
-                 25,
-                 "set Harmonics         = 0, 1, 2, 3");
+    const std::string text =
+      pile_scene(
+        "both",
+        "5: coulomb, kn=1e5, ks=3e4, phi=25; 6: coulomb, kn=1e5, ks=3e4, phi=25",
+        "set Horizontal force = 1",
+        "") +
+      test_support::entries("Discretization", {{"Harmonics", "0, 1, 2, 3"}});
     test_support::FactorizedScene scene(text);
     const AllParameters          &parameters = scene.parameters;
     HarmonicSet                  &set        = scene.set;

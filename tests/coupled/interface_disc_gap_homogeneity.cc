@@ -13,10 +13,10 @@
 //    Coulomb one lies between it and the bilateral bonded one (kn = ks);
 //  * equilibrium: the interface tractions balance the applied H to 1e-8.
 #include "check.h"
+#include "coupled_interface_test_support.h"
 #include "factorized_scene.h"
 
 #include <fourier_ssi/coupled/coupled_interface_solver.h>
-#include <regex>
 
 using namespace FourierSSI;
 
@@ -32,9 +32,7 @@ namespace
   std::string
   with_law(const std::string &law)
   {
-    return std::regex_replace(test_support::bundled_prm("prm/disc-gap.prm"),
-                              std::regex("set Interfaces = [^\n]*"),
-                              "set Interfaces = " + law);
+    return test_support::bundled_prm("prm/disc-gap.prm", {{"Interfaces", law}});
   }
 
   Curve
@@ -57,23 +55,6 @@ namespace
                    std::abs(step.resultant[0] - H) / std::abs(H));
       }
     return curve;
-  }
-
-  /** The same scene with a linear law, n = 1 only: P / ubar. */
-  double
-  linear_stiffness(const std::string &law)
-  {
-    std::string text = with_law(law);
-    text             = std::regex_replace(text,
-                              std::regex("set Harmonics *= [^\n]*"),
-                              "set Harmonics = 1");
-    test_support::FactorizedScene scene(text);
-    const AllParameters          &parameters = scene.parameters;
-    HarmonicSet                  &set        = scene.set;
-    const RigidMotion             m =
-      set.problem(0).get_foundation()->motion(scene.linear_solutions()[0]);
-    return parameters.rigid_foundation.horizontal_force /
-           m.horizontal_displacement;
   }
 
   void
@@ -110,8 +91,10 @@ main()
     run(with_law("5: coulomb, kn=1e6, ks=1e6, c=0, phi=16.69924423"));
   check_homogeneous("tensionless Coulomb mu = 0.3", coulomb);
 
-  const double smooth = linear_stiffness("5: kn=1e6, ks=0");
-  const double bonded = linear_stiffness("5: kn=1e6, ks=1e6");
+  const double smooth = coupled_test::linear_lateral_slope(
+    test_support::bundled_prm("prm/disc-gap.prm"), "5: kn=1e6, ks=0");
+  const double bonded = coupled_test::linear_lateral_slope(
+    test_support::bundled_prm("prm/disc-gap.prm"), "5: kn=1e6, ks=1e6");
   std::cout << "  linear bilateral: smooth " << smooth << ", bonded " << bonded
             << " kN/m" << std::endl;
   check::in_range("frictionless tensionless below bilateral smooth",

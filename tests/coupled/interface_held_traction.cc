@@ -28,6 +28,7 @@
 //     plateau is approached as the last sticking points slip).
 #include "check.h"
 #include "factorized_scene.h"
+#include "rigid_pile_scene.h"
 
 #include <fourier_ssi/coupled/coupled_interface_solver.h>
 
@@ -37,70 +38,51 @@ namespace
 {
   const double a = 0.5, L = 5., unit_weight = 10., K0 = 0.5, q = 50.;
 
+  /** Coulomb laws on shaft (5) and base (6), c = 0, phi = 25 deg. */
   std::string
-  pile_scene(const std::string &held_load_steps)
+  coulomb_laws(const std::string &kn)
   {
-    return R"(
-subsection Discretization
-  set Harmonics         = 0
-  set Family            = symmetric
-  set Polynomial degree = 2
-end
-subsection Mesh
-  set R breakpoints   = 0, 0.5, 10
-  set R cells         = 2, 8
-  set R growth        = 1, 1.4
-  set Z breakpoints   = -10, -5, 0
-  set Z cells         = 5, 6
-  set Z growth        = 0.8, 1
-  set Material regions = 1: 0, 0.5, -5, 0
-  set Interface lines = 5: r=0.5, z=-5..0; 6: z=-5, r=0..0.5
-end
-subsection Materials
-  set Materials = 0: G=10000, nu=0.3; 1: G=1e7, nu=0.2
-end
-subsection Interfaces
-  set Interfaces = 5: coulomb, kn=1, ks=1e5, phi=25; 6: coulomb, kn=1, ks=1e5, phi=25
-end
-subsection Initial stress
-  set Effective unit weight = 10
-  set K0                    = 0.5
-end
-subsection Boundary conditions
-  set Dirichlet = 1: u=0, v=0, w=0; 2: u=0, v=0, w=0
-  # 3: the top; the pile's part r < a carries q downward.
-  set Traction  = 3: z=-50*(r<0.5)
-end
-subsection Rigid foundation
-  set Enabled        = true
-  set Tie            = material
-  set Id             = 1
-  set Vertical force = 1
-end
-subsection Load path
-  set Control           = displacement
-  set Controlled motion = vertical
-  set Target            = 0.04
-  set Load steps        = 8
-  set Held load steps   = )" +
-           held_load_steps + R"(
-  set Tolerance         = 1e-12
-end
-)";
+    return "5: coulomb, kn=" + kn + ", ks=1e5, phi=25; 6: coulomb, kn=" + kn +
+           ", ks=1e5, phi=25";
   }
 
-  /** `text` with each `from` replaced by its `to` (each must be there). */
+  /**
+   * The rigid pile with q on its top (boundary 3, the pile's part r < a;
+   * `traction` is that expression), pushed by the foundation load `force`
+   * under displacement control of `motion` to `target`, Q held over
+   * `held_load_steps` steps first.
+   */
   std::string
-  replaced(std::string                                             text,
-           const std::vector<std::pair<std::string, std::string>> &changes)
+  pile_scene(const std::string                                      &kn,
+             const std::string                                      &traction,
+             const std::string                                      &force,
+             const std::string                                      &motion,
+             const std::vector<std::pair<std::string, std::string>> &stepping)
   {
-    for (const auto &[from, to] : changes)
-      {
-        const auto at = text.find(from);
-        AssertThrow(at != std::string::npos, ExcMessage(from));
-        text.replace(at, from.size(), to);
-      }
-    return text;
+    std::vector<std::pair<std::string, std::string>> load_path = {
+      {"Control", "displacement"}, {"Controlled motion", motion}};
+    load_path.insert(load_path.end(), stepping.begin(), stepping.end());
+    return test_support::rigid_pile_scene() +
+           test_support::entries("Interfaces",
+                                 {{"Interfaces", coulomb_laws(kn)}}) +
+           test_support::entries("Boundary conditions",
+                                 {{"Traction", "3: z=" + traction}}) +
+           test_support::entries("Rigid foundation", {{force, "1"}}) +
+           test_support::entries("Load path", load_path);
+  }
+
+  /** 1-3: pulled out (kn = 1 kPa/m) to 0.04 m, Q held first. */
+  std::string
+  pull_scene(const std::string &held_load_steps)
+  {
+    return pile_scene("1",
+                      "-50*(r<0.5)",
+                      "Vertical force",
+                      "vertical",
+                      {{"Target", "0.04"},
+                       {"Load steps", "8"},
+                       {"Held load steps", held_load_steps},
+                       {"Tolerance", "1e-12"}});
   }
 
   /**
@@ -115,17 +97,16 @@ end
   lateral_push(const double Q)
   {
     std::cout << "4. lateral push with Q held" << std::endl;
-    const std::string text = replaced(
-      pile_scene("2"),
-      {{"set Harmonics         = 0", "set Harmonics         = 0, 1"},
-       {"5: coulomb, kn=1,", "5: coulomb, kn=1e5,"},
-       {"6: coulomb, kn=1,", "6: coulomb, kn=1e5,"},
-       {"z=-50*(r<0.5)", "z=-50*(r<0.5)*(n==0)"},
-       {"set Vertical force = 1", "set Horizontal force = 1"},
-       {"Controlled motion = vertical", "Controlled motion = horizontal"},
-       {"set Target            = 0.04", "set Target            = 0.02"},
-       {"set Load steps        = 8", "set Load steps        = 4"},
-       {"set Tolerance         = 1e-12", "set Tolerance         = 1e-10"}});
+    const std::string text =
+      pile_scene("1e5",
+                 "-50*(r<0.5)*(n==0)",
+                 "Horizontal force",
+                 "horizontal",
+                 {{"Target", "0.02"},
+                  {"Load steps", "4"},
+                  {"Held load steps", "2"},
+                  {"Tolerance", "1e-10"}}) +
+      test_support::entries("Discretization", {{"Harmonics", "0, 1"}});
     test_support::FactorizedScene scene(text);
     CoupledInterfaceSolver        solver(scene.set, scene.parameters);
     solver.run(std::cout);
@@ -154,7 +135,7 @@ main()
     2. * M_PI * a * K0 * unit_weight * std::tan(25. * M_PI / 180.) * L * L / 2.;
   const unsigned int held_steps = 2;
 
-  test_support::FactorizedScene scene(pile_scene(std::to_string(held_steps)));
+  test_support::FactorizedScene scene(pull_scene(std::to_string(held_steps)));
   CoupledInterfaceSolver        solver(scene.set, scene.parameters);
   solver.run(std::cout);
   const auto &steps = solver.get_steps();

@@ -55,24 +55,6 @@ namespace
            "\nend\n";
   }
 
-  /** Rows of an interface CSV as numbers. */
-  std::vector<std::vector<double>>
-  read_csv(const std::string &filename)
-  {
-    std::ifstream                    in(filename);
-    std::string                      line;
-    std::vector<std::vector<double>> rows;
-    std::getline(in, line); // header
-    while (std::getline(in, line))
-      {
-        std::vector<double> row;
-        for (const auto &s : Utilities::split_string_list(line, ','))
-          row.push_back(std::stod(s));
-        rows.push_back(row);
-      }
-    return rows;
-  }
-
   /** Solve one harmonic on the two-material mesh; return max nodal error. */
   double
   solve(const AllParameters                                     &parameters,
@@ -139,7 +121,8 @@ main()
                                exact,
                                "interface_smooth_sliding.csv");
     check::small("max nodal error / max |u|", error, 1e-9);
-    const auto rows = read_csv("interface_smooth_sliding.csv");
+    const auto rows =
+      test_support::read_csv_numbers("interface_smooth_sliding.csv");
     check::relative("CSV rows (2 faces x 3 nodes)", rows.size(), 6, 0.);
     for (const auto &row : rows)
       {
@@ -173,7 +156,8 @@ main()
                                exact,
                                "interface_torsion.csv");
     check::small("max nodal error / max |W|", error, 1e-9);
-    for (const auto &row : read_csv("interface_torsion.csv"))
+    for (const auto &row :
+         test_support::read_csv_numbers("interface_torsion.csv"))
       {
         const double r = row[2];
         check::relative("slip d_theta at r=" + std::to_string(r),

@@ -4,59 +4,37 @@
 // change the wall time only: the embedded footing of the accuracy benchmark
 // (rough, alpha = 0.5; one stiffness harmonic) on 2 cores gives the same
 // results.csv rows, bit for bit, as on 1 core (the assembly's sum does not
-// depend on its thread count, tests/harmonic/assembly_threads.cc), in the same order,
-// and the same log apart from the timings and the side-by-side line. The
+// depend on its thread count, tests/harmonic/assembly_threads.cc), in the same
+// order, and the same log apart from the timings and the side-by-side line. The
 // same at target 2e-6, where mesh 2 follows the pair in sequence. With
 // Adaptivity/Maximum DoFs between the sizes of meshes 0 and 1 the pair is not
 // started, and both runs stop after mesh 0 with the same one-line message.
 #include "check.h"
 #include "test_support.h"
 
-#include <fourier_ssi/linear_algebra/huge_page_allocation.h>
 #include <fourier_ssi/driver/simulator.h>
+#include <fourier_ssi/linear_algebra/huge_page_allocation.h>
 #include <regex>
 
 using namespace FourierSSI;
 
 namespace
 {
-  const std::string footing = R"(
-subsection Discretization
-  set Harmonics = 1
-  set Target accuracy = 1e-4
-end
-subsection Mesh
-  set R breakpoints    = 0, 1, 20
-  set R cells          = 3, 6
-  set R growth         = 0.64, 1.69
-  set Z breakpoints    = -25, -1, 0
-  set Z cells          = 12, 3
-  set Z growth         = 0.8, 0.5
-  set Material regions = 1: 0, 1, -1, 0
-  set Interface lines  = 5: z=-1, r=0..1; 5: r=1, z=-1..0
-end
-subsection Materials
-  set Materials = 0: G=1000, nu=0.25, alpha=0.5, depth_ref=1; 1: E=1e6, nu=0.2
-end
-subsection Interfaces
-  set Interfaces = 5: rough
-end
-subsection Boundary conditions
-  set Dirichlet = 1: u=0, v=0, w=0; 2: u=0, v=0, w=0
-end
-subsection Rigid foundation
-  set Enabled                 = true
-  set Tie                     = material
-  set Id                      = 1
-  set Reference elevation     = 0
-  set Stiffness coefficients  = true
-  set Reference shear modulus = 1000
-  set Reference length        = 1
-end
-subsection Output
-  set Write vtu = false
-end
-)";
+  /**
+   * prm/embedded-footing-graded.prm at its mesh 0 (FE_Q(2), no point
+   * refinement) with Target accuracy = 1e-4: the design starts there.
+   */
+  std::string
+  footing_scene()
+  {
+    return test_support::bundled_prm("prm/embedded-footing-graded.prm",
+                                     {{"Polynomial degree", "2"},
+                                      {"Refinement cycles", "1"},
+                                      {"Point refinement", ""},
+                                      {"Write vtu", "false"}}) +
+           test_support::entries("Discretization",
+                                 {{"Target accuracy", "1e-4"}});
+  }
 
   struct Run
   {
@@ -128,8 +106,9 @@ main()
   std::cout << "Target 1e-4, 1 core (one mesh after the other) and 2 cores "
                "(meshes 0 and 1 side by side)"
             << std::endl;
-  const Run one = run_on(footing, 1);
-  const Run two = run_on(footing, 2);
+  const std::string footing = footing_scene();
+  const Run         one     = run_on(footing, 1);
+  const Run         two     = run_on(footing, 2);
   std::cout << two.log;
   check::that("1 core: meshes solved one after the other",
               one.log.find("side by side") == std::string::npos);

@@ -1,5 +1,6 @@
 // Rigid disc displaced horizontally in an elastic ring (thesis ch. 5 and
-// Table 7.1). Disc radius a = 0.5 m, ring to R = 10 m
+// Table 7.1), the bundled prm/disc-rough.prm with a unit H and the interface
+// law and degree under test. Disc radius a = 0.5 m, ring to R = 10 m
 // (outer boundary fixed), E = 1e5 kPa, nu = 0.3, plane strain as a slice
 // z in [-0.5, 0.5] one element thick with v = 0 on top and bottom (the
 // solution is z-independent: checked below), harmonic n = 1 symmetric, the
@@ -126,47 +127,21 @@ namespace
     std::array<double, 4> coefficients;
   };
 
+  /**
+   * prm/disc-rough.prm with the interface law and degree under test and a
+   * unit H (P / ubar = 1 / U_h); FE_Q(4) on the mesh with half the soil
+   * cells.
+   */
   std::string
   prm(const std::string &interface, const unsigned int degree)
   {
-    return "subsection Discretization\n set Harmonics = 1\n"
-           " set Polynomial degree = " +
-           std::to_string(degree) +
-           "\nend\n"
-           "subsection Mesh\n set R breakpoints = 0, 0.5, 10\n"
-           " set R cells = 2, " +
-           std::string(degree == 2 ? "32" : "16") + "\n set R growth = 1, " +
-           (degree == 2 ? "1.12" : "1.25") +
-           "\n set Z breakpoints = -0.5, 0.5\n set Z cells = 1\n"
-           " set Material regions = 1: 0, 0.5, -0.5, 0.5\n"
-           " set Interface lines = 5: r=0.5, z=-0.5..0.5\nend\n"
-           "subsection Materials\n set Materials = 0: E=1e5, nu=0.3; "
-           "1: E=1e5, nu=0.3\nend\n"
-           "subsection Interfaces\n set Interfaces = 5: " +
-           interface +
-           "\nend\n"
-           "subsection Rigid foundation\n set Enabled = true\n"
-           " set Tie = material\n set Id = 1\n set Horizontal force = 1\n"
-           "end\n"
-           "subsection Boundary conditions\n"
-           " set Dirichlet = 1: u=0, v=0, w=0; 2: v=0; 3: v=0\nend\n";
-  }
-
-  std::vector<std::vector<double>>
-  read_csv(const std::string &filename)
-  {
-    std::ifstream                    in(filename);
-    std::string                      line;
-    std::vector<std::vector<double>> rows;
-    std::getline(in, line);
-    while (std::getline(in, line))
-      {
-        std::vector<double> row;
-        for (const auto &s : Utilities::split_string_list(line, ','))
-          row.push_back(std::stod(s));
-        rows.push_back(row);
-      }
-    return rows;
+    return test_support::bundled_prm(
+      "prm/disc-rough.prm",
+      {{"Polynomial degree", std::to_string(degree)},
+       {"R cells", degree == 2 ? "2, 32" : "2, 16"},
+       {"R growth", degree == 2 ? "1, 1.12" : "1, 1.25"},
+       {"Interfaces", "5: " + interface},
+       {"Horizontal force", "1"}});
   }
 
   /** FE stress amplitudes (Sr, St, T) at (r, z). */
@@ -259,7 +234,7 @@ namespace
         // Table 7.1: jumps = traction / k at every node pair, tiny jumps, and
         // both sides of the interface follow the disc.
         problem.get_interfaces()->write_csv(5, problem.get_solution(), csv);
-        const auto  rows  = read_csv(csv);
+        const auto  rows  = test_support::read_csv_numbers(csv);
         const auto &kk    = problem.get_interfaces()->get_stiffness().at(0);
         double      t_max = 0., consistency = 0., jump = 0.;
         for (const auto &row : rows)

@@ -48,7 +48,6 @@
 #include <deal.II/lac/sparse_direct.h>
 #include <fourier_ssi/fourier/harmonic.h>
 #include <fourier_ssi/harmonic/harmonic_problem.h>
-#include <fstream>
 #include <random>
 #include <sstream>
 
@@ -59,11 +58,7 @@ namespace
   std::string
   base()
   {
-    std::ifstream in(test_support::source_dir() + "/prm/embedded-footing.prm");
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str() +
-           "subsection Discretization\n set Refinement cycles = 1\nend\n";
+    return test_support::embedded_footing(1);
   }
 
   /**

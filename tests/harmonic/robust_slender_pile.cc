@@ -20,7 +20,6 @@
 
 #include <cmath>
 #include <fourier_ssi/fourier/harmonic.h>
-#include <fstream>
 #include <sstream>
 
 using namespace FourierSSI;
@@ -28,25 +27,27 @@ using namespace FourierSSI;
 namespace
 {
   std::string
-  scene(const std::string &pile_material, const std::string &tie)
+  scene(const std::string &pile_material,
+        const std::string &tie,
+        const std::string &id)
   {
-    std::ifstream     in(test_support::source_dir() + "/prm/pile.prm");
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str() +
-           "subsection Mesh\n set Global refinements = 0\n"
-           " set Z breakpoints = -100, -50, 0\n set Z cells = 8, 30\n"
-           " set Z growth = 0.8, 0.92\n"
-           " set Material regions = 1: 0, 0.5, -50, 0\n"
-           " set Interface lines = 5: r=0.5, z=-50..0; 5: z=-50, r=0..0.5\n"
-           "end\n"
-           "subsection Materials\n set Materials = 0: G=1000, nu=0.25, "
-           "alpha=1, depth_ref=50; 1: " +
-           pile_material +
-           "\nend\n"
-           "subsection Discretization\n set Refinement cycles = 1\nend\n"
-           "subsection Rigid foundation\n" +
-           tie + "\n set Horizontal force = 1\nend\n";
+    return test_support::bundled_prm(
+             "prm/pile.prm",
+             {{"Global refinements", "0"},
+              {"Z breakpoints", "-100, -50, 0"},
+              {"Z cells", "8, 30"},
+              {"Z growth", "0.8, 0.92"},
+              {"Material regions", "1: 0, 0.5, -50, 0"},
+              {"Interface lines", "5: r=0.5, z=-50..0; 5: z=-50, r=0..0.5"},
+              {"Materials",
+               "0: G=1000, nu=0.25, alpha=1, depth_ref=50; 1: " +
+                 pile_material},
+              {"Tie", tie},
+              {"Id", id}}) +
+           test_support::entries("Discretization",
+                                 {{"Refinement cycles", "1"}}) +
+           test_support::entries("Rigid foundation",
+                                 {{"Horizontal force", "1"}});
   }
 } // namespace
 
@@ -60,8 +61,7 @@ main(int argc, char **argv)
     {
       std::ostringstream m;
       m << "G=" << 1000 * ratio << ", nu=0.25";
-      const ResultsTable r =
-        test_support::run(scene(m.str(), " set Tie = boundary\n set Id = 4"));
+      const ResultsTable r = test_support::run(scene(m.str(), "boundary", "4"));
       std::ostringstream what;
       what << "Ep/Es = " << ratio;
       KH.push_back(r.get("K_H", h, 0));
@@ -79,8 +79,8 @@ main(int argc, char **argv)
                       r.get("I_MH_from_M", h, 0),
                       1e-6);
     }
-  const ResultsTable rigid = test_support::run(
-    scene("G=1e6, nu=0.25", " set Tie = material\n set Id = 1"));
+  const ResultsTable rigid =
+    test_support::run(scene("G=1e6, nu=0.25", "material", "1"));
   const double KH_r = rigid.get("K_H", h, 0), KM_r = rigid.get("K_M", h, 0);
   std::cout << "  rigid pile: K_H " << KH_r << ", K_M " << KM_r << ", K_MH "
             << rigid.get("K_MH", h, 0) << std::endl;

@@ -15,35 +15,22 @@
 
 #include <cmath>
 #include <fourier_ssi/fourier/harmonic.h>
-#include <fstream>
-#include <sstream>
 
 using namespace FourierSSI;
 
-namespace
-{
-  std::string
-  scene(const std::string &interface)
-  {
-    std::ifstream in(test_support::source_dir() + "/prm/embedded-footing.prm");
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str() +
-           "subsection Discretization\n set Refinement cycles = 1\nend\n"
-           "subsection Interfaces\n set Interfaces = 5: " +
-           interface + "\nend\n";
-  }
-} // namespace
 
 int
 main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const Harmonic                   h{1, Family::symmetric};
-  const ResultsTable smooth = test_support::run(scene("kn=1e10, ks=0"));
-  const ResultsTable almost = test_support::run(scene("kn=1e10, ks=1e-6"));
-  const ResultsTable rough  = test_support::run(scene("kn=1e10, ks=1e10"));
-  const double       KH = smooth.get("K_H", h, 0), KM = smooth.get("K_M", h, 0);
+  const ResultsTable               smooth =
+    test_support::run(test_support::embedded_footing(1, "kn=1e10, ks=0"));
+  const ResultsTable almost =
+    test_support::run(test_support::embedded_footing(1, "kn=1e10, ks=1e-6"));
+  const ResultsTable rough =
+    test_support::run(test_support::embedded_footing(1, "kn=1e10, ks=1e10"));
+  const double KH = smooth.get("K_H", h, 0), KM = smooth.get("K_M", h, 0);
   std::cout << "  smooth: K_H " << KH << ", K_M " << KM << ", K_MH "
             << smooth.get("K_MH", h, 0) << "; rough: K_H "
             << rough.get("K_H", h, 0) << ", K_M " << rough.get("K_M", h, 0)

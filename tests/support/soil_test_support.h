@@ -9,8 +9,8 @@
 
 #include <deal.II/grid/tria.h>
 #include <fourier_ssi/coupled/coupled_soil_solver.h>
-#include <fourier_ssi/harmonic/harmonic_set.h>
 #include <fourier_ssi/driver/scene_plan.h>
+#include <fourier_ssi/harmonic/harmonic_set.h>
 #include <random>
 #include <regex>
 
@@ -21,12 +21,7 @@ namespace soil_test
   inline std::string
   scene(const std::vector<std::pair<std::string, std::string>> &changes)
   {
-    std::string text = test_support::bundled_prm("prm/footing-capacity.prm");
-    for (const auto &[entry, value] : changes)
-      text = std::regex_replace(text,
-                                std::regex("set " + entry + " *= [^\n]*"),
-                                "set " + entry + " = " + value);
-    return text;
+    return test_support::bundled_prm("prm/footing-capacity.prm", changes);
   }
 
   /**
@@ -200,6 +195,51 @@ namespace soil_test
             }
       }
     return result;
+  }
+
+  /**
+   * Every interface sample of every converged step on or inside its slip
+   * surface: max f(t) <= bound [kPa] (the bound and its reason are the
+   * caller's).
+   */
+  inline void
+  check_interface_admissible(const std::string                 &name,
+                             const std::vector<SoilStepResult> &steps,
+                             const double                       bound)
+  {
+    double worst = -1e300;
+    for (const SoilStepResult &s : steps)
+      worst = std::max(worst, s.largest_interface_yield_value);
+    check::in_range(name + ": max f(t) over the interface [kPa]",
+                    worst,
+                    -1e300,
+                    bound);
+  }
+
+  /**
+   * Check (0) of the coulomb-interface tests on plastic soil: at random
+   * fields u with jumps of ~1e-2 m, the coupled tangent applied to a random
+   * x equals K x minus the central difference (e = 1e-9) of the
+   * out-of-balance load, to 1e-6 of the largest entry (the reasons are in
+   * tests/coupled/soil_coulomb_interface.cc). Only meaningful if the
+   * interface softens: dG/du, of the order of the interface stiffness
+   * times the shape functions' area, must exceed 1 kN/m.
+   */
+  inline void
+  check_interface_tangent(Run &run)
+  {
+    std::cout << "(0) interface part of K_t x = K x - dG/du x" << std::endl;
+    std::mt19937 rng(11);
+    const auto   u = random_fields(*run.set, rng, 1e-2);
+    const auto   x = random_fields(*run.set, rng, 1.);
+    const auto   m = tangent_mismatch(run, u, x, 1e-9);
+    check::in_range("max |dG/du x| (the interface softens) [kN/m]",
+                    m.softened,
+                    1.,
+                    1e300);
+    check::small("max |K_t x - (K x - dG/du x)| / max |dG/du x|",
+                 m.error / m.softened,
+                 1e-6);
   }
 } // namespace soil_test
 

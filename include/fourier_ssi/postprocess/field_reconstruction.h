@@ -78,6 +78,13 @@ namespace FourierSSI
                        const std::string &filename) const;
 
   private:
+    /**
+     * (u_r, u_z, u_theta) at each vertex of the revolved mesh, index
+     * k * n_vertices + i for vertex i at theta_k = 2 pi k / divisions.
+     */
+    std::vector<std::array<double, 3>>
+    revolved_displacement(const unsigned int divisions) const;
+
     std::vector<std::shared_ptr<const HarmonicProblem>> problems;
   };
 } // namespace FourierSSI
