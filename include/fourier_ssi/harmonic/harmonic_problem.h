@@ -22,11 +22,11 @@
 #include <fourier_ssi/fourier/harmonic_operator.h>
 #include <fourier_ssi/fourier/load_decomposition.h>
 #include <fourier_ssi/harmonic/assembly_loop.h>
+#include <fourier_ssi/harmonic/distributed_linear_system.h>
 #include <fourier_ssi/harmonic/rigid_foundation.h>
 #include <fourier_ssi/harmonic/stress_postprocessor.h>
 #include <fourier_ssi/input/parameters.h>
 #include <fourier_ssi/interfaces/interface_integrator.h>
-#include <fourier_ssi/linear_algebra/distributed_linear_system.h>
 #include <fourier_ssi/linear_algebra/linear_solver.h>
 #include <fourier_ssi/linear_algebra/sparse_direct.h>
 #include <map>
