@@ -57,6 +57,16 @@ def series(rows, x, y):
     return xs, ys
 
 
+def near_rotation_point(by_depth, fraction=0.1):
+    """Depths whose |p| at the last step is below `fraction` of the largest:
+    there p changes sign, and the sand normalisation m / (|p| D) is
+    undefined (it grows without bound as p passes zero)."""
+    last = {d: abs(float(rows[-1]["p [kN/m]"])) for d, rows in
+            by_depth.items()}
+    largest = max(last.values())
+    return {d for d, p in last.items() if p < fraction * largest}
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("csv")
@@ -71,11 +81,16 @@ def main():
     first = by_depth[min(by_depth)][0]
     clay = first["normalised by"] == "s_u"
     strength = "s_u" if clay else "sigma'_v"
+    # m / (|p| D) is left out where p passes zero (sand, normalised).
+    skip_m = set() if clay or args.dimensional else \
+        near_rotation_point(by_depth)
     fig, axes = plt.subplots(2, 2, figsize=(10, 8))
     for k, (x, y, xlabel, ylabel) in enumerate(panels):
         ax = axes[k // 2][k % 2]
         if k < 2:
             for depth in sorted(by_depth):
+                if k == 1 and depth in skip_m:
+                    continue
                 xs, ys = series(by_depth[depth], x, y)
                 ax.plot(xs, ys, marker=".", label=f"{depth:g} m")
             ax.legend(title="depth", fontsize="small")
@@ -92,7 +107,9 @@ def main():
         ax.axhline(0.0, color="grey", linewidth=0.5)
         ax.grid(True, linewidth=0.3)
     axes[0][0].set_title("lateral reaction p - v")
-    axes[0][1].set_title("distributed moment m - psi")
+    axes[0][1].set_title("distributed moment m - psi" + (
+        "\n(left out where |p| < 0.1 max |p|: %s m)"
+        % ", ".join("%g" % d for d in sorted(skip_m)) if skip_m else ""))
     axes[1][0].set_title("base shear H_B - v_base")
     axes[1][1].set_title("base moment M_B - psi")
     if args.title:

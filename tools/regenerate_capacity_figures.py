@@ -21,6 +21,8 @@ Families (each a function below; --only may be repeated):
                    per adhesion factor)
   pile-lateral-slip  pile-lateral-slip.csv, .png, -interface-state.png
   disc-gap         disc-gap.csv, disc-gap.png
+  reaction-curves  soil-reaction-curves-pile-{free-head,sand}.{csv,png}
+                   (doc/soil-reaction-curves.md sections 4 and 5)
 
 Every run is the shipped scene with the listed entries appended (the
 program takes the last `set` of an entry), its output in WORK/<run>; the
@@ -28,8 +30,7 @@ wall time of each run is printed. A family's files in doc/figures are
 replaced only after all its runs succeeded, each through a temporary file
 and a rename, so a failed or interrupted run never leaves a partial file.
 A run that fails stops the script with one line and a non-zero exit.
-Not here: capacity-envelope.* (tools/capacity_envelope.py), pile-free-head.*
-(its ctest's output), the thesis families (tools/thesis_figures.py).
+Not here: capacity-envelope.* (tools/capacity_envelope.py), the thesis families (tools/thesis_figures.py).
 Needs Debian's python3-matplotlib (under /usr/bin/python3).
 """
 import argparse
@@ -334,6 +335,21 @@ def disc_gap(context):
          "disc in ring, tensionless frictionless"], "disc-gap.png")})
 
 
+def reaction_curves(context):
+    """doc/soil-reaction-curves.md sections 4 and 5: prm/pile-free-head.prm
+    (Tresca clay) and prm/pile-sand.prm (Mohr-Coulomb sand) as shipped; the
+    PISA-normalised curves of every step and depth."""
+    for scene, title in (("pile-free-head", "free-head rigid pile, Tresca clay"),
+                         ("pile-sand", "rigid pile in sand, phi' = 30 deg")):
+        output = run_scene(context, scene, "prm/%s.prm" % scene)
+        data = os.path.join(output, "soil-reaction-curves.csv")
+        name = "soil-reaction-curves-%s" % scene
+        install({name + ".csv": data})
+        install({name + ".png": plot(
+            context, "plot_soil_reaction_curves.py",
+            [data, "OUT", "--title", title], name + ".png")})
+
+
 FAMILIES = {"footing": footing_capacity,
             "pile": pile_capacity,
             "rough-disc-mesh": rough_disc_mesh,
@@ -341,7 +357,8 @@ FAMILIES = {"footing": footing_capacity,
             "capacity": capacity_error_bars,
             "adhesion": adhesion,
             "pile-lateral-slip": pile_lateral_slip,
-            "disc-gap": disc_gap}
+            "disc-gap": disc_gap,
+            "reaction-curves": reaction_curves}
 
 
 def main():

@@ -20,6 +20,15 @@
 // cannot go on. Where not even that lowers |R| (a kink of the return
 // mapping at the iterate), the solver takes one initial-stiffness update
 // (coupled_interface_solver.cc, solve_step).
+// Under MPI (harmonics distributed over the ranks, HarmonicSet::
+// distribute_over) harmonic g's flexibility block lives on its owner only:
+// each rank fills the columns of dG/dc of the harmonics it owns (the
+// projection of their plastic change onto every harmonic is local math on
+// the samples every rank shares), one sum over the ranks completes the
+// matrix (each column non-zero on exactly one rank: exact), and the owner
+// of the first harmonic solves the dense system and broadcasts dc, so every
+// rank takes the same step and the line search and watchdog compare the
+// same |R| on every rank.
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <fourier_ssi/coupled/coupled_interface_solver.h>
 
@@ -27,6 +36,23 @@ namespace FourierSSI
 {
   namespace
   {
+    /**
+     * The whole matrix on every rank from the columns each rank filled
+     * (zero elsewhere): one sum over the ranks the harmonics are
+     * distributed over, exact since every column comes from one rank.
+     */
+    void
+    sum_columns_over_ranks(const HarmonicSet &set, FullMatrix<double> &matrix)
+    {
+      if (set.n_owning_ranks() == 1 || matrix.m() == 0)
+        return;
+      double *const       first = &matrix(0, 0);
+      const std::size_t   n     = matrix.m() * matrix.n();
+      std::vector<double> entries(first, first + n);
+      set.sum_over_ranks(entries);
+      std::copy(entries.begin(), entries.end(), first);
+    }
+
     /** Armijo fraction: accept a step alpha if |R| falls by c1 alpha |R|. */
     constexpr double armijo_fraction = 1e-4;
     /** Halvings of the Newton step before the update gives up (2^-16). */
@@ -57,6 +83,9 @@ namespace FourierSSI
     std::vector<LocalVector> plastic_change(e.relative.size());
     for (unsigned int g = 0; g < set.size(); ++g)
       {
+        // Only g's owner holds its flexibility block (file comment).
+        if (!set.owns(g))
+          continue;
         const Condensation &column = condensed[g];
         for (unsigned int j = 0; j < column.write.size(); ++j)
           {
@@ -65,7 +94,7 @@ namespace FourierSSI
             for (unsigned int i = 0; i < column.read.size(); ++i)
               unit[g](column.read[i]) = column.flexibility(i, j);
             std::vector<LocalVector> change =
-              interface.relative_displacements(unit, sampling);
+              interface.owned_relative_displacements(unit, sampling);
             unit[g] = 0.;
             const double load_factor_change =
               displacement_control ?
@@ -89,6 +118,7 @@ namespace FourierSSI
                 jacobian(offset[h] + i, offset[g] + j) = load_change[h](i);
           }
       }
+    sum_columns_over_ranks(set, jacobian);
     return jacobian;
   }
 
@@ -104,11 +134,17 @@ namespace FourierSSI
     for (unsigned int r = 0, h = 0; h < set.size(); ++h)
       for (unsigned int i = 0; i < residual[h].size(); ++i, ++r)
         dc(r) = residual[h](i);
-    for (unsigned int r = 0; r < n; ++r)
-      for (unsigned int c = 0; c < n; ++c)
-        system(r, c) = (r == c ? 1. : 0.) - dG(r, c);
-    system.compute_lu_factorization();
-    system.solve(dc);
+    // One rank solves, the others receive its dc (the same bits on every
+    // rank whatever the BLAS does; on one rank the broadcast is nothing).
+    if (set.owns(0))
+      {
+        for (unsigned int r = 0; r < n; ++r)
+          for (unsigned int c = 0; c < n; ++c)
+            system(r, c) = (r == c ? 1. : 0.) - dG(r, c);
+        system.compute_lu_factorization();
+        system.solve(dc);
+      }
+    set.broadcast_from_owner(0, dc.begin(), n);
     return dc;
   }
 

@@ -124,10 +124,6 @@ namespace FourierSSI
                              ": not yet: prescribed (non-zero) Dirichlet "
                              "values with nonlinear interfaces; load the "
                              "scene through the Rigid foundation"));
-    AssertThrow(!settings.tangent_stiffness || set.n_owning_ranks() <= 1,
-                ExcMessage(entry +
-                           "/Stiffness: not yet: tangent on several MPI "
-                           "ranks (use initial, or one process)"));
     solve_load_pattern();
     solve_held_loads();
     committed.correction_solution = pattern_solution;

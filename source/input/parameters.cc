@@ -460,8 +460,8 @@ namespace FourierSSI
                       ExcMessage("Discretization/Target accuracy: with a "
                                  "coulomb interface on elastic soil the goal "
                                  "is the load at the end of the controlled "
-                                 "path, which needs Nonlinear "
-                                 "interfaces/Control = displacement"));
+                                 "path, which needs Load path/"
+                                 "Control = displacement"));
           bool prescribed_motion = !parameters.loads.displacement.empty();
           for (const auto &[id, e] : parameters.boundary_conditions.dirichlet)
             prescribed_motion |= !e.is_zero();
@@ -492,6 +492,7 @@ namespace FourierSSI
     discretization.parse_parameters(prm);
     mesh.parse_parameters(prm);
     materials.parse_parameters(prm);
+    paint_soil_layers(mesh, materials.surface_elevation);
     boundary_conditions.parse_parameters(prm);
     solver.parse_parameters(prm);
     exact_solution.parse_parameters(prm);

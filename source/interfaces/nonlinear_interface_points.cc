@@ -106,10 +106,30 @@ namespace FourierSSI
     const std::vector<Vector<double>> &fields,
     const ThetaSampling               &sampling) const
   {
-    const unsigned int N = sampling.n_samples(), H = set.size();
-    // 1. The amplitudes of (d_s, d_n, d_theta) at every point, index
-    //    (i * 3 + c) * H + h, of the harmonics this rank owns (zero for the
-    //    others).
+    std::vector<double> amplitudes = owned_amplitudes(fields);
+    // Every harmonic's amplitudes on every rank: each entry is non-zero on
+    // its owner only, so the sum is exact and the same bits on every rank,
+    // whatever the reduction order.
+    set.sum_over_ranks(amplitudes);
+    return sampled(amplitudes, sampling);
+  }
+
+  std::vector<LocalVector>
+  NonlinearInterfacePoints::owned_relative_displacements(
+    const std::vector<Vector<double>> &fields,
+    const ThetaSampling               &sampling) const
+  {
+    return sampled(owned_amplitudes(fields), sampling);
+  }
+
+  std::vector<double>
+  NonlinearInterfacePoints::owned_amplitudes(
+    const std::vector<Vector<double>> &fields) const
+  {
+    // The amplitudes of (d_s, d_n, d_theta) at every point, index
+    // (i * 3 + c) * H + h, of the harmonics this rank owns (zero for the
+    // others).
+    const unsigned int  H = set.size();
     std::vector<double> amplitudes(points.size() * 3 * H, 0.);
     for (unsigned int i = 0; i < points.size(); ++i)
       {
@@ -138,11 +158,15 @@ namespace FourierSSI
               }
           }
       }
-    // 2. Every harmonic's amplitudes on every rank: each entry is non-zero
-    //    on its owner only, so the sum is exact and the same bits on every
-    //    rank, whatever the reduction order.
-    set.sum_over_ranks(amplitudes);
-    // 3. The samples at every theta_j, summed over the harmonics.
+    return amplitudes;
+  }
+
+  std::vector<LocalVector>
+  NonlinearInterfacePoints::sampled(const std::vector<double> &amplitudes,
+                                    const ThetaSampling       &sampling) const
+  {
+    // The samples at every theta_j, summed over the harmonics.
+    const unsigned int       N = sampling.n_samples(), H = set.size();
     std::vector<LocalVector> result(points.size() * N, {{0., 0., 0.}});
     std::vector<double>      amplitude(H), samples;
     for (unsigned int i = 0; i < points.size(); ++i)

@@ -148,7 +148,10 @@ namespace FourierSSI
                         "Uniform refinements of the coarse mesh.");
     }
 
-    /** Material, removed regions and interface lines of the rectangle. */
+    /**
+     * Material regions, soil layers, removed regions and interface lines of
+     * the rectangle.
+     */
     void
     declare_rectangle_region_entries(ParameterHandler &prm)
     {
@@ -158,6 +161,7 @@ namespace FourierSSI
                         "Rectangle only: 'id: r0, r1, z0, z1; ...' gives the "
                         "cells whose centre lies in each box that material id "
                         "(later boxes win; default material 0).");
+      declare_soil_layers_entry(prm);
       prm.declare_entry("Removed regions",
                         "",
                         Patterns::Anything(),
@@ -241,6 +245,7 @@ namespace FourierSSI
                                       parse_box(item.substr(colon + 1),
                                                 "Mesh/Material regions"));
       }
+    soil_layers = parse_soil_layers(prm.get("Soil layers"));
     removed_regions.clear();
     for (const std::string &item :
          split_top_level(prm.get("Removed regions"), ';'))

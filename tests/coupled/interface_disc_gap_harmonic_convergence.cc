@@ -20,7 +20,8 @@
 //    1e-5);
 //  * at every n_max the frictionless disc stays below the linear bilateral
 //    smooth one (kn, ks = 0) and the Coulomb disc between the frictionless
-//    and the linear bilateral bonded one (kn = ks): the bounds of Verify 5.
+//    and the linear bilateral bonded one (kn = ks): the physical bounds of a
+//    tensionless, frictional interface.
 #include "check.h"
 #include "coupled_interface_test_support.h"
 

@@ -110,6 +110,16 @@ namespace FourierSSI
                            const ThetaSampling               &sampling) const;
 
     /**
+     * relative_displacements() of the harmonics this rank owns only, not
+     * summed over the ranks: local (not a collective), exact for fields
+     * that are zero outside this rank's harmonics (a column of the Newton
+     * Jacobian, coupled_interface_newton.cc).
+     */
+    std::vector<LocalVector>
+    owned_relative_displacements(const std::vector<Vector<double>> &fields,
+                                 const ThetaSampling &sampling) const;
+
+    /**
      * The return mapping at every sample from the committed plastic
      * relative displacements; fills plastic, traction (total, t0
      * included) and state; returns the counts.
@@ -239,6 +249,18 @@ namespace FourierSSI
                   CoupledTangent                 &tangent) const;
 
   private:
+    /**
+     * The amplitudes of (d_s, d_n, d_theta) of the harmonics this rank
+     * owns at every point, index (i * 3 + c) * H + h (zero for the others).
+     */
+    std::vector<double>
+    owned_amplitudes(const std::vector<Vector<double>> &fields) const;
+
+    /** Relative displacements at every (point, theta) from amplitudes. */
+    std::vector<LocalVector>
+    sampled(const std::vector<double> &amplitudes,
+            const ThetaSampling       &sampling) const;
+
     /**
      * The return mapping at every (point i, theta sample) k = i N + j from
      * its committed plastic relative displacement, handed to use(k, i, r).

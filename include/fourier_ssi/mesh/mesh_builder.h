@@ -27,6 +27,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/grid/tria.h>
 #include <fourier_ssi/mesh/interface_lines.h>
+#include <fourier_ssi/mesh/soil_layers.h>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -108,6 +109,11 @@ namespace FourierSSI
     unsigned int degree = 2;
     /** (material id, box) pairs: cells with centre in the box get the id. */
     std::vector<std::pair<types::material_id, BoundingBox<2>>> material_regions;
+    /**
+     * Mesh/Soil layers as parsed; AllParameters puts them in front of
+     * material_regions once the ground surface is known (soil_layers.h).
+     */
+    std::vector<SoilLayer> soil_layers;
     /** Cells with centre in one of these boxes are removed. */
     std::vector<BoundingBox<2>> removed_regions;
     std::vector<InterfaceLine>  interface_lines;
