@@ -15,6 +15,7 @@
 #include <fourier_ssi/interfaces/interface_element.h>
 #include <fourier_ssi/linear_algebra/huge_page_allocation.h>
 #include <fourier_ssi/linear_algebra/serial_blas.h>
+#include <functional>
 #include <iostream>
 #include <map>
 #include <memory>
@@ -116,6 +117,84 @@ namespace FourierSSI
         out,
         interface_matrix(static_cast<unsigned int>(p), nodes, k, harmonic));
     }
+
+    void
+    print_usage(std::ostream &out)
+    {
+      out << "usage: fourier-ssi [PARAMS.prm]\n"
+             "       fourier-ssi --print-parameters\n"
+             "       mpirun -np N fourier-ssi PARAMS.prm   (distributed "
+             "solve)\n"
+             "       mpirun -np N fourier-ssi --batch [--csv FILE] "
+             "CASE.prm... | LIST...\n"
+             "       fourier-ssi --interface-matrix p=2 n=1 family=sym "
+             "r=0.5,0.5,0.5 z=0,0.5,1 kn=1e10 ks=1e10\n"
+             "         (closed-form interface element matrix; n defaults "
+             "to 0, family to sym)\n";
+    }
+
+    /**
+     * One scene: fourier-ssi [PARAMS.prm]. Returns the exit code; throws
+     * the errors that run_command_line turns into its one error line.
+     */
+    int
+    run_scene(const int                    argc,
+              char                       **argv,
+              const MPI_Comm               communicator,
+              const bool                   root,
+              const std::function<void()> &start_mpi,
+              std::ostream                &out,
+              std::ostream                &err)
+    {
+      std::string prm_file = std::string(FSSI_SOURCE_DIR) + "/prm/default.prm";
+      if (argc > 2)
+        {
+          err << "fourier-ssi: error: expected at most one argument "
+                 "(the .prm file), got "
+              << argc - 1 << std::endl;
+          return 1;
+        }
+      if (argc == 2)
+        prm_file = argv[1];
+      // A misspelt option would otherwise be read as a file name ("cannot
+      // open parameter file").
+      AssertThrow(prm_file.rfind("-", 0) != 0,
+                  ExcMessage("unknown option '" + prm_file +
+                             "' (fourier-ssi --help lists the options)"));
+
+      // The output folder's earlier results go as soon as the folder is
+      // known, before the input is checked: a refused input must not
+      // leave them beside its error line.
+      if (root)
+        remove_stale_results_of(prm_file);
+      AllParameters parameters;
+      parameters.read_file(prm_file);
+      if (!parameters.solver.is_direct() ||
+          parameters.solver.distributed_always)
+        start_mpi();
+      out << "fourier-ssi: " << prm_file << std::endl;
+      Simulator simulator(parameters, communicator);
+      try
+        {
+          simulator.run(out);
+        }
+      catch (const std::exception &e)
+        {
+          // Name the scene's file, as the errors found while reading it
+          // do.
+          AssertThrow(false, ExcMessage(prm_file + ": " + one_line_message(e)));
+        }
+      // Not reaching the target is never silent: the results are
+      // written (and marked), the exit code says it.
+      if (!simulator.unmet_target().empty() &&
+          !parameters.adaptivity.allow_unconverged)
+        {
+          err << "fourier-ssi: " << prm_file << ": " << simulator.unmet_target()
+              << std::endl;
+          return 3;
+        }
+      return 0;
+    }
   } // namespace
 
   int
@@ -126,7 +205,7 @@ namespace FourierSSI
     // A serial run skips it: OpenMPI's singleton start-up costs about
     // 0.3 s, a third of a small run (doc/accuracy-vs-time.md).
     std::unique_ptr<Utilities::MPI::MPI_InitFinalize> mpi;
-    const auto                                        start_mpi = [&]() {
+    const std::function<void()>                       start_mpi = [&]() {
       if (!mpi)
         mpi = std::make_unique<Utilities::MPI::MPI_InitFinalize>(argc, argv, 1);
     };
@@ -137,40 +216,30 @@ namespace FourierSSI
       start_mpi();
     else
       MultithreadInfo::set_thread_limit(1); // as MPI_InitFinalize(.., 1)
-    std::string prm_file = std::string(FSSI_SOURCE_DIR) + "/prm/default.prm";
     // Under mpirun every rank runs this; only rank 0 talks (a stream without
     // a buffer swallows the output of the others).
     const MPI_Comm communicator = MPI_COMM_WORLD;
     std::ostream   silent(nullptr);
     const bool     root = !Utilities::MPI::job_supports_mpi() ||
                       Utilities::MPI::this_mpi_process(communicator) == 0;
-    std::ostream &out = root ? std::cout : silent;
-    std::ostream &err = root ? std::cerr : silent;
+    std::ostream     &out    = root ? std::cout : silent;
+    std::ostream     &err    = root ? std::cerr : silent;
+    const std::string option = argc > 1 ? argv[1] : "";
     try
       {
-        if (argc > 1 && std::string(argv[1]) == "--print-parameters")
+        if (option == "--print-parameters")
           {
             ParameterHandler prm;
             AllParameters::declare_parameters(prm);
             prm.print_parameters(out, ParameterHandler::PRM);
             return 0;
           }
-        if (argc > 1 &&
-            (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h"))
+        if (option == "--help" || option == "-h")
           {
-            out << "usage: fourier-ssi [PARAMS.prm]\n"
-                   "       fourier-ssi --print-parameters\n"
-                   "       mpirun -np N fourier-ssi PARAMS.prm   (distributed "
-                   "solve)\n"
-                   "       mpirun -np N fourier-ssi --batch [--csv FILE] "
-                   "CASE.prm... | LIST...\n"
-                   "       fourier-ssi --interface-matrix p=2 n=1 family=sym "
-                   "r=0.5,0.5,0.5 z=0,0.5,1 kn=1e10 ks=1e10\n"
-                   "         (closed-form interface element matrix; n defaults "
-                   "to 0, family to sym)\n";
+            print_usage(out);
             return 0;
           }
-        if (argc > 1 && std::string(argv[1]) == "--interface-matrix")
+        if (option == "--interface-matrix")
           {
             interface_matrix_command(std::vector<std::string>(argv + 2,
                                                               argv + argc),
@@ -182,59 +251,12 @@ namespace FourierSSI
                            communicator,
                            out,
                            err);
-        if (argc > 2)
-          {
-            err << "fourier-ssi: error: expected at most one argument "
-                   "(the .prm file), got "
-                << argc - 1 << std::endl;
-            return 1;
-          }
-        if (argc == 2)
-          prm_file = argv[1];
-        // A misspelt option would otherwise be read as a file name ("cannot
-        // open parameter file").
-        AssertThrow(prm_file.rfind("-", 0) != 0,
-                    ExcMessage("unknown option '" + prm_file +
-                               "' (fourier-ssi --help lists the options)"));
-
-        // The output folder's earlier results go as soon as the folder is
-        // known, before the input is checked: a refused input must not
-        // leave them beside its error line.
-        if (root)
-          remove_stale_results_of(prm_file);
-        AllParameters parameters;
-        parameters.read_file(prm_file);
-        if (!parameters.solver.is_direct() ||
-            parameters.solver.distributed_always)
-          start_mpi();
-        out << "fourier-ssi: " << prm_file << std::endl;
-        Simulator simulator(parameters, communicator);
-        try
-          {
-            simulator.run(out);
-          }
-        catch (const std::exception &e)
-          {
-            // Name the scene's file, as the errors found while reading it
-            // do.
-            AssertThrow(false,
-                        ExcMessage(prm_file + ": " + one_line_message(e)));
-          }
-        // Not reaching the target is never silent: the results are
-        // written (and marked), the exit code says it.
-        if (!simulator.unmet_target().empty() &&
-            !parameters.adaptivity.allow_unconverged)
-          {
-            err << "fourier-ssi: " << prm_file << ": "
-                << simulator.unmet_target() << std::endl;
-            return 3;
-          }
+        return run_scene(argc, argv, communicator, root, start_mpi, out, err);
       }
     catch (const std::exception &e)
       {
         err << "fourier-ssi: error: " << one_line_message(e) << std::endl;
         return 1;
       }
-    return 0;
   }
 } // namespace FourierSSI

@@ -98,6 +98,95 @@ namespace FourierSSI
         status = "failed";
       log_text = log.str();
     }
+
+    /** Every case's status, log and rows as each rank left them (rank 0). */
+    struct GatheredCases
+    {
+      std::vector<std::vector<std::string>> status, logs, rows;
+      unsigned int                          n_ranks;
+
+      /** The rank that ran case c: the first with a non-empty status. */
+      unsigned int
+      owner(const unsigned int c) const
+      {
+        unsigned int r = 0;
+        while (r + 1 < n_ranks && status[r][c].empty())
+          ++r;
+        return r;
+      }
+    };
+
+    /**
+     * Rank 0: the logs in case order, one error line per failed case;
+     * returns the batch CSV text (header and the rows of every case).
+     */
+    std::string
+    report_cases(const std::vector<std::string> &cases,
+                 const GatheredCases            &gathered,
+                 int                            &exit_code,
+                 std::ostream                   &out,
+                 std::ostream                   &err)
+    {
+      std::ostringstream csv;
+      csv << "case,quantity,n,family,cycle,value,unit\n";
+      for (unsigned int c = 0; c < cases.size(); ++c)
+        {
+          const unsigned int r = gathered.owner(c);
+          out << gathered.logs[r][c];
+          if (gathered.status[r][c] != "ok")
+            {
+              err << "fourier-ssi: error: " << cases[c] << ": "
+                  << gathered.status[r][c] << std::endl;
+              exit_code = 1;
+            }
+          csv << gathered.rows[r][c];
+        }
+      return csv.str();
+    }
+
+    /**
+     * The succeeded cases' rows are written (a failed case has none);
+     * the failed ones are listed on stderr and the exit code is 1. With
+     * no case succeeded there is no file, not even an earlier one.
+     */
+    void
+    write_batch_csv(const std::string &csv_file,
+                    const std::string &csv,
+                    const unsigned int n_ok,
+                    const unsigned int n_cases,
+                    const unsigned int n_ranks,
+                    int               &exit_code,
+                    std::ostream      &out,
+                    std::ostream      &err)
+    {
+      std::filesystem::remove(csv_file);
+      if (n_ok > 0)
+        {
+          bool written = false;
+          try
+            {
+              AtomicFile file(csv_file);
+              file.stream() << csv;
+              file.commit();
+              written = true;
+            }
+          catch (const std::exception &)
+            {
+              err << "fourier-ssi: error: --batch: cannot write '" << csv_file
+                  << "'" << std::endl;
+              exit_code = 1;
+            }
+          if (written)
+            out << n_ok << " of " << n_cases << " cases succeeded on "
+                << n_ranks << " ranks, their results written to " << csv_file
+                << std::endl;
+        }
+      if (n_ok < n_cases)
+        err << "fourier-ssi: error: --batch: " << n_cases - n_ok << " of "
+            << n_cases << " cases failed (listed above)"
+            << (n_ok > 0 ? "; " + csv_file + " holds the others" : "")
+            << std::endl;
+    }
   } // namespace
 
   int
@@ -129,68 +218,22 @@ namespace FourierSSI
         solve_case(cases[c], status[c], logs[c], rows[c]);
     }
 
-    const std::vector<std::vector<std::string>> all_status =
-      Utilities::MPI::gather(communicator, status, 0);
-    const std::vector<std::vector<std::string>> all_logs =
-      Utilities::MPI::gather(communicator, logs, 0);
-    const std::vector<std::vector<std::string>> all_rows =
-      Utilities::MPI::gather(communicator, rows, 0);
-    int exit_code = 0;
+    const GatheredCases gathered{Utilities::MPI::gather(communicator,
+                                                        status,
+                                                        0),
+                                 Utilities::MPI::gather(communicator, logs, 0),
+                                 Utilities::MPI::gather(communicator, rows, 0),
+                                 n_ranks};
+    int                 exit_code = 0;
     if (rank == 0)
       {
-        const auto owner = [&](const unsigned int c) {
-          unsigned int r = 0;
-          while (r + 1 < n_ranks && all_status[r][c].empty())
-            ++r;
-          return r;
-        };
-        std::ostringstream csv;
-        csv << "case,quantity,n,family,cycle,value,unit\n";
-        for (unsigned int c = 0; c < cases.size(); ++c)
-          {
-            const unsigned int r = owner(c);
-            out << all_logs[r][c];
-            if (all_status[r][c] != "ok")
-              {
-                err << "fourier-ssi: error: " << cases[c] << ": "
-                    << all_status[r][c] << std::endl;
-                exit_code = 1;
-              }
-            csv << all_rows[r][c];
-          }
-        // The succeeded cases' rows are written (a failed case has none);
-        // the failed ones are listed on stderr and the exit code is 1. With
-        // no case succeeded there is no file, not even an earlier one.
-        std::filesystem::remove(csv_file);
+        const std::string csv =
+          report_cases(cases, gathered, exit_code, out, err);
         unsigned int n_ok = 0;
         for (unsigned int c = 0; c < cases.size(); ++c)
-          n_ok += all_status[owner(c)][c] == "ok";
-        if (n_ok > 0)
-          {
-            bool written = false;
-            try
-              {
-                AtomicFile file(csv_file);
-                file.stream() << csv.str();
-                file.commit();
-                written = true;
-              }
-            catch (const std::exception &)
-              {
-                err << "fourier-ssi: error: --batch: cannot write '" << csv_file
-                    << "'" << std::endl;
-                exit_code = 1;
-              }
-            if (written)
-              out << n_ok << " of " << cases.size() << " cases succeeded on "
-                  << n_ranks << " ranks, their results written to " << csv_file
-                  << std::endl;
-          }
-        if (n_ok < cases.size())
-          err << "fourier-ssi: error: --batch: " << cases.size() - n_ok
-              << " of " << cases.size() << " cases failed (listed above)"
-              << (n_ok > 0 ? "; " + csv_file + " holds the others" : "")
-              << std::endl;
+          n_ok += gathered.status[gathered.owner(c)][c] == "ok";
+        write_batch_csv(
+          csv_file, csv, n_ok, cases.size(), n_ranks, exit_code, out, err);
       }
     return Utilities::MPI::broadcast(communicator, exit_code, 0);
   }

@@ -8,9 +8,9 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <fourier_ssi/driver/input_checks.h>
 #include <fourier_ssi/driver/simulator.h>
+#include <fourier_ssi/harmonic/distributed_linear_system.h>
 #include <fourier_ssi/harmonic/harmonic_problem.h>
 #include <fourier_ssi/input/messages.h>
-#include <fourier_ssi/linear_algebra/distributed_linear_system.h>
 #include <fourier_ssi/linear_algebra/serial_blas.h>
 #include <fourier_ssi/mesh/discretization_design.h>
 #include <iomanip>

@@ -6,7 +6,7 @@
 #include <fourier_ssi/coupled/coupled_interface_solver.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/driver/simulator.h>
-#include <fourier_ssi/linear_algebra/distributed_linear_system.h>
+#include <fourier_ssi/harmonic/distributed_linear_system.h>
 
 namespace FourierSSI
 {

@@ -53,106 +53,156 @@ namespace FourierSSI
     prm.leave_subsection();
   }
 
+  namespace
+  {
+    /** The one-line error of Materials/Materials, quoting the whole text. */
+    void
+    refuse_materials(const std::string &text, const std::string &what)
+    {
+      AssertThrow(false,
+                  ExcMessage("Materials/Materials: " + what + " in '" + text +
+                             "'"));
+    }
+
+    /** The id before the colon of one entry, 0..254. */
+    int
+    material_id_of(const std::string &entry,
+                   const std::size_t  colon,
+                   const std::string &text)
+    {
+      int id = -1;
+      try
+        {
+          id =
+            Utilities::string_to_int(Utilities::trim(entry.substr(0, colon)));
+        }
+      catch (...)
+        {
+          refuse_materials(text,
+                           "material id '" + entry.substr(0, colon) +
+                             "' is not an integer");
+        }
+      if (id < 0 || id >= 255)
+        refuse_materials(text,
+                         "material id " + std::to_string(id) +
+                           " out of range [0,254]");
+      return id;
+    }
+
+    /** The moduli as given (-1: not given) and whether nu was. */
+    struct GivenModuli
+    {
+      double E = -1., G = -1.;
+      bool   has_nu = false;
+    };
+
+    /** The key=value pairs after the colon of one entry. */
+    GivenModuli
+    read_material_keys(const std::string &entry,
+                       const std::size_t  colon,
+                       const std::string &text,
+                       ElasticMaterial   &material)
+    {
+      GivenModuli           given;
+      std::set<std::string> keys_given;
+      for (const std::string &pair :
+           Utilities::split_string_list(entry.substr(colon + 1), ','))
+        {
+          const auto eq = pair.find('=');
+          if (eq == std::string::npos)
+            refuse_materials(text, "'" + pair + "' is not key=value");
+          const std::string key = Utilities::trim(pair.substr(0, eq));
+          record_key_once(keys_given, key, "Materials/Materials", entry);
+          double value;
+          try
+            {
+              value = Utilities::string_to_double(
+                Utilities::trim(pair.substr(eq + 1)));
+            }
+          catch (...)
+            {
+              refuse_materials(text, "value of '" + key + "' is not a number");
+            }
+          if (!std::isfinite(value))
+            refuse_materials(text, "value of '" + key + "' is not finite");
+          if (key == "E")
+            given.E = value;
+          else if (key == "G")
+            given.G = value;
+          else if (key == "nu")
+            {
+              material.poisson_ratio = value;
+              given.has_nu           = true;
+            }
+          else if (key == "alpha")
+            material.alpha = value;
+          else if (key == "depth_ref")
+            material.depth_ref = value;
+          else
+            refuse_materials(text,
+                             "unknown key '" + key +
+                               "' (expected E, G, nu, alpha, depth_ref)");
+        }
+      return given;
+    }
+
+    /** Check the given data and set the shear modulus (from E or G). */
+    void
+    finish_material(ElasticMaterial   &material,
+                    const GivenModuli &given,
+                    const std::string &where,
+                    const std::string &text)
+    {
+      const double E = given.E, G = given.G;
+      if (!given.has_nu)
+        refuse_materials(text, where + "nu is missing");
+      if (!(material.poisson_ratio > -1. && material.poisson_ratio < 0.5))
+        {
+          std::ostringstream nu;
+          nu << material.poisson_ratio;
+          refuse_materials(text,
+                           where + "nu = " + nu.str() +
+                             " must satisfy -1 < nu < 0.5");
+        }
+      if ((E > 0.) == (G > 0.) && !(E == -1. && G == -1.))
+        {
+          if (E != -1. && G != -1.)
+            refuse_materials(text, where + "give E or G, not both");
+        }
+      if (E == -1. && G == -1.)
+        refuse_materials(text, where + "E or G is missing");
+      if ((E != -1. && !(E > 0.)) || (G != -1. && !(G > 0.)))
+        refuse_materials(text, where + "the modulus must be positive");
+      material.shear_modulus_ref =
+        G > 0. ? G : E / (2. * (1. + material.poisson_ratio));
+      if (!(material.alpha >= 0.))
+        refuse_materials(text, where + "alpha must be >= 0");
+      if (!(material.depth_ref > 0.))
+        refuse_materials(text, where + "depth_ref must be > 0");
+    }
+  } // namespace
+
   void
   MaterialLibrary::parse_material_list(const std::string &text)
   {
     materials.clear();
-    const auto fail = [&](const std::string &what) {
-      AssertThrow(false,
-                  ExcMessage("Materials/Materials: " + what + " in '" + text +
-                             "'"));
-    };
-
     for (const std::string &entry : Utilities::split_string_list(text, ';'))
       {
         const auto colon = entry.find(':');
         if (colon == std::string::npos)
-          fail("entry '" + entry + "' lacks 'id:'");
-        int id = -1;
-        try
-          {
-            id =
-              Utilities::string_to_int(Utilities::trim(entry.substr(0, colon)));
-          }
-        catch (...)
-          {
-            fail("material id '" + entry.substr(0, colon) +
-                 "' is not an integer");
-          }
-        if (id < 0 || id >= 255)
-          fail("material id " + std::to_string(id) + " out of range [0,254]");
-
-        ElasticMaterial       material;
-        double                E = -1., G = -1.;
-        bool                  has_nu = false;
-        std::set<std::string> keys_given;
-        for (const std::string &pair :
-             Utilities::split_string_list(entry.substr(colon + 1), ','))
-          {
-            const auto eq = pair.find('=');
-            if (eq == std::string::npos)
-              fail("'" + pair + "' is not key=value");
-            const std::string key = Utilities::trim(pair.substr(0, eq));
-            record_key_once(keys_given, key, "Materials/Materials", entry);
-            double value;
-            try
-              {
-                value = Utilities::string_to_double(
-                  Utilities::trim(pair.substr(eq + 1)));
-              }
-            catch (...)
-              {
-                fail("value of '" + key + "' is not a number");
-              }
-            if (!std::isfinite(value))
-              fail("value of '" + key + "' is not finite");
-            if (key == "E")
-              E = value;
-            else if (key == "G")
-              G = value;
-            else if (key == "nu")
-              {
-                material.poisson_ratio = value;
-                has_nu                 = true;
-              }
-            else if (key == "alpha")
-              material.alpha = value;
-            else if (key == "depth_ref")
-              material.depth_ref = value;
-            else
-              fail("unknown key '" + key +
-                   "' (expected E, G, nu, alpha, depth_ref)");
-          }
+          refuse_materials(text, "entry '" + entry + "' lacks 'id:'");
+        const int         id = material_id_of(entry, colon, text);
+        ElasticMaterial   material;
+        const GivenModuli given =
+          read_material_keys(entry, colon, text, material);
         const std::string where = "material " + std::to_string(id) + ": ";
-        if (!has_nu)
-          fail(where + "nu is missing");
-        if (!(material.poisson_ratio > -1. && material.poisson_ratio < 0.5))
-          {
-            std::ostringstream nu;
-            nu << material.poisson_ratio;
-            fail(where + "nu = " + nu.str() + " must satisfy -1 < nu < 0.5");
-          }
-        if ((E > 0.) == (G > 0.) && !(E == -1. && G == -1.))
-          {
-            if (E != -1. && G != -1.)
-              fail(where + "give E or G, not both");
-          }
-        if (E == -1. && G == -1.)
-          fail(where + "E or G is missing");
-        if ((E != -1. && !(E > 0.)) || (G != -1. && !(G > 0.)))
-          fail(where + "the modulus must be positive");
-        material.shear_modulus_ref =
-          G > 0. ? G : E / (2. * (1. + material.poisson_ratio));
-        if (!(material.alpha >= 0.))
-          fail(where + "alpha must be >= 0");
-        if (!(material.depth_ref > 0.))
-          fail(where + "depth_ref must be > 0");
+        finish_material(material, given, where, text);
         if (materials.count(id))
-          fail(where + "defined twice");
+          refuse_materials(text, where + "defined twice");
         materials[id] = material;
       }
     if (materials.empty())
-      fail("no material given");
+      refuse_materials(text, "no material given");
   }
 
   const ElasticMaterial &

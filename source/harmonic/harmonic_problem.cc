@@ -89,8 +89,25 @@ namespace FourierSSI
   HarmonicProblem::setup_system()
   {
     dof_handler.distribute_dofs(*fe);
+    check_boundary_ids();
+    make_constraints();
+    factorization.reset();
 
-    // Every boundary id named in the .prm must exist on the mesh.
+    system_rhs.reinit(dof_handler.n_dofs());
+    solution.reinit(dof_handler.n_dofs());
+    if (distributed)
+      {
+        if (interfaces)
+          interfaces->setup(dof_handler);
+        distributed->setup(dof_handler, constraints, interfaces.get());
+        return;
+      }
+    make_serial_matrix();
+  }
+
+  void
+  HarmonicProblem::check_boundary_ids() const
+  {
     const auto boundary_ids =
       dof_handler.get_triangulation().get_boundary_ids();
     const auto check_id = [&](const types::boundary_id id,
@@ -104,7 +121,11 @@ namespace FourierSSI
       check_id(id, "Boundary conditions/Dirichlet");
     for (const auto &[id, e] : parameters.boundary_conditions.traction)
       check_id(id, "Boundary conditions/Traction");
+  }
 
+  void
+  HarmonicProblem::make_constraints()
+  {
     constraints.clear();
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
     for (const auto &[id, e] : parameters.boundary_conditions.dirichlet)
@@ -158,17 +179,11 @@ namespace FourierSSI
     homogeneous_constraints.copy_from(constraints);
     for (const auto &line : constraints.get_lines())
       homogeneous_constraints.set_inhomogeneity(line.index, 0.);
-    factorization.reset();
+  }
 
-    system_rhs.reinit(dof_handler.n_dofs());
-    solution.reinit(dof_handler.n_dofs());
-    if (distributed)
-      {
-        if (interfaces)
-          interfaces->setup(dof_handler);
-        distributed->setup(dof_handler, constraints, interfaces.get());
-        return;
-      }
+  void
+  HarmonicProblem::make_serial_matrix()
+  {
     DynamicSparsityPattern dsp(dof_handler.n_dofs());
     DoFTools::make_sparsity_pattern(dof_handler,
                                     dsp,
@@ -184,6 +199,9 @@ namespace FourierSSI
 
   namespace
   {
+    /** Squares of the energy density (energy_factor_table()). */
+    constexpr unsigned int energy_squares = 7;
+
     /**
      * matrix = G^T G (G: rows x columns, stored by rows) by BLAS syrk.
      * Stored by rows, G is G^T by columns and matrix's lower triangle is
@@ -250,9 +268,28 @@ namespace FourierSSI
     std::vector<unsigned int> component(dofs_per_cell);
     for (unsigned int i = 0; i < dofs_per_cell; ++i)
       component[i] = fe->system_to_component_index(i).first;
-    Vector<double> force(3);
 
-    // Strains of every shape function at every quadrature point.
+    const std::vector<std::vector<StrainVector>> strain_at =
+      shape_function_strains(fe_values, component);
+    FullMatrix<double> factor_table(energy_squares *
+                                      fe_values.n_quadrature_points,
+                                    dofs_per_cell);
+    energy_factor_table(fe_values, material, strain_at, factor_table);
+    gram_matrix(factor_table, matrix);
+
+    if (rhs)
+      {
+        local_body_force(fe_values, component, *rhs);
+        local_traction(fe_face_values, cell, *rhs);
+      }
+  }
+
+  std::vector<std::vector<StrainVector>>
+  HarmonicProblem::shape_function_strains(
+    const FEValues<2>               &fe_values,
+    const std::vector<unsigned int> &component) const
+  {
+    const unsigned int                     dofs_per_cell = component.size();
     const unsigned int                     n_q = fe_values.n_quadrature_points;
     std::vector<std::vector<StrainVector>> strain_at(
       n_q, std::vector<StrainVector>(dofs_per_cell));
@@ -267,7 +304,16 @@ namespace FourierSSI
     if (parameters.discretization.volumetric == VolumetricStrain::bbar &&
         fe->degree == 2)
       replace_dilatation(fe_values, strain_at);
+    return strain_at;
+  }
 
+  void
+  HarmonicProblem::energy_factor_table(
+    const FEValues<2>                            &fe_values,
+    const ElasticMaterial                        &material,
+    const std::vector<std::vector<StrainVector>> &strain_at,
+    FullMatrix<double>                           &factor_table) const
+  {
     // matrix = sum over q of strain_q^T W D strain_q dV (W: the theta
     // integral of each strain's trig factor, equal on rr, zz, tt, rz). With
     // the bulk modulus K = lambda + 2 mu / 3 > 0 (nu > -1) the energy
@@ -277,8 +323,8 @@ namespace FourierSSI
     // (half the flops of the general product of the 6-row strain and
     // stress tables it replaces; doc/accuracy-vs-time.md, "Where the time
     // goes").
-    constexpr unsigned int squares = 7;
-    FullMatrix<double>     factor_table(squares * n_q, dofs_per_cell);
+    constexpr unsigned int squares       = energy_squares;
+    const unsigned int     dofs_per_cell = factor_table.n();
     for (const unsigned int q : fe_values.quadrature_point_indices())
       {
         const Point<2> &x     = fe_values.quadrature_point(q);
@@ -310,24 +356,29 @@ namespace FourierSSI
             for (unsigned int k = 0; k < squares; ++k)
               factor_table(squares * q + k, i) = scale[k] * part[k];
           }
+      }
+  }
 
-        if (rhs)
+  void
+  HarmonicProblem::local_body_force(const FEValues<2>               &fe_values,
+                                    const std::vector<unsigned int> &component,
+                                    Vector<double>                  &rhs) const
+  {
+    Vector<double> force(3);
+    for (const unsigned int q : fe_values.quadrature_point_indices())
+      {
+        const Point<2> &x  = fe_values.quadrature_point(q);
+        const double    dV = x[0] * fe_values.JxW(q);
+        body_force->vector_value(x, force);
+        for (unsigned int i = 0; i < component.size(); ++i)
           {
-            body_force->vector_value(x, force);
-            for (unsigned int i = 0; i < dofs_per_cell; ++i)
-              {
-                const unsigned int c = component[i];
-                const double       w = c == Component::circumferential ?
-                                         harmonic_operator.weight(StrainIndex::zt) :
-                                         harmonic_operator.weight(StrainIndex::rr);
-                (*rhs)(i) += w * force(c) * fe_values.shape_value(i, q) * dV;
-              }
+            const unsigned int c = component[i];
+            const double       w = c == Component::circumferential ?
+                                     harmonic_operator.weight(StrainIndex::zt) :
+                                     harmonic_operator.weight(StrainIndex::rr);
+            rhs(i) += w * force(c) * fe_values.shape_value(i, q) * dV;
           }
       }
-    gram_matrix(factor_table, matrix);
-
-    if (rhs)
-      local_traction(fe_face_values, cell, *rhs);
   }
 
   void

@@ -2,129 +2,166 @@
 
 namespace FourierSSI
 {
+  namespace
+  {
+    /** Theta samples and the load steps. */
+    void
+    declare_sampling_and_step_entries(ParameterHandler &prm)
+    {
+      prm.declare_entry(
+        "Theta samples",
+        "0",
+        Patterns::Integer(0, LoadPathParameters::most_theta_samples),
+        "Angles N at which the interface law is evaluated. 0: "
+        "4 (n_max + 1), 2 n_max + 1 with a contact interface. Must exceed 2 n_max (n_max the highest "
+        "harmonic), else a band-limited field aliases. At "
+        "most 8192; the memory of the coupled state (N times "
+        "the soil's quadrature points) is checked against the "
+        "free memory before the run.");
+      prm.declare_entry("Load steps",
+                        "10",
+                        Patterns::Integer(1,
+                                          LoadPathParameters::most_load_steps),
+                        "Equal steps from 0 to the full loads (load control) "
+                        "or to the target motion (displacement control). At "
+                        "most 10000.");
+      prm.declare_entry("Held load steps",
+                        "4",
+                        Patterns::Integer(1,
+                                          LoadPathParameters::most_load_steps),
+                        "Equal load-controlled steps from 0 to the held loads "
+                        "(with a Rigid foundation: its Held ... loads, the "
+                        "Body force and the tractions, e.g. self-weight and "
+                        "surcharges), taken before the Load steps, which then "
+                        "start from the held state and scale only the "
+                        "foundation's loads or motion. At most 10000.");
+    }
+
+    /** Load or displacement control and its target. */
+    void
+    declare_control_entries(ParameterHandler &prm)
+    {
+      prm.declare_entry(
+        "Control",
+        "load",
+        Patterns::Selection("load|displacement"),
+        "load: the Rigid foundation loads (H, M, V, T) times step/steps "
+        "(body force and tractions are held, see Held load steps; without a "
+        "Rigid foundation they are the loads scaled). displacement: those "
+        "loads give the direction, their factor is found so that the "
+        "controlled motion reaches Target (past a peak too); after held "
+        "loads, in equal steps from the motion they left.");
+      prm.declare_entry("Controlled motion",
+                        "vertical",
+                        Patterns::Selection(
+                          "vertical|twist|horizontal|rotation"),
+                        "Displacement control: the rigid-foundation motion "
+                        "prescribed (vertical [m], twist about z [rad], "
+                        "horizontal along x [m], rotation about y [rad]).");
+      prm.declare_entry("Target",
+                        "0",
+                        Patterns::Double(),
+                        "Displacement control: final value of the controlled "
+                        "motion [m or rad].");
+    }
+
+    /** Convergence, iteration, acceleration and step cuts. */
+    void
+    declare_iteration_entries(ParameterHandler &prm)
+    {
+      prm.declare_entry("Tolerance",
+                        "1e-10",
+                        Patterns::Double(0.),
+                        "Converged when |out-of-balance force| <= Tolerance "
+                        "times the internal force scale, the larger of "
+                        "|applied load| and |G|, the load of the plastic part "
+                        "(slip, gaps, plastic strain) that the iteration "
+                        "balances (2-norms over all harmonics). With a stiff "
+                        "interface G ~ kn gap dwarfs the load, and a test "
+                        "against the load alone asks for round-off. "
+                        "0 < Tolerance < 1e-2: a larger one accepts steps "
+                        "that have not iterated (the elastic answer).");
+      prm.declare_entry("Maximum iterations",
+                        "2000",
+                        Patterns::Integer(1,
+                                          LoadPathParameters::most_iterations),
+                        "Out-of-balance solves per step before it is cut. At "
+                        "most 100000.");
+      prm.declare_entry("Acceleration",
+                        "aitken",
+                        Patterns::Selection("aitken|anderson|none"),
+                        "aitken: Aitken's Delta^2 relaxation of the "
+                        "out-of-balance load (one previous residual); "
+                        "anderson: Anderson (multisecant) update from the last "
+                        "Anderson depth residuals (fewer iterations, about the "
+                        "same time, a worse worst case: "
+                        "benchmarks/nonlinear-interfaces); none: plain initial "
+                        "stiffness.");
+      prm.declare_entry("Stiffness",
+                        "initial",
+                        Patterns::Selection("initial|tangent"),
+                        "Interface-only scenes: initial = the kept elastic "
+                        "factorizations, accelerated as Acceleration says; "
+                        "tangent = Newton on the interface DoFs with the "
+                        "closed-form consistent tangent of the coulomb return "
+                        "mapping, safeguarded by a line search on the "
+                        "residual norm (2-3 updates at kappa = kn r0 / G up "
+                        "to 1e6 with Theta samples = 2 n_max + 1; with more "
+                        "samples a stiff penalty over-constrains the "
+                        "band-limited gap: tens of updates at 1e4-1e5, no "
+                        "convergence above; one process only; "
+                        "doc/nonlinear-interfaces.md section 5b). Plastic "
+                        "soil takes Soil plasticity/Stiffness.");
+      prm.declare_entry("Anderson depth",
+                        "10",
+                        Patterns::Integer(1, 50),
+                        "Acceleration = anderson: how many previous residuals "
+                        "(m) the update combines.");
+      prm.declare_entry("Maximum step cuts",
+                        "4",
+                        Patterns::Integer(0,
+                                          LoadPathParameters::most_step_cuts),
+                        "Halvings of a step that does not converge before "
+                        "the run stops with an error (plastic soil: of each "
+                        "step, and a cut step size doubles back after two "
+                        "converged steps, twice as many after a doubling "
+                        "that failed; interfaces: over the run). At most 20 "
+                        "(a millionth of the step).");
+    }
+
+    /** Harmonics added by the solution. */
+    void
+    declare_harmonic_growth_entries(ParameterHandler &prm)
+    {
+      prm.declare_entry("Maximum harmonic",
+                        "0",
+                        Patterns::Integer(0,
+                                          LoadPathParameters::largest_harmonic),
+                        "Harmonics chosen by the solution: after each "
+                        "converged step, every harmonic n <= Maximum harmonic "
+                        "not solved yet whose amplitude in the interface "
+                        "traction exceeds Harmonic tolerance times the largest "
+                        "is added (its own factorization) and the step solved "
+                        "again. 0, or not above the highest listed harmonic: "
+                        "only the listed harmonics. At most 1024 (as "
+                        "Discretization/Harmonics); interface runs only.");
+      prm.declare_entry("Harmonic tolerance",
+                        "1e-3",
+                        Patterns::Double(0.),
+                        "Maximum harmonic > highest listed: the relative "
+                        "amplitude of the interface-traction spectrum above "
+                        "which a harmonic is added.");
+    }
+  } // namespace
+
   void
   LoadPathParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Load path");
-    prm.declare_entry(
-      "Theta samples",
-      "0",
-      Patterns::Integer(0, most_theta_samples),
-      "Angles N at which the interface law is evaluated. 0: "
-      "4 (n_max + 1), 2 n_max + 1 with a contact interface. Must exceed 2 n_max (n_max the highest "
-      "harmonic), else a band-limited field aliases. At "
-      "most 8192; the memory of the coupled state (N times "
-      "the soil's quadrature points) is checked against the "
-      "free memory before the run.");
-    prm.declare_entry("Load steps",
-                      "10",
-                      Patterns::Integer(1, most_load_steps),
-                      "Equal steps from 0 to the full loads (load control) "
-                      "or to the target motion (displacement control). At "
-                      "most 10000.");
-    prm.declare_entry("Held load steps",
-                      "4",
-                      Patterns::Integer(1, most_load_steps),
-                      "Equal load-controlled steps from 0 to the held loads "
-                      "(with a Rigid foundation: its Held ... loads, the "
-                      "Body force and the tractions, e.g. self-weight and "
-                      "surcharges), taken before the Load steps, which then "
-                      "start from the held state and scale only the "
-                      "foundation's loads or motion. At most 10000.");
-    prm.declare_entry(
-      "Control",
-      "load",
-      Patterns::Selection("load|displacement"),
-      "load: the Rigid foundation loads (H, M, V, T) times step/steps "
-      "(body force and tractions are held, see Held load steps; without a "
-      "Rigid foundation they are the loads scaled). displacement: those "
-      "loads give the direction, their factor is found so that the "
-      "controlled motion reaches Target (past a peak too); after held "
-      "loads, in equal steps from the motion they left.");
-    prm.declare_entry("Controlled motion",
-                      "vertical",
-                      Patterns::Selection("vertical|twist|horizontal|rotation"),
-                      "Displacement control: the rigid-foundation motion "
-                      "prescribed (vertical [m], twist about z [rad], "
-                      "horizontal along x [m], rotation about y [rad]).");
-    prm.declare_entry("Target",
-                      "0",
-                      Patterns::Double(),
-                      "Displacement control: final value of the controlled "
-                      "motion [m or rad].");
-    prm.declare_entry("Tolerance",
-                      "1e-10",
-                      Patterns::Double(0.),
-                      "Converged when |out-of-balance force| <= Tolerance "
-                      "times the internal force scale, the larger of "
-                      "|applied load| and |G|, the load of the plastic part "
-                      "(slip, gaps, plastic strain) that the iteration "
-                      "balances (2-norms over all harmonics). With a stiff "
-                      "interface G ~ kn gap dwarfs the load, and a test "
-                      "against the load alone asks for round-off. "
-                      "0 < Tolerance < 1e-2: a larger one accepts steps "
-                      "that have not iterated (the elastic answer).");
-    prm.declare_entry("Maximum iterations",
-                      "2000",
-                      Patterns::Integer(1, most_iterations),
-                      "Out-of-balance solves per step before it is cut. At "
-                      "most 100000.");
-    prm.declare_entry("Acceleration",
-                      "aitken",
-                      Patterns::Selection("aitken|anderson|none"),
-                      "aitken: Aitken's Delta^2 relaxation of the "
-                      "out-of-balance load (one previous residual); "
-                      "anderson: Anderson (multisecant) update from the last "
-                      "Anderson depth residuals (fewer iterations, about the "
-                      "same time, a worse worst case: "
-                      "benchmarks/nonlinear-interfaces); none: plain initial "
-                      "stiffness.");
-    prm.declare_entry("Stiffness",
-                      "initial",
-                      Patterns::Selection("initial|tangent"),
-                      "Interface-only scenes: initial = the kept elastic "
-                      "factorizations, accelerated as Acceleration says; "
-                      "tangent = Newton on the interface DoFs with the "
-                      "closed-form consistent tangent of the coulomb return "
-                      "mapping, safeguarded by a line search on the "
-                      "residual norm (2-3 updates at kappa = kn r0 / G up "
-                      "to 1e6 with Theta samples = 2 n_max + 1; with more "
-                      "samples a stiff penalty over-constrains the "
-                      "band-limited gap: tens of updates at 1e4-1e5, no "
-                      "convergence above; one process only; "
-                      "doc/nonlinear-interfaces.md section 5b). Plastic "
-                      "soil takes Soil plasticity/Stiffness.");
-    prm.declare_entry("Anderson depth",
-                      "10",
-                      Patterns::Integer(1, 50),
-                      "Acceleration = anderson: how many previous residuals "
-                      "(m) the update combines.");
-    prm.declare_entry("Maximum step cuts",
-                      "4",
-                      Patterns::Integer(0, most_step_cuts),
-                      "Halvings of a step that does not converge before "
-                      "the run stops with an error (plastic soil: of each "
-                      "step, and a cut step size doubles back after two "
-                      "converged steps, twice as many after a doubling "
-                      "that failed; interfaces: over the run). At most 20 "
-                      "(a millionth of the step).");
-    prm.declare_entry("Maximum harmonic",
-                      "0",
-                      Patterns::Integer(0, largest_harmonic),
-                      "Harmonics chosen by the solution: after each "
-                      "converged step, every harmonic n <= Maximum harmonic "
-                      "not solved yet whose amplitude in the interface "
-                      "traction exceeds Harmonic tolerance times the largest "
-                      "is added (its own factorization) and the step solved "
-                      "again. 0, or not above the highest listed harmonic: "
-                      "only the listed harmonics. At most 1024 (as "
-                      "Discretization/Harmonics); interface runs only.");
-    prm.declare_entry("Harmonic tolerance",
-                      "1e-3",
-                      Patterns::Double(0.),
-                      "Maximum harmonic > highest listed: the relative "
-                      "amplitude of the interface-traction spectrum above "
-                      "which a harmonic is added.");
+    declare_sampling_and_step_entries(prm);
+    declare_control_entries(prm);
+    declare_iteration_entries(prm);
+    declare_harmonic_growth_entries(prm);
     prm.leave_subsection();
   }
 

@@ -385,6 +385,107 @@ namespace FourierSSI
     SoilPlasticityParameters::declare_parameters(prm);
   }
 
+  namespace
+  {
+    /**
+     * The target's element: the linear scenes' design is FE_Q(4) (its
+     * grading pairs with the 10-node interface element; FE_Q(4) does not
+     * lock); a coupled scene (plastic soil, coulomb interfaces) keeps its
+     * own, on its own mesh refined (FE_Q(2) with B-bar for undrained soil,
+     * section 4 of doc/soil-plasticity.md). Then the volumetric strain
+     * that `auto` means for that degree.
+     */
+    void
+    choose_element(AllParameters &parameters)
+    {
+      if (parameters.discretization.target_accuracy > 0. &&
+          !parameters.coupled())
+        {
+          AssertThrow(parameters.discretization.volumetric !=
+                        VolumetricStrain::bbar,
+                      ExcMessage("Discretization/Target accuracy: designs "
+                                 "FE_Q(4) meshes, and Volumetric strain = bbar "
+                                 "needs degree 2 (write auto or standard)"));
+          parameters.discretization.degree = 4;
+        }
+      parameters.mesh.degree = parameters.discretization.degree;
+      if (parameters.discretization.volumetric_automatic)
+        parameters.discretization.volumetric =
+          parameters.discretization.degree == 2 &&
+              largest_poisson_ratio(parameters.materials) >=
+                locking_poisson_ratio ?
+            VolumetricStrain::bbar :
+            VolumetricStrain::standard;
+    }
+
+    /** Interface laws and soil laws that do not go together. */
+    void
+    check_laws(const AllParameters &parameters)
+    {
+      for (const auto &[id, law] : parameters.interfaces.laws)
+        AssertThrow(!law.contact || !parameters.soil_plasticity.any(),
+                    ExcMessage("Interfaces/Interfaces: not yet: contact with "
+                               "Soil plasticity (boundary id " +
+                               std::to_string(id) + "; use coulomb)"));
+      for (const auto &law : parameters.soil_plasticity.laws)
+        AssertThrow(parameters.materials.has(law.first),
+                    ExcMessage("Soil plasticity/Laws: material " +
+                               std::to_string(law.first) +
+                               " is not in Materials/Materials"));
+    }
+
+    /** What Discretization/Target accuracy needs of the scene. */
+    void
+    check_target_accuracy(const AllParameters &parameters)
+    {
+      if (parameters.discretization.target_accuracy > 0.)
+        {
+          AssertThrow(parameters.rigid_foundation.enabled ||
+                        !parameters.boundary_conditions.dirichlet.empty(),
+                      ExcMessage("Discretization/Target accuracy: the scene "
+                                 "has no goal quantity (no rigid foundation, "
+                                 "no supports whose reactions to measure)"));
+          AssertThrow(parameters.adaptivity.strategy ==
+                        RefinementStrategy::global,
+                      ExcMessage("Discretization/Target accuracy: refines by "
+                                 "its own design; leave Adaptivity/Strategy = "
+                                 "global"));
+          // Load control's goal is the work of the loads (plastic soil):
+          // the condensed load vector is the work's only with homogeneous
+          // constraints.
+          const bool load_control =
+            parameters.coupled() &&
+            parameters.load_path.control == LoadPathParameters::Control::load;
+          AssertThrow(!load_control || parameters.soil_plasticity.any(),
+                      ExcMessage("Discretization/Target accuracy: with a "
+                                 "coulomb interface on elastic soil the goal "
+                                 "is the load at the end of the controlled "
+                                 "path, which needs Load path/"
+                                 "Control = displacement"));
+          bool prescribed_motion = !parameters.loads.displacement.empty();
+          for (const auto &[id, e] : parameters.boundary_conditions.dirichlet)
+            prescribed_motion |= !e.is_zero();
+          AssertThrow(!load_control || !prescribed_motion,
+                      ExcMessage("Discretization/Target accuracy: under load "
+                                 "control the goal is the work of the loads, "
+                                 "which needs every prescribed displacement "
+                                 "(Boundary conditions/Dirichlet, Loads/"
+                                 "Prescribed displacement) to be zero"));
+        }
+    }
+
+    /** A boundary is either prescribed as a load or supported, not both. */
+    void
+    check_prescribed_displacements(const AllParameters &parameters)
+    {
+      for (const auto &[id, e] : parameters.loads.displacement)
+        AssertThrow(parameters.boundary_conditions.dirichlet.count(id) == 0,
+                    ExcMessage("Loads/Prescribed displacement: boundary id " +
+                               std::to_string(id) +
+                               " is also in Boundary conditions/Dirichlet"));
+    }
+  } // namespace
+
   void
   AllParameters::parse_parameters(ParameterHandler &prm)
   {
@@ -400,84 +501,21 @@ namespace FourierSSI
     rigid_foundation.parse_parameters(prm);
     adaptivity.parse_parameters(prm);
     loads.parse_parameters(prm);
-    // The target's element: the linear scenes' design is FE_Q(4) (its
-    // grading pairs with the 10-node interface element; FE_Q(4) does not
-    // lock); a coupled scene (plastic soil, coulomb interfaces) keeps its
-    // own, on its own mesh refined (FE_Q(2) with B-bar for undrained soil,
-    // section 4 of doc/soil-plasticity.md).
     soil_plasticity.parse_parameters(prm);
     AssertThrow(!output.soil_reaction_curves() || soil_plasticity.any(),
                 ExcMessage("Output/Soil reaction depths: not yet without "
                            "plastic soil (Soil plasticity/Laws): the curves "
                            "are read from the soil's stress at each step"));
-    if (discretization.target_accuracy > 0. && !coupled())
-      {
-        AssertThrow(discretization.volumetric != VolumetricStrain::bbar,
-                    ExcMessage("Discretization/Target accuracy: designs "
-                               "FE_Q(4) meshes, and Volumetric strain = bbar "
-                               "needs degree 2 (write auto or standard)"));
-        discretization.degree = 4;
-      }
-    mesh.degree = discretization.degree;
-    if (discretization.volumetric_automatic)
-      discretization.volumetric =
-        discretization.degree == 2 &&
-            largest_poisson_ratio(materials) >= locking_poisson_ratio ?
-          VolumetricStrain::bbar :
-          VolumetricStrain::standard;
+    choose_element(*this);
     initial_stress.parse_parameters(prm);
     load_path.parse_parameters(prm);
     // Newton on the interface-only iteration assembles coulomb springs no
     // stiffer than interface_iteration_stiffness G / l (interface_law.h).
     if (load_path.tangent_stiffness && !soil_plasticity.any())
       interfaces.iteration_stiffness_cap = interface_iteration_stiffness;
-    for (const auto &[id, law] : interfaces.laws)
-      AssertThrow(!law.contact || !soil_plasticity.any(),
-                  ExcMessage("Interfaces/Interfaces: not yet: contact with "
-                             "Soil plasticity (boundary id " +
-                             std::to_string(id) + "; use coulomb)"));
-    for (const auto &law : soil_plasticity.laws)
-      AssertThrow(materials.has(law.first),
-                  ExcMessage("Soil plasticity/Laws: material " +
-                             std::to_string(law.first) +
-                             " is not in Materials/Materials"));
-    if (discretization.target_accuracy > 0.)
-      {
-        AssertThrow(rigid_foundation.enabled ||
-                      !boundary_conditions.dirichlet.empty(),
-                    ExcMessage("Discretization/Target accuracy: the scene "
-                               "has no goal quantity (no rigid foundation, "
-                               "no supports whose reactions to measure)"));
-        AssertThrow(adaptivity.strategy == RefinementStrategy::global,
-                    ExcMessage("Discretization/Target accuracy: refines by "
-                               "its own design; leave Adaptivity/Strategy = "
-                               "global"));
-        // Load control's goal is the work of the loads (plastic soil):
-        // the condensed load vector is the work's only with homogeneous
-        // constraints.
-        const bool load_control =
-          coupled() && load_path.control == LoadPathParameters::Control::load;
-        AssertThrow(!load_control || soil_plasticity.any(),
-                    ExcMessage("Discretization/Target accuracy: with a "
-                               "coulomb interface on elastic soil the goal "
-                               "is the load at the end of the controlled "
-                               "path, which needs Load path/"
-                               "Control = displacement"));
-        bool prescribed_motion = !loads.displacement.empty();
-        for (const auto &[id, e] : boundary_conditions.dirichlet)
-          prescribed_motion |= !e.is_zero();
-        AssertThrow(!load_control || !prescribed_motion,
-                    ExcMessage("Discretization/Target accuracy: under load "
-                               "control the goal is the work of the loads, "
-                               "which needs every prescribed displacement "
-                               "(Boundary conditions/Dirichlet, Loads/"
-                               "Prescribed displacement) to be zero"));
-      }
-    for (const auto &[id, e] : loads.displacement)
-      AssertThrow(boundary_conditions.dirichlet.count(id) == 0,
-                  ExcMessage("Loads/Prescribed displacement: boundary id " +
-                             std::to_string(id) +
-                             " is also in Boundary conditions/Dirichlet"));
+    check_laws(*this);
+    check_target_accuracy(*this);
+    check_prescribed_displacements(*this);
     check_problem_is_meaningful(*this);
   }
 

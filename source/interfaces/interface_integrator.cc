@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <deal.II/base/utilities.h>
 #include <fourier_ssi/input/atomic_file.h>
@@ -115,18 +116,22 @@ namespace FourierSSI
       }
   }
 
-  unsigned int
-  InterfaceIntegrator::add_tie_constraints(
-    AffineConstraints<double>               &constraints,
-    const std::set<types::global_dof_index> &keep_free) const
+  namespace
   {
-    unsigned int n_added = 0;
-    std::set<std::pair<types::global_dof_index, types::global_dof_index>> done;
-    // Does the constraint chain of `dof` reach `target`? (A twin may already
-    // follow its partner through another interface, e.g. where two
-    // interfaces cross: tying the partner back would close a cycle.)
-    const auto reaches = [&](types::global_dof_index       dof,
-                             const types::global_dof_index target) {
+    using ConstraintTerms =
+      std::vector<std::pair<types::global_dof_index, double>>;
+    using NodeDoFs = std::array<types::global_dof_index, 3>;
+
+    /**
+     * Does the constraint chain of `dof` reach `target`? (A twin may already
+     * follow its partner through another interface, e.g. where two
+     * interfaces cross: tying the partner back would close a cycle.)
+     */
+    bool
+    chain_reaches(const AffineConstraints<double> &constraints,
+                  types::global_dof_index          dof,
+                  const types::global_dof_index    target)
+    {
       for (unsigned int step = 0; step < 64; ++step)
         {
           if (dof == target)
@@ -139,19 +144,80 @@ namespace FourierSSI
           dof = (*entries)[0].first;
         }
       return false;
-    };
-    // Constrain `slave` = sum of `terms` unless it is already constrained.
-    const auto tie =
-      [&](
-        const types::global_dof_index                                  slave,
-        const std::vector<std::pair<types::global_dof_index, double>> &terms) {
+    }
+
+    /** Writes the ties and counts them. */
+    struct TieWriter
+    {
+      AffineConstraints<double>               &constraints;
+      const std::set<types::global_dof_index> &keep_free;
+      unsigned int                             n_added = 0;
+
+      /** Constrain `slave` = sum of `terms` unless it is already constrained.
+       */
+      bool
+      tie(const types::global_dof_index slave, const ConstraintTerms &terms)
+      {
         if (constraints.is_constrained(slave) || keep_free.count(slave) > 0)
           return false;
         constraints.add_line(slave);
         constraints.add_entries(slave, terms);
         ++n_added;
         return true;
-      };
+      }
+    };
+
+    /** tied: each component of one node of side B equals that of side A. */
+    void
+    tie_all_components(TieWriter &writer, const NodeDoFs &a, const NodeDoFs &b)
+    {
+      const AffineConstraints<double> &constraints = writer.constraints;
+      for (unsigned int c = 0; c < 3; ++c)
+        {
+          if (a[c] == b[c] || chain_reaches(constraints, a[c], b[c]) ||
+              chain_reaches(constraints, b[c], a[c]) ||
+              (constraints.is_constrained(a[c]) &&
+               constraints.is_constrained(b[c])))
+            continue;
+          if (!writer.tie(b[c], {{a[c], 1.}}))
+            writer.tie(a[c], {{b[c], 1.}});
+        }
+    }
+
+    /**
+     * tied-normal: n . (u_B - u_A) = 0 with n = (n_r, n_z): solve for the
+     * component along the larger normal entry.
+     */
+    void
+    tie_normal_component(TieWriter          &writer,
+                         const Tensor<1, 2> &normal,
+                         const NodeDoFs     &a,
+                         const NodeDoFs     &b)
+    {
+      const unsigned int m = std::abs(normal[0]) >= std::abs(normal[1]) ? 0 : 1;
+      const unsigned int o = 1 - m;
+      const double       ratio  = normal[o] / normal[m];
+      ConstraintTerms    from_a = {{a[m], 1.}};
+      ConstraintTerms    from_b = {{b[m], 1.}};
+      if (ratio != 0.)
+        {
+          from_a.push_back({a[o], ratio});
+          from_a.push_back({b[o], -ratio});
+          from_b.push_back({b[o], ratio});
+          from_b.push_back({a[o], -ratio});
+        }
+      if (a[m] != b[m] && !writer.tie(b[m], from_a))
+        writer.tie(a[m], from_b);
+    }
+  } // namespace
+
+  unsigned int
+  InterfaceIntegrator::add_tie_constraints(
+    AffineConstraints<double>               &constraints,
+    const std::set<types::global_dof_index> &keep_free) const
+  {
+    TieWriter writer{constraints, keep_free};
+    std::set<std::pair<types::global_dof_index, types::global_dof_index>> done;
     for (const InterfacePair &pair : pairs)
       {
         const InterfaceLaw &law = parameters.laws.at(pair.boundary_id);
@@ -160,51 +226,22 @@ namespace FourierSSI
         const unsigned int n_nodes = pair.nodes.size();
         for (unsigned int k = 0; k < n_nodes; ++k)
           {
-            const auto a = [&](const unsigned int c) {
-              return pair.dof_indices[3 * k + c];
-            };
-            const auto b = [&](const unsigned int c) {
-              return pair.dof_indices[3 * (n_nodes + k) + c];
-            };
+            NodeDoFs a, b;
+            for (unsigned int c = 0; c < 3; ++c)
+              {
+                a[c] = pair.dof_indices[3 * k + c];
+                b[c] = pair.dof_indices[3 * (n_nodes + k) + c];
+              }
             // Face ends belong to two pairs: tie each node pair once.
-            if (!done.insert({a(0), b(0)}).second)
+            if (!done.insert({a[0], b[0]}).second)
               continue;
             if (law.tied)
-              for (unsigned int c = 0; c < 3; ++c)
-                {
-                  if (a(c) == b(c) || reaches(a(c), b(c)) ||
-                      reaches(b(c), a(c)) ||
-                      (constraints.is_constrained(a(c)) &&
-                       constraints.is_constrained(b(c))))
-                    continue;
-                  if (!tie(b(c), {{a(c), 1.}}))
-                    tie(a(c), {{b(c), 1.}});
-                }
+              tie_all_components(writer, a, b);
             else
-              {
-                // n . (u_B - u_A) = 0 with n = (n_r, n_z): solve for the
-                // component along the larger normal entry.
-                const unsigned int m =
-                  std::abs(pair.normal[0]) >= std::abs(pair.normal[1]) ? 0 : 1;
-                const unsigned int o     = 1 - m;
-                const double       ratio = pair.normal[o] / pair.normal[m];
-                std::vector<std::pair<types::global_dof_index, double>> from_a =
-                  {{a(m), 1.}};
-                std::vector<std::pair<types::global_dof_index, double>> from_b =
-                  {{b(m), 1.}};
-                if (ratio != 0.)
-                  {
-                    from_a.push_back({a(o), ratio});
-                    from_a.push_back({b(o), -ratio});
-                    from_b.push_back({b(o), ratio});
-                    from_b.push_back({a(o), -ratio});
-                  }
-                if (a(m) != b(m) && !tie(b(m), from_a))
-                  tie(a(m), from_b);
-              }
+              tie_normal_component(writer, pair.normal, a, b);
           }
       }
-    return n_added;
+    return writer.n_added;
   }
 
   void

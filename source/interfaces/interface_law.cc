@@ -128,10 +128,185 @@ namespace FourierSSI
     prm.leave_subsection();
   }
 
+  namespace
+  {
+    const std::string interfaces_entry = "Interfaces/Interfaces";
+
+    /** Which parts of a law an item of the list gave. */
+    struct GivenParts
+    {
+      bool preset = false, has_kn = false, has_ks = false, has_mu = false,
+           has_material = false, has_strength = false, has_phi = false;
+      std::set<std::string> keys_given;
+    };
+
+    /** A token without '=': one of the named laws. */
+    void
+    apply_named_law(InterfaceLaw            &law,
+                    GivenParts              &given,
+                    const std::string       &token,
+                    const types::boundary_id id)
+    {
+      const std::string &entry = interfaces_entry;
+      AssertThrow(!given.preset,
+                  ExcMessage(entry + ": two laws for boundary id " +
+                             std::to_string(id)));
+      given.preset = true;
+      if (token == "rough")
+        law.normal = law.shear = 1e10;
+      else if (token == "smooth")
+        law.normal = 1e10, law.shear = 0.;
+      else if (token == "vermeer")
+        law.vermeer = true;
+      else if (token == "tied")
+        law.tied = true;
+      else if (token == "tied-normal")
+        law.tied_normal = true;
+      else if (token == "coulomb")
+        law.coulomb = true;
+      else if (token == "contact")
+        law.contact = true;
+      else
+        AssertThrow(false,
+                    ExcMessage(entry + ": unknown law '" + token +
+                               "' (expected rough, smooth, tied, "
+                               "tied-normal, vermeer, coulomb, "
+                               "contact or kn=..., ks=...)"));
+    }
+
+    /** A token 'key=value' of item. */
+    void
+    apply_key_value(InterfaceLaw      &law,
+                    GivenParts        &given,
+                    const std::string &token,
+                    const std::string &item)
+    {
+      const std::string &entry = interfaces_entry;
+      const auto         eq    = token.find('=');
+      const std::string  key   = Utilities::trim(token.substr(0, eq));
+      record_key_once(given.keys_given, key, entry, item);
+      if (key == "sigma_t" && Utilities::trim(token.substr(eq + 1)) == "none")
+        {
+          law.tension_cutoff = std::numeric_limits<double>::infinity();
+          given.has_strength = true;
+          return;
+        }
+      if ((key == "kn" || key == "ks") &&
+          Utilities::trim(token.substr(eq + 1)) == "auto")
+        {
+          // automatic_interface_stiffness G / l, per face.
+          (key == "kn" ? law.automatic_normal : law.automatic_shear) = true;
+          (key == "kn" ? given.has_kn : given.has_ks)                = true;
+          return;
+        }
+      const double value = number_in_entry(token.substr(eq + 1), entry);
+      AssertThrow(value >= 0.,
+                  ExcMessage(entry + ": " + key + " must be >= 0 in '" + item +
+                             "'"));
+      if (key == "kn")
+        law.normal = value, given.has_kn = true;
+      else if (key == "ks")
+        law.shear = value, given.has_ks = true;
+      else if (key == "mu")
+        law.mu = value, given.has_mu = true;
+      else if (key == "material")
+        law.material = static_cast<int>(value), given.has_material = true;
+      else if (key == "c")
+        law.cohesion = value, given.has_strength = true;
+      else if (key == "phi")
+        law.friction_angle = value, given.has_strength = given.has_phi = true;
+      else if (key == "psi")
+        law.dilation_angle = value, given.has_strength = true;
+      else if (key == "sigma_t")
+        law.tension_cutoff = value, given.has_strength = true;
+      else
+        AssertThrow(false,
+                    ExcMessage(entry + ": unknown key '" + key +
+                               "' (expected kn, ks, mu, material, c, "
+                               "phi, psi or sigma_t)"));
+    }
+
+    /** Each law takes its own parts and no others. */
+    void
+    check_law_parts(const InterfaceLaw      &law,
+                    const GivenParts        &given,
+                    const types::boundary_id id)
+    {
+      const std::string &entry = interfaces_entry;
+      const std::string  where = " for boundary id " + std::to_string(id);
+      AssertThrow(law.is_nonlinear() || !given.has_strength,
+                  ExcMessage(entry +
+                             ": c, phi, psi and sigma_t belong to the "
+                             "coulomb and contact laws" +
+                             where));
+      AssertThrow(law.is_nonlinear() ||
+                    !(law.automatic_normal || law.automatic_shear),
+                  ExcMessage(entry +
+                             ": kn=auto, ks=auto belong to the "
+                             "coulomb law" +
+                             where));
+      if (law.contact)
+        check_contact(
+          law, given.has_kn || given.has_ks, given.keys_given, entry, where);
+      else if (law.coulomb)
+        {
+          AssertThrow(!given.has_mu && !given.has_material,
+                      ExcMessage(entry +
+                                 ": mu and material belong to the vermeer "
+                                 "law, not to coulomb (give kn and ks)" +
+                                 where));
+          check_coulomb(law,
+                        given.has_kn && given.has_ks && given.has_phi,
+                        entry + ":",
+                        where);
+        }
+      else if (law.vermeer)
+        {
+          AssertThrow(
+            given.has_mu && law.mu > 0. && !given.has_kn && !given.has_ks,
+            ExcMessage(entry + ": vermeer needs mu > 0 and no kn/ks" + where));
+        }
+      else if (given.preset)
+        {
+          AssertThrow(!given.has_kn && !given.has_ks && !given.has_mu &&
+                        !given.has_material,
+                      ExcMessage(entry + ": a preset takes no kn/ks/mu" +
+                                 where));
+        }
+      else
+        {
+          AssertThrow(given.has_kn && given.has_ks && !given.has_mu &&
+                        !given.has_material,
+                      ExcMessage(entry +
+                                 ": give both kn and ks (or rough, "
+                                 "smooth, vermeer)" +
+                                 where));
+        }
+    }
+
+    /** The law of one item 'id: token, token, ...' (tokens after colon). */
+    InterfaceLaw
+    parse_law(const std::string       &item,
+              const std::size_t        colon,
+              const types::boundary_id id)
+    {
+      InterfaceLaw law;
+      GivenParts   given;
+      for (const std::string &token :
+           Utilities::split_string_list(item.substr(colon + 1), ','))
+        if (token.find('=') == std::string::npos)
+          apply_named_law(law, given, token, id);
+        else
+          apply_key_value(law, given, token, item);
+      check_law_parts(law, given, id);
+      return law;
+    }
+  } // namespace
+
   std::map<types::boundary_id, InterfaceLaw>
   InterfaceParameters::parse_list(const std::string &text)
   {
-    const std::string                          entry = "Interfaces/Interfaces";
+    const std::string                         &entry = interfaces_entry;
     std::map<types::boundary_id, InterfaceLaw> result;
     for (const std::string &item : Utilities::split_string_list(text, ';'))
       {
@@ -143,131 +318,7 @@ namespace FourierSSI
         AssertThrow(result.count(id) == 0,
                     ExcMessage(entry + ": boundary id " + std::to_string(id) +
                                " given twice"));
-        InterfaceLaw law;
-        bool preset = false, has_kn = false, has_ks = false, has_mu = false,
-             has_material = false, has_strength = false, has_phi = false;
-        std::set<std::string> keys_given;
-        for (const std::string &token :
-             Utilities::split_string_list(item.substr(colon + 1), ','))
-          {
-            const auto eq = token.find('=');
-            if (eq == std::string::npos)
-              {
-                AssertThrow(!preset,
-                            ExcMessage(entry + ": two laws for boundary id " +
-                                       std::to_string(id)));
-                preset = true;
-                if (token == "rough")
-                  law.normal = law.shear = 1e10;
-                else if (token == "smooth")
-                  law.normal = 1e10, law.shear = 0.;
-                else if (token == "vermeer")
-                  law.vermeer = true;
-                else if (token == "tied")
-                  law.tied = true;
-                else if (token == "tied-normal")
-                  law.tied_normal = true;
-                else if (token == "coulomb")
-                  law.coulomb = true;
-                else if (token == "contact")
-                  law.contact = true;
-                else
-                  AssertThrow(false,
-                              ExcMessage(entry + ": unknown law '" + token +
-                                         "' (expected rough, smooth, tied, "
-                                         "tied-normal, vermeer, coulomb, "
-                                         "contact or kn=..., ks=...)"));
-                continue;
-              }
-            const std::string key = Utilities::trim(token.substr(0, eq));
-            record_key_once(keys_given, key, entry, item);
-            if (key == "sigma_t" &&
-                Utilities::trim(token.substr(eq + 1)) == "none")
-              {
-                law.tension_cutoff = std::numeric_limits<double>::infinity();
-                has_strength       = true;
-                continue;
-              }
-            if ((key == "kn" || key == "ks") &&
-                Utilities::trim(token.substr(eq + 1)) == "auto")
-              {
-                // automatic_interface_stiffness G / l, per face.
-                (key == "kn" ? law.automatic_normal : law.automatic_shear) =
-                  true;
-                (key == "kn" ? has_kn : has_ks) = true;
-                continue;
-              }
-            const double value = number_in_entry(token.substr(eq + 1), entry);
-            AssertThrow(value >= 0.,
-                        ExcMessage(entry + ": " + key + " must be >= 0 in '" +
-                                   item + "'"));
-            if (key == "kn")
-              law.normal = value, has_kn = true;
-            else if (key == "ks")
-              law.shear = value, has_ks = true;
-            else if (key == "mu")
-              law.mu = value, has_mu = true;
-            else if (key == "material")
-              law.material = static_cast<int>(value), has_material = true;
-            else if (key == "c")
-              law.cohesion = value, has_strength = true;
-            else if (key == "phi")
-              law.friction_angle = value, has_strength = has_phi = true;
-            else if (key == "psi")
-              law.dilation_angle = value, has_strength = true;
-            else if (key == "sigma_t")
-              law.tension_cutoff = value, has_strength = true;
-            else
-              AssertThrow(false,
-                          ExcMessage(entry + ": unknown key '" + key +
-                                     "' (expected kn, ks, mu, material, c, "
-                                     "phi, psi or sigma_t)"));
-          }
-        const std::string where = " for boundary id " + std::to_string(id);
-        AssertThrow(law.is_nonlinear() || !has_strength,
-                    ExcMessage(entry +
-                               ": c, phi, psi and sigma_t belong to the "
-                               "coulomb and contact laws" +
-                               where));
-        AssertThrow(law.is_nonlinear() ||
-                      !(law.automatic_normal || law.automatic_shear),
-                    ExcMessage(entry +
-                               ": kn=auto, ks=auto belong to the "
-                               "coulomb law" +
-                               where));
-        if (law.contact)
-          check_contact(law, has_kn || has_ks, keys_given, entry, where);
-        else if (law.coulomb)
-          {
-            AssertThrow(!has_mu && !has_material,
-                        ExcMessage(entry +
-                                   ": mu and material belong to the vermeer "
-                                   "law, not to coulomb (give kn and ks)" +
-                                   where));
-            check_coulomb(law, has_kn && has_ks && has_phi, entry + ":", where);
-          }
-        else if (law.vermeer)
-          {
-            AssertThrow(has_mu && law.mu > 0. && !has_kn && !has_ks,
-                        ExcMessage(entry +
-                                   ": vermeer needs mu > 0 and no kn/ks" +
-                                   where));
-          }
-        else if (preset)
-          {
-            AssertThrow(!has_kn && !has_ks && !has_mu && !has_material,
-                        ExcMessage(entry + ": a preset takes no kn/ks/mu" +
-                                   where));
-          }
-        else
-          {
-            AssertThrow(has_kn && has_ks && !has_mu && !has_material,
-                        ExcMessage(entry +
-                                   ": give both kn and ks (or rough, "
-                                   "smooth, vermeer)" +
-                                   where));
-          }
-        result[id] = law;
+        result[id] = parse_law(item, colon, id);
       }
     return result;
   }

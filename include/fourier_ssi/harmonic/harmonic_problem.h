@@ -22,11 +22,11 @@
 #include <fourier_ssi/fourier/harmonic_operator.h>
 #include <fourier_ssi/fourier/load_decomposition.h>
 #include <fourier_ssi/harmonic/assembly_loop.h>
+#include <fourier_ssi/harmonic/distributed_linear_system.h>
 #include <fourier_ssi/harmonic/rigid_foundation.h>
 #include <fourier_ssi/harmonic/stress_postprocessor.h>
 #include <fourier_ssi/input/parameters.h>
 #include <fourier_ssi/interfaces/interface_integrator.h>
-#include <fourier_ssi/linear_algebra/distributed_linear_system.h>
 #include <fourier_ssi/linear_algebra/linear_solver.h>
 #include <fourier_ssi/linear_algebra/sparse_direct.h>
 #include <map>
@@ -354,6 +354,43 @@ namespace FourierSSI
     /** A local_matrix() with scratch objects of its own (assembly_loop.h). */
     LocalMatrixFactory
     local_matrix_factory() const;
+
+    /** Strains of every shape function at every quadrature point. */
+    std::vector<std::vector<StrainVector>>
+    shape_function_strains(const FEValues<2>               &fe_values,
+                           const std::vector<unsigned int> &component) const;
+
+    /**
+     * The (7 n_q) x dofs table G of the square roots of the energy density's
+     * squares, so that the local stiffness is G^T G.
+     */
+    void
+    energy_factor_table(const FEValues<2>                            &fe_values,
+                        const ElasticMaterial                        &material,
+                        const std::vector<std::vector<StrainVector>> &strain_at,
+                        FullMatrix<double> &factor_table) const;
+
+    /** Add the body force of one cell to its local load. */
+    void
+    local_body_force(const FEValues<2>               &fe_values,
+                     const std::vector<unsigned int> &component,
+                     Vector<double>                  &rhs) const;
+
+    /** Every boundary id named in the .prm must exist on the mesh. */
+    void
+    check_boundary_ids() const;
+
+    /**
+     * Hanging nodes, Dirichlet and prescribed motions, the rigid foundation,
+     * interface ties, axis and held-motion constraints, closed; and their
+     * homogeneous copy.
+     */
+    void
+    make_constraints();
+
+    /** The sparsity pattern and matrix of the serial system. */
+    void
+    make_serial_matrix();
 
     /** Threads of the cell loop (assembly_loop.h), not of the results. */
     unsigned int assembly_threads = 1;

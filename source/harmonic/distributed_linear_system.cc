@@ -7,20 +7,10 @@
 #include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/sparsity_tools.h>
 #include <fourier_ssi/harmonic/assembly_loop.h>
-#include <fourier_ssi/linear_algebra/distributed_linear_system.h>
+#include <fourier_ssi/harmonic/distributed_linear_system.h>
 
 namespace FourierSSI
 {
-  bool
-  uses_distributed_solve(const LinearSolver &solver,
-                         const MPI_Comm      communicator)
-  {
-    // (Library users and unit tests may not have initialized MPI.)
-    return Utilities::MPI::job_supports_mpi() &&
-           (Utilities::MPI::n_mpi_processes(communicator) > 1 ||
-            solver.distributed_always);
-  }
-
   DistributedLinearSystem::DistributedLinearSystem(
     const MPI_Comm      communicator,
     const LinearSolver &solver_parameters)
@@ -148,65 +138,9 @@ namespace FourierSSI
     x_owned.compress(VectorOperation::insert);
 
     if (parameters.is_direct())
-      {
-        if (!direct)
-          {
-            // MUMPS through Amesos: a distributed multifrontal factorization,
-            // reused for the unit-H and unit-M cases.
-            direct = std::make_unique<TrilinosWrappers::SolverDirect>(
-              direct_control,
-              TrilinosWrappers::SolverDirect::AdditionalData(false,
-                                                             "Amesos_Mumps"));
-            try
-              {
-                direct->initialize(matrix);
-              }
-            catch (const std::exception &)
-              {
-                AssertThrow(false,
-                            ExcMessage(
-                              "Linear solver: MUMPS could not factorize the "
-                              "matrix (singular system: is the body free to "
-                              "move? check the supports)"));
-              }
-          }
-        direct->solve(x_owned, b_owned);
-      }
+      solve_direct(x_owned, b_owned);
     else
-      {
-        if (!amg)
-          {
-            // The serial cg-amg settings (linear_solver.cc): ML with a
-            // constant per component as near-null space (global-size masks;
-            // deal.II picks the owned entries).
-            TrilinosWrappers::PreconditionAMG::AdditionalData data;
-            data.elliptic              = true;
-            data.higher_order_elements = dof_handler->get_fe().degree > 1;
-            data.smoother_sweeps       = 2;
-            data.aggregation_threshold = 0.02;
-            std::vector<std::vector<bool>> constant_modes;
-            DoFTools::extract_constant_modes(*dof_handler,
-                                             ComponentMask(3, true),
-                                             constant_modes);
-            data.constant_modes = constant_modes;
-            amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
-            amg->initialize(matrix, data);
-          }
-        SolverControl control(parameters.max_iterations,
-                              parameters.tolerance * b_owned.l2_norm());
-        // deal.II's CG, as in the serial path: AztecOO's CG stops with "loss
-        // of precision" on the stiff-interface systems (kn = 1e10).
-        SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-        try
-          {
-            cg.solve(matrix, x_owned, b_owned, *amg);
-          }
-        catch (const SolverControl::NoConvergence &e)
-          {
-            LinearSolver::fail_to_converge(e);
-          }
-        report.iterations = control.last_step();
-      }
+      report.iterations = solve_cg_amg(x_owned, b_owned);
 
     TrilinosWrappers::MPI::Vector residual(owned_dofs, communicator);
     matrix.vmult(residual, x_owned);
@@ -223,5 +157,71 @@ namespace FourierSSI
                         communicator,
                         make_array_view(x));
     return report;
+  }
+
+  void
+  DistributedLinearSystem::solve_direct(TrilinosWrappers::MPI::Vector       &x,
+                                        const TrilinosWrappers::MPI::Vector &b)
+  {
+    if (!direct)
+      {
+        // MUMPS through Amesos: a distributed multifrontal factorization,
+        // reused for the unit-H and unit-M cases.
+        direct = std::make_unique<TrilinosWrappers::SolverDirect>(
+          direct_control,
+          TrilinosWrappers::SolverDirect::AdditionalData(false,
+                                                         "Amesos_Mumps"));
+        try
+          {
+            direct->initialize(matrix);
+          }
+        catch (const std::exception &)
+          {
+            AssertThrow(false,
+                        ExcMessage(
+                          "Linear solver: MUMPS could not factorize the "
+                          "matrix (singular system: is the body free to "
+                          "move? check the supports)"));
+          }
+      }
+    direct->solve(x, b);
+  }
+
+  unsigned int
+  DistributedLinearSystem::solve_cg_amg(TrilinosWrappers::MPI::Vector       &x,
+                                        const TrilinosWrappers::MPI::Vector &b)
+  {
+    if (!amg)
+      {
+        // The serial cg-amg settings (linear_solver.cc): ML with a
+        // constant per component as near-null space (global-size masks;
+        // deal.II picks the owned entries).
+        TrilinosWrappers::PreconditionAMG::AdditionalData data;
+        data.elliptic              = true;
+        data.higher_order_elements = dof_handler->get_fe().degree > 1;
+        data.smoother_sweeps       = 2;
+        data.aggregation_threshold = 0.02;
+        std::vector<std::vector<bool>> constant_modes;
+        DoFTools::extract_constant_modes(*dof_handler,
+                                         ComponentMask(3, true),
+                                         constant_modes);
+        data.constant_modes = constant_modes;
+        amg = std::make_unique<TrilinosWrappers::PreconditionAMG>();
+        amg->initialize(matrix, data);
+      }
+    SolverControl control(parameters.max_iterations,
+                          parameters.tolerance * b.l2_norm());
+    // deal.II's CG, as in the serial path: AztecOO's CG stops with "loss
+    // of precision" on the stiff-interface systems (kn = 1e10).
+    SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+    try
+      {
+        cg.solve(matrix, x, b, *amg);
+      }
+    catch (const SolverControl::NoConvergence &e)
+      {
+        LinearSolver::fail_to_converge(e);
+      }
+    return control.last_step();
   }
 } // namespace FourierSSI

@@ -20,7 +20,10 @@
  *   - the solution is brought back as a replicated Vector<double>, so the
  *     postprocessing (reactions, foundation motion, K_H/K_M/K_MH, errors,
  *     Kelly) runs unchanged on every rank.
- * doc/scaling.md says why, and where this stops scaling.
+ * doc/scaling.md says why, and where this stops scaling. It sits in
+ * harmonic/ because it assembles a harmonic (assembly_loop.h) and pairs
+ * interfaces; whether a run takes it is
+ * linear_algebra/distributed_solve.h's uses_distributed_solve().
  */
 #ifndef fourier_ssi_distributed_linear_system_h
 #define fourier_ssi_distributed_linear_system_h
@@ -38,6 +41,7 @@
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/harmonic/assembly_loop.h>
 #include <fourier_ssi/interfaces/interface_integrator.h>
+#include <fourier_ssi/linear_algebra/distributed_solve.h>
 #include <fourier_ssi/linear_algebra/linear_solver.h>
 #include <functional>
 #include <memory>
@@ -47,15 +51,6 @@
 namespace FourierSSI
 {
   using namespace dealii;
-
-  /**
-   * The one predicate for "is a harmonic's linear system distributed
-   * (Trilinos)": more than one rank, or `Distributed = always` under MPI.
-   * The solves, the thread count and the output all ask it.
-   */
-  bool
-  uses_distributed_solve(const LinearSolver &solver,
-                         const MPI_Comm      communicator);
 
   class DistributedLinearSystem
   {
@@ -117,6 +112,16 @@ namespace FourierSSI
     }
 
   private:
+    /** MUMPS through Amesos; the factorization is kept for later solves. */
+    void
+    solve_direct(TrilinosWrappers::MPI::Vector       &x,
+                 const TrilinosWrappers::MPI::Vector &b);
+
+    /** CG + ML AMG (hierarchy kept); returns the iteration count. */
+    unsigned int
+    solve_cg_amg(TrilinosWrappers::MPI::Vector       &x,
+                 const TrilinosWrappers::MPI::Vector &b);
+
     const MPI_Comm                                     communicator;
     const LinearSolver                                &parameters;
     const unsigned int                                 rank;
