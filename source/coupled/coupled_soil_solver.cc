@@ -4,6 +4,7 @@
 #include <deal.II/fe/fe_values.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/coupled_soil_solver.h>
+#include <fourier_ssi/coupled/load_path.h>
 #include <fourier_ssi/fourier/harmonic_pair_integral.h>
 #include <fourier_ssi/harmonic/stress_postprocessor.h>
 #include <fourier_ssi/linear_algebra/thread_ranges.h>
@@ -260,7 +261,7 @@ namespace FourierSSI
             norm_sqr[h] = b[h][0].norm_sqr();
           }
       }
-    pattern_load_norm = std::sqrt(sum_over_harmonics(norm_sqr, 1)[0]);
+    pattern_load_norm = std::sqrt(sum_over_harmonics(set, norm_sqr, 1)[0]);
     set.solve_increments(b);
     for (unsigned int h = 0; h < set.size(); ++h)
       pattern_solution.push_back(
@@ -288,7 +289,7 @@ namespace FourierSSI
         products[2 * h + 1] = held * pattern_load[h];
         b[h]                = {std::move(held)};
       }
-    const std::vector<double> sums = sum_over_harmonics(products, 2);
+    const std::vector<double> sums = sum_over_harmonics(set, products, 2);
     held_load_norm                 = std::sqrt(sums[0]);
     pattern_held_dot               = sums[1];
     // No held loads (the same answer on every rank): no held stage.
@@ -384,18 +385,6 @@ namespace FourierSSI
     result.n_plastic = static_cast<unsigned int>(counts[1]);
     result.largest_yield_value =
       Utilities::MPI::max(result.largest_yield_value, set.get_ranks());
-  }
-
-  std::vector<double>
-  CoupledSoilSolver::sum_over_harmonics(std::vector<double> values,
-                                        const unsigned int  n) const
-  {
-    set.sum_over_ranks(values);
-    std::vector<double> sum(n, 0.);
-    for (unsigned int h = 0; h < values.size() / n; ++h)
-      for (unsigned int c = 0; c < n; ++c)
-        sum[c] += values[h * n + c];
-    return sum;
   }
 
   std::vector<StrainVector>
@@ -1158,27 +1147,9 @@ namespace FourierSSI
   RigidMotion
   CoupledSoilSolver::motion_of(const StepState &state) const
   {
-    // Per harmonic [h * 4 + c], on its owner; summed in the harmonics' order.
-    std::vector<double> parts(4 * set.size(), 0.);
-    for (unsigned int h = 0; h < set.size(); ++h)
-      {
-        const RigidFoundation *foundation = set.problem(h).get_foundation();
-        if (!set.owns(h) || foundation == nullptr || harmonics[h].n > 1 ||
-            (harmonics[h].n == 1 && harmonics[h].family != Family::symmetric))
-          continue;
-        const RigidMotion m = foundation->motion(total_displacement(state, h));
-        parts[4 * h]        = m.vertical_displacement;
-        parts[4 * h + 1]    = m.twist;
-        parts[4 * h + 2]    = m.horizontal_displacement;
-        parts[4 * h + 3]    = m.rotation;
-      }
-    const std::vector<double> sum = sum_over_harmonics(parts, 4);
-    RigidMotion               total;
-    total.vertical_displacement   = sum[0];
-    total.twist                   = sum[1];
-    total.horizontal_displacement = sum[2];
-    total.rotation                = sum[3];
-    return total;
+    return rigid_motion_of(set, [&](const unsigned int h) {
+      return total_displacement(state, h);
+    });
   }
 
   std::vector<std::pair<FoundationMotion, double>>
@@ -1247,7 +1218,7 @@ namespace FourierSSI
             load.add(committed.held_fraction, held_load(h));
           parts[h] = load * total_displacement(committed, h);
         }
-    return sum_over_harmonics(parts, 1)[0];
+    return sum_over_harmonics(set, parts, 1)[0];
   }
 
   Vector<double>
@@ -1282,16 +1253,7 @@ namespace FourierSSI
           log << ' ' << name_of(m);
         log << '\n';
       }
-    if (!held_solution.empty())
-      {
-        log << "held loads first (" << settings.held_load_steps
-            << " load-controlled steps), then held: body force, tractions; "
-               "foundation ";
-        write_held_loads(log);
-        log << '\n';
-        run_stage(true, settings.held_load_steps, log);
-      }
-    run_stage(false, settings.load_steps, log);
+    LoadPath(settings, entry, *this).run(log);
     if (set.n_owning_ranks() > 1)
       log << "  MPI: " << set.n_rank_sums()
           << " sums over the ranks (strain amplitudes and theta integrals "
@@ -1327,95 +1289,57 @@ namespace FourierSSI
   }
 
   void
-  CoupledSoilSolver::run_stage(const bool         holding,
-                               const unsigned int n_steps,
-                               std::ostream      &log)
+  CoupledSoilSolver::start_trial(const double ratio)
   {
-    const bool load_control =
-      settings.control == LoadPathParameters::Control::load;
-    // Displacement control moves from where the held loads left the
-    // controlled motion to Target.
-    const double start =
-      holding || load_control ?
-        0. :
-        controlled_component(motion_of(committed), settings.motion);
-    const double step = 1. / n_steps;
-    double       done = 0., increment = step;
-    // Cuts of the step being solved; converged steps at a cut size since
-    // the last change of size: `needed` of them double it back toward
-    // `step` (a cut at a sharp change of plastic state need not slow the
-    // rest of the path). A doubled size that fails at once doubles `needed`:
-    // on a plateau where only the cut size converges, the failed attempts
-    // then become rarer instead of recurring every other step
-    // (doc/soil-plasticity.md 3b).
-    unsigned int cuts = 0, easy_steps = 0, needed = 2;
-    // The state before the last converged step of this stage and that
-    // step's size: the next step starts from the last correction
-    // extrapolated (secant predictor).
-    StepState before_last;
-    double    last_increment = 0.;
-    bool      just_grown     = false;
-    while (done < 1. - 1e-12)
-      {
-        const double fraction = std::min(1., done + increment);
-        const double target   = holding || load_control ?
-                                  fraction :
-                                  start + fraction * (settings.target - start);
-        StepState    state    = committed;
-        if (last_increment > 0.)
-          extrapolate(before_last, increment / last_increment, state);
-        SoilStepResult result;
-        const auto     clock = std::chrono::steady_clock::now();
-        if (!solve_step(target, holding, state, result))
-          {
-            AssertThrow(
-              ++cuts <= settings.maximum_step_cuts,
-              ExcMessage(unconverged_step_message(
-                entry, done, n_steps, holding, steps.size(), settings)));
-            increment /= 2.;
-            easy_steps = 0;
-            if (just_grown)
-              needed *= 2;
-            just_grown = false;
-            log << "  step cut to " << increment << " of the "
-                << (holding ? "held loads" : "loading") << '\n';
-            continue;
-          }
-        before_last    = std::move(committed);
-        last_increment = fraction - done;
-        committed      = state;
-        done           = fraction;
-        cuts           = 0;
-        if (just_grown) // the doubled size converged: back to the default
-          needed = 2;
-        just_grown = false;
-        if (increment < step && ++easy_steps == needed)
-          {
-            increment  = std::min(step, 2. * increment);
-            easy_steps = 0;
-            just_grown = true;
-          }
-        result.load_factor    = state.load_factor;
-        result.held_fraction  = state.held_fraction;
-        result.motion         = motion_of(state);
-        result.held_reactions = held_reactions(state);
-        result.time           = std::chrono::duration<double>(
-                        std::chrono::steady_clock::now() - clock)
-                        .count();
-        steps.push_back(result);
-        if (step_observer)
-          step_observer(result);
-        log << "  step " << steps.size()
-            << (holding ? " (held loads): " : ": ");
-        write_foundation_state(log, result);
-        log << "; " << result.iterations << " iterations; plastic samples "
-            << result.n_plastic << " of " << result.n_plastic + result.n_elastic
-            << "; max f " << result.largest_yield_value << " kPa; ";
-        if (interface)
-          log << "interface stick/slip/open " << result.contact[0] << '/'
-              << result.contact[1] << '/' << result.contact[2] << "; ";
-        log << result.time << " s" << std::endl;
-      }
+    trial = committed;
+    if (ratio > 0.)
+      extrapolate(before_last, ratio, trial);
+  }
+
+  bool
+  CoupledSoilSolver::solve_trial(const double target, const bool holding)
+  {
+    trial_result = SoilStepResult();
+    return solve_step(target, holding, trial, trial_result);
+  }
+
+  RigidMotion
+  CoupledSoilSolver::trial_motion() const
+  {
+    return motion_of(trial);
+  }
+
+  RigidMotion
+  CoupledSoilSolver::committed_motion() const
+  {
+    return motion_of(committed);
+  }
+
+  void
+  CoupledSoilSolver::commit_trial(const LoadStep &step,
+                                  const bool      holding,
+                                  std::ostream   &log)
+  {
+    before_last            = std::move(committed);
+    committed              = trial;
+    SoilStepResult &result = trial_result;
+    result.load_factor     = committed.load_factor;
+    result.held_fraction   = committed.held_fraction;
+    result.motion          = step.motion;
+    result.held_reactions  = held_reactions(committed);
+    result.time            = step.time;
+    steps.push_back(result);
+    if (step_observer)
+      step_observer(result);
+    log << "  step " << steps.size() << (holding ? " (held loads): " : ": ");
+    write_foundation_state(log, result);
+    log << "; " << result.iterations << " iterations; plastic samples "
+        << result.n_plastic << " of " << result.n_plastic + result.n_elastic
+        << "; max f " << result.largest_yield_value << " kPa; ";
+    if (interface)
+      log << "interface stick/slip/open " << result.contact[0] << '/'
+          << result.contact[1] << '/' << result.contact[2] << "; ";
+    log << result.time << " s" << std::endl;
   }
 
   void

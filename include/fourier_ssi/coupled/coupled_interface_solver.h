@@ -53,6 +53,7 @@
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/initial_stress.h>
+#include <fourier_ssi/coupled/load_path.h>
 #include <fourier_ssi/fourier/theta_sampling.h>
 #include <fourier_ssi/harmonic/harmonic_set.h>
 #include <fourier_ssi/input/load_path_parameters.h>
@@ -69,22 +70,9 @@ namespace FourierSSI
 {
   using namespace dealii;
 
-  /** One converged load step. */
-  struct LoadStepResult
+  /** One converged load step of the interfaces. */
+  struct LoadStepResult : LoadStep
   {
-    /** Factor on the scaled loads (load_factor_pattern). */
-    double load_factor = 0.;
-    /**
-     * Fraction of the held loads (held_stage_load: Rigid foundation/Held
-     * ..., body force, tractions) applied: rises to 1 in the held stage,
-     * then stays 1 while the load factor scales the foundation's loads.
-     */
-    double held_fraction = 0.;
-    /** Rigid motion of the foundation (RigidMotion fields). */
-    RigidMotion motion;
-    /** Out-of-balance solves of this step (0: elastic). */
-    unsigned int iterations = 0;
-    double       residual   = 0.;
     /** Interface (point, theta) samples sticking, slipping, open. */
     std::array<unsigned int, 3> states = {{0, 0, 0}};
     /**
@@ -95,13 +83,11 @@ namespace FourierSSI
     std::array<double, 6> resultant = {{0., 0., 0., 0., 0., 0.}};
     /** Uzawa updates of the contact multipliers (0: no contact). */
     unsigned int multiplier_updates = 0;
-    /** Wall time of the step [s]. */
-    double time = 0.;
     /** Harmonics solved in this step (grows with Maximum harmonic). */
     unsigned int n_harmonics = 0;
   };
 
-  class CoupledInterfaceSolver
+  class CoupledInterfaceSolver : private LoadPath::Iteration
   {
   public:
     /**
@@ -253,13 +239,33 @@ namespace FourierSSI
     void
     solve_held_loads();
 
-    /**
-     * One stage of the load path in `steps` equal steps from the committed
-     * state: the held loads brought on by load control (holding), or the
-     * foundation's loads scaled by the load or displacement control.
-     */
+    /** LoadPath::Iteration: the trial step and its commit (load_path.h). */
     void
-    run_stage(const bool holding, const unsigned int steps, std::ostream &log);
+    start_trial(const double ratio) override;
+    bool
+    solve_trial(const double target, const bool holding) override;
+    RigidMotion
+    trial_motion() const override;
+    bool
+    grows(std::ostream &log) override;
+    void
+    commit_trial(const LoadStep &step,
+                 const bool      holding,
+                 std::ostream   &log) override;
+    RigidMotion
+    committed_motion() const override;
+    unsigned int
+    n_converged_steps() const override
+    {
+      return steps.size();
+    }
+    bool
+    holds_loads() const override
+    {
+      return !held_solution.empty();
+    }
+    void
+    write_held_loads(std::ostream &log) const override;
 
     /** Displacement control in the stage being solved (not the held one). */
     bool
@@ -412,6 +418,7 @@ namespace FourierSSI
     std::array<double, 6>
     foundation_resultant(const std::vector<LocalVector> &traction) const;
 
+    /** The rigid motion of a state (rigid_motion_of). */
     RigidMotion
     motion_of(const StepState &state) const;
 
@@ -452,10 +459,16 @@ namespace FourierSSI
     std::vector<Vector<double>> held_solution;
     std::vector<LocalVector>    held_relative;
     double held_motion = 0., held_load_norm = 0., pattern_held_dot = 0.;
-    /** True while run_stage() brings the held loads on. */
-    bool                           holding_stage = false;
-    std::vector<LocalVector>       pattern_relative;
-    StepState                      committed;
+    /** True while the load path brings the held loads on. */
+    bool                     holding_stage = false;
+    std::vector<LocalVector> pattern_relative;
+    /**
+     * The last converged state, the one before it (the predictor's), and
+     * the step being solved with its records.
+     */
+    StepState                      committed, before_last, trial;
+    LoadStepResult                 trial_result;
+    InterfaceSnapshot              trial_snapshot;
     std::vector<LoadStepResult>    steps;
     std::vector<InterfaceSnapshot> snapshots;
   };

@@ -43,6 +43,7 @@
 #include <array>
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/coupled/coupled_tangent.h>
+#include <fourier_ssi/coupled/load_path.h>
 #include <fourier_ssi/coupled/soil_law.h>
 #include <fourier_ssi/fourier/theta_sampling.h>
 #include <fourier_ssi/harmonic/bbar_projection.h>
@@ -61,15 +62,8 @@ namespace FourierSSI
   using namespace dealii;
 
   /** One converged load step of the plastic soil. */
-  struct SoilStepResult
+  struct SoilStepResult : LoadStep
   {
-    double load_factor = 0.;
-    /** Fraction of the held loads (Rigid foundation/Held ...) applied. */
-    double       held_fraction = 0.;
-    RigidMotion  motion;
-    unsigned int iterations = 0;
-    /** |R| / |lambda F| at convergence. */
-    double residual = 0.;
     /** (point, theta) samples elastic and plastic. */
     unsigned int n_elastic = 0, n_plastic = 0;
     /** Largest f(sigma) over every (point, theta) [kPa] (<= 0 admissible). */
@@ -88,10 +82,9 @@ namespace FourierSSI
      * kN m] (held_reactions(); empty without, or with coulomb interfaces).
      */
     std::vector<std::pair<FoundationMotion, double>> held_reactions;
-    double                                           time = 0.;
   };
 
-  class CoupledSoilSolver
+  class CoupledSoilSolver : private LoadPath::Iteration
   {
   public:
     /** `set` must be assembled and factorized. */
@@ -267,13 +260,33 @@ namespace FourierSSI
     double
     applied_load_norm(const StepState &state) const;
 
-    /**
-     * One stage of the load path: `steps` equal steps, the held loads
-     * brought on (holding) or the loads scaled by the load or displacement
-     * control from the committed state.
-     */
+    /** LoadPath::Iteration: the trial step and its commit (load_path.h). */
     void
-    run_stage(const bool holding, const unsigned int steps, std::ostream &log);
+    start_trial(const double ratio) override;
+    bool
+    solve_trial(const double target, const bool holding) override;
+    RigidMotion
+    trial_motion() const override;
+    void
+    commit_trial(const LoadStep &step,
+                 const bool      holding,
+                 std::ostream   &log) override;
+    RigidMotion
+    committed_motion() const override;
+    unsigned int
+    n_converged_steps() const override
+    {
+      return steps.size();
+    }
+    bool
+    holds_loads() const override
+    {
+      return !held_solution.empty();
+    }
+    /** The held loads (V, H, M about the reference point, T). */
+    void
+    write_held_loads(std::ostream &log) const override;
+
     /**
      * Secant predictor: state's correction (load and displacement) moved on
      * by ratio times the change over the last converged step (from
@@ -388,6 +401,7 @@ namespace FourierSSI
     Vector<double>
     total_displacement(const StepState &state, const unsigned int h) const;
 
+    /** The rigid motion of a state (rigid_motion_of). */
     RigidMotion
     motion_of(const StepState &state) const;
 
@@ -443,10 +457,6 @@ namespace FourierSSI
      * The log's account of a step: V, H and the moment and torque where
      * the scene applies them, with the motion each works on.
      */
-    /** The held loads (V, H, M about the reference point, T). */
-    void
-    write_held_loads(std::ostream &log) const;
-
     void
     write_foundation_state(std::ostream         &log,
                            const SoilStepResult &result) const;
@@ -469,14 +479,6 @@ namespace FourierSSI
     void
     count_over_ranks(SoilStepResult &result) const;
 
-    /**
-     * sum_h values[h * n + c] for c < n, summed over the ranks first: per
-     * harmonic quantities, each non-zero on its owner only, added in the
-     * harmonics' order as a serial run adds them (the same bits).
-     */
-    std::vector<double>
-    sum_over_harmonics(std::vector<double> values, const unsigned int n) const;
-
     const HarmonicSet            &set;
     const AllParameters          &parameters;
     LoadPathParameters            settings;
@@ -496,8 +498,13 @@ namespace FourierSSI
     std::vector<std::vector<StrainVector>> held_strain;
     /** Strain amplitudes of the load pattern [point][harmonic]. */
     std::vector<std::vector<StrainVector>> pattern_strain;
-    StepState                              committed;
-    std::vector<SoilStepResult>            steps;
+    /**
+     * The last converged state, the one before it (the predictor's), and
+     * the step being solved with its records.
+     */
+    StepState                   committed, before_last, trial;
+    SoilStepResult              trial_result;
+    std::vector<SoilStepResult> steps;
     /** Stiffness = tangent: the coupled tangent and K_t^-1 F. */
     std::unique_ptr<CoupledTangent> tangent;
     std::vector<Vector<double>>     tangent_pattern;
