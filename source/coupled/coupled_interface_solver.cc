@@ -117,6 +117,7 @@ namespace FourierSSI
     , spectrum(candidates, sampling.n_samples())
     , interface(set, parameters)
     , points(interface.get_points())
+    , pattern_solution(loads.solution)
   {
     for (unsigned int h = 0; h < set.size(); ++h)
       AssertThrow(!set.problem(h).get_constraints().has_inhomogeneities(),
@@ -148,25 +149,7 @@ namespace FourierSSI
   void
   CoupledInterfaceSolver::solve_load_pattern()
   {
-    // Each rank solves the harmonics it owns; the others' fields stay zero
-    // here (never read: their amplitudes come from their owners).
-    std::vector<std::vector<Vector<double>>> b(set.size());
-    std::vector<double>                      norm_sqr = {0.};
-    for (unsigned int h = 0; h < set.size(); ++h)
-      if (set.owns(h))
-        {
-          b[h] = {load_factor_pattern(set.problem(h))};
-          norm_sqr[0] += b[h][0].norm_sqr();
-        }
-    set.sum_over_ranks(norm_sqr);
-    pattern_load_norm = std::sqrt(norm_sqr[0]);
-    set.solve_increments(b);
-    pattern_solution.clear();
-    for (unsigned int h = 0; h < set.size(); ++h)
-      pattern_solution.push_back(
-        set.owns(h) ?
-          b[h][0] :
-          Vector<double>(set.problem(h).get_dof_handler().n_dofs()));
+    loads = LoadPattern(set);
     pattern_relative =
       interface.relative_displacements(pattern_solution, sampling);
     if (settings.control == LoadPathParameters::Control::displacement)
@@ -185,38 +168,17 @@ namespace FourierSSI
   void
   CoupledInterfaceSolver::solve_held_loads()
   {
-    // |F_held|^2 and F . F_held of the harmonics this rank owns, summed.
-    std::vector<std::vector<Vector<double>>> b(set.size());
-    std::vector<double>                      sums = {0., 0.};
-    for (unsigned int h = 0; h < set.size(); ++h)
-      if (set.owns(h))
-        {
-          Vector<double> held = held_stage_load(set.problem(h));
-          sums[0] += held.norm_sqr();
-          sums[1] += held * load_factor_pattern(set.problem(h));
-          b[h] = {std::move(held)};
-        }
-    set.sum_over_ranks(sums);
-    held_load_norm   = std::sqrt(sums[0]);
-    pattern_held_dot = sums[1];
-    held_solution.clear();
     held_relative.clear();
     held_motion = 0.;
-    // No held loads (the same answer on every rank): no held stage.
-    if (held_load_norm == 0.)
+    if (!loads.holds_loads())
       return;
-    set.solve_increments(b);
-    for (unsigned int h = 0; h < set.size(); ++h)
-      held_solution.push_back(
-        set.owns(h) ?
-          b[h][0] :
-          Vector<double>(set.problem(h).get_dof_handler().n_dofs()));
-    held_relative = interface.relative_displacements(held_solution, sampling);
+    const std::vector<Vector<double>> &held = loads.held_solution;
+    held_relative = interface.relative_displacements(held, sampling);
     if (settings.control == LoadPathParameters::Control::displacement)
       {
         const unsigned int h = controlled_harmonic();
-        held_motion          = from_owner(
-          h, set.owns(h) ? controlled_motion_of(h, held_solution[h]) : 0.);
+        held_motion =
+          from_owner(h, set.owns(h) ? controlled_motion_of(h, held[h]) : 0.);
       }
   }
 
@@ -231,13 +193,10 @@ namespace FourierSSI
   CoupledInterfaceSolver::total_displacement(const StepState   &state,
                                              const unsigned int h) const
   {
-    return FourierSSI::total_displacement(pattern_solution[h],
-                                          state.load_factor,
-                                          state.correction_solution[h],
-                                          held_solution.empty() ?
-                                            nullptr :
-                                            &held_solution[h],
-                                          state.held_fraction);
+    return loads.total_displacement(h,
+                                    state.load_factor,
+                                    state.correction_solution[h],
+                                    state.held_fraction);
   }
 
   void
@@ -489,11 +448,7 @@ namespace FourierSSI
     //      the internal force scale (coupled_iteration.h).
     e.residual = interface.load_of(
       interface.iteration_plastic(e.relative, e.traction, e.plastic), sampling);
-    e.scale = {combined_load_norm(state.load_factor,
-                                  state.held_fraction,
-                                  pattern_load_norm,
-                                  pattern_held_dot,
-                                  held_load_norm),
+    e.scale = {loads.applied_norm(state.load_factor, state.held_fraction),
                norm_over_harmonics(e.residual)};
     for (unsigned int h = 0; h < set.size(); ++h)
       e.residual[h] -= state.correction_load[h];

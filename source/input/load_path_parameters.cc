@@ -102,12 +102,11 @@ namespace FourierSSI
     prm.declare_entry("Maximum step cuts",
                       "4",
                       Patterns::Integer(0, most_step_cuts),
-                      "Halvings of a step that does not converge before "
-                      "the run stops with an error (plastic soil: of each "
-                      "step, and a cut step size doubles back after two "
-                      "converged steps, twice as many after a doubling "
-                      "that failed; interfaces: over the run). At most 20 "
-                      "(a millionth of the step).");
+                      "Halvings of each step that does not converge before "
+                      "the run stops with an error; a cut step size doubles "
+                      "back after two converged steps, twice as many after "
+                      "a doubling that failed. At most 20 (a millionth of "
+                      "the step).");
     prm.declare_entry("Maximum harmonic",
                       "0",
                       Patterns::Integer(0, largest_harmonic),

@@ -54,6 +54,7 @@
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/initial_stress.h>
 #include <fourier_ssi/coupled/load_path.h>
+#include <fourier_ssi/coupled/load_pattern.h>
 #include <fourier_ssi/fourier/theta_sampling.h>
 #include <fourier_ssi/harmonic/harmonic_set.h>
 #include <fourier_ssi/input/load_path_parameters.h>
@@ -262,7 +263,7 @@ namespace FourierSSI
     bool
     holds_loads() const override
     {
-      return !held_solution.empty();
+      return loads.holds_loads();
     }
     void
     write_held_loads(std::ostream &log) const override;
@@ -447,18 +448,18 @@ namespace FourierSSI
     NonlinearInterfacePoints           interface;
     const std::vector<InterfacePoint> &points;
     std::vector<Condensation>          condensed;
-    std::vector<Vector<double>>        pattern_solution;
+    /** F, F_held and their elastic solutions (load_pattern.h). */
+    LoadPattern loads;
+    /** K^-1 F, loads.solution (its name in coupled_interface_newton.cc). */
+    const std::vector<Vector<double>> &pattern_solution;
     /** Controlled motion of the pattern solution u_F (load factor 1). */
     double pattern_motion = 0.;
-    /** sqrt(sum_h |F_h|^2) of the scaled (condensed) loads. */
-    double pattern_load_norm = 0.;
     /**
-     * Held loads: K^-1 F_held, its relative displacements and controlled
-     * motion, |F_held| and F . F_held (empty, 0: none).
+     * Held loads: the relative displacements and controlled motion of
+     * K^-1 F_held (empty, 0: none).
      */
-    std::vector<Vector<double>> held_solution;
-    std::vector<LocalVector>    held_relative;
-    double held_motion = 0., held_load_norm = 0., pattern_held_dot = 0.;
+    std::vector<LocalVector> held_relative;
+    double                   held_motion = 0.;
     /** True while the load path brings the held loads on. */
     bool                     holding_stage = false;
     std::vector<LocalVector> pattern_relative;

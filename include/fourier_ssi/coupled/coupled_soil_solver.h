@@ -42,8 +42,10 @@
 
 #include <array>
 #include <deal.II/lac/vector.h>
+#include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/coupled_tangent.h>
 #include <fourier_ssi/coupled/load_path.h>
+#include <fourier_ssi/coupled/load_pattern.h>
 #include <fourier_ssi/coupled/soil_law.h>
 #include <fourier_ssi/fourier/theta_sampling.h>
 #include <fourier_ssi/harmonic/bbar_projection.h>
@@ -52,6 +54,7 @@
 #include <fourier_ssi/input/parameters.h>
 #include <fourier_ssi/interfaces/nonlinear_interface_points.h>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -281,7 +284,7 @@ namespace FourierSSI
     bool
     holds_loads() const override
     {
-      return !held_solution.empty();
+      return loads.holds_loads();
     }
     /** The held loads (V, H, M about the reference point, T). */
     void
@@ -380,6 +383,85 @@ namespace FourierSSI
     double
     controlled_load_factor(const StepState &state, const double target) const;
 
+    /** The residual and the state of the soil and interfaces at an iterate. */
+    struct Evaluation
+    {
+      /** Total strain and s_p per (point, theta). */
+      std::vector<StrainVector> strain, plastic;
+      /** Coulomb interfaces: relative displacement and d_p (empty without). */
+      std::vector<LocalVector> relative, interface_plastic;
+      /** R = G - c per harmonic (condensed), and |R|. */
+      std::vector<Vector<double>> residual;
+      double                      residual_norm = 0.;
+      /** |lambda F| and the interfaces' |G|: what |R| is measured against. */
+      ForceScale scale;
+    };
+
+    /**
+     * Steps 1-4 of an iteration at `state`: strains, return mapping,
+     * out-of-balance load and residual (the counts into `result`).
+     */
+    Evaluation
+    evaluate(const StepState &state, SoilStepResult &result) const;
+
+    /**
+     * The coulomb interfaces' part of an evaluation: their relative
+     * displacements, return mapping and load added to the residual; returns
+     * the norm of that load (part of the force scale).
+     */
+    double
+    add_interface_residual(const StepState &state,
+                           Evaluation      &e,
+                           SoilStepResult  &result) const;
+
+    /** A converged iterate: its plastic state and the step's records. */
+    void
+    accept(Evaluation        &e,
+           const unsigned int iteration,
+           StepState         &state,
+           SoilStepResult    &result) const;
+
+    /**
+     * Stiffness = tangent: the last update of a step (to go back along it
+     * when it overshot) and the progress of the iteration.
+     */
+    struct NewtonProgress
+    {
+      std::vector<Vector<double>> last_load, last_solution;
+      double                      step_length = 1., previous_norm = 0.;
+      double       smallest_norm  = std::numeric_limits<double>::max();
+      unsigned int updates        = 0;
+      unsigned int since_smallest = 0;
+    };
+
+    /** What a Newton update did. */
+    enum class NewtonMove
+    {
+      /** e.residual is now the tangent correction dc. */
+      updated,
+      /** the last update was halved: evaluate again. */
+      backtracked,
+      /** no decrease even at the shortest step, or stagnation: cut. */
+      failed
+    };
+
+    /**
+     * Stiffness = tangent: backtrack the last update if it raised |R|,
+     * else rebuild the tangent at the iterate and turn e.residual into the
+     * Newton correction (tangent_correction).
+     */
+    NewtonMove
+    newton_update(Evaluation     &e,
+                  const bool      displacement_control,
+                  StepState      &state,
+                  NewtonProgress &newton);
+
+    /** c <- c + dc and v <- v + K^-1 dc (one solve per harmonic). */
+    void
+    apply_correction(std::vector<Vector<double>> correction,
+                     StepState                  &state,
+                     NewtonProgress             &newton) const;
+
     /**
      * Solve one step to `target`: the held fraction (holding), else the
      * load factor (load control) or the controlled motion.
@@ -431,6 +513,39 @@ namespace FourierSSI
                  const unsigned int      k,
                  const StrainVector     &strain,
                  std::array<double, 36> &softening) const;
+
+    /**
+     * Per point, the theta integrals S_hg of factor_h (D_e - D_ep) factor_g
+     * over the samples that yield, [(a * 6 + b) * H^2 + h * H + g] (empty:
+     * elastic at every theta).
+     */
+    std::vector<std::vector<double>>
+    softening_integrals(const std::vector<StrainVector> &strain) const;
+
+    /** The coupled tangent's sparsity: the soil cells and interface pairs. */
+    void
+    make_tangent();
+
+    /** The cells with a point that yields. */
+    std::vector<unsigned int>
+    yielding_cells(const std::vector<std::vector<double>> &softening) const;
+
+    /** Bbar strains of a cell's shape functions [i][q]. */
+    using ShapeStrains = std::vector<std::vector<StrainVector>>;
+
+    /** [yielding cell][h]: the shape strains of every harmonic. */
+    std::vector<std::vector<ShapeStrains>>
+    shape_strains(const std::vector<unsigned int> &yielding) const;
+
+    /** local = -int Bbar_h^T S_hg Bbar_g over one yielding cell. */
+    void
+    add_cell_softening(const SoilCell                         &cell,
+                       const unsigned int                      h,
+                       const unsigned int                      g,
+                       const std::vector<std::vector<double>> &softening,
+                       const ShapeStrains                     &row_strain,
+                       const ShapeStrains                     &column_strain,
+                       FullMatrix<double>                     &local) const;
 
     /**
      * Stiffness = tangent: K_t,hg = delta_hg K_h - int Bbar_h^T
@@ -489,12 +604,8 @@ namespace FourierSSI
     std::vector<SoilCell>         cells;
     std::vector<SoilPoint>        points;
     std::vector<unsigned int>     component;
-    /** F, the loads the load factor scales (load_factor_pattern), K^-1 F. */
-    std::vector<Vector<double>> pattern_load, pattern_solution;
-    double                      pattern_load_norm = 0.;
-    /** Held loads: K^-1 F_held, |F_held|, F . F_held; empty: none. */
-    std::vector<Vector<double>> held_solution;
-    double                      held_load_norm = 0., pattern_held_dot = 0.;
+    /** F, F_held and their elastic solutions (load_pattern.h). */
+    LoadPattern                            loads;
     std::vector<std::vector<StrainVector>> held_strain;
     /** Strain amplitudes of the load pattern [point][harmonic]. */
     std::vector<std::vector<StrainVector>> pattern_strain;

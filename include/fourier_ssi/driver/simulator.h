@@ -336,6 +336,61 @@ namespace FourierSSI
     void
     solve_coupled_to_target(std::ostream &log, CoupledCurveRun &run);
 
+    /** What the coupled target loop knows after each member. */
+    struct CoupledTargetProgress
+    {
+      /** The goal of each member on these harmonics, and its wall time. */
+      std::vector<double> mesh_values, member_times;
+      /** Member 0's goal per n_max solved (the truncation sequence). */
+      std::map<unsigned int, double> known;
+      CoupledGoal                    goal;
+      double                         harmonic_error = 0., mesh_error = 0.;
+
+      double
+      relative(const double error) const
+      {
+        return error / std::abs(goal.value);
+      }
+    };
+
+    /**
+     * The next member's mesh, if its DoFs and memory fit (else false, the
+     * reason in target_not_reached); the solver and set released.
+     */
+    bool
+    next_coupled_member(CoupledCurveRun             &run,
+                        const int                    member,
+                        const CoupledTargetProgress &progress,
+                        std::ostream                &log);
+
+    /** After member 0: go on, solve it again with doubled harmonics, stop. */
+    enum class CoarsestMember
+    {
+      solved,
+      solve_again,
+      stop
+    };
+
+    /**
+     * Member 0's harmonic truncation error; doubles the harmonics where it
+     * takes more than half the target.
+     */
+    CoarsestMember
+    coarsest_member_harmonics(CoupledCurveRun       &run,
+                              CoupledTargetProgress &progress,
+                              const bool             growth,
+                              std::ostream          &log);
+
+    /**
+     * The mesh error from the members so far: true if the target is met,
+     * or cannot be by a finer mesh (then the reason in target_not_reached).
+     */
+    bool
+    coupled_target_settled(const CoupledCurveRun &run,
+                           const int              member,
+                           CoupledTargetProgress &progress,
+                           std::ostream          &log);
+
     /**
      * The goal values on the current mesh with the harmonics n <= n_max /
      * 4 and n_max / 2 (those that keep n = 1 and differ), into `known`
