@@ -107,7 +107,8 @@ namespace FourierSSI
   CoupledInterfaceSolver::CoupledInterfaceSolver(
     HarmonicSet         &set,
     const AllParameters &parameters)
-    : set(set)
+    : LoadPathStates(set, parameters)
+    , set(set)
     , parameters(parameters)
     , settings(parameters.load_path)
     , harmonics(set.get_harmonics())
@@ -187,16 +188,6 @@ namespace FourierSSI
   {
     return settings.control == LoadPathParameters::Control::displacement &&
            !holding_stage;
-  }
-
-  Vector<double>
-  CoupledInterfaceSolver::total_displacement(const StepState   &state,
-                                             const unsigned int h) const
-  {
-    return loads.total_displacement(h,
-                                    state.load_factor,
-                                    state.correction_solution[h],
-                                    state.held_fraction);
   }
 
   void
@@ -605,23 +596,6 @@ namespace FourierSSI
     return resultant;
   }
 
-  std::array<double, 6>
-  CoupledInterfaceSolver::applied_loads(const double load_factor,
-                                        const double held_fraction) const
-  {
-    return applied_foundation_loads(parameters.rigid_foundation,
-                                    load_factor,
-                                    held_fraction);
-  }
-
-  RigidMotion
-  CoupledInterfaceSolver::motion_of(const StepState &state) const
-  {
-    return rigid_motion_of(set, [&](const unsigned int h) {
-      return total_displacement(state, h);
-    });
-  }
-
   std::vector<Harmonic>
   CoupledInterfaceSolver::harmonics_called_for(
     const InterfaceSnapshot &snapshot,
@@ -691,14 +665,6 @@ namespace FourierSSI
     condense(first);
   }
 
-  Vector<double>
-  CoupledInterfaceSolver::solution(const unsigned int i) const
-  {
-    Vector<double> u = total_displacement(committed, i);
-    set.broadcast_from_owner(i, u.begin(), u.size());
-    return u;
-  }
-
   void
   CoupledInterfaceSolver::run(std::ostream &log)
   {
@@ -746,14 +712,6 @@ namespace FourierSSI
         << " kN m, T " << held[5] << " kN m";
   }
 
-  void
-  CoupledInterfaceSolver::start_trial(const double ratio)
-  {
-    trial = committed;
-    if (ratio > 0.)
-      extrapolate(before_last, ratio, trial);
-  }
-
   bool
   CoupledInterfaceSolver::solve_trial(const double target, const bool holding)
   {
@@ -761,18 +719,6 @@ namespace FourierSSI
     trial_result   = LoadStepResult();
     trial_snapshot = InterfaceSnapshot();
     return solve_step(target, trial, trial_result, trial_snapshot);
-  }
-
-  RigidMotion
-  CoupledInterfaceSolver::trial_motion() const
-  {
-    return motion_of(trial);
-  }
-
-  RigidMotion
-  CoupledInterfaceSolver::committed_motion() const
-  {
-    return motion_of(committed);
   }
 
   bool
@@ -791,8 +737,7 @@ namespace FourierSSI
                                        const bool      holding,
                                        std::ostream   &log)
   {
-    before_last            = std::move(committed);
-    committed              = trial;
+    commit();
     LoadStepResult &result = trial_result;
     result.n_harmonics     = set.size();
     result.load_factor     = committed.load_factor;

@@ -87,7 +87,8 @@ namespace FourierSSI
 
   CoupledSoilSolver::CoupledSoilSolver(const HarmonicSet   &set,
                                        const AllParameters &parameters)
-    : set(set)
+    : LoadPathStates(set, parameters)
+    , set(set)
     , parameters(parameters)
     , settings(parameters.load_path)
     , harmonics(set.get_harmonics())
@@ -1164,23 +1165,6 @@ namespace FourierSSI
     return false;
   }
 
-  std::array<double, 6>
-  CoupledSoilSolver::applied_loads(const double load_factor,
-                                   const double held_fraction) const
-  {
-    return applied_foundation_loads(parameters.rigid_foundation,
-                                    load_factor,
-                                    held_fraction);
-  }
-
-  RigidMotion
-  CoupledSoilSolver::motion_of(const StepState &state) const
-  {
-    return rigid_motion_of(set, [&](const unsigned int h) {
-      return total_displacement(state, h);
-    });
-  }
-
   std::vector<std::pair<FoundationMotion, double>>
   CoupledSoilSolver::held_reactions(const StepState &state) const
   {
@@ -1215,16 +1199,6 @@ namespace FourierSSI
   }
 
   Vector<double>
-  CoupledSoilSolver::total_displacement(const StepState   &state,
-                                        const unsigned int h) const
-  {
-    return loads.total_displacement(h,
-                                    state.load_factor,
-                                    state.correction_solution[h],
-                                    state.held_fraction);
-  }
-
-  Vector<double>
   CoupledSoilSolver::held_load(const unsigned int h) const
   {
     return held_stage_load(set.problem(h));
@@ -1245,14 +1219,6 @@ namespace FourierSSI
           parts[h] = load * total_displacement(committed, h);
         }
     return sum_over_harmonics(set, parts, 1)[0];
-  }
-
-  Vector<double>
-  CoupledSoilSolver::solution(const unsigned int i) const
-  {
-    Vector<double> u = total_displacement(committed, i);
-    set.broadcast_from_owner(i, u.begin(), u.size());
-    return u;
   }
 
   void
@@ -1314,14 +1280,6 @@ namespace FourierSSI
       }
   }
 
-  void
-  CoupledSoilSolver::start_trial(const double ratio)
-  {
-    trial = committed;
-    if (ratio > 0.)
-      extrapolate(before_last, ratio, trial);
-  }
-
   bool
   CoupledSoilSolver::solve_trial(const double target, const bool holding)
   {
@@ -1329,25 +1287,12 @@ namespace FourierSSI
     return solve_step(target, holding, trial, trial_result);
   }
 
-  RigidMotion
-  CoupledSoilSolver::trial_motion() const
-  {
-    return motion_of(trial);
-  }
-
-  RigidMotion
-  CoupledSoilSolver::committed_motion() const
-  {
-    return motion_of(committed);
-  }
-
   void
   CoupledSoilSolver::commit_trial(const LoadStep &step,
                                   const bool      holding,
                                   std::ostream   &log)
   {
-    before_last            = std::move(committed);
-    committed              = trial;
+    commit();
     SoilStepResult &result = trial_result;
     result.load_factor     = committed.load_factor;
     result.held_fraction   = committed.held_fraction;

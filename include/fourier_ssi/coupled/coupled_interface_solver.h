@@ -53,8 +53,7 @@
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/initial_stress.h>
-#include <fourier_ssi/coupled/load_path.h>
-#include <fourier_ssi/coupled/load_pattern.h>
+#include <fourier_ssi/coupled/load_path_states.h>
 #include <fourier_ssi/fourier/theta_sampling.h>
 #include <fourier_ssi/harmonic/harmonic_set.h>
 #include <fourier_ssi/input/load_path_parameters.h>
@@ -88,7 +87,26 @@ namespace FourierSSI
     unsigned int n_harmonics = 0;
   };
 
-  class CoupledInterfaceSolver : private LoadPath::Iteration
+  /** Iteration state of a load step of the interfaces. */
+  struct InterfaceStepState : CorrectionState
+  {
+    /** K^-1 c valid at the read DoFs only (the iteration's view). */
+    std::vector<Vector<double>> interface_solution;
+    /** The controlled motion of K^-1 c [m or rad]. */
+    double controlled_motion = 0.;
+    /** Plastic relative displacement per point and sample. */
+    std::vector<LocalVector> plastic;
+    /**
+     * What the return mapping starts from at every sample: the committed
+     * plastic part, at contact samples shifted by the multipliers
+     * (NonlinearInterfacePoints::update_multipliers).
+     */
+    std::vector<LocalVector> origin;
+    /** Committed slip p_c of the contact samples (zero elsewhere). */
+    std::vector<LocalVector> slip;
+  };
+
+  class CoupledInterfaceSolver : private LoadPathStates<InterfaceStepState>
   {
   public:
     /**
@@ -138,13 +156,9 @@ namespace FourierSSI
     void
     write_interface_state_vtu(const std::string &filename) const;
 
-    /**
-     * Total displacement amplitudes of harmonic i (last converged state).
-     * Collective when the harmonics are distributed over ranks: every rank
-     * calls it for the same i and gets the owner's field.
-     */
-    Vector<double>
-    solution(const unsigned int i) const;
+    /** solution(i) and applied_loads() (load_path_states.h). */
+    using LoadPathStates::applied_loads;
+    using LoadPathStates::solution;
 
     /** N, the theta samples of the iteration. */
     unsigned int
@@ -152,15 +166,6 @@ namespace FourierSSI
     {
       return sampling.n_samples();
     }
-
-    /**
-     * The applied rigid-foundation loads at factor lambda in the order of
-     * LoadStepResult::resultant (F_x, F_y, F_z, M_x, M_y, M_z), with M about
-     * the origin (H at the reference elevation).
-     */
-    std::array<double, 6>
-    applied_loads(const double load_factor,
-                  const double held_fraction = 0.) const;
 
     /**
      * int int B_h^T D d r ds dtheta of the relative displacement d of the
@@ -206,29 +211,7 @@ namespace FourierSSI
       std::vector<double> controlled_motion;
     };
 
-    /** Iteration state of a load step. */
-    struct StepState
-    {
-      double load_factor = 0.;
-      /** rho: the held loads' part rho F_held of the load. */
-      double held_fraction = 0.;
-      /** K^-1 c per harmonic, and c (condensed). */
-      std::vector<Vector<double>> correction_solution, correction_load;
-      /** K^-1 c valid at the read DoFs only (the iteration's view). */
-      std::vector<Vector<double>> interface_solution;
-      /** The controlled motion of K^-1 c [m or rad]. */
-      double controlled_motion = 0.;
-      /** Plastic relative displacement per point and sample. */
-      std::vector<LocalVector> plastic;
-      /**
-       * What the return mapping starts from at every sample: the committed
-       * plastic part, at contact samples shifted by the multipliers
-       * (NonlinearInterfacePoints::update_multipliers).
-       */
-      std::vector<LocalVector> origin;
-      /** Committed slip p_c of the contact samples (zero elsewhere). */
-      std::vector<LocalVector> slip;
-    };
+    using StepState = InterfaceStepState;
 
     void
     solve_load_pattern();
@@ -241,29 +224,18 @@ namespace FourierSSI
     solve_held_loads();
 
     /** LoadPath::Iteration: the trial step and its commit (load_path.h). */
-    void
-    start_trial(const double ratio) override;
     bool
     solve_trial(const double target, const bool holding) override;
-    RigidMotion
-    trial_motion() const override;
     bool
     grows(std::ostream &log) override;
     void
     commit_trial(const LoadStep &step,
                  const bool      holding,
                  std::ostream   &log) override;
-    RigidMotion
-    committed_motion() const override;
     unsigned int
     n_converged_steps() const override
     {
       return steps.size();
-    }
-    bool
-    holds_loads() const override
-    {
-      return loads.holds_loads();
     }
     void
     write_held_loads(std::ostream &log) const override;
@@ -271,10 +243,6 @@ namespace FourierSSI
     /** Displacement control in the stage being solved (not the held one). */
     bool
     controls_motion() const;
-
-    /** lambda u_F + rho u_held + K^-1 c of harmonic h (owner's fields). */
-    Vector<double>
-    total_displacement(const StepState &state, const unsigned int h) const;
 
     /** The owner's copy of values of harmonic h on every rank. */
     void
@@ -320,7 +288,7 @@ namespace FourierSSI
     void
     extrapolate(const StepState &before_last,
                 const double     ratio,
-                StepState       &state) const;
+                StepState       &state) const override;
 
     /** The residual and the interface state at one iterate. */
     struct Evaluation
@@ -419,10 +387,6 @@ namespace FourierSSI
     std::array<double, 6>
     foundation_resultant(const std::vector<LocalVector> &traction) const;
 
-    /** The rigid motion of a state (rigid_motion_of). */
-    RigidMotion
-    motion_of(const StepState &state) const;
-
     /**
      * Harmonics n <= Maximum harmonic, not solved, whose amplitude in the
      * traction change t - t0 of a converged state exceeds Harmonic
@@ -448,8 +412,6 @@ namespace FourierSSI
     NonlinearInterfacePoints           interface;
     const std::vector<InterfacePoint> &points;
     std::vector<Condensation>          condensed;
-    /** F, F_held and their elastic solutions (load_pattern.h). */
-    LoadPattern loads;
     /** K^-1 F, loads.solution (its name in coupled_interface_newton.cc). */
     const std::vector<Vector<double>> &pattern_solution;
     /** Controlled motion of the pattern solution u_F (load factor 1). */
@@ -463,11 +425,7 @@ namespace FourierSSI
     /** True while the load path brings the held loads on. */
     bool                     holding_stage = false;
     std::vector<LocalVector> pattern_relative;
-    /**
-     * The last converged state, the one before it (the predictor's), and
-     * the step being solved with its records.
-     */
-    StepState                      committed, before_last, trial;
+    /** The records of the step being solved. */
     LoadStepResult                 trial_result;
     InterfaceSnapshot              trial_snapshot;
     std::vector<LoadStepResult>    steps;

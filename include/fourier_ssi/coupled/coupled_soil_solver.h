@@ -44,8 +44,7 @@
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/coupled_tangent.h>
-#include <fourier_ssi/coupled/load_path.h>
-#include <fourier_ssi/coupled/load_pattern.h>
+#include <fourier_ssi/coupled/load_path_states.h>
 #include <fourier_ssi/coupled/soil_law.h>
 #include <fourier_ssi/fourier/theta_sampling.h>
 #include <fourier_ssi/harmonic/bbar_projection.h>
@@ -87,7 +86,16 @@ namespace FourierSSI
     std::vector<std::pair<FoundationMotion, double>> held_reactions;
   };
 
-  class CoupledSoilSolver : private LoadPath::Iteration
+  /** Iteration state of a load step of the plastic soil. */
+  struct SoilStepState : CorrectionState
+  {
+    /** s_p = D eps_p per (point, theta). */
+    std::vector<StrainVector> plastic;
+    /** Coulomb interfaces: d_p per (interface point, theta). */
+    std::vector<LocalVector> interface_plastic;
+  };
+
+  class CoupledSoilSolver : private LoadPathStates<SoilStepState>
   {
   public:
     /** `set` must be assembled and factorized. */
@@ -103,21 +111,9 @@ namespace FourierSSI
       return steps;
     }
 
-    /**
-     * Total displacement amplitudes of harmonic i (last converged state).
-     * Collective when the harmonics are distributed over ranks: every rank
-     * calls it for the same i and gets the owner's field.
-     */
-    Vector<double>
-    solution(const unsigned int i) const;
-
-    /**
-     * (F_x, F_y, F_z, M_x, M_y, M_z) applied at load factor lambda with the
-     * fraction held_fraction of the held loads.
-     */
-    std::array<double, 6>
-    applied_loads(const double load_factor,
-                  const double held_fraction = 0.) const;
+    /** solution(i) and applied_loads() (load_path_states.h). */
+    using LoadPathStates::applied_loads;
+    using LoadPathStates::solution;
 
     /**
      * The work of the applied loads on the last converged displacement,
@@ -236,17 +232,7 @@ namespace FourierSSI
       Point<2>                          centre;
     };
 
-    struct StepState
-    {
-      double load_factor = 0.;
-      /** rho: the held loads' part rho F_held of the load. */
-      double                      held_fraction = 0.;
-      std::vector<Vector<double>> correction_solution, correction_load;
-      /** s_p = D eps_p per (point, theta). */
-      std::vector<StrainVector> plastic;
-      /** Coulomb interfaces: d_p per (interface point, theta). */
-      std::vector<LocalVector> interface_plastic;
-    };
+    using StepState = SoilStepState;
 
     void
     make_points();
@@ -264,27 +250,16 @@ namespace FourierSSI
     applied_load_norm(const StepState &state) const;
 
     /** LoadPath::Iteration: the trial step and its commit (load_path.h). */
-    void
-    start_trial(const double ratio) override;
     bool
     solve_trial(const double target, const bool holding) override;
-    RigidMotion
-    trial_motion() const override;
     void
     commit_trial(const LoadStep &step,
                  const bool      holding,
                  std::ostream   &log) override;
-    RigidMotion
-    committed_motion() const override;
     unsigned int
     n_converged_steps() const override
     {
       return steps.size();
-    }
-    bool
-    holds_loads() const override
-    {
-      return loads.holds_loads();
     }
     /** The held loads (V, H, M about the reference point, T). */
     void
@@ -301,7 +276,7 @@ namespace FourierSSI
     void
     extrapolate(const StepState &before_last,
                 const double     ratio,
-                StepState       &state) const;
+                StepState       &state) const override;
 
     /**
      * Strain amplitudes [point][harmonic] of fields (one per harmonic): of
@@ -479,14 +454,6 @@ namespace FourierSSI
     Vector<double>
     held_load(const unsigned int h) const;
 
-    /** u_h = lambda u_pattern + correction + rho u_held of a state. */
-    Vector<double>
-    total_displacement(const StepState &state, const unsigned int h) const;
-
-    /** The rigid motion of a state (rigid_motion_of). */
-    RigidMotion
-    motion_of(const StepState &state) const;
-
     /**
      * sigma_0 + D eps at a point: its stress if it had stayed elastic from
      * the initial (geostatic) state.
@@ -594,26 +561,20 @@ namespace FourierSSI
     void
     count_over_ranks(SoilStepResult &result) const;
 
-    const HarmonicSet            &set;
-    const AllParameters          &parameters;
-    LoadPathParameters            settings;
-    std::vector<Harmonic>         harmonics;
-    std::vector<HarmonicOperator> operators;
-    ThetaSampling                 sampling;
-    std::vector<SoilLaw>          laws;
-    std::vector<SoilCell>         cells;
-    std::vector<SoilPoint>        points;
-    std::vector<unsigned int>     component;
-    /** F, F_held and their elastic solutions (load_pattern.h). */
-    LoadPattern                            loads;
+    const HarmonicSet                     &set;
+    const AllParameters                   &parameters;
+    LoadPathParameters                     settings;
+    std::vector<Harmonic>                  harmonics;
+    std::vector<HarmonicOperator>          operators;
+    ThetaSampling                          sampling;
+    std::vector<SoilLaw>                   laws;
+    std::vector<SoilCell>                  cells;
+    std::vector<SoilPoint>                 points;
+    std::vector<unsigned int>              component;
     std::vector<std::vector<StrainVector>> held_strain;
     /** Strain amplitudes of the load pattern [point][harmonic]. */
     std::vector<std::vector<StrainVector>> pattern_strain;
-    /**
-     * The last converged state, the one before it (the predictor's), and
-     * the step being solved with its records.
-     */
-    StepState                   committed, before_last, trial;
+    /** The records of the step being solved. */
     SoilStepResult              trial_result;
     std::vector<SoilStepResult> steps;
     /** Stiffness = tangent: the coupled tangent and K_t^-1 F. */

@@ -5,8 +5,8 @@
  * displacement u = lambda K^-1 F + K^-1 c + rho K^-1 F_held (LoadPattern),
  * its rigid motion (rigid_motion_of) and the applied foundation loads. A
  * State has load_factor, held_fraction and correction_solution (K^-1 c per
- * harmonic); the solver gives the predictor (extrapolate) and the
- * iteration of a step (LoadPath::Iteration).
+ * harmonic, CorrectionState); the solver gives the predictor (extrapolate) and
+ * the iteration of a step (LoadPath::Iteration).
  */
 #ifndef fourier_ssi_load_path_states_h
 #define fourier_ssi_load_path_states_h
@@ -22,6 +22,16 @@
 namespace FourierSSI
 {
   using namespace dealii;
+
+  /** What every coupled state holds: lambda, rho, c and K^-1 c. */
+  struct CorrectionState
+  {
+    double load_factor = 0.;
+    /** rho: the held loads' part rho F_held of the load. */
+    double held_fraction = 0.;
+    /** K^-1 c per harmonic, and c (condensed). */
+    std::vector<Vector<double>> correction_solution, correction_load;
+  };
 
   template <class State>
   class LoadPathStates : public LoadPath::Iteration

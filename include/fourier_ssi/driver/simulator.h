@@ -198,6 +198,16 @@ namespace FourierSSI
      */
     void
     solve_nonlinear_interfaces(std::ostream &log);
+    /** load-displacement.csv of a coupled solver, and its log line. */
+    template <class Solver>
+    void
+    write_load_displacement_csv(const Solver &solver, std::ostream &log)
+    {
+      const std::string curve = result_files.claim("load-displacement.csv");
+      solver.write_csv(curve);
+      log << "load-displacement curve written to " << curve << std::endl;
+    }
+
     /**
      * The last converged step of a coupled solver as every harmonic's
      * solution (3D and per-harmonic output). Collective under mpirun: the
