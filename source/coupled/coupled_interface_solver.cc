@@ -107,7 +107,7 @@ namespace FourierSSI
   CoupledInterfaceSolver::CoupledInterfaceSolver(
     HarmonicSet         &set,
     const AllParameters &parameters)
-    : LoadPathStates(set, parameters)
+    : LoadPathStates(set, parameters, "kN m")
     , set(set)
     , parameters(parameters)
     , settings(parameters.load_path)
@@ -120,25 +120,14 @@ namespace FourierSSI
     , points(interface.get_points())
     , pattern_solution(loads.solution)
   {
-    for (unsigned int h = 0; h < set.size(); ++h)
-      AssertThrow(!set.problem(h).get_constraints().has_inhomogeneities(),
-                  ExcMessage(entry +
-                             ": not yet: prescribed (non-zero) Dirichlet "
-                             "values with nonlinear interfaces; load the "
-                             "scene through the Rigid foundation"));
+    check_homogeneous_constraints(entry, "nonlinear interfaces");
     AssertThrow(!settings.tangent_stiffness || set.n_owning_ranks() <= 1,
                 ExcMessage(entry +
                            "/Stiffness: not yet: tangent on several MPI "
                            "ranks (use initial, or one process)"));
     solve_load_pattern();
     solve_held_loads();
-    committed.correction_solution = pattern_solution;
-    committed.correction_load     = pattern_solution;
-    for (unsigned int h = 0; h < set.size(); ++h)
-      {
-        committed.correction_solution[h] = 0.;
-        committed.correction_load[h]     = 0.;
-      }
+    start_at_rest();
     committed.interface_solution = committed.correction_solution;
     condense(0);
     committed.plastic.assign(points.size() * sampling.n_samples(),
@@ -684,14 +673,8 @@ namespace FourierSSI
           << settings.harmonic_tolerance << ")";
     log << '\n';
     interface.describe(log, sampling.n_samples(), highest_harmonic(harmonics));
-    if (!parameters.rigid_foundation.held_motions.empty())
-      {
-        log << "held at zero (Rigid foundation/Held motions):";
-        for (const FoundationMotion m :
-             parameters.rigid_foundation.held_motions)
-          log << ' ' << name_of(m);
-        log << "; the loads that hold them: not yet with coulomb interfaces\n";
-      }
+    write_held_motions(
+      log, "; the loads that hold them: not yet with coulomb interfaces");
     if (interface.without_strength())
       log << "warning: " << entry
           << ": a coulomb interface has c = 0 and no Initial stress: it has "
@@ -701,15 +684,6 @@ namespace FourierSSI
       log << "  MPI: " << set.n_rank_sums() << " sums over the ranks ("
           << "one per iteration, a few per step), " << set.rank_sum_time()
           << " s in them on rank 0 (computing or waiting for the others)\n";
-  }
-
-  void
-  CoupledInterfaceSolver::write_held_loads(std::ostream &log) const
-  {
-    const auto held = applied_loads(0., 1.);
-    log << "V " << held[2] << " kN, H " << held[0] << " kN, M "
-        << moment_about_reference(held, parameters.rigid_foundation)
-        << " kN m, T " << held[5] << " kN m";
   }
 
   bool
@@ -737,13 +711,9 @@ namespace FourierSSI
                                        const bool      holding,
                                        std::ostream   &log)
   {
-    commit();
     LoadStepResult &result = trial_result;
-    result.n_harmonics     = set.size();
-    result.load_factor     = committed.load_factor;
-    result.held_fraction   = committed.held_fraction;
-    result.motion          = step.motion;
-    result.time            = step.time;
+    commit(result, step);
+    result.n_harmonics = set.size();
     steps.push_back(result);
     snapshots.push_back(std::move(trial_snapshot));
     const auto loads = applied_loads(result.load_factor, result.held_fraction);

@@ -87,7 +87,7 @@ namespace FourierSSI
 
   CoupledSoilSolver::CoupledSoilSolver(const HarmonicSet   &set,
                                        const AllParameters &parameters)
-    : LoadPathStates(set, parameters)
+    : LoadPathStates(set, parameters, "kNm")
     , set(set)
     , parameters(parameters)
     , settings(parameters.load_path)
@@ -98,12 +98,7 @@ namespace FourierSSI
   {
     for (const Harmonic &h : harmonics)
       operators.emplace_back(h);
-    for (unsigned int h = 0; h < set.size(); ++h)
-      AssertThrow(!set.problem(h).get_constraints().has_inhomogeneities(),
-                  ExcMessage(entry +
-                             ": not yet: prescribed (non-zero) Dirichlet "
-                             "values with plastic soil; load the scene "
-                             "through the Rigid foundation"));
+    check_homogeneous_constraints(entry, "plastic soil");
     // Newton needs the whole coupled block matrix on one rank; the
     // initial-stiffness iteration re-solves each harmonic on its owner.
     AssertThrow(!parameters.soil_plasticity.tangent ||
@@ -123,10 +118,7 @@ namespace FourierSSI
       }
     solve_load_pattern();
     solve_held_loads();
-    committed.correction_solution = loads.solution;
-    for (Vector<double> &v : committed.correction_solution)
-      v = 0.;
-    committed.correction_load = committed.correction_solution;
+    start_at_rest();
     committed.plastic.assign(points.size() * sampling.n_samples(),
                              {{0., 0., 0., 0., 0., 0.}});
     if (interface)
@@ -1237,14 +1229,7 @@ namespace FourierSSI
         << settings.load_steps << " steps, tolerance " << settings.tolerance
         << ", " << iteration_name(settings, parameters.soil_plasticity.tangent)
         << (cells.front().projection ? ", B-bar" : "") << '\n';
-    if (!parameters.rigid_foundation.held_motions.empty())
-      {
-        log << "held at zero (Rigid foundation/Held motions):";
-        for (const FoundationMotion m :
-             parameters.rigid_foundation.held_motions)
-          log << ' ' << name_of(m);
-        log << '\n';
-      }
+    write_held_motions(log, "");
     LoadPath(settings, entry, *this).run(log);
     if (set.n_owning_ranks() > 1)
       log << "  MPI: " << set.n_rank_sums()
@@ -1253,15 +1238,6 @@ namespace FourierSSI
              "control, a few per step), "
           << set.rank_sum_time()
           << " s in them on rank 0 (computing or waiting for the others)\n";
-  }
-
-  void
-  CoupledSoilSolver::write_held_loads(std::ostream &log) const
-  {
-    const auto held = applied_loads(0., 1.);
-    log << "V " << held[2] << " kN, H " << held[0] << " kN, M "
-        << moment_about_reference(held, parameters.rigid_foundation)
-        << " kNm, T " << held[5] << " kNm";
   }
 
   void
@@ -1292,13 +1268,9 @@ namespace FourierSSI
                                   const bool      holding,
                                   std::ostream   &log)
   {
-    commit();
     SoilStepResult &result = trial_result;
-    result.load_factor     = committed.load_factor;
-    result.held_fraction   = committed.held_fraction;
-    result.motion          = step.motion;
-    result.held_reactions  = held_reactions(committed);
-    result.time            = step.time;
+    commit(result, step);
+    result.held_reactions = held_reactions(committed);
     steps.push_back(result);
     if (step_observer)
       step_observer(result);

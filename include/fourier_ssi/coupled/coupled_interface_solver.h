@@ -237,8 +237,6 @@ namespace FourierSSI
     {
       return steps.size();
     }
-    void
-    write_held_loads(std::ostream &log) const override;
 
     /** Displacement control in the stage being solved (not the held one). */
     bool

@@ -261,9 +261,6 @@ namespace FourierSSI
     {
       return steps.size();
     }
-    /** The held loads (V, H, M about the reference point, T). */
-    void
-    write_held_loads(std::ostream &log) const override;
 
     /**
      * Secant predictor: state's correction (load and displacement) moved on

@@ -18,6 +18,8 @@
 #include <fourier_ssi/coupled/load_pattern.h>
 #include <fourier_ssi/harmonic/harmonic_set.h>
 #include <fourier_ssi/input/parameters.h>
+#include <ostream>
+#include <string>
 
 namespace FourierSSI
 {
@@ -65,10 +67,67 @@ namespace FourierSSI
     }
 
   protected:
-    LoadPathStates(const HarmonicSet &set, const AllParameters &parameters)
+    /**
+     * `moment_unit` is how the solver's log writes kN m (its step lines and
+     * the held loads' line).
+     */
+    LoadPathStates(const HarmonicSet   &set,
+                   const AllParameters &parameters,
+                   const std::string   &moment_unit)
       : harmonic_set(set)
       , foundation_parameters(parameters.rigid_foundation)
+      , moment_unit(moment_unit)
     {}
+
+    /**
+     * One line if a harmonic has prescribed (non-zero) Dirichlet values:
+     * the loads are scaled by lambda and held by rho, the constraints not
+     * (not yet with `what`; `entry` names the solver's section).
+     */
+    void
+    check_homogeneous_constraints(const std::string &entry,
+                                  const std::string &what) const
+    {
+      for (unsigned int h = 0; h < harmonic_set.size(); ++h)
+        AssertThrow(
+          !harmonic_set.problem(h).get_constraints().has_inhomogeneities(),
+          ExcMessage(entry +
+                     ": not yet: prescribed (non-zero) Dirichlet "
+                     "values with " +
+                     what + "; load the scene through the Rigid foundation"));
+    }
+
+    /** The committed state before the first step: c = 0 on every harmonic. */
+    void
+    start_at_rest()
+    {
+      committed.correction_solution = loads.solution;
+      for (Vector<double> &v : committed.correction_solution)
+        v = 0.;
+      committed.correction_load = committed.correction_solution;
+    }
+
+    /** The log line of Rigid foundation/Held motions (if any), `note` last. */
+    void
+    write_held_motions(std::ostream &log, const std::string &note) const
+    {
+      if (foundation_parameters.held_motions.empty())
+        return;
+      log << "held at zero (Rigid foundation/Held motions):";
+      for (const FoundationMotion m : foundation_parameters.held_motions)
+        log << ' ' << name_of(m);
+      log << note << '\n';
+    }
+
+    /** The held loads (V, H, M about the reference point, T). */
+    void
+    write_held_loads(std::ostream &log) const override
+    {
+      const auto held = applied_loads(0., 1.);
+      log << "V " << held[2] << " kN, H " << held[0] << " kN, M "
+          << moment_about_reference(held, foundation_parameters) << " "
+          << moment_unit << ", T " << held[5] << " " << moment_unit;
+    }
 
     /**
      * Secant predictor: state's correction moved on by ratio times the
@@ -98,12 +157,19 @@ namespace FourierSSI
       });
     }
 
-    /** The converged trial becomes the committed state. */
+    /**
+     * The converged trial becomes the committed state; `result` gets its
+     * load factor and held fraction, and the motion and wall time of `step`.
+     */
     void
-    commit()
+    commit(LoadStep &result, const LoadStep &step)
     {
-      before_last = std::move(committed);
-      committed   = trial;
+      before_last          = std::move(committed);
+      committed            = trial;
+      result.load_factor   = committed.load_factor;
+      result.held_fraction = committed.held_fraction;
+      result.motion        = step.motion;
+      result.time          = step.time;
     }
 
     void
@@ -134,6 +200,7 @@ namespace FourierSSI
 
     const HarmonicSet               &harmonic_set;
     const RigidFoundationParameters &foundation_parameters;
+    const std::string                moment_unit;
     /** F, F_held and their elastic solutions. */
     LoadPattern loads;
     /** The last converged state, the one before it, the step solved. */
