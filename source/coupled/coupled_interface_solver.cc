@@ -107,7 +107,8 @@ namespace FourierSSI
   CoupledInterfaceSolver::CoupledInterfaceSolver(
     HarmonicSet         &set,
     const AllParameters &parameters)
-    : set(set)
+    : LoadPathStates(set, parameters, "kN m")
+    , set(set)
     , parameters(parameters)
     , settings(parameters.load_path)
     , harmonics(set.get_harmonics())
@@ -117,22 +118,12 @@ namespace FourierSSI
     , spectrum(candidates, sampling.n_samples())
     , interface(set, parameters)
     , points(interface.get_points())
+    , pattern_solution(loads.solution)
   {
-    for (unsigned int h = 0; h < set.size(); ++h)
-      AssertThrow(!set.problem(h).get_constraints().has_inhomogeneities(),
-                  ExcMessage(entry +
-                             ": not yet: prescribed (non-zero) Dirichlet "
-                             "values with nonlinear interfaces; load the "
-                             "scene through the Rigid foundation"));
+    check_homogeneous_constraints(entry, "nonlinear interfaces");
     solve_load_pattern();
     solve_held_loads();
-    committed.correction_solution = pattern_solution;
-    committed.correction_load     = pattern_solution;
-    for (unsigned int h = 0; h < set.size(); ++h)
-      {
-        committed.correction_solution[h] = 0.;
-        committed.correction_load[h]     = 0.;
-      }
+    start_at_rest();
     committed.interface_solution = committed.correction_solution;
     condense(0);
     committed.plastic.assign(points.size() * sampling.n_samples(),
@@ -144,25 +135,7 @@ namespace FourierSSI
   void
   CoupledInterfaceSolver::solve_load_pattern()
   {
-    // Each rank solves the harmonics it owns; the others' fields stay zero
-    // here (never read: their amplitudes come from their owners).
-    std::vector<std::vector<Vector<double>>> b(set.size());
-    std::vector<double>                      norm_sqr = {0.};
-    for (unsigned int h = 0; h < set.size(); ++h)
-      if (set.owns(h))
-        {
-          b[h] = {load_factor_pattern(set.problem(h))};
-          norm_sqr[0] += b[h][0].norm_sqr();
-        }
-    set.sum_over_ranks(norm_sqr);
-    pattern_load_norm = std::sqrt(norm_sqr[0]);
-    set.solve_increments(b);
-    pattern_solution.clear();
-    for (unsigned int h = 0; h < set.size(); ++h)
-      pattern_solution.push_back(
-        set.owns(h) ?
-          b[h][0] :
-          Vector<double>(set.problem(h).get_dof_handler().n_dofs()));
+    loads = LoadPattern(set);
     pattern_relative =
       interface.relative_displacements(pattern_solution, sampling);
     if (settings.control == LoadPathParameters::Control::displacement)
@@ -181,38 +154,17 @@ namespace FourierSSI
   void
   CoupledInterfaceSolver::solve_held_loads()
   {
-    // |F_held|^2 and F . F_held of the harmonics this rank owns, summed.
-    std::vector<std::vector<Vector<double>>> b(set.size());
-    std::vector<double>                      sums = {0., 0.};
-    for (unsigned int h = 0; h < set.size(); ++h)
-      if (set.owns(h))
-        {
-          Vector<double> held = held_stage_load(set.problem(h));
-          sums[0] += held.norm_sqr();
-          sums[1] += held * load_factor_pattern(set.problem(h));
-          b[h] = {std::move(held)};
-        }
-    set.sum_over_ranks(sums);
-    held_load_norm   = std::sqrt(sums[0]);
-    pattern_held_dot = sums[1];
-    held_solution.clear();
     held_relative.clear();
     held_motion = 0.;
-    // No held loads (the same answer on every rank): no held stage.
-    if (held_load_norm == 0.)
+    if (!loads.holds_loads())
       return;
-    set.solve_increments(b);
-    for (unsigned int h = 0; h < set.size(); ++h)
-      held_solution.push_back(
-        set.owns(h) ?
-          b[h][0] :
-          Vector<double>(set.problem(h).get_dof_handler().n_dofs()));
-    held_relative = interface.relative_displacements(held_solution, sampling);
+    const std::vector<Vector<double>> &held = loads.held_solution;
+    held_relative = interface.relative_displacements(held, sampling);
     if (settings.control == LoadPathParameters::Control::displacement)
       {
         const unsigned int h = controlled_harmonic();
-        held_motion          = from_owner(
-          h, set.owns(h) ? controlled_motion_of(h, held_solution[h]) : 0.);
+        held_motion =
+          from_owner(h, set.owns(h) ? controlled_motion_of(h, held[h]) : 0.);
       }
   }
 
@@ -221,19 +173,6 @@ namespace FourierSSI
   {
     return settings.control == LoadPathParameters::Control::displacement &&
            !holding_stage;
-  }
-
-  Vector<double>
-  CoupledInterfaceSolver::total_displacement(const StepState   &state,
-                                             const unsigned int h) const
-  {
-    return FourierSSI::total_displacement(pattern_solution[h],
-                                          state.load_factor,
-                                          state.correction_solution[h],
-                                          held_solution.empty() ?
-                                            nullptr :
-                                            &held_solution[h],
-                                          state.held_fraction);
   }
 
   void
@@ -485,11 +424,7 @@ namespace FourierSSI
     //      the internal force scale (coupled_iteration.h).
     e.residual = interface.load_of(
       interface.iteration_plastic(e.relative, e.traction, e.plastic), sampling);
-    e.scale = {combined_load_norm(state.load_factor,
-                                  state.held_fraction,
-                                  pattern_load_norm,
-                                  pattern_held_dot,
-                                  held_load_norm),
+    e.scale = {loads.applied_norm(state.load_factor, state.held_fraction),
                norm_over_harmonics(e.residual)};
     for (unsigned int h = 0; h < set.size(); ++h)
       e.residual[h] -= state.correction_load[h];
@@ -505,15 +440,8 @@ namespace FourierSSI
                                  LoadStepResult    &result,
                                  InterfaceSnapshot &snapshot) const
   {
+    (void)target; // the load path checks that the motion reached it
     complete(state);
-    // A diverged iterate can pass the relative test with a huge load
-    // factor; the controlled motion then misses its target (cancellation
-    // of lambda m(u_F) against m(v)): not converged.
-    if (controls_motion() &&
-        std::abs(state.load_factor * pattern_motion + state.controlled_motion +
-                 state.held_fraction * held_motion - target) >
-          1e-8 * std::abs(target))
-      return false;
     state.plastic = e.plastic;
     interface.commit_contact(e.relative, e.traction, state.slip, state.plastic);
     state.origin      = state.plastic;
@@ -653,40 +581,6 @@ namespace FourierSSI
     return resultant;
   }
 
-  std::array<double, 6>
-  CoupledInterfaceSolver::applied_loads(const double load_factor,
-                                        const double held_fraction) const
-  {
-    return applied_foundation_loads(parameters.rigid_foundation,
-                                    load_factor,
-                                    held_fraction);
-  }
-
-  RigidMotion
-  CoupledInterfaceSolver::motion_of(const StepState &state) const
-  {
-    std::vector<double> total(4, 0.);
-    for (unsigned int h = 0; h < set.size(); ++h)
-      {
-        const RigidFoundation *foundation = set.problem(h).get_foundation();
-        if (!set.owns(h) || foundation == nullptr || harmonics[h].n > 1 ||
-            (harmonics[h].n == 1 && harmonics[h].family != Family::symmetric))
-          continue;
-        const RigidMotion m = foundation->motion(total_displacement(state, h));
-        total[0] += m.vertical_displacement;
-        total[1] += m.twist;
-        total[2] += m.horizontal_displacement;
-        total[3] += m.rotation;
-      }
-    set.sum_over_ranks(total);
-    RigidMotion motion;
-    motion.vertical_displacement   = total[0];
-    motion.twist                   = total[1];
-    motion.horizontal_displacement = total[2];
-    motion.rotation                = total[3];
-    return motion;
-  }
-
   std::vector<Harmonic>
   CoupledInterfaceSolver::harmonics_called_for(
     const InterfaceSnapshot &snapshot,
@@ -756,14 +650,6 @@ namespace FourierSSI
     condense(first);
   }
 
-  Vector<double>
-  CoupledInterfaceSolver::solution(const unsigned int i) const
-  {
-    Vector<double> u = total_displacement(committed, i);
-    set.broadcast_from_owner(i, u.begin(), u.size());
-    return u;
-  }
-
   void
   CoupledInterfaceSolver::run(std::ostream &log)
   {
@@ -783,116 +669,64 @@ namespace FourierSSI
           << settings.harmonic_tolerance << ")";
     log << '\n';
     interface.describe(log, sampling.n_samples(), highest_harmonic(harmonics));
-    if (!parameters.rigid_foundation.held_motions.empty())
-      {
-        log << "held at zero (Rigid foundation/Held motions):";
-        for (const FoundationMotion m :
-             parameters.rigid_foundation.held_motions)
-          log << ' ' << name_of(m);
-        log << "; the loads that hold them: not yet with coulomb interfaces\n";
-      }
+    write_held_motions(
+      log, "; the loads that hold them: not yet with coulomb interfaces");
     if (interface.without_strength())
       log << "warning: " << entry
           << ": a coulomb interface has c = 0 and no Initial stress: it has "
              "no strength\n";
-    if (!held_solution.empty())
-      {
-        const auto held = applied_loads(0., 1.);
-        log << "held loads first (" << settings.held_load_steps
-            << " load-controlled steps), then held: body force, tractions; "
-               "foundation V "
-            << held[2] << " kN, H " << held[0] << " kN, M "
-            << moment_about_reference(held, parameters.rigid_foundation)
-            << " kN m, T " << held[5] << " kN m\n";
-        run_stage(true, settings.held_load_steps, log);
-      }
-    run_stage(false, settings.load_steps, log);
+    LoadPath(settings, entry, *this).run(log);
     if (set.n_owning_ranks() > 1)
       log << "  MPI: " << set.n_rank_sums() << " sums over the ranks ("
           << "one per iteration, a few per step), " << set.rank_sum_time()
           << " s in them on rank 0 (computing or waiting for the others)\n";
   }
 
-  void
-  CoupledInterfaceSolver::run_stage(const bool         holding,
-                                    const unsigned int n_steps,
-                                    std::ostream      &log)
+  bool
+  CoupledInterfaceSolver::solve_trial(const double target, const bool holding)
   {
-    holding_stage = holding;
-    // Displacement control moves from where the held loads left the
-    // controlled motion to Target.
-    const double start =
-      controls_motion() ?
-        controlled_component(motion_of(committed), settings.motion) :
-        0.;
-    double       done = 0., increment = 1. / n_steps;
-    unsigned int cuts = 0;
-    // The state before the last converged step and that step's size: the
-    // next step starts from the last correction extrapolated (as for the
-    // plastic soil, doc/soil-plasticity.md 3b); none after harmonics grow.
-    StepState before_last;
-    double    last_increment = 0.;
-    while (done < 1. - 1e-12)
-      {
-        const double fraction = std::min(1., done + increment);
-        const double target   = controls_motion() ?
-                                  start + fraction * (settings.target - start) :
-                                  fraction;
-        StepState    state    = committed;
-        if (last_increment > 0.)
-          extrapolate(before_last, increment / last_increment, state);
-        LoadStepResult    result;
-        InterfaceSnapshot snapshot;
-        const auto        clock = std::chrono::steady_clock::now();
-        if (!solve_step(target, state, result, snapshot))
-          {
-            AssertThrow(
-              ++cuts <= settings.maximum_step_cuts,
-              ExcMessage(unconverged_step_message(
-                entry, done, n_steps, holding, steps.size(), settings)));
-            increment /= 2.;
-            log << "  step cut to " << increment << " of the "
-                << (holding ? "held loads" : "loading") << '\n';
-            continue;
-          }
-        const std::vector<Harmonic> added = harmonics_called_for(snapshot, log);
-        if (!added.empty())
-          {
-            grow(added);
-            last_increment = 0.;
-            continue;
-          }
-        before_last          = std::move(committed);
-        last_increment       = fraction - done;
-        committed            = state;
-        done                 = fraction;
-        result.n_harmonics   = set.size();
-        result.load_factor   = state.load_factor;
-        result.held_fraction = state.held_fraction;
-        result.motion        = motion_of(state);
-        result.time          = std::chrono::duration<double>(
-                        std::chrono::steady_clock::now() - clock)
-                        .count();
-        steps.push_back(result);
-        snapshots.push_back(std::move(snapshot));
-        const auto loads =
-          applied_loads(result.load_factor, result.held_fraction);
-        log << "  step " << steps.size()
-            << (holding ? " (held loads): factor " : ": factor ")
-            << result.load_factor << ", V " << loads[2] << " kN, H " << loads[0]
-            << " kN, M "
-            << moment_about_reference(loads, parameters.rigid_foundation)
-            << " kN m, T " << loads[5] << " kN m; w "
-            << result.motion.vertical_displacement << " m, u "
-            << result.motion.horizontal_displacement << " m, rotation "
-            << result.motion.rotation << " rad, twist " << result.motion.twist
-            << " rad; " << result.iterations << " iterations; stick/slip/open "
-            << result.states[0] << '/' << result.states[1] << '/'
-            << result.states[2] << "; " << result.n_harmonics << " harmonics";
-        if (result.multiplier_updates > 0)
-          log << "; " << result.multiplier_updates
-              << " contact multiplier updates";
-        log << '\n';
-      }
+    holding_stage  = holding;
+    trial_result   = LoadStepResult();
+    trial_snapshot = InterfaceSnapshot();
+    return solve_step(target, trial, trial_result, trial_snapshot);
+  }
+
+  bool
+  CoupledInterfaceSolver::grows(std::ostream &log)
+  {
+    const std::vector<Harmonic> added =
+      harmonics_called_for(trial_snapshot, log);
+    if (added.empty())
+      return false;
+    grow(added);
+    return true;
+  }
+
+  void
+  CoupledInterfaceSolver::commit_trial(const LoadStep &step,
+                                       const bool      holding,
+                                       std::ostream   &log)
+  {
+    LoadStepResult &result = trial_result;
+    commit(result, step);
+    result.n_harmonics = set.size();
+    steps.push_back(result);
+    snapshots.push_back(std::move(trial_snapshot));
+    const auto loads = applied_loads(result.load_factor, result.held_fraction);
+    log << "  step " << steps.size()
+        << (holding ? " (held loads): factor " : ": factor ")
+        << result.load_factor << ", V " << loads[2] << " kN, H " << loads[0]
+        << " kN, M "
+        << moment_about_reference(loads, parameters.rigid_foundation)
+        << " kN m, T " << loads[5] << " kN m; w "
+        << result.motion.vertical_displacement << " m, u "
+        << result.motion.horizontal_displacement << " m, rotation "
+        << result.motion.rotation << " rad, twist " << result.motion.twist
+        << " rad; " << result.iterations << " iterations; stick/slip/open "
+        << result.states[0] << '/' << result.states[1] << '/'
+        << result.states[2] << "; " << result.n_harmonics << " harmonics";
+    if (result.multiplier_updates > 0)
+      log << "; " << result.multiplier_updates << " contact multiplier updates";
+    log << '\n';
   }
 } // namespace FourierSSI

@@ -4,6 +4,8 @@
 #include <deal.II/fe/fe_values.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/coupled_soil_solver.h>
+#include <fourier_ssi/coupled/load_path.h>
+#include <fourier_ssi/coupled/load_pattern.h>
 #include <fourier_ssi/fourier/harmonic_pair_integral.h>
 #include <fourier_ssi/harmonic/stress_postprocessor.h>
 #include <fourier_ssi/linear_algebra/thread_ranges.h>
@@ -85,7 +87,8 @@ namespace FourierSSI
 
   CoupledSoilSolver::CoupledSoilSolver(const HarmonicSet   &set,
                                        const AllParameters &parameters)
-    : set(set)
+    : LoadPathStates(set, parameters, "kNm")
+    , set(set)
     , parameters(parameters)
     , settings(parameters.load_path)
     , harmonics(set.get_harmonics())
@@ -95,12 +98,7 @@ namespace FourierSSI
   {
     for (const Harmonic &h : harmonics)
       operators.emplace_back(h);
-    for (unsigned int h = 0; h < set.size(); ++h)
-      AssertThrow(!set.problem(h).get_constraints().has_inhomogeneities(),
-                  ExcMessage(entry +
-                             ": not yet: prescribed (non-zero) Dirichlet "
-                             "values with plastic soil; load the scene "
-                             "through the Rigid foundation"));
+    check_homogeneous_constraints(entry, "plastic soil");
     // Newton needs the whole coupled block matrix on one rank; the
     // initial-stiffness iteration re-solves each harmonic on its owner.
     AssertThrow(!parameters.soil_plasticity.tangent ||
@@ -120,10 +118,7 @@ namespace FourierSSI
       }
     solve_load_pattern();
     solve_held_loads();
-    committed.correction_solution = pattern_solution;
-    for (Vector<double> &v : committed.correction_solution)
-      v = 0.;
-    committed.correction_load = committed.correction_solution;
+    start_at_rest();
     committed.plastic.assign(points.size() * sampling.n_samples(),
                              {{0., 0., 0., 0., 0., 0.}});
     if (interface)
@@ -244,76 +239,28 @@ namespace FourierSSI
   void
   CoupledSoilSolver::solve_load_pattern()
   {
-    // Each rank solves the harmonics it owns; the others' fields stay zero
-    // here (never read: their strain amplitudes come from their owners).
-    std::vector<std::vector<Vector<double>>> b(set.size());
-    std::vector<double>                      norm_sqr(set.size(), 0.);
-    for (unsigned int h = 0; h < set.size(); ++h)
-      {
-        pattern_load.push_back(
-          set.owns(h) ?
-            load_factor_pattern(set.problem(h)) :
-            Vector<double>(set.problem(h).get_dof_handler().n_dofs()));
-        if (set.owns(h))
-          {
-            b[h]        = {pattern_load[h]};
-            norm_sqr[h] = b[h][0].norm_sqr();
-          }
-      }
-    pattern_load_norm = std::sqrt(sum_over_harmonics(norm_sqr, 1)[0]);
-    set.solve_increments(b);
-    for (unsigned int h = 0; h < set.size(); ++h)
-      pattern_solution.push_back(
-        set.owns(h) ?
-          b[h][0] :
-          Vector<double>(set.problem(h).get_dof_handler().n_dofs()));
-    pattern_strain = strain_amplitudes(pattern_solution);
+    loads          = LoadPattern(set);
+    pattern_strain = strain_amplitudes(loads.solution);
     if (interface)
       pattern_relative =
-        interface->relative_displacements(pattern_solution, sampling);
+        interface->relative_displacements(loads.solution, sampling);
   }
 
   void
   CoupledSoilSolver::solve_held_loads()
   {
-    // |F_held|^2 and F . F_held per harmonic [h * 2 + 0, 1], on the owner.
-    std::vector<std::vector<Vector<double>>> b(set.size());
-    std::vector<double>                      products(2 * set.size(), 0.);
-    for (unsigned int h = 0; h < set.size(); ++h)
-      {
-        if (!set.owns(h))
-          continue;
-        Vector<double> held = held_load(h);
-        products[2 * h]     = held.norm_sqr();
-        products[2 * h + 1] = held * pattern_load[h];
-        b[h]                = {std::move(held)};
-      }
-    const std::vector<double> sums = sum_over_harmonics(products, 2);
-    held_load_norm                 = std::sqrt(sums[0]);
-    pattern_held_dot               = sums[1];
-    // No held loads (the same answer on every rank): no held stage.
-    if (held_load_norm == 0.)
+    if (!loads.holds_loads())
       return;
-    set.solve_increments(b);
-    for (unsigned int h = 0; h < set.size(); ++h)
-      held_solution.push_back(
-        set.owns(h) ?
-          b[h][0] :
-          Vector<double>(set.problem(h).get_dof_handler().n_dofs()));
-    held_strain = strain_amplitudes(held_solution);
+    held_strain = strain_amplitudes(loads.held_solution);
     if (interface)
       held_relative =
-        interface->relative_displacements(held_solution, sampling);
+        interface->relative_displacements(loads.held_solution, sampling);
   }
 
   double
   CoupledSoilSolver::applied_load_norm(const StepState &state) const
   {
-    return combined_load_norm(state.load_factor,
-                              state.held_fraction,
-                              pattern_load_norm,
-                              pattern_held_dot,
-                              held_load_norm);
+    return loads.applied_norm(state.load_factor, state.held_fraction);
   }
 
   std::vector<std::vector<StrainVector>>
@@ -384,18 +331,6 @@ namespace FourierSSI
     result.n_plastic = static_cast<unsigned int>(counts[1]);
     result.largest_yield_value =
       Utilities::MPI::max(result.largest_yield_value, set.get_ranks());
-  }
-
-  std::vector<double>
-  CoupledSoilSolver::sum_over_harmonics(std::vector<double> values,
-                                        const unsigned int  n) const
-  {
-    set.sum_over_ranks(values);
-    std::vector<double> sum(n, 0.);
-    for (unsigned int h = 0; h < values.size() / n; ++h)
-      for (unsigned int c = 0; c < n; ++c)
-        sum[c] += values[h * n + c];
-    return sum;
   }
 
   std::vector<StrainVector>
@@ -764,11 +699,11 @@ namespace FourierSSI
           std::vector<double> motion = {0., 0.};
           if (set.owns(h))
             {
-              motion[0] = controlled_motion(h, pattern_solution[h]);
+              motion[0] = controlled_motion(h, loads.solution[h]);
               motion[1] = controlled_motion(h, state.correction_solution[h]);
-              if (!held_solution.empty())
-                motion[1] +=
-                  state.held_fraction * controlled_motion(h, held_solution[h]);
+              if (!loads.held_solution.empty())
+                motion[1] += state.held_fraction *
+                             controlled_motion(h, loads.held_solution[h]);
             }
           set.sum_over_ranks(motion);
           const double by_pattern = motion[0], now = motion[1];
@@ -839,16 +774,11 @@ namespace FourierSSI
     return true;
   }
 
-  void
-  CoupledSoilSolver::update_tangent(const std::vector<StrainVector> &strain,
-                                    const std::vector<LocalVector>  &relative)
+  std::vector<std::vector<double>>
+  CoupledSoilSolver::softening_integrals(
+    const std::vector<StrainVector> &strain) const
   {
-    const unsigned int N = sampling.n_samples(), H = set.size();
-    // 1. S_hg = theta integral of factor_h (D_e - D_ep) factor_g per point,
-    //    over the samples that yield (harmonic_pair_integral.h); empty: a
-    //    point elastic at every theta. softening[p][(a * 6 + b) * H^2 + h *
-    //    H + g], the harmonic pair innermost (contiguous in the assembly).
-    const unsigned int               HH = H * H;
+    const unsigned int               N = sampling.n_samples();
     std::vector<std::vector<double>> softening(points.size());
     for_each_range(
       points.size(),
@@ -875,24 +805,26 @@ namespace FourierSSI
               integral.integrals(softening[p]);
           }
       });
-    // 2. K_t = diag(K_h) - the softening of the yielding cells, block row h
-    //    by harmonic h's thread.
-    if (!tangent)
-      {
-        std::vector<std::vector<std::vector<types::global_dof_index>>> dofs;
-        for (const SoilCell &cell : cells)
-          dofs.push_back(cell.dof_indices);
-        // The coulomb interfaces' pairs couple the harmonics too.
-        if (interface)
-          for (auto &pair : interface->pair_dofs())
-            dofs.push_back(std::move(pair));
-        tangent = std::make_unique<CoupledTangent>(set, dofs);
-      }
-    tangent->reset_to_elastic();
-    const unsigned int n_dofs = component.size();
-    // The cells with a yielding point, and the Bbar strains of their shape
-    // functions for every harmonic [yielding cell][h][i][q], once per build
-    // (every block row h needs every column harmonic g).
+    return softening;
+  }
+
+  void
+  CoupledSoilSolver::make_tangent()
+  {
+    std::vector<std::vector<std::vector<types::global_dof_index>>> dofs;
+    for (const SoilCell &cell : cells)
+      dofs.push_back(cell.dof_indices);
+    // The coulomb interfaces' pairs couple the harmonics too.
+    if (interface)
+      for (auto &pair : interface->pair_dofs())
+        dofs.push_back(std::move(pair));
+    tangent = std::make_unique<CoupledTangent>(set, dofs);
+  }
+
+  std::vector<unsigned int>
+  CoupledSoilSolver::yielding_cells(
+    const std::vector<std::vector<double>> &softening) const
+  {
     std::vector<unsigned int> yielding;
     for (unsigned int c = 0; c < cells.size(); ++c)
       for (unsigned int q = 0; q < cells[c].radius.size(); ++q)
@@ -901,9 +833,16 @@ namespace FourierSSI
             yielding.push_back(c);
             break;
           }
-    using ShapeStrains = std::vector<std::vector<StrainVector>>;
+    return yielding;
+  }
+
+  std::vector<std::vector<CoupledSoilSolver::ShapeStrains>>
+  CoupledSoilSolver::shape_strains(
+    const std::vector<unsigned int> &yielding) const
+  {
+    const unsigned int                     n_dofs = component.size();
     std::vector<std::vector<ShapeStrains>> strains(
-      yielding.size(), std::vector<ShapeStrains>(H));
+      yielding.size(), std::vector<ShapeStrains>(set.size()));
     set.for_each([&](const unsigned int h) {
       for (unsigned int y = 0; y < yielding.size(); ++y)
         {
@@ -923,44 +862,77 @@ namespace FourierSSI
           strains[y][h] = std::move(b);
         }
     });
+    return strains;
+  }
+
+  void
+  CoupledSoilSolver::add_cell_softening(
+    const SoilCell                         &cell,
+    const unsigned int                      h,
+    const unsigned int                      g,
+    const std::vector<std::vector<double>> &softening,
+    const ShapeStrains                     &row_strain,
+    const ShapeStrains                     &column_strain,
+    FullMatrix<double>                     &local) const
+  {
+    const unsigned int H = set.size(), HH = H * H, n_dofs = component.size();
+    local = 0.;
+    for (unsigned int q = 0; q < cell.radius.size(); ++q)
+      {
+        const unsigned int p = cell.first_point + q;
+        if (softening[p].empty())
+          continue;
+        const double *s  = &softening[p][h * H + g];
+        const double  dV = points[p].dV;
+        for (unsigned int j = 0; j < n_dofs; ++j)
+          {
+            StrainVector sb{};
+            for (unsigned int a = 0; a < 6; ++a)
+              for (unsigned int e = 0; e < 6; ++e)
+                sb[a] += s[(a * 6 + e) * HH] * column_strain[j][q][e];
+            for (unsigned int i = 0; i < n_dofs; ++i)
+              {
+                double sum = 0.;
+                for (unsigned int a = 0; a < 6; ++a)
+                  sum += row_strain[i][q][a] * sb[a];
+                local(i, j) -= dV * sum;
+              }
+          }
+      }
+  }
+
+  void
+  CoupledSoilSolver::update_tangent(const std::vector<StrainVector> &strain,
+                                    const std::vector<LocalVector>  &relative)
+  {
+    const unsigned int H = set.size();
+    // 1. S_hg = theta integral of factor_h (D_e - D_ep) factor_g per point,
+    //    over the samples that yield (harmonic_pair_integral.h); empty: a
+    //    point elastic at every theta. softening[p][(a * 6 + b) * H^2 + h *
+    //    H + g], the harmonic pair innermost (contiguous in the assembly).
+    const std::vector<std::vector<double>> softening =
+      softening_integrals(strain);
+    // 2. K_t = diag(K_h) - the softening of the yielding cells, block row h
+    //    by harmonic h's thread; the Bbar strains of the shape functions of
+    //    the yielding cells once per build (every block row h needs every
+    //    column harmonic g).
+    if (!tangent)
+      make_tangent();
+    tangent->reset_to_elastic();
+    const std::vector<unsigned int> yielding = yielding_cells(softening);
+    const std::vector<std::vector<ShapeStrains>> strains =
+      shape_strains(yielding);
     // Block row h: K_t,hg -= int Bbar_h^T S_hg Bbar_g.
     set.for_each([&](const unsigned int h) {
-      FullMatrix<double> local(n_dofs, n_dofs);
+      FullMatrix<double> local(component.size(), component.size());
       for (unsigned int y = 0; y < yielding.size(); ++y)
-        {
-          const SoilCell     &cell       = cells[yielding[y]];
-          const unsigned int  n_q        = cell.radius.size();
-          const ShapeStrains &row_strain = strains[y][h];
-          for (unsigned int g = 0; g < H; ++g)
-            {
-              const ShapeStrains &column_strain = strains[y][g];
-              local                             = 0.;
-              for (unsigned int q = 0; q < n_q; ++q)
-                {
-                  const unsigned int p = cell.first_point + q;
-                  if (softening[p].empty())
-                    continue;
-                  const double *s  = &softening[p][h * H + g];
-                  const double  dV = points[p].dV;
-                  for (unsigned int j = 0; j < n_dofs; ++j)
-                    {
-                      StrainVector sb{};
-                      for (unsigned int a = 0; a < 6; ++a)
-                        for (unsigned int e = 0; e < 6; ++e)
-                          sb[a] += s[(a * 6 + e) * HH] * column_strain[j][q][e];
-                      for (unsigned int i = 0; i < n_dofs; ++i)
-                        {
-                          double sum = 0.;
-                          for (unsigned int a = 0; a < 6; ++a)
-                            sum += row_strain[i][q][a] * sb[a];
-                          local(i, j) -= dV * sum;
-                        }
-                    }
-                }
-              tangent->add(
-                h, g, local, cell.dof_indices[h], cell.dof_indices[g]);
-            }
-        }
+        for (unsigned int g = 0; g < H; ++g)
+          {
+            const SoilCell &cell = cells[yielding[y]];
+            add_cell_softening(
+              cell, h, g, softening, strains[y][h], strains[y][g], local);
+            tangent->add(h, g, local, cell.dof_indices[h], cell.dof_indices[g]);
+          }
     });
     // 3. The interfaces' part: -int B_h^T (D - D_t) B_g at the samples
     //    that slip or open.
@@ -972,7 +944,7 @@ namespace FourierSSI
     tangent->factorize();
     tangent_pattern.resize(H);
     for (unsigned int h = 0; h < H; ++h)
-      tangent_pattern[h] = pattern_load[h];
+      tangent_pattern[h] = loads.load[h];
     tangent->solve(tangent_pattern);
   }
 
@@ -1002,10 +974,137 @@ namespace FourierSSI
       du[h].add(load_change, tangent_pattern[h]);
       change[h].reinit(du[h].size());
       set.problem(h).get_system_matrix().vmult(change[h], du[h]);
-      change[h].add(-load_change, pattern_load[h]);
+      change[h].add(-load_change, loads.load[h]);
       set.problem(h).get_homogeneous_constraints().set_zero(change[h]);
     });
     return change;
+  }
+
+  CoupledSoilSolver::Evaluation
+  CoupledSoilSolver::evaluate(const StepState &state,
+                              SoilStepResult  &result) const
+  {
+    Evaluation e;
+    // 1-2: strains at every (point, theta), the return mapping.
+    e.strain = strain_samples(state.correction_solution,
+                              state.load_factor,
+                              state.held_fraction);
+    return_map(e.strain, e.plastic, result);
+    // 3-4: out-of-balance load and force residual R = G - c; the coulomb
+    //    interfaces add theirs (one c for both sources).
+    e.residual = load_of(e.plastic);
+    const double interface_load_norm =
+      interface ? add_interface_residual(state, e, result) : 0.;
+    for (unsigned int h = 0; h < set.size(); ++h)
+      e.residual[h] -= state.correction_load[h];
+    e.residual_norm = norm_over_harmonics(e.residual);
+    // The scale is |lambda F| and the interfaces' G (kn times a gap, the
+    // internal force of a stiff penalty), never the soil's G: that is D
+    // times the plastic strain, which grows without bound when the soil
+    // collapses, and would pass a residual of any size.
+    e.scale = {applied_load_norm(state), interface_load_norm};
+    return e;
+  }
+
+  double
+  CoupledSoilSolver::add_interface_residual(const StepState &state,
+                                            Evaluation      &e,
+                                            SoilStepResult  &result) const
+  {
+    e.relative = relative_samples(state.correction_solution,
+                                  state.load_factor,
+                                  state.held_fraction);
+    std::vector<Vector<double>> interface_load(set.size());
+    for (unsigned int h = 0; h < set.size(); ++h)
+      interface_load[h].reinit(e.residual[h].size());
+    result.contact    = add_interface_load(e.relative,
+                                        e.interface_plastic,
+                                        result.interface_state,
+                                        interface_load);
+    const double norm = norm_over_harmonics(interface_load);
+    for (unsigned int h = 0; h < set.size(); ++h)
+      e.residual[h] += interface_load[h];
+    result.largest_interface_yield_value =
+      interface->largest_yield_value(result.interface_state.traction);
+    return norm;
+  }
+
+  void
+  CoupledSoilSolver::accept(Evaluation        &e,
+                            const unsigned int iteration,
+                            StepState         &state,
+                            SoilStepResult    &result) const
+  {
+    count_over_ranks(result);
+    state.plastic           = std::move(e.plastic);
+    state.interface_plastic = std::move(e.interface_plastic);
+    result.iterations       = iteration;
+    result.residual         = e.scale.relative(e.residual_norm);
+  }
+
+  CoupledSoilSolver::NewtonMove
+  CoupledSoilSolver::newton_update(Evaluation     &e,
+                                   const bool      displacement_control,
+                                   StepState      &state,
+                                   NewtonProgress &newton)
+  {
+    // A Newton update that increased the residual crossed many changes of
+    // plastic state: halve it (backtracking).
+    if (newton.updates > 0 && e.residual_norm > newton.previous_norm)
+      {
+        // No decrease even at the shortest step: the Newton direction is
+        // wrong (a near-singular tangent at a plateau); going on from the
+        // worse point wanders off (measured: |R| / |F| up to 1e6 before
+        // the stagnation rule stops it), so cut the step at once.
+        if (newton.step_length <= smallest_step_length)
+          return NewtonMove::failed;
+        newton.step_length /= 2.;
+        for (unsigned int h = 0; h < set.size(); ++h)
+          {
+            state.correction_load[h].add(-newton.step_length,
+                                         newton.last_load[h]);
+            state.correction_solution[h].add(-newton.step_length,
+                                             newton.last_solution[h]);
+          }
+        return NewtonMove::backtracked;
+      }
+    // Cycling between plastic states: cut the step instead.
+    if (e.residual_norm < newton.smallest_norm)
+      {
+        newton.smallest_norm  = e.residual_norm;
+        newton.since_smallest = 0;
+      }
+    else if (++newton.since_smallest > stagnation_limit)
+      return NewtonMove::failed;
+    newton.previous_norm = e.residual_norm;
+    newton.step_length   = 1.;
+    // Rebuilt at every update: keeping it for 3-10 updates (modified
+    // Newton) was measured slower (doc/soil-plasticity.md 3b).
+    update_tangent(e.strain, e.relative);
+    e.residual = tangent_correction(e.residual, displacement_control);
+    ++newton.updates;
+    return NewtonMove::updated;
+  }
+
+  void
+  CoupledSoilSolver::apply_correction(std::vector<Vector<double>> correction,
+                                      StepState                  &state,
+                                      NewtonProgress             &newton) const
+  {
+    std::vector<std::vector<Vector<double>>> increment(set.size());
+    for (unsigned int h = 0; h < set.size(); ++h)
+      {
+        state.correction_load[h] += correction[h];
+        newton.last_load[h] = correction[h];
+        increment[h]        = {std::move(correction[h])};
+      }
+    set.solve_increments(increment);
+    for (unsigned int h = 0; h < set.size(); ++h)
+      if (set.owns(h))
+        {
+          state.correction_solution[h] += increment[h][0];
+          newton.last_solution[h] = increment[h][0];
+        }
   }
 
   bool
@@ -1020,18 +1119,12 @@ namespace FourierSSI
     if (holding)
       state.held_fraction = target;
     const bool tangent_stiffness = parameters.soil_plasticity.tangent;
-    std::vector<StrainVector> plastic;
-    std::vector<LocalVector>  interface_plastic;
-    FixedPointAcceleration    acceleration(acceleration_of(settings,
+    FixedPointAcceleration acceleration(acceleration_of(settings,
                                                         tangent_stiffness),
                                         settings.anderson_depth);
-    // Stiffness = tangent: the last update (to go back along it when it
-    // overshot), and the progress of the iteration.
-    std::vector<Vector<double>> last_load(set.size()),
-      last_solution(set.size());
-    double       step_length = 1., previous_norm = 0.;
-    double       smallest_norm = std::numeric_limits<double>::max();
-    unsigned int updates = 0, since_smallest = 0;
+    NewtonProgress         newton;
+    newton.last_load.resize(set.size());
+    newton.last_solution.resize(set.size());
     for (unsigned int iteration = 0; iteration <= settings.maximum_iterations;
          ++iteration)
       {
@@ -1039,146 +1132,29 @@ namespace FourierSSI
           state.load_factor = displacement_control ?
                                 controlled_load_factor(state, target) :
                                 target;
-        // 1-2: strains at every (point, theta), the return mapping.
-        const std::vector<StrainVector> strain =
-          strain_samples(state.correction_solution,
-                         state.load_factor,
-                         state.held_fraction);
-        return_map(strain, plastic, result);
-        // 3-4: out-of-balance load and force residual R = G - c; the
-        //    coulomb interfaces add theirs (one c for both sources).
-        std::vector<Vector<double>> residual = load_of(plastic);
-        std::vector<LocalVector>    relative;
-        double                      interface_load_norm = 0.;
-        if (interface)
-          {
-            relative = relative_samples(state.correction_solution,
-                                        state.load_factor,
-                                        state.held_fraction);
-            std::vector<Vector<double>> interface_load(set.size());
-            for (unsigned int h = 0; h < set.size(); ++h)
-              interface_load[h].reinit(residual[h].size());
-            result.contact      = add_interface_load(relative,
-                                                interface_plastic,
-                                                result.interface_state,
-                                                interface_load);
-            interface_load_norm = norm_over_harmonics(interface_load);
-            for (unsigned int h = 0; h < set.size(); ++h)
-              residual[h] += interface_load[h];
-            result.largest_interface_yield_value =
-              interface->largest_yield_value(result.interface_state.traction);
-          }
-        for (unsigned int h = 0; h < set.size(); ++h)
-          residual[h] -= state.correction_load[h];
-        const double residual_norm = norm_over_harmonics(residual);
-        // The scale is |lambda F| and the interfaces' G (kn times a gap, the
-        // internal force of a stiff penalty), never the soil's G: that is
-        // D times the plastic strain, which grows without bound when the
-        // soil collapses, and would pass a residual of any size.
-        const ForceScale scale = {applied_load_norm(state),
-                                  interface_load_norm};
-        if (!std::isfinite(residual_norm))
+        Evaluation e = evaluate(state, result);
+        if (!std::isfinite(e.residual_norm))
           return false;
-        if (scale.converged(residual_norm, settings.tolerance))
+        if (e.scale.converged(e.residual_norm, settings.tolerance))
           {
-            count_over_ranks(result);
-            state.plastic           = plastic;
-            state.interface_plastic = interface_plastic;
-            result.iterations       = iteration;
-            result.residual         = scale.relative(residual_norm);
+            accept(e, iteration, state, result);
             return true;
           }
         if (tangent_stiffness)
           {
-            // A Newton update that increased the residual crossed many
-            // changes of plastic state: halve it (backtracking).
-            if (updates > 0 && residual_norm > previous_norm)
-              {
-                // No decrease even at the shortest step: the Newton
-                // direction is wrong (a near-singular tangent at a plateau);
-                // going on from the worse point wanders off (measured:
-                // |R| / |F| up to 1e6 before the stagnation rule stops it),
-                // so cut the step at once.
-                if (step_length <= smallest_step_length)
-                  return false;
-                step_length /= 2.;
-                for (unsigned int h = 0; h < set.size(); ++h)
-                  {
-                    state.correction_load[h].add(-step_length, last_load[h]);
-                    state.correction_solution[h].add(-step_length,
-                                                     last_solution[h]);
-                  }
-                continue;
-              }
-            // Cycling between plastic states: cut the step instead.
-            if (residual_norm < smallest_norm)
-              {
-                smallest_norm  = residual_norm;
-                since_smallest = 0;
-              }
-            else if (++since_smallest > stagnation_limit)
+            const NewtonMove move =
+              newton_update(e, displacement_control, state, newton);
+            if (move == NewtonMove::failed)
               return false;
-            previous_norm = residual_norm;
-            step_length   = 1.;
-            // Rebuilt at every update: keeping it for 3-10 updates (modified
-            // Newton) was measured slower (doc/soil-plasticity.md 3b).
-            update_tangent(strain, relative);
-            residual = tangent_correction(residual, displacement_control);
-            ++updates;
+            if (move == NewtonMove::backtracked)
+              continue;
           }
-        std::vector<Vector<double>> correction =
-          acceleration.increment(state.correction_load, residual);
-        std::vector<std::vector<Vector<double>>> increment(set.size());
-        for (unsigned int h = 0; h < set.size(); ++h)
-          {
-            state.correction_load[h] += correction[h];
-            last_load[h] = correction[h];
-            increment[h] = {std::move(correction[h])};
-          }
-        set.solve_increments(increment);
-        for (unsigned int h = 0; h < set.size(); ++h)
-          if (set.owns(h))
-            {
-              state.correction_solution[h] += increment[h][0];
-              last_solution[h] = increment[h][0];
-            }
+        apply_correction(acceleration.increment(state.correction_load,
+                                                e.residual),
+                         state,
+                         newton);
       }
     return false;
-  }
-
-  std::array<double, 6>
-  CoupledSoilSolver::applied_loads(const double load_factor,
-                                   const double held_fraction) const
-  {
-    return applied_foundation_loads(parameters.rigid_foundation,
-                                    load_factor,
-                                    held_fraction);
-  }
-
-  RigidMotion
-  CoupledSoilSolver::motion_of(const StepState &state) const
-  {
-    // Per harmonic [h * 4 + c], on its owner; summed in the harmonics' order.
-    std::vector<double> parts(4 * set.size(), 0.);
-    for (unsigned int h = 0; h < set.size(); ++h)
-      {
-        const RigidFoundation *foundation = set.problem(h).get_foundation();
-        if (!set.owns(h) || foundation == nullptr || harmonics[h].n > 1 ||
-            (harmonics[h].n == 1 && harmonics[h].family != Family::symmetric))
-          continue;
-        const RigidMotion m = foundation->motion(total_displacement(state, h));
-        parts[4 * h]        = m.vertical_displacement;
-        parts[4 * h + 1]    = m.twist;
-        parts[4 * h + 2]    = m.horizontal_displacement;
-        parts[4 * h + 3]    = m.rotation;
-      }
-    const std::vector<double> sum = sum_over_harmonics(parts, 4);
-    RigidMotion               total;
-    total.vertical_displacement   = sum[0];
-    total.twist                   = sum[1];
-    total.horizontal_displacement = sum[2];
-    total.rotation                = sum[3];
-    return total;
   }
 
   std::vector<std::pair<FoundationMotion, double>>
@@ -1215,19 +1191,6 @@ namespace FourierSSI
   }
 
   Vector<double>
-  CoupledSoilSolver::total_displacement(const StepState   &state,
-                                        const unsigned int h) const
-  {
-    return FourierSSI::total_displacement(pattern_solution[h],
-                                          state.load_factor,
-                                          state.correction_solution[h],
-                                          held_solution.empty() ?
-                                            nullptr :
-                                            &held_solution[h],
-                                          state.held_fraction);
-  }
-
-  Vector<double>
   CoupledSoilSolver::held_load(const unsigned int h) const
   {
     return held_stage_load(set.problem(h));
@@ -1241,21 +1204,13 @@ namespace FourierSSI
     for (unsigned int h = 0; h < set.size(); ++h)
       if (set.owns(h))
         {
-          Vector<double> load = pattern_load[h];
+          Vector<double> load = loads.load[h];
           load *= committed.load_factor;
-          if (!held_solution.empty())
+          if (!loads.held_solution.empty())
             load.add(committed.held_fraction, held_load(h));
           parts[h] = load * total_displacement(committed, h);
         }
-    return sum_over_harmonics(parts, 1)[0];
-  }
-
-  Vector<double>
-  CoupledSoilSolver::solution(const unsigned int i) const
-  {
-    Vector<double> u = total_displacement(committed, i);
-    set.broadcast_from_owner(i, u.begin(), u.size());
-    return u;
+    return sum_over_harmonics(set, parts, 1)[0];
   }
 
   void
@@ -1274,24 +1229,8 @@ namespace FourierSSI
         << settings.load_steps << " steps, tolerance " << settings.tolerance
         << ", " << iteration_name(settings, parameters.soil_plasticity.tangent)
         << (cells.front().projection ? ", B-bar" : "") << '\n';
-    if (!parameters.rigid_foundation.held_motions.empty())
-      {
-        log << "held at zero (Rigid foundation/Held motions):";
-        for (const FoundationMotion m :
-             parameters.rigid_foundation.held_motions)
-          log << ' ' << name_of(m);
-        log << '\n';
-      }
-    if (!held_solution.empty())
-      {
-        log << "held loads first (" << settings.held_load_steps
-            << " load-controlled steps), then held: body force, tractions; "
-               "foundation ";
-        write_held_loads(log);
-        log << '\n';
-        run_stage(true, settings.held_load_steps, log);
-      }
-    run_stage(false, settings.load_steps, log);
+    write_held_motions(log, "");
+    LoadPath(settings, entry, *this).run(log);
     if (set.n_owning_ranks() > 1)
       log << "  MPI: " << set.n_rank_sums()
           << " sums over the ranks (strain amplitudes and theta integrals "
@@ -1299,15 +1238,6 @@ namespace FourierSSI
              "control, a few per step), "
           << set.rank_sum_time()
           << " s in them on rank 0 (computing or waiting for the others)\n";
-  }
-
-  void
-  CoupledSoilSolver::write_held_loads(std::ostream &log) const
-  {
-    const auto held = applied_loads(0., 1.);
-    log << "V " << held[2] << " kN, H " << held[0] << " kN, M "
-        << moment_about_reference(held, parameters.rigid_foundation)
-        << " kNm, T " << held[5] << " kNm";
   }
 
   void
@@ -1326,96 +1256,33 @@ namespace FourierSSI
       }
   }
 
-  void
-  CoupledSoilSolver::run_stage(const bool         holding,
-                               const unsigned int n_steps,
-                               std::ostream      &log)
+  bool
+  CoupledSoilSolver::solve_trial(const double target, const bool holding)
   {
-    const bool load_control =
-      settings.control == LoadPathParameters::Control::load;
-    // Displacement control moves from where the held loads left the
-    // controlled motion to Target.
-    const double start =
-      holding || load_control ?
-        0. :
-        controlled_component(motion_of(committed), settings.motion);
-    const double step = 1. / n_steps;
-    double       done = 0., increment = step;
-    // Cuts of the step being solved; converged steps at a cut size since
-    // the last change of size: `needed` of them double it back toward
-    // `step` (a cut at a sharp change of plastic state need not slow the
-    // rest of the path). A doubled size that fails at once doubles `needed`:
-    // on a plateau where only the cut size converges, the failed attempts
-    // then become rarer instead of recurring every other step
-    // (doc/soil-plasticity.md 3b).
-    unsigned int cuts = 0, easy_steps = 0, needed = 2;
-    // The state before the last converged step of this stage and that
-    // step's size: the next step starts from the last correction
-    // extrapolated (secant predictor).
-    StepState before_last;
-    double    last_increment = 0.;
-    bool      just_grown     = false;
-    while (done < 1. - 1e-12)
-      {
-        const double fraction = std::min(1., done + increment);
-        const double target   = holding || load_control ?
-                                  fraction :
-                                  start + fraction * (settings.target - start);
-        StepState    state    = committed;
-        if (last_increment > 0.)
-          extrapolate(before_last, increment / last_increment, state);
-        SoilStepResult result;
-        const auto     clock = std::chrono::steady_clock::now();
-        if (!solve_step(target, holding, state, result))
-          {
-            AssertThrow(
-              ++cuts <= settings.maximum_step_cuts,
-              ExcMessage(unconverged_step_message(
-                entry, done, n_steps, holding, steps.size(), settings)));
-            increment /= 2.;
-            easy_steps = 0;
-            if (just_grown)
-              needed *= 2;
-            just_grown = false;
-            log << "  step cut to " << increment << " of the "
-                << (holding ? "held loads" : "loading") << '\n';
-            continue;
-          }
-        before_last    = std::move(committed);
-        last_increment = fraction - done;
-        committed      = state;
-        done           = fraction;
-        cuts           = 0;
-        if (just_grown) // the doubled size converged: back to the default
-          needed = 2;
-        just_grown = false;
-        if (increment < step && ++easy_steps == needed)
-          {
-            increment  = std::min(step, 2. * increment);
-            easy_steps = 0;
-            just_grown = true;
-          }
-        result.load_factor    = state.load_factor;
-        result.held_fraction  = state.held_fraction;
-        result.motion         = motion_of(state);
-        result.held_reactions = held_reactions(state);
-        result.time           = std::chrono::duration<double>(
-                        std::chrono::steady_clock::now() - clock)
-                        .count();
-        steps.push_back(result);
-        if (step_observer)
-          step_observer(result);
-        log << "  step " << steps.size()
-            << (holding ? " (held loads): " : ": ");
-        write_foundation_state(log, result);
-        log << "; " << result.iterations << " iterations; plastic samples "
-            << result.n_plastic << " of " << result.n_plastic + result.n_elastic
-            << "; max f " << result.largest_yield_value << " kPa; ";
-        if (interface)
-          log << "interface stick/slip/open " << result.contact[0] << '/'
-              << result.contact[1] << '/' << result.contact[2] << "; ";
-        log << result.time << " s" << std::endl;
-      }
+    trial_result = SoilStepResult();
+    return solve_step(target, holding, trial, trial_result);
+  }
+
+  void
+  CoupledSoilSolver::commit_trial(const LoadStep &step,
+                                  const bool      holding,
+                                  std::ostream   &log)
+  {
+    SoilStepResult &result = trial_result;
+    commit(result, step);
+    result.held_reactions = held_reactions(committed);
+    steps.push_back(result);
+    if (step_observer)
+      step_observer(result);
+    log << "  step " << steps.size() << (holding ? " (held loads): " : ": ");
+    write_foundation_state(log, result);
+    log << "; " << result.iterations << " iterations; plastic samples "
+        << result.n_plastic << " of " << result.n_plastic + result.n_elastic
+        << "; max f " << result.largest_yield_value << " kPa; ";
+    if (interface)
+      log << "interface stick/slip/open " << result.contact[0] << '/'
+          << result.contact[1] << '/' << result.contact[2] << "; ";
+    log << result.time << " s" << std::endl;
   }
 
   void

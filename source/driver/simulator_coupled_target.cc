@@ -242,6 +242,128 @@ namespace FourierSSI
     return true;
   }
 
+  bool
+  Simulator::next_coupled_member(CoupledCurveRun             &run,
+                                 const int                    member,
+                                 const CoupledTargetProgress &progress,
+                                 std::ostream                &log)
+  {
+    const double target = parameters.discretization.target_accuracy;
+    // Newton's coupled tangent is one LU over all harmonics: their DoFs
+    // together are what Maximum DoFs bounds here.
+    const double     dofs = coupled_dofs();
+    Triangulation<2> next;
+    DiscretizationDesign::build_plastic_member(parameters,
+                                               member,
+                                               interface_ids,
+                                               next);
+    const double more = cell_growth(next);
+    if (more * dofs > parameters.adaptivity.maximum_dofs)
+      {
+        std::ostringstream why;
+        why << "estimated relative error of the "
+            << label(run.goal_prefix, progress.goal.name) << " "
+            << (progress.mesh_values.size() >= 2 ?
+                  number(progress.relative(progress.mesh_error +
+                                           progress.harmonic_error +
+                                           progress.goal.plateau_error)) :
+                  std::string("unknown (one mesh solved)"))
+            << " with " << static_cast<long long>(dofs)
+            << " DoFs (all harmonics); the next mesh (about "
+            << static_cast<long long>(more * dofs)
+            << ") exceeds Adaptivity/Maximum DoFs = "
+            << parameters.adaptivity.maximum_dofs;
+        target_unmet(target, why.str(), log);
+        return false;
+      }
+    const std::string shortfall =
+      memory_shortfall(estimate_run_memory(parameters, next, plan),
+                       available_memory_on_all_ranks(communicator));
+    if (!shortfall.empty())
+      {
+        target_unmet(target,
+                     "the next mesh (" + std::to_string(next.n_active_cells()) +
+                       " cells): " + shortfall,
+                     log);
+        return false;
+      }
+    announce_member(member,
+                    next.n_active_cells(),
+                    more * dofs,
+                    next_member_time(progress.member_times, more),
+                    log);
+    run.release();
+    reconstruction = FieldReconstruction();
+    harmonic_set.reset();
+    outcomes.clear();
+    DiscretizationDesign::build_plastic_member(parameters,
+                                               member,
+                                               interface_ids,
+                                               *triangulation);
+    return true;
+  }
+
+  Simulator::CoarsestMember
+  Simulator::coarsest_member_harmonics(CoupledCurveRun       &run,
+                                       CoupledTargetProgress &progress,
+                                       const bool             growth,
+                                       std::ostream          &log)
+  {
+    const double target = parameters.discretization.target_accuracy;
+    if (!growth)
+      progress.known[highest_harmonic(plan.harmonics)] = progress.goal.value;
+    if (progress.known.size() < 2)
+      return CoarsestMember::solved;
+    progress.harmonic_error = estimate_sequence_error(values_of(progress.known),
+                                                      harmonic_doubling_ratio)
+                                .absolute;
+    // The truncation takes more than half the target: double the harmonics
+    // and solve this (the cheapest) mesh again, the values of fewer
+    // harmonics kept.
+    if (progress.relative(progress.harmonic_error) <= 0.5 * target)
+      return CoarsestMember::solved;
+    if (!double_harmonics(
+          run, target, progress.relative(progress.harmonic_error), log))
+      return CoarsestMember::stop;
+    progress.mesh_values.clear();
+    progress.member_times.clear();
+    return CoarsestMember::solve_again;
+  }
+
+  bool
+  Simulator::coupled_target_settled(const CoupledCurveRun &run,
+                                    const int              member,
+                                    CoupledTargetProgress &progress,
+                                    std::ostream          &log)
+  {
+    const double target = parameters.discretization.target_accuracy;
+    progress.mesh_error =
+      estimate_sequence_error(progress.mesh_values, one_halving_ratio).absolute;
+    const double      plateau = progress.goal.plateau_error;
+    const double      total   = progress.relative(progress.mesh_error +
+                                           progress.harmonic_error + plateau);
+    const std::string goal    = label(run.goal_prefix, progress.goal.name);
+    log << "target accuracy " << target << ": mesh " << member
+        << ", estimated relative error of the " << goal << " " << number(total)
+        << std::endl;
+    if (total <= target)
+      return true;
+    // What a finer mesh cannot lower: stop, saying which.
+    if (!(progress.relative(progress.harmonic_error + plateau) > target))
+      return false;
+    target_unmet(target,
+                 "estimated relative error of the " + goal + " " +
+                   number(total) + ", of which the harmonic truncation (n <= " +
+                   std::to_string(highest_harmonic(plan.harmonics)) + ") " +
+                   number(progress.relative(progress.harmonic_error)) +
+                   " and the plateau " + number(progress.relative(plateau)) +
+                   " do not fall with the mesh: list more harmonics "
+                   "(Discretization/Harmonics) or take the path further "
+                   "(Load path/Target)",
+                 log);
+    return true;
+  }
+
   void
   Simulator::solve_coupled_to_target(std::ostream &log, CoupledCurveRun &run)
   {
@@ -252,76 +374,13 @@ namespace FourierSSI
     const double target = parameters.discretization.target_accuracy;
     const bool   growth =
       parameters.load_path.maximum_harmonic > highest_harmonic(plan.harmonics);
-    Timer               run_timer;
-    double              last_member_time = 0.;
-    std::vector<double> mesh_values;
-    // Wall time of each member solved on this set of harmonics (cleared
-    // with mesh_values when the harmonics double): the next one's estimate.
-    std::vector<double> member_times;
-    // Member 0's goal value for each n_max solved, ascending n: the
-    // truncation sequence (doubling adds to it).
-    std::map<unsigned int, double> known;
-    CoupledGoal                    goal;
-    double                         harmonic_error = 0., mesh_error = 0.;
-    const auto                     relative = [&](const double error) {
-      return error / std::abs(goal.value);
-    };
+    Timer                 run_timer;
+    double                last_member_time = 0.;
+    CoupledTargetProgress progress;
     for (int member = 0;; ++member)
       {
-        if (member > 0)
-          {
-            // Newton's coupled tangent is one LU over all harmonics: their
-            // DoFs together are what Maximum DoFs bounds here.
-            const double     dofs = coupled_dofs();
-            Triangulation<2> next;
-            DiscretizationDesign::build_plastic_member(parameters,
-                                                       member,
-                                                       interface_ids,
-                                                       next);
-            const double more = cell_growth(next);
-            if (more * dofs > parameters.adaptivity.maximum_dofs)
-              {
-                std::ostringstream why;
-                why << "estimated relative error of the "
-                    << label(run.goal_prefix, goal.name) << " "
-                    << (mesh_values.size() >= 2 ?
-                          number(relative(mesh_error + harmonic_error +
-                                          goal.plateau_error)) :
-                          std::string("unknown (one mesh solved)"))
-                    << " with " << static_cast<long long>(dofs)
-                    << " DoFs (all harmonics); the next mesh (about "
-                    << static_cast<long long>(more * dofs)
-                    << ") exceeds Adaptivity/Maximum DoFs = "
-                    << parameters.adaptivity.maximum_dofs;
-                target_unmet(target, why.str(), log);
-                break;
-              }
-            const std::string shortfall =
-              memory_shortfall(estimate_run_memory(parameters, next, plan),
-                               available_memory_on_all_ranks(communicator));
-            if (!shortfall.empty())
-              {
-                target_unmet(target,
-                             "the next mesh (" +
-                               std::to_string(next.n_active_cells()) +
-                               " cells): " + shortfall,
-                             log);
-                break;
-              }
-            announce_member(member,
-                            next.n_active_cells(),
-                            more * dofs,
-                            next_member_time(member_times, more),
-                            log);
-            run.release();
-            reconstruction = FieldReconstruction();
-            harmonic_set.reset();
-            outcomes.clear();
-            DiscretizationDesign::build_plastic_member(parameters,
-                                                       member,
-                                                       interface_ids,
-                                                       *triangulation);
-          }
+        if (member > 0 && !next_coupled_member(run, member, progress, log))
+          break;
         Timer member_timer;
         log << "target accuracy " << target << ": mesh " << member << ", "
             << triangulation->n_active_cells() << " cells" << std::endl;
@@ -329,12 +388,12 @@ namespace FourierSSI
         // share of the error changes little with the mesh
         // (doc/soil-plasticity.md 8b).
         if (member == 0 && !growth)
-          solve_fewer_harmonics(run, known, log);
-        goal = run.solve(log);
-        mesh_values.push_back(goal.value);
+          solve_fewer_harmonics(run, progress.known, log);
+        progress.goal = run.solve(log);
+        progress.mesh_values.push_back(progress.goal.value);
         last_member_time = member_timer.wall_time();
-        member_times.push_back(last_member_time);
-        if (!std::isfinite(goal.plateau_error))
+        progress.member_times.push_back(last_member_time);
+        if (!std::isfinite(progress.goal.plateau_error))
           {
             target_unmet(target,
                          "the curve does not bend over by its end (no "
@@ -344,62 +403,30 @@ namespace FourierSSI
           }
         if (member == 0)
           {
-            if (!growth)
-              known[highest_harmonic(plan.harmonics)] = goal.value;
-            if (known.size() >= 2)
-              harmonic_error = estimate_sequence_error(values_of(known),
-                                                       harmonic_doubling_ratio)
-                                 .absolute;
-            // The truncation takes more than half the target: double the
-            // harmonics and solve this (the cheapest) mesh again, the
-            // values of fewer harmonics kept.
-            if (known.size() >= 2 && relative(harmonic_error) > 0.5 * target)
-              {
-                if (!double_harmonics(
-                      run, target, relative(harmonic_error), log))
-                  break;
-                mesh_values.clear();
-                member_times.clear();
-                --member; // member 0 again (the loop's ++ brings it back)
-              }
-            continue; // two meshes are needed for the mesh error
+            const CoarsestMember next =
+              coarsest_member_harmonics(run, progress, growth, log);
+            if (next == CoarsestMember::stop)
+              break;
+            if (next == CoarsestMember::solve_again)
+              --member; // member 0 again (the loop's ++ brings it back)
+            continue;   // two meshes are needed for the mesh error
           }
-        mesh_error =
-          estimate_sequence_error(mesh_values, one_halving_ratio).absolute;
-        const double total =
-          relative(mesh_error + harmonic_error + goal.plateau_error);
-        log << "target accuracy " << target << ": mesh " << member
-            << ", estimated relative error of the "
-            << label(run.goal_prefix, goal.name) << " " << number(total)
-            << std::endl;
-        if (total <= target)
+        if (coupled_target_settled(run, member, progress, log))
           break;
-        // What a finer mesh cannot lower: stop, saying which.
-        if (relative(harmonic_error + goal.plateau_error) > target)
-          {
-            target_unmet(
-              target,
-              "estimated relative error of the " +
-                label(run.goal_prefix, goal.name) + " " + number(total) +
-                ", of which the harmonic truncation (n <= " +
-                std::to_string(highest_harmonic(plan.harmonics)) + ") " +
-                number(relative(harmonic_error)) + " and the plateau " +
-                number(relative(goal.plateau_error)) +
-                " do not fall with the mesh: list more harmonics "
-                "(Discretization/Harmonics) or take the path further "
-                "(Load path/Target)",
-              log);
-            break;
-          }
       }
     estimate_wall_time = run_timer.wall_time() - last_member_time;
     // Not estimated: NaN; n = 0 alone is axisymmetric, no truncation.
-    const double harmonics = known.size() >= 2 ? harmonic_error :
-                             highest_harmonic(plan.harmonics) == 0 ?
-                                                 0. :
-                                                 std::nan("");
-    report_coupled_error(
-      run, goal, mesh_values.size(), mesh_error, harmonics, growth, log);
+    const double harmonics =
+      progress.known.size() >= 2            ? progress.harmonic_error :
+      highest_harmonic(plan.harmonics) == 0 ? 0. :
+                                              std::nan("");
+    report_coupled_error(run,
+                         progress.goal,
+                         progress.mesh_values.size(),
+                         progress.mesh_error,
+                         harmonics,
+                         growth,
+                         log);
     run.write_files(log);
   }
 

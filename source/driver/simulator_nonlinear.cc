@@ -94,9 +94,7 @@ namespace FourierSSI
     if (!writes_csv())
       return;
     {
-      const std::string curve = result_files.claim("load-displacement.csv");
-      solver.write_csv(curve);
-      log << "load-displacement curve written to " << curve << std::endl;
+      write_load_displacement_csv(solver, log);
       const std::string state = result_files.claim("interface-state.csv");
       solver.write_interface_state_csv(state);
       log << "interface state (point x theta x step) written to " << state

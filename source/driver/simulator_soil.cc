@@ -304,9 +304,7 @@ namespace FourierSSI
   {
     if (!writes_csv())
       return;
-    const std::string curve = result_files.claim("load-displacement.csv");
-    solver.write_csv(curve);
-    log << "load-displacement curve written to " << curve << std::endl;
+    write_load_displacement_csv(solver, log);
     if (solver.has_coulomb_interfaces())
       {
         const std::string state = result_files.claim("interface-state.csv");

@@ -121,11 +121,10 @@ namespace FourierSSI
                         "4",
                         Patterns::Integer(0,
                                           LoadPathParameters::most_step_cuts),
-                        "Halvings of a step that does not converge before "
-                        "the run stops with an error (plastic soil: of each "
-                        "step, and a cut step size doubles back after two "
-                        "converged steps, twice as many after a doubling "
-                        "that failed; interfaces: over the run). At most 20 "
+                        "Halvings of each step that does not converge "
+                        "before the run stops with an error; a cut step "
+                        "size doubles back after two converged steps, twice "
+                        "as many after a doubling that failed. At most 20 "
                         "(a millionth of the step).");
     }
 

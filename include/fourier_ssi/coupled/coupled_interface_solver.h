@@ -53,6 +53,7 @@
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/initial_stress.h>
+#include <fourier_ssi/coupled/load_path_states.h>
 #include <fourier_ssi/fourier/theta_sampling.h>
 #include <fourier_ssi/harmonic/harmonic_set.h>
 #include <fourier_ssi/input/load_path_parameters.h>
@@ -69,22 +70,9 @@ namespace FourierSSI
 {
   using namespace dealii;
 
-  /** One converged load step. */
-  struct LoadStepResult
+  /** One converged load step of the interfaces. */
+  struct LoadStepResult : LoadStep
   {
-    /** Factor on the scaled loads (load_factor_pattern). */
-    double load_factor = 0.;
-    /**
-     * Fraction of the held loads (held_stage_load: Rigid foundation/Held
-     * ..., body force, tractions) applied: rises to 1 in the held stage,
-     * then stays 1 while the load factor scales the foundation's loads.
-     */
-    double held_fraction = 0.;
-    /** Rigid motion of the foundation (RigidMotion fields). */
-    RigidMotion motion;
-    /** Out-of-balance solves of this step (0: elastic). */
-    unsigned int iterations = 0;
-    double       residual   = 0.;
     /** Interface (point, theta) samples sticking, slipping, open. */
     std::array<unsigned int, 3> states = {{0, 0, 0}};
     /**
@@ -95,13 +83,30 @@ namespace FourierSSI
     std::array<double, 6> resultant = {{0., 0., 0., 0., 0., 0.}};
     /** Uzawa updates of the contact multipliers (0: no contact). */
     unsigned int multiplier_updates = 0;
-    /** Wall time of the step [s]. */
-    double time = 0.;
     /** Harmonics solved in this step (grows with Maximum harmonic). */
     unsigned int n_harmonics = 0;
   };
 
-  class CoupledInterfaceSolver
+  /** Iteration state of a load step of the interfaces. */
+  struct InterfaceStepState : CorrectionState
+  {
+    /** K^-1 c valid at the read DoFs only (the iteration's view). */
+    std::vector<Vector<double>> interface_solution;
+    /** The controlled motion of K^-1 c [m or rad]. */
+    double controlled_motion = 0.;
+    /** Plastic relative displacement per point and sample. */
+    std::vector<LocalVector> plastic;
+    /**
+     * What the return mapping starts from at every sample: the committed
+     * plastic part, at contact samples shifted by the multipliers
+     * (NonlinearInterfacePoints::update_multipliers).
+     */
+    std::vector<LocalVector> origin;
+    /** Committed slip p_c of the contact samples (zero elsewhere). */
+    std::vector<LocalVector> slip;
+  };
+
+  class CoupledInterfaceSolver : private LoadPathStates<InterfaceStepState>
   {
   public:
     /**
@@ -151,13 +156,9 @@ namespace FourierSSI
     void
     write_interface_state_vtu(const std::string &filename) const;
 
-    /**
-     * Total displacement amplitudes of harmonic i (last converged state).
-     * Collective when the harmonics are distributed over ranks: every rank
-     * calls it for the same i and gets the owner's field.
-     */
-    Vector<double>
-    solution(const unsigned int i) const;
+    /** solution(i) and applied_loads() (load_path_states.h). */
+    using LoadPathStates::applied_loads;
+    using LoadPathStates::solution;
 
     /** N, the theta samples of the iteration. */
     unsigned int
@@ -165,15 +166,6 @@ namespace FourierSSI
     {
       return sampling.n_samples();
     }
-
-    /**
-     * The applied rigid-foundation loads at factor lambda in the order of
-     * LoadStepResult::resultant (F_x, F_y, F_z, M_x, M_y, M_z), with M about
-     * the origin (H at the reference elevation).
-     */
-    std::array<double, 6>
-    applied_loads(const double load_factor,
-                  const double held_fraction = 0.) const;
 
     /**
      * int int B_h^T D d r ds dtheta of the relative displacement d of the
@@ -219,29 +211,7 @@ namespace FourierSSI
       std::vector<double> controlled_motion;
     };
 
-    /** Iteration state of a load step. */
-    struct StepState
-    {
-      double load_factor = 0.;
-      /** rho: the held loads' part rho F_held of the load. */
-      double held_fraction = 0.;
-      /** K^-1 c per harmonic, and c (condensed). */
-      std::vector<Vector<double>> correction_solution, correction_load;
-      /** K^-1 c valid at the read DoFs only (the iteration's view). */
-      std::vector<Vector<double>> interface_solution;
-      /** The controlled motion of K^-1 c [m or rad]. */
-      double controlled_motion = 0.;
-      /** Plastic relative displacement per point and sample. */
-      std::vector<LocalVector> plastic;
-      /**
-       * What the return mapping starts from at every sample: the committed
-       * plastic part, at contact samples shifted by the multipliers
-       * (NonlinearInterfacePoints::update_multipliers).
-       */
-      std::vector<LocalVector> origin;
-      /** Committed slip p_c of the contact samples (zero elsewhere). */
-      std::vector<LocalVector> slip;
-    };
+    using StepState = InterfaceStepState;
 
     void
     solve_load_pattern();
@@ -253,21 +223,24 @@ namespace FourierSSI
     void
     solve_held_loads();
 
-    /**
-     * One stage of the load path in `steps` equal steps from the committed
-     * state: the held loads brought on by load control (holding), or the
-     * foundation's loads scaled by the load or displacement control.
-     */
+    /** LoadPath::Iteration: the trial step and its commit (load_path.h). */
+    bool
+    solve_trial(const double target, const bool holding) override;
+    bool
+    grows(std::ostream &log) override;
     void
-    run_stage(const bool holding, const unsigned int steps, std::ostream &log);
+    commit_trial(const LoadStep &step,
+                 const bool      holding,
+                 std::ostream   &log) override;
+    unsigned int
+    n_converged_steps() const override
+    {
+      return steps.size();
+    }
 
     /** Displacement control in the stage being solved (not the held one). */
     bool
     controls_motion() const;
-
-    /** lambda u_F + rho u_held + K^-1 c of harmonic h (owner's fields). */
-    Vector<double>
-    total_displacement(const StepState &state, const unsigned int h) const;
 
     /** The owner's copy of values of harmonic h on every rank. */
     void
@@ -313,7 +286,7 @@ namespace FourierSSI
     void
     extrapolate(const StepState &before_last,
                 const double     ratio,
-                StepState       &state) const;
+                StepState       &state) const override;
 
     /** The residual and the interface state at one iterate. */
     struct Evaluation
@@ -412,9 +385,6 @@ namespace FourierSSI
     std::array<double, 6>
     foundation_resultant(const std::vector<LocalVector> &traction) const;
 
-    RigidMotion
-    motion_of(const StepState &state) const;
-
     /**
      * Harmonics n <= Maximum harmonic, not solved, whose amplitude in the
      * traction change t - t0 of a converged state exceeds Harmonic
@@ -440,22 +410,22 @@ namespace FourierSSI
     NonlinearInterfacePoints           interface;
     const std::vector<InterfacePoint> &points;
     std::vector<Condensation>          condensed;
-    std::vector<Vector<double>>        pattern_solution;
+    /** K^-1 F, loads.solution (its name in coupled_interface_newton.cc). */
+    const std::vector<Vector<double>> &pattern_solution;
     /** Controlled motion of the pattern solution u_F (load factor 1). */
     double pattern_motion = 0.;
-    /** sqrt(sum_h |F_h|^2) of the scaled (condensed) loads. */
-    double pattern_load_norm = 0.;
     /**
-     * Held loads: K^-1 F_held, its relative displacements and controlled
-     * motion, |F_held| and F . F_held (empty, 0: none).
+     * Held loads: the relative displacements and controlled motion of
+     * K^-1 F_held (empty, 0: none).
      */
-    std::vector<Vector<double>> held_solution;
-    std::vector<LocalVector>    held_relative;
-    double held_motion = 0., held_load_norm = 0., pattern_held_dot = 0.;
-    /** True while run_stage() brings the held loads on. */
-    bool                           holding_stage = false;
-    std::vector<LocalVector>       pattern_relative;
-    StepState                      committed;
+    std::vector<LocalVector> held_relative;
+    double                   held_motion = 0.;
+    /** True while the load path brings the held loads on. */
+    bool                     holding_stage = false;
+    std::vector<LocalVector> pattern_relative;
+    /** The records of the step being solved. */
+    LoadStepResult                 trial_result;
+    InterfaceSnapshot              trial_snapshot;
     std::vector<LoadStepResult>    steps;
     std::vector<InterfaceSnapshot> snapshots;
   };

@@ -42,7 +42,9 @@
 
 #include <array>
 #include <deal.II/lac/vector.h>
+#include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/coupled_tangent.h>
+#include <fourier_ssi/coupled/load_path_states.h>
 #include <fourier_ssi/coupled/soil_law.h>
 #include <fourier_ssi/fourier/theta_sampling.h>
 #include <fourier_ssi/harmonic/bbar_projection.h>
@@ -51,6 +53,7 @@
 #include <fourier_ssi/input/parameters.h>
 #include <fourier_ssi/interfaces/nonlinear_interface_points.h>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -61,15 +64,8 @@ namespace FourierSSI
   using namespace dealii;
 
   /** One converged load step of the plastic soil. */
-  struct SoilStepResult
+  struct SoilStepResult : LoadStep
   {
-    double load_factor = 0.;
-    /** Fraction of the held loads (Rigid foundation/Held ...) applied. */
-    double       held_fraction = 0.;
-    RigidMotion  motion;
-    unsigned int iterations = 0;
-    /** |R| / |lambda F| at convergence. */
-    double residual = 0.;
     /** (point, theta) samples elastic and plastic. */
     unsigned int n_elastic = 0, n_plastic = 0;
     /** Largest f(sigma) over every (point, theta) [kPa] (<= 0 admissible). */
@@ -88,10 +84,18 @@ namespace FourierSSI
      * kN m] (held_reactions(); empty without, or with coulomb interfaces).
      */
     std::vector<std::pair<FoundationMotion, double>> held_reactions;
-    double                                           time = 0.;
   };
 
-  class CoupledSoilSolver
+  /** Iteration state of a load step of the plastic soil. */
+  struct SoilStepState : CorrectionState
+  {
+    /** s_p = D eps_p per (point, theta). */
+    std::vector<StrainVector> plastic;
+    /** Coulomb interfaces: d_p per (interface point, theta). */
+    std::vector<LocalVector> interface_plastic;
+  };
+
+  class CoupledSoilSolver : private LoadPathStates<SoilStepState>
   {
   public:
     /** `set` must be assembled and factorized. */
@@ -107,21 +111,9 @@ namespace FourierSSI
       return steps;
     }
 
-    /**
-     * Total displacement amplitudes of harmonic i (last converged state).
-     * Collective when the harmonics are distributed over ranks: every rank
-     * calls it for the same i and gets the owner's field.
-     */
-    Vector<double>
-    solution(const unsigned int i) const;
-
-    /**
-     * (F_x, F_y, F_z, M_x, M_y, M_z) applied at load factor lambda with the
-     * fraction held_fraction of the held loads.
-     */
-    std::array<double, 6>
-    applied_loads(const double load_factor,
-                  const double held_fraction = 0.) const;
+    /** solution(i) and applied_loads() (load_path_states.h). */
+    using LoadPathStates::applied_loads;
+    using LoadPathStates::solution;
 
     /**
      * The work of the applied loads on the last converged displacement,
@@ -240,17 +232,7 @@ namespace FourierSSI
       Point<2>                          centre;
     };
 
-    struct StepState
-    {
-      double load_factor = 0.;
-      /** rho: the held loads' part rho F_held of the load. */
-      double                      held_fraction = 0.;
-      std::vector<Vector<double>> correction_solution, correction_load;
-      /** s_p = D eps_p per (point, theta). */
-      std::vector<StrainVector> plastic;
-      /** Coulomb interfaces: d_p per (interface point, theta). */
-      std::vector<LocalVector> interface_plastic;
-    };
+    using StepState = SoilStepState;
 
     void
     make_points();
@@ -267,13 +249,19 @@ namespace FourierSSI
     double
     applied_load_norm(const StepState &state) const;
 
-    /**
-     * One stage of the load path: `steps` equal steps, the held loads
-     * brought on (holding) or the loads scaled by the load or displacement
-     * control from the committed state.
-     */
+    /** LoadPath::Iteration: the trial step and its commit (load_path.h). */
+    bool
+    solve_trial(const double target, const bool holding) override;
     void
-    run_stage(const bool holding, const unsigned int steps, std::ostream &log);
+    commit_trial(const LoadStep &step,
+                 const bool      holding,
+                 std::ostream   &log) override;
+    unsigned int
+    n_converged_steps() const override
+    {
+      return steps.size();
+    }
+
     /**
      * Secant predictor: state's correction (load and displacement) moved on
      * by ratio times the change over the last converged step (from
@@ -285,7 +273,7 @@ namespace FourierSSI
     void
     extrapolate(const StepState &before_last,
                 const double     ratio,
-                StepState       &state) const;
+                StepState       &state) const override;
 
     /**
      * Strain amplitudes [point][harmonic] of fields (one per harmonic): of
@@ -367,6 +355,85 @@ namespace FourierSSI
     double
     controlled_load_factor(const StepState &state, const double target) const;
 
+    /** The residual and the state of the soil and interfaces at an iterate. */
+    struct Evaluation
+    {
+      /** Total strain and s_p per (point, theta). */
+      std::vector<StrainVector> strain, plastic;
+      /** Coulomb interfaces: relative displacement and d_p (empty without). */
+      std::vector<LocalVector> relative, interface_plastic;
+      /** R = G - c per harmonic (condensed), and |R|. */
+      std::vector<Vector<double>> residual;
+      double                      residual_norm = 0.;
+      /** |lambda F| and the interfaces' |G|: what |R| is measured against. */
+      ForceScale scale;
+    };
+
+    /**
+     * Steps 1-4 of an iteration at `state`: strains, return mapping,
+     * out-of-balance load and residual (the counts into `result`).
+     */
+    Evaluation
+    evaluate(const StepState &state, SoilStepResult &result) const;
+
+    /**
+     * The coulomb interfaces' part of an evaluation: their relative
+     * displacements, return mapping and load added to the residual; returns
+     * the norm of that load (part of the force scale).
+     */
+    double
+    add_interface_residual(const StepState &state,
+                           Evaluation      &e,
+                           SoilStepResult  &result) const;
+
+    /** A converged iterate: its plastic state and the step's records. */
+    void
+    accept(Evaluation        &e,
+           const unsigned int iteration,
+           StepState         &state,
+           SoilStepResult    &result) const;
+
+    /**
+     * Stiffness = tangent: the last update of a step (to go back along it
+     * when it overshot) and the progress of the iteration.
+     */
+    struct NewtonProgress
+    {
+      std::vector<Vector<double>> last_load, last_solution;
+      double                      step_length = 1., previous_norm = 0.;
+      double       smallest_norm  = std::numeric_limits<double>::max();
+      unsigned int updates        = 0;
+      unsigned int since_smallest = 0;
+    };
+
+    /** What a Newton update did. */
+    enum class NewtonMove
+    {
+      /** e.residual is now the tangent correction dc. */
+      updated,
+      /** the last update was halved: evaluate again. */
+      backtracked,
+      /** no decrease even at the shortest step, or stagnation: cut. */
+      failed
+    };
+
+    /**
+     * Stiffness = tangent: backtrack the last update if it raised |R|,
+     * else rebuild the tangent at the iterate and turn e.residual into the
+     * Newton correction (tangent_correction).
+     */
+    NewtonMove
+    newton_update(Evaluation     &e,
+                  const bool      displacement_control,
+                  StepState      &state,
+                  NewtonProgress &newton);
+
+    /** c <- c + dc and v <- v + K^-1 dc (one solve per harmonic). */
+    void
+    apply_correction(std::vector<Vector<double>> correction,
+                     StepState                  &state,
+                     NewtonProgress             &newton) const;
+
     /**
      * Solve one step to `target`: the held fraction (holding), else the
      * load factor (load control) or the controlled motion.
@@ -383,13 +450,6 @@ namespace FourierSSI
      */
     Vector<double>
     held_load(const unsigned int h) const;
-
-    /** u_h = lambda u_pattern + correction + rho u_held of a state. */
-    Vector<double>
-    total_displacement(const StepState &state, const unsigned int h) const;
-
-    RigidMotion
-    motion_of(const StepState &state) const;
 
     /**
      * sigma_0 + D eps at a point: its stress if it had stayed elastic from
@@ -419,6 +479,39 @@ namespace FourierSSI
                  std::array<double, 36> &softening) const;
 
     /**
+     * Per point, the theta integrals S_hg of factor_h (D_e - D_ep) factor_g
+     * over the samples that yield, [(a * 6 + b) * H^2 + h * H + g] (empty:
+     * elastic at every theta).
+     */
+    std::vector<std::vector<double>>
+    softening_integrals(const std::vector<StrainVector> &strain) const;
+
+    /** The coupled tangent's sparsity: the soil cells and interface pairs. */
+    void
+    make_tangent();
+
+    /** The cells with a point that yields. */
+    std::vector<unsigned int>
+    yielding_cells(const std::vector<std::vector<double>> &softening) const;
+
+    /** Bbar strains of a cell's shape functions [i][q]. */
+    using ShapeStrains = std::vector<std::vector<StrainVector>>;
+
+    /** [yielding cell][h]: the shape strains of every harmonic. */
+    std::vector<std::vector<ShapeStrains>>
+    shape_strains(const std::vector<unsigned int> &yielding) const;
+
+    /** local = -int Bbar_h^T S_hg Bbar_g over one yielding cell. */
+    void
+    add_cell_softening(const SoilCell                         &cell,
+                       const unsigned int                      h,
+                       const unsigned int                      g,
+                       const std::vector<std::vector<double>> &softening,
+                       const ShapeStrains                     &row_strain,
+                       const ShapeStrains                     &column_strain,
+                       FullMatrix<double>                     &local) const;
+
+    /**
      * Stiffness = tangent: K_t,hg = delta_hg K_h - int Bbar_h^T
      * [theta integral of factor_h (D_e - D_ep) factor_g] Bbar_g
      * (coupled_tangent.h) at the strain samples given; factorized, with
@@ -443,10 +536,6 @@ namespace FourierSSI
      * The log's account of a step: V, H and the moment and torque where
      * the scene applies them, with the motion each works on.
      */
-    /** The held loads (V, H, M about the reference point, T). */
-    void
-    write_held_loads(std::ostream &log) const;
-
     void
     write_foundation_state(std::ostream         &log,
                            const SoilStepResult &result) const;
@@ -469,35 +558,22 @@ namespace FourierSSI
     void
     count_over_ranks(SoilStepResult &result) const;
 
-    /**
-     * sum_h values[h * n + c] for c < n, summed over the ranks first: per
-     * harmonic quantities, each non-zero on its owner only, added in the
-     * harmonics' order as a serial run adds them (the same bits).
-     */
-    std::vector<double>
-    sum_over_harmonics(std::vector<double> values, const unsigned int n) const;
-
-    const HarmonicSet            &set;
-    const AllParameters          &parameters;
-    LoadPathParameters            settings;
-    std::vector<Harmonic>         harmonics;
-    std::vector<HarmonicOperator> operators;
-    ThetaSampling                 sampling;
-    std::vector<SoilLaw>          laws;
-    std::vector<SoilCell>         cells;
-    std::vector<SoilPoint>        points;
-    std::vector<unsigned int>     component;
-    /** F, the loads the load factor scales (load_factor_pattern), K^-1 F. */
-    std::vector<Vector<double>> pattern_load, pattern_solution;
-    double                      pattern_load_norm = 0.;
-    /** Held loads: K^-1 F_held, |F_held|, F . F_held; empty: none. */
-    std::vector<Vector<double>> held_solution;
-    double                      held_load_norm = 0., pattern_held_dot = 0.;
+    const HarmonicSet                     &set;
+    const AllParameters                   &parameters;
+    LoadPathParameters                     settings;
+    std::vector<Harmonic>                  harmonics;
+    std::vector<HarmonicOperator>          operators;
+    ThetaSampling                          sampling;
+    std::vector<SoilLaw>                   laws;
+    std::vector<SoilCell>                  cells;
+    std::vector<SoilPoint>                 points;
+    std::vector<unsigned int>              component;
     std::vector<std::vector<StrainVector>> held_strain;
     /** Strain amplitudes of the load pattern [point][harmonic]. */
     std::vector<std::vector<StrainVector>> pattern_strain;
-    StepState                              committed;
-    std::vector<SoilStepResult>            steps;
+    /** The records of the step being solved. */
+    SoilStepResult              trial_result;
+    std::vector<SoilStepResult> steps;
     /** Stiffness = tangent: the coupled tangent and K_t^-1 F. */
     std::unique_ptr<CoupledTangent> tangent;
     std::vector<Vector<double>>     tangent_pattern;

@@ -198,6 +198,16 @@ namespace FourierSSI
      */
     void
     solve_nonlinear_interfaces(std::ostream &log);
+    /** load-displacement.csv of a coupled solver, and its log line. */
+    template <class Solver>
+    void
+    write_load_displacement_csv(const Solver &solver, std::ostream &log)
+    {
+      const std::string curve = result_files.claim("load-displacement.csv");
+      solver.write_csv(curve);
+      log << "load-displacement curve written to " << curve << std::endl;
+    }
+
     /**
      * The last converged step of a coupled solver as every harmonic's
      * solution (3D and per-harmonic output). Collective under mpirun: the
@@ -335,6 +345,61 @@ namespace FourierSSI
      */
     void
     solve_coupled_to_target(std::ostream &log, CoupledCurveRun &run);
+
+    /** What the coupled target loop knows after each member. */
+    struct CoupledTargetProgress
+    {
+      /** The goal of each member on these harmonics, and its wall time. */
+      std::vector<double> mesh_values, member_times;
+      /** Member 0's goal per n_max solved (the truncation sequence). */
+      std::map<unsigned int, double> known;
+      CoupledGoal                    goal;
+      double                         harmonic_error = 0., mesh_error = 0.;
+
+      double
+      relative(const double error) const
+      {
+        return error / std::abs(goal.value);
+      }
+    };
+
+    /**
+     * The next member's mesh, if its DoFs and memory fit (else false, the
+     * reason in target_not_reached); the solver and set released.
+     */
+    bool
+    next_coupled_member(CoupledCurveRun             &run,
+                        const int                    member,
+                        const CoupledTargetProgress &progress,
+                        std::ostream                &log);
+
+    /** After member 0: go on, solve it again with doubled harmonics, stop. */
+    enum class CoarsestMember
+    {
+      solved,
+      solve_again,
+      stop
+    };
+
+    /**
+     * Member 0's harmonic truncation error; doubles the harmonics where it
+     * takes more than half the target.
+     */
+    CoarsestMember
+    coarsest_member_harmonics(CoupledCurveRun       &run,
+                              CoupledTargetProgress &progress,
+                              const bool             growth,
+                              std::ostream          &log);
+
+    /**
+     * The mesh error from the members so far: true if the target is met,
+     * or cannot be by a finer mesh (then the reason in target_not_reached).
+     */
+    bool
+    coupled_target_settled(const CoupledCurveRun &run,
+                           const int              member,
+                           CoupledTargetProgress &progress,
+                           std::ostream          &log);
 
     /**
      * The goal values on the current mesh with the harmonics n <= n_max /

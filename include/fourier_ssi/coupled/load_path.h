@@ -1,0 +1,208 @@
+/**
+ * The load path of every coupled (nonlinear) run: one object steps the held
+ * loads and then the loading from the committed state to the end of the
+ * path, whatever iterates a step (the interfaces' condensed iteration,
+ * CoupledInterfaceSolver; the plastic soil with or without coulomb
+ * interfaces, CoupledSoilSolver). It owns
+ *   - the two stages, the held loads first (Load path/Held load steps, the
+ *     load factor at 0), then the loading (Load steps) by load or
+ *     displacement control from where the held loads left the motion;
+ *   - the step size: a step that does not converge is cut in half, up to
+ *     Maximum step cuts in a row; after a cut, `needed` converged steps at
+ *     the cut size double it back toward the stage's step (a cut at a sharp
+ *     change of state need not slow the rest of the path), and a doubled
+ *     size that fails at once doubles `needed` (doc/soil-plasticity.md 3b);
+ *   - the secant predictor: a step starts from the committed state moved
+ *     on by the change over the last converged step, scaled to the step's
+ *     size (none at a stage's start and after the harmonics grow);
+ *   - the "target reached" check: under displacement control a converged
+ *     step whose rigid motion misses its target by more than 1e-8 of it (a
+ *     diverged iterate with a huge load factor cancelling the correction's
+ *     motion) is not converged;
+ *   - the rigid motion of a state, summed over the harmonics in their order
+ *     after one exact sum over the MPI ranks (rigid_motion_of);
+ *   - the one-line error of a step that does not converge after the cuts.
+ * The iteration of a step, its records and its log line are the solver's
+ * (LoadPath::Iteration).
+ */
+#ifndef fourier_ssi_load_path_h
+#define fourier_ssi_load_path_h
+
+#include <deal.II/lac/vector.h>
+#include <fourier_ssi/harmonic/harmonic_set.h>
+#include <fourier_ssi/harmonic/rigid_foundation.h>
+#include <fourier_ssi/input/load_path_parameters.h>
+#include <functional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+namespace FourierSSI
+{
+  using namespace dealii;
+
+  /** What every converged load step records, whatever iterated it. */
+  struct LoadStep
+  {
+    /** Factor on the scaled loads (load_factor_pattern). */
+    double load_factor = 0.;
+    /**
+     * Fraction of the held loads (held_stage_load: Rigid foundation/Held
+     * ..., body force, tractions) applied: rises to 1 in the held stage,
+     * then stays 1 while the load factor scales the foundation's loads.
+     */
+    double held_fraction = 0.;
+    /** Rigid motion of the foundation (RigidMotion fields). */
+    RigidMotion motion;
+    /** Out-of-balance solves of this step (0: elastic). */
+    unsigned int iterations = 0;
+    /** |R| over the force scale at convergence (ForceScale::relative). */
+    double residual = 0.;
+    /** Wall time of the step [s]. */
+    double time = 0.;
+  };
+
+  /**
+   * sum_h values[h * n + c] for c < n, summed over the ranks first: per
+   * harmonic quantities, each non-zero on its owner only, added in the
+   * harmonics' order as a serial run adds them (the same bits).
+   */
+  std::vector<double>
+  sum_over_harmonics(const HarmonicSet  &set,
+                     std::vector<double> values,
+                     const unsigned int  n);
+
+  /**
+   * The rigid motion of the foundation in the total displacement
+   * `displacement(h)` of every harmonic h this rank owns (n = 0 both
+   * families, n = 1 symmetric; zero without a foundation), summed over the
+   * harmonics by sum_over_harmonics.
+   */
+  RigidMotion
+  rigid_motion_of(
+    const HarmonicSet                                       &set,
+    const std::function<Vector<double>(const unsigned int)> &displacement);
+
+  class LoadPath
+  {
+  public:
+    /** What the load path asks of the solver that iterates its steps. */
+    class Iteration
+    {
+    public:
+      virtual ~Iteration() = default;
+
+      /**
+       * The trial state of a step: the committed one, its correction moved
+       * on by ratio times the change over the last converged step (ratio
+       * 0: kept).
+       */
+      virtual void
+      start_trial(const double ratio) = 0;
+
+      /**
+       * Iterate the trial to `target`: the held fraction (holding), else
+       * the load factor (load control) or the controlled motion. False if
+       * it does not converge.
+       */
+      virtual bool
+      solve_trial(const double target, const bool holding) = 0;
+
+      /** The rigid motion of the trial state (rigid_motion_of). */
+      virtual RigidMotion
+      trial_motion() const = 0;
+
+      /**
+       * After a converged trial: true if the solver added harmonics it
+       * calls for (the step is then solved again without a predictor).
+       */
+      virtual bool
+      grows(std::ostream &log)
+      {
+        (void)log;
+        return false;
+      }
+
+      /**
+       * The converged trial becomes the committed state (the committed one
+       * is kept for the predictor); `step` holds its motion and wall time.
+       * The solver records the step and writes its log line.
+       */
+      virtual void
+      commit_trial(const LoadStep &step,
+                   const bool      holding,
+                   std::ostream   &log) = 0;
+
+      /** The rigid motion of the committed state. */
+      virtual RigidMotion
+      committed_motion() const = 0;
+
+      /** The converged steps so far. */
+      virtual unsigned int
+      n_converged_steps() const = 0;
+
+      /** True if the scene holds loads (held_stage_load is not zero). */
+      virtual bool
+      holds_loads() const = 0;
+
+      /** The held foundation loads, as the log names them. */
+      virtual void
+      write_held_loads(std::ostream &log) const = 0;
+    };
+
+    /**
+     * `entry` names the solver's parameter section in the one-line error of
+     * a step that does not converge.
+     */
+    LoadPath(const LoadPathParameters &settings,
+             const std::string        &entry,
+             Iteration                &iteration);
+
+    /**
+     * The held stage (Held load steps) if the scene holds loads, then the
+     * loading (Load steps).
+     */
+    void
+    run(std::ostream &log);
+
+    /**
+     * One stage in `n_steps` equal steps: the held loads brought on
+     * (holding) or the loads scaled by the load or displacement control.
+     * Throws one line if a step does not converge after the cuts.
+     */
+    void
+    run_stage(const bool         holding,
+              const unsigned int n_steps,
+              std::ostream      &log);
+
+  private:
+    /** The step size of a stage: its cuts and how it grows back. */
+    struct StepSize
+    {
+      double       step = 1., increment = 1.;
+      unsigned int cuts = 0, easy_steps = 0, needed = 2;
+      bool         just_grown = false;
+
+      void
+      cut();
+      void
+      converged();
+    };
+
+    /** Displacement control in this stage (not the held one). */
+    bool
+    controls_motion(const bool holding) const;
+
+    /** Under displacement control: the motion misses `target`. */
+    bool
+    misses_target(const RigidMotion &motion,
+                  const double       target,
+                  const bool         holding) const;
+
+    const LoadPathParameters &settings;
+    const std::string         entry;
+    Iteration                &iteration;
+  };
+} // namespace FourierSSI
+
+#endif

@@ -1,0 +1,211 @@
+/**
+ * The states a coupled solver keeps along the load path (LoadPath): the
+ * last converged one, the one before it (the secant predictor's) and the
+ * step being solved, with what both solvers read of a state: the total
+ * displacement u = lambda K^-1 F + K^-1 c + rho K^-1 F_held (LoadPattern),
+ * its rigid motion (rigid_motion_of) and the applied foundation loads. A
+ * State has load_factor, held_fraction and correction_solution (K^-1 c per
+ * harmonic, CorrectionState); the solver gives the predictor (extrapolate) and
+ * the iteration of a step (LoadPath::Iteration).
+ */
+#ifndef fourier_ssi_load_path_states_h
+#define fourier_ssi_load_path_states_h
+
+#include <array>
+#include <deal.II/lac/vector.h>
+#include <fourier_ssi/coupled/coupled_iteration.h>
+#include <fourier_ssi/coupled/load_path.h>
+#include <fourier_ssi/coupled/load_pattern.h>
+#include <fourier_ssi/harmonic/harmonic_set.h>
+#include <fourier_ssi/input/parameters.h>
+#include <ostream>
+#include <string>
+
+namespace FourierSSI
+{
+  using namespace dealii;
+
+  /** What every coupled state holds: lambda, rho, c and K^-1 c. */
+  struct CorrectionState
+  {
+    double load_factor = 0.;
+    /** rho: the held loads' part rho F_held of the load. */
+    double held_fraction = 0.;
+    /** K^-1 c per harmonic, and c (condensed). */
+    std::vector<Vector<double>> correction_solution, correction_load;
+  };
+
+  template <class State>
+  class LoadPathStates : public LoadPath::Iteration
+  {
+  public:
+    /**
+     * Total displacement amplitudes of harmonic i (last converged state).
+     * Collective when the harmonics are distributed over ranks: every rank
+     * calls it for the same i and gets the owner's field.
+     */
+    Vector<double>
+    solution(const unsigned int i) const
+    {
+      Vector<double> u = total_displacement(committed, i);
+      harmonic_set.broadcast_from_owner(i, u.begin(), u.size());
+      return u;
+    }
+
+    /**
+     * The applied rigid-foundation loads (F_x, F_y, F_z, M_x, M_y, M_z) at
+     * load factor lambda with the fraction held_fraction of the held loads,
+     * M about the origin (H at the reference elevation).
+     */
+    std::array<double, 6>
+    applied_loads(const double load_factor,
+                  const double held_fraction = 0.) const
+    {
+      return applied_foundation_loads(foundation_parameters,
+                                      load_factor,
+                                      held_fraction);
+    }
+
+  protected:
+    /**
+     * `moment_unit` is how the solver's log writes kN m (its step lines and
+     * the held loads' line).
+     */
+    LoadPathStates(const HarmonicSet   &set,
+                   const AllParameters &parameters,
+                   const std::string   &moment_unit)
+      : harmonic_set(set)
+      , foundation_parameters(parameters.rigid_foundation)
+      , moment_unit(moment_unit)
+    {}
+
+    /**
+     * One line if a harmonic has prescribed (non-zero) Dirichlet values:
+     * the loads are scaled by lambda and held by rho, the constraints not
+     * (not yet with `what`; `entry` names the solver's section).
+     */
+    void
+    check_homogeneous_constraints(const std::string &entry,
+                                  const std::string &what) const
+    {
+      for (unsigned int h = 0; h < harmonic_set.size(); ++h)
+        AssertThrow(
+          !harmonic_set.problem(h).get_constraints().has_inhomogeneities(),
+          ExcMessage(entry +
+                     ": not yet: prescribed (non-zero) Dirichlet "
+                     "values with " +
+                     what + "; load the scene through the Rigid foundation"));
+    }
+
+    /** The committed state before the first step: c = 0 on every harmonic. */
+    void
+    start_at_rest()
+    {
+      committed.correction_solution = loads.solution;
+      for (Vector<double> &v : committed.correction_solution)
+        v = 0.;
+      committed.correction_load = committed.correction_solution;
+    }
+
+    /** The log line of Rigid foundation/Held motions (if any), `note` last. */
+    void
+    write_held_motions(std::ostream &log, const std::string &note) const
+    {
+      if (foundation_parameters.held_motions.empty())
+        return;
+      log << "held at zero (Rigid foundation/Held motions):";
+      for (const FoundationMotion m : foundation_parameters.held_motions)
+        log << ' ' << name_of(m);
+      log << note << '\n';
+    }
+
+    /** The held loads (V, H, M about the reference point, T). */
+    void
+    write_held_loads(std::ostream &log) const override
+    {
+      const auto held = applied_loads(0., 1.);
+      log << "V " << held[2] << " kN, H " << held[0] << " kN, M "
+          << moment_about_reference(held, foundation_parameters) << " "
+          << moment_unit << ", T " << held[5] << " " << moment_unit;
+    }
+
+    /**
+     * Secant predictor: state's correction moved on by ratio times the
+     * change over the last converged step (before_last to committed).
+     */
+    virtual void
+    extrapolate(const State &before_last,
+                const double ratio,
+                State       &state) const = 0;
+
+    /** u_h = lambda u_F + K^-1 c + rho u_held of a state (owner's field). */
+    Vector<double>
+    total_displacement(const State &state, const unsigned int h) const
+    {
+      return loads.total_displacement(h,
+                                      state.load_factor,
+                                      state.correction_solution[h],
+                                      state.held_fraction);
+    }
+
+    /** The rigid motion of a state (rigid_motion_of). */
+    RigidMotion
+    motion_of(const State &state) const
+    {
+      return rigid_motion_of(harmonic_set, [&](const unsigned int h) {
+        return total_displacement(state, h);
+      });
+    }
+
+    /**
+     * The converged trial becomes the committed state; `result` gets its
+     * load factor and held fraction, and the motion and wall time of `step`.
+     */
+    void
+    commit(LoadStep &result, const LoadStep &step)
+    {
+      before_last          = std::move(committed);
+      committed            = trial;
+      result.load_factor   = committed.load_factor;
+      result.held_fraction = committed.held_fraction;
+      result.motion        = step.motion;
+      result.time          = step.time;
+    }
+
+    void
+    start_trial(const double ratio) override
+    {
+      trial = committed;
+      if (ratio > 0.)
+        extrapolate(before_last, ratio, trial);
+    }
+
+    RigidMotion
+    trial_motion() const override
+    {
+      return motion_of(trial);
+    }
+
+    RigidMotion
+    committed_motion() const override
+    {
+      return motion_of(committed);
+    }
+
+    bool
+    holds_loads() const override
+    {
+      return loads.holds_loads();
+    }
+
+    const HarmonicSet               &harmonic_set;
+    const RigidFoundationParameters &foundation_parameters;
+    const std::string                moment_unit;
+    /** F, F_held and their elastic solutions. */
+    LoadPattern loads;
+    /** The last converged state, the one before it, the step solved. */
+    State committed, before_last, trial;
+  };
+} // namespace FourierSSI
+
+#endif

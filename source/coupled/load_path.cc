@@ -1,0 +1,181 @@
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fourier_ssi/coupled/coupled_iteration.h>
+#include <fourier_ssi/coupled/load_path.h>
+
+namespace FourierSSI
+{
+  std::vector<double>
+  sum_over_harmonics(const HarmonicSet  &set,
+                     std::vector<double> values,
+                     const unsigned int  n)
+  {
+    set.sum_over_ranks(values);
+    std::vector<double> sum(n, 0.);
+    for (unsigned int h = 0; h < values.size() / n; ++h)
+      for (unsigned int c = 0; c < n; ++c)
+        sum[c] += values[h * n + c];
+    return sum;
+  }
+
+  RigidMotion
+  rigid_motion_of(
+    const HarmonicSet                                       &set,
+    const std::function<Vector<double>(const unsigned int)> &displacement)
+  {
+    // Per harmonic [h * 4 + c], on its owner; summed in the harmonics' order.
+    std::vector<double> parts(4 * set.size(), 0.);
+    for (unsigned int h = 0; h < set.size(); ++h)
+      {
+        const RigidFoundation *foundation = set.problem(h).get_foundation();
+        const Harmonic        &harmonic   = set.harmonic(h);
+        if (!set.owns(h) || foundation == nullptr || harmonic.n > 1 ||
+            (harmonic.n == 1 && harmonic.family != Family::symmetric))
+          continue;
+        const RigidMotion m = foundation->motion(displacement(h));
+        parts[4 * h]        = m.vertical_displacement;
+        parts[4 * h + 1]    = m.twist;
+        parts[4 * h + 2]    = m.horizontal_displacement;
+        parts[4 * h + 3]    = m.rotation;
+      }
+    const std::vector<double> sum = sum_over_harmonics(set, parts, 4);
+    RigidMotion               total;
+    total.vertical_displacement   = sum[0];
+    total.twist                   = sum[1];
+    total.horizontal_displacement = sum[2];
+    total.rotation                = sum[3];
+    return total;
+  }
+
+  LoadPath::LoadPath(const LoadPathParameters &settings,
+                     const std::string        &entry,
+                     Iteration                &iteration)
+    : settings(settings)
+    , entry(entry)
+    , iteration(iteration)
+  {}
+
+  bool
+  LoadPath::controls_motion(const bool holding) const
+  {
+    return !holding &&
+           settings.control == LoadPathParameters::Control::displacement;
+  }
+
+  bool
+  LoadPath::misses_target(const RigidMotion &motion,
+                          const double       target,
+                          const bool         holding) const
+  {
+    // A diverged iterate can pass the relative force test with a huge load
+    // factor; the controlled motion then misses its target (cancellation
+    // of lambda m(u_F) against m(v)).
+    return controls_motion(holding) &&
+           std::abs(controlled_component(motion, settings.motion) - target) >
+             1e-8 * std::abs(target);
+  }
+
+  void
+  LoadPath::StepSize::cut()
+  {
+    increment /= 2.;
+    easy_steps = 0;
+    if (just_grown)
+      needed *= 2;
+    just_grown = false;
+  }
+
+  void
+  LoadPath::StepSize::converged()
+  {
+    cuts = 0;
+    if (just_grown) // the doubled size converged: back to the default
+      needed = 2;
+    just_grown = false;
+    if (increment < step && ++easy_steps == needed)
+      {
+        increment  = std::min(step, 2. * increment);
+        easy_steps = 0;
+        just_grown = true;
+      }
+  }
+
+  void
+  LoadPath::run(std::ostream &log)
+  {
+    if (iteration.holds_loads())
+      {
+        log << "held loads first (" << settings.held_load_steps
+            << " load-controlled steps), then held: body force, tractions; "
+               "foundation ";
+        iteration.write_held_loads(log);
+        log << '\n';
+        run_stage(true, settings.held_load_steps, log);
+      }
+    run_stage(false, settings.load_steps, log);
+  }
+
+  void
+  LoadPath::run_stage(const bool         holding,
+                      const unsigned int n_steps,
+                      std::ostream      &log)
+  {
+    // Displacement control moves from where the held loads left the
+    // controlled motion to Target.
+    const double start =
+      controls_motion(holding) ?
+        controlled_component(iteration.committed_motion(), settings.motion) :
+        0.;
+    StepSize size;
+    size.step = size.increment = 1. / n_steps;
+    double done                = 0.;
+    // The size of the last converged step of this stage (0: none, or the
+    // harmonics grew since): the secant predictor's denominator.
+    double last_increment = 0.;
+    while (done < 1. - 1e-12)
+      {
+        const double fraction = std::min(1., done + size.increment);
+        const double target   = controls_motion(holding) ?
+                                  start + fraction * (settings.target - start) :
+                                  fraction;
+        iteration.start_trial(
+          last_increment > 0. ? size.increment / last_increment : 0.);
+        const auto clock     = std::chrono::steady_clock::now();
+        bool       converged = iteration.solve_trial(target, holding);
+        LoadStep   step;
+        if (converged)
+          {
+            step.motion = iteration.trial_motion();
+            converged   = !misses_target(step.motion, target, holding);
+          }
+        if (!converged)
+          {
+            AssertThrow(
+              ++size.cuts <= settings.maximum_step_cuts,
+              ExcMessage(unconverged_step_message(entry,
+                                                  done,
+                                                  n_steps,
+                                                  holding,
+                                                  iteration.n_converged_steps(),
+                                                  settings)));
+            size.cut();
+            log << "  step cut to " << size.increment << " of the "
+                << (holding ? "held loads" : "loading") << '\n';
+            continue;
+          }
+        if (iteration.grows(log))
+          {
+            last_increment = 0.;
+            continue;
+          }
+        last_increment = fraction - done;
+        done           = fraction;
+        size.converged();
+        step.time = std::chrono::duration<double>(
+                      std::chrono::steady_clock::now() - clock)
+                      .count();
+        iteration.commit_trial(step, holding, log);
+      }
+  }
+} // namespace FourierSSI
