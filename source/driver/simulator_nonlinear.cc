@@ -7,43 +7,14 @@
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/driver/simulator.h>
 #include <fourier_ssi/harmonic/distributed_linear_system.h>
+#include <fourier_ssi/input/problem_checks.h>
 
 namespace FourierSSI
 {
-  namespace
-  {
-    const std::string entry = "Load path";
-
-    /** What the coupled path does not do yet: one line each. */
-    void
-    check_supported(const AllParameters &parameters, const MPI_Comm comm)
-    {
-      AssertThrow(parameters.discretization.refinement_cycles == 1,
-                  ExcMessage(entry + ": not yet: Discretization/Refinement "
-                                     "cycles > 1 with a coulomb interface"));
-      // Under mpirun the harmonics are distributed over the ranks (each
-      // harmonic's system serial); one harmonic's system over several ranks
-      // is the other kind of distribution.
-      (void)comm;
-      AssertThrow(!parameters.solver.distributed_always,
-                  ExcMessage(entry + ": not yet: Linear solver/Distributed = "
-                                     "always (a harmonic's system over "
-                                     "several ranks) with a coulomb "
-                                     "interface; under mpirun the harmonics "
-                                     "are distributed over the ranks"));
-      AssertThrow(!parameters.rigid_foundation.stiffness_coefficients,
-                  ExcMessage(entry + ": Rigid foundation/Stiffness "
-                                     "coefficients and Stiffness matrix "
-                                     "are linear quantities; set them false "
-                                     "with a coulomb interface"));
-    }
-
-  } // namespace
-
   void
   Simulator::solve_nonlinear_interfaces(std::ostream &log)
   {
-    check_supported(parameters, communicator);
+    check_coupled_path_supported(parameters, "a coulomb interface");
     std::unique_ptr<CoupledInterfaceSolver> solver;
     CoupledCurveRun                         run;
     run.goal_prefix = "end_load_";

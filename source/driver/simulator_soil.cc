@@ -8,6 +8,7 @@
 #include <fourier_ssi/coupled/coupled_soil_solver.h>
 #include <fourier_ssi/driver/simulator.h>
 #include <fourier_ssi/estimation/capacity_plateau.h>
+#include <fourier_ssi/input/problem_checks.h>
 #include <fourier_ssi/mesh/discretization_design.h>
 #include <iomanip>
 #include <limits>
@@ -21,7 +22,7 @@ namespace FourierSSI
 
     /** What the plastic-soil path does not do yet: one line each. */
     void
-    check_supported(const AllParameters &parameters, const MPI_Comm comm)
+    check_supported(const AllParameters &parameters)
     {
       // The plastic soil iterates on the harmonics given (with or without
       // coulomb interfaces, one correction load for both): no growth, so a
@@ -32,20 +33,7 @@ namespace FourierSSI
                   ExcMessage("Load path/Maximum harmonic: not "
                              "yet with plastic soil (the harmonics do not "
                              "grow); list them in Discretization/Harmonics"));
-      AssertThrow(parameters.discretization.refinement_cycles == 1,
-                  ExcMessage(entry + ": not yet: Discretization/Refinement "
-                                     "cycles > 1 with plastic soil"));
-      // Under mpirun the harmonics are distributed over the ranks (each
-      // harmonic's system serial; Stiffness = tangent is refused by the
-      // solver); one harmonic's system over several ranks is the other kind
-      // of distribution.
-      (void)comm;
-      AssertThrow(!parameters.solver.distributed_always,
-                  ExcMessage(entry + ": not yet: Linear solver/Distributed = "
-                                     "always (a harmonic's system over "
-                                     "several ranks) with plastic soil; "
-                                     "under mpirun the harmonics are "
-                                     "distributed over the ranks"));
+      check_coupled_path_supported(parameters, "plastic soil");
       AssertThrow(parameters.output.lines.empty() &&
                     !parameters.output.write_3d_vtu,
                   ExcMessage(entry + ": not yet: Output/Lines 3D and Write "
@@ -56,11 +44,6 @@ namespace FourierSSI
                              "Discretization/Target accuracy (the curves of "
                              "one mesh); set Refinement cycles = 1 and no "
                              "target"));
-      AssertThrow(!parameters.rigid_foundation.stiffness_coefficients,
-                  ExcMessage(entry + ": Rigid foundation/Stiffness "
-                                     "coefficients and Stiffness matrix "
-                                     "are linear quantities; set them false "
-                                     "with plastic soil"));
     }
 
     /** The plastic state of every converged step, after the common rows. */
@@ -206,7 +189,7 @@ namespace FourierSSI
   void
   Simulator::solve_plastic_soil(std::ostream &log)
   {
-    check_supported(parameters, communicator);
+    check_supported(parameters);
     if (parameters.discretization.target_accuracy > 0.)
       {
         solve_plastic_soil_to_target(log);

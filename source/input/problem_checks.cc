@@ -150,4 +150,32 @@ namespace FourierSSI
     check_load_control_has_load(parameters);
     check_exact_solution_linear(parameters);
   }
+
+  void
+  check_coupled_path_supported(const AllParameters &parameters,
+                               const std::string   &with)
+  {
+    const std::string entry = "Load path";
+    AssertThrow(parameters.discretization.refinement_cycles == 1,
+                ExcMessage(entry +
+                           ": not yet: Discretization/Refinement "
+                           "cycles > 1 with " +
+                           with));
+    // Under mpirun the harmonics are distributed over the ranks (each
+    // harmonic's system serial); one harmonic's system over several ranks
+    // is the other kind of distribution.
+    AssertThrow(!parameters.solver.distributed_always,
+                ExcMessage(entry +
+                           ": not yet: Linear solver/Distributed = always (a "
+                           "harmonic's system over several ranks) with " +
+                           with +
+                           "; under mpirun the harmonics are distributed "
+                           "over the ranks"));
+    AssertThrow(!parameters.rigid_foundation.stiffness_coefficients,
+                ExcMessage(entry +
+                           ": Rigid foundation/Stiffness coefficients and "
+                           "Stiffness matrix are linear quantities; set them "
+                           "false with " +
+                           with));
+  }
 } // namespace FourierSSI

@@ -54,12 +54,12 @@
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/initial_stress.h>
 #include <fourier_ssi/coupled/load_path_states.h>
+#include <fourier_ssi/coupled/nonlinear_interface_points.h>
 #include <fourier_ssi/fourier/theta_sampling.h>
 #include <fourier_ssi/harmonic/harmonic_set.h>
 #include <fourier_ssi/input/load_path_parameters.h>
 #include <fourier_ssi/input/parameters.h>
 #include <fourier_ssi/interfaces/interface_law.h>
-#include <fourier_ssi/interfaces/nonlinear_interface_points.h>
 #include <limits>
 #include <memory>
 #include <ostream>

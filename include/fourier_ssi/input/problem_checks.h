@@ -20,6 +20,17 @@ namespace FourierSSI
    */
   void
   check_problem_is_meaningful(const AllParameters &parameters);
+
+  /**
+   * The "not yet" limits every coupled (nonlinear) load path shares, one line
+   * each naming Load path: one refinement cycle, the harmonics (not one
+   * harmonic's system) over the MPI ranks, and no linear stiffness
+   * coefficients. `with` names what makes the run nonlinear ("a coulomb
+   * interface", "plastic soil") for the message.
+   */
+  void
+  check_coupled_path_supported(const AllParameters &parameters,
+                               const std::string   &with);
 } // namespace FourierSSI
 
 #endif

@@ -1,9 +1,9 @@
 #include <algorithm>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/lac/full_matrix.h>
+#include <fourier_ssi/coupled/nonlinear_interface_points.h>
 #include <fourier_ssi/fourier/harmonic_pair_integral.h>
 #include <fourier_ssi/input/atomic_file.h>
-#include <fourier_ssi/interfaces/nonlinear_interface_points.h>
 #include <fstream>
 #include <iomanip>
 #include <limits>
