@@ -903,7 +903,8 @@ namespace FourierSSI
 
   void
   CoupledSoilSolver::update_tangent(const std::vector<StrainVector> &strain,
-                                    const std::vector<LocalVector>  &relative)
+                                    const std::vector<LocalVector>  &relative,
+                                    const bool displacement_control)
   {
     const unsigned int H = set.size();
     // 1. S_hg = theta integral of factor_h (D_e - D_ep) factor_g per point,
@@ -941,11 +942,51 @@ namespace FourierSSI
                                committed.interface_plastic,
                                sampling,
                                *tangent);
+    if (displacement_control)
+      add_control_stiffening();
     tangent->factorize();
     tangent_pattern.resize(H);
     for (unsigned int h = 0; h < H; ++h)
       tangent_pattern[h] = loads.load[h];
     tangent->solve(tangent_pattern);
+  }
+
+  void
+  CoupledSoilSolver::add_control_stiffening()
+  {
+    const Harmonic wanted = controlled_harmonic(settings.motion);
+    for (unsigned int h = 0; h < set.size(); ++h)
+      if (harmonics[h].n == wanted.n && harmonics[h].family == wanted.family)
+        {
+          const RigidFoundation *foundation = set.problem(h).get_foundation();
+          const std::set<types::global_dof_index> master_set =
+            foundation->master_dofs();
+          const std::vector<types::global_dof_index> masters(master_set.begin(),
+                                                             master_set.end());
+          const SparseMatrix<double> &K = set.problem(h).get_system_matrix();
+          // c_k = m(e_k) on each master DoF; alpha scales c c^T to the
+          // masters' own stiffness.
+          Vector<double>      unit(K.m());
+          std::vector<double> c(masters.size());
+          double              diagonal = 0., c_squared = 0.;
+          for (unsigned int k = 0; k < masters.size(); ++k)
+            {
+              unit[masters[k]] = 1.;
+              c[k]             = controlled_motion(h, unit);
+              unit[masters[k]] = 0.;
+              diagonal =
+                std::max(diagonal, std::abs(K.diag_element(masters[k])));
+              c_squared += c[k] * c[k];
+            }
+          if (c_squared == 0.)
+            continue;
+          const double       alpha = diagonal / c_squared;
+          FullMatrix<double> local(masters.size(), masters.size());
+          for (unsigned int i = 0; i < masters.size(); ++i)
+            for (unsigned int j = 0; j < masters.size(); ++j)
+              local(i, j) = alpha * c[i] * c[j];
+          tangent->add(h, h, local, masters, masters);
+        }
   }
 
   std::vector<Vector<double>>
@@ -1080,7 +1121,7 @@ namespace FourierSSI
     newton.step_length   = 1.;
     // Rebuilt at every update: keeping it for 3-10 updates (modified
     // Newton) was measured slower (doc/soil-plasticity.md 3b).
-    update_tangent(e.strain, e.relative);
+    update_tangent(e.strain, e.relative, displacement_control);
     e.residual = tangent_correction(e.residual, displacement_control);
     ++newton.updates;
     return NewtonMove::updated;

@@ -519,7 +519,21 @@ namespace FourierSSI
      */
     void
     update_tangent(const std::vector<StrainVector> &strain,
-                   const std::vector<LocalVector>  &relative);
+                   const std::vector<LocalVector>  &relative,
+                   const bool displacement_control = false);
+
+    /**
+     * Displacement control: add alpha c c^T to K_t, c the controlled motion
+     * as a functional of the controlled harmonic's master DoFs (m(u) =
+     * c^T u). The update du keeps m(du) = 0, so alpha c c^T du = 0 and no
+     * update changes; but at a limit load the collapse mechanism, which
+     * moves the foundation, is a null vector of K_t, and K_t^-1 R and
+     * K_t^-1 F lose their digits there while K_t + alpha c c^T stays
+     * regular (the bordered system of Riks-type control, solved with one
+     * factorization).
+     */
+    void
+    add_control_stiffening();
 
     /**
      * The out-of-balance load correction of one tangent (Newton) step:
