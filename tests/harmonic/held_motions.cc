@@ -34,14 +34,7 @@ namespace
   std::string
   scene(const std::string &rigid_foundation)
   {
-    return test_support::footing_one_cycle(2) +
-           "subsection Interfaces\n set Interfaces = 5: tied\nend\n"
-           // The footing cells' E only fills the matrix pattern; soil-like
-           // 1e3 keeps the round-off of the exact ties small.
-           "subsection Materials\n set Materials = 0: G=1000, nu=0.25, "
-           "alpha=0.5, depth_ref=1; 1: E=1e3, nu=0.2\nend\n"
-           "subsection Rigid foundation\n" +
-           rigid_foundation + "end\n";
+    return test_support::tied_footing(rigid_foundation);
   }
 
   struct SupportResultant

@@ -270,6 +270,24 @@ namespace test_support
            (degree == 4 ? "1, -1: 3; 1, 0: 3" : "") + "\nend\n";
   }
 
+  /**
+   * The embedded footing of footing_one_cycle(2) with exact ties (interface
+   * 5 tied) and the given Rigid foundation entries: the scene of the probe
+   * tests (held motions, a motion direction). The footing cells' E only
+   * fills the matrix pattern; soil-like 1e3 keeps the round-off of the
+   * exact ties small.
+   */
+  inline std::string
+  tied_footing(const std::string &rigid_foundation)
+  {
+    return footing_one_cycle(2) +
+           "subsection Interfaces\n set Interfaces = 5: tied\nend\n"
+           "subsection Materials\n set Materials = 0: G=1000, nu=0.25, "
+           "alpha=0.5, depth_ref=1; 1: E=1e3, nu=0.2\nend\n"
+           "subsection Rigid foundation\n" +
+           rigid_foundation + "end\n";
+  }
+
   inline FourierSSI::ResultsTable
   run(const std::string &prm_text)
   {
