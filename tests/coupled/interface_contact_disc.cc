@@ -68,13 +68,7 @@ namespace
   std::string
   scene(const std::string &law, const unsigned int samples)
   {
-    std::string text = test_support::bundled_prm("prm/disc-gap.prm");
-    text = coupled_test::with_entry(text, "Interfaces", "5: " + law);
-    text = coupled_test::with_entry(text, "Write vtu", "false");
-    std::string harmonics = "0";
-    for (unsigned int n = 1; n <= 32; ++n)
-      harmonics += ", " + std::to_string(n);
-    text = coupled_test::with_entry(text, "Harmonics", harmonics);
+    const std::string text = coupled_test::disc_in_ring(law);
     return text +
            "\nsubsection Load path\n  set Stiffness = tangent\n"
            "  set Theta samples = " +

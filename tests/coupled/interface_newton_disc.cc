@@ -54,18 +54,12 @@ namespace
         const std::string &stiffness,
         const unsigned int samples)
   {
-    const double       kn   = kappa * G / r0;
-    const double       phi  = std::atan(0.3) * 180. / M_PI;
-    std::string        text = test_support::bundled_prm("prm/disc-gap.prm");
+    const double       kn  = kappa * G / r0;
+    const double       phi = std::atan(0.3) * 180. / M_PI;
     std::ostringstream law;
-    law << std::setprecision(17) << "5: coulomb, kn=" << kn << ", ks=" << kn
+    law << std::setprecision(17) << "coulomb, kn=" << kn << ", ks=" << kn
         << ", c=0, phi=" << phi << ", sigma_t=0";
-    text = coupled_test::with_entry(text, "Interfaces", law.str());
-    text = coupled_test::with_entry(text, "Write vtu", "false");
-    std::string harmonics = "0";
-    for (unsigned int n = 1; n <= 32; ++n)
-      harmonics += ", " + std::to_string(n);
-    text = coupled_test::with_entry(text, "Harmonics", harmonics);
+    const std::string text = coupled_test::disc_in_ring(law.str());
     return text + "\nsubsection Load path\n  set Stiffness = " + stiffness +
            "\n  set Acceleration = anderson\n  set Maximum iterations = "
            "20000\n  set Theta samples = " +

@@ -52,13 +52,7 @@ namespace
   std::string
   scene(const std::string &law)
   {
-    std::string text = test_support::bundled_prm("prm/disc-gap.prm");
-    text = coupled_test::with_entry(text, "Interfaces", "5: " + law);
-    text = coupled_test::with_entry(text, "Write vtu", "false");
-    std::string harmonics = "0";
-    for (unsigned int n = 1; n <= 32; ++n)
-      harmonics += ", " + std::to_string(n);
-    text = coupled_test::with_entry(text, "Harmonics", harmonics);
+    const std::string text = coupled_test::disc_in_ring(law);
     // Maximum iterations = 50 (measured at most 7 per step): a wrong
     // Jacobian fails in seconds instead of running into the TIMEOUT.
     return text + "\nsubsection Load path\n  set Stiffness = tangent\n"

@@ -45,6 +45,23 @@ namespace coupled_test
                               std::regex_constants::format_first_only);
   }
 
+  /**
+   * prm/disc-gap.prm (the disc in a ring) with `law` on the interface
+   * (boundary 5, the text after "5: "), harmonics n = 0..32, no VTU: the
+   * scene of the Newton, contact and Newton-on-ranks tests.
+   */
+  inline std::string
+  disc_in_ring(const std::string &law)
+  {
+    std::string text      = test_support::bundled_prm("prm/disc-gap.prm");
+    text                  = with_entry(text, "Interfaces", "5: " + law);
+    text                  = with_entry(text, "Write vtu", "false");
+    std::string harmonics = "0";
+    for (unsigned int n = 1; n <= 32; ++n)
+      harmonics += ", " + std::to_string(n);
+    return with_entry(text, "Harmonics", harmonics);
+  }
+
   inline Curve
   run(const std::string &text, std::ostream &log = std::cout)
   {
