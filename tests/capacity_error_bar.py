@@ -12,7 +12,7 @@ shared machine):
 (2) vertical (n = 0, pushed to w = 0.04 a): N_c = 6.05 (Eason & Shield
     1960, rough; a numerical solution given to three digits).
 
-Checks, with their reasons (doc/soil-plasticity.md section 8b):
+Checks, with their reasons (doc/verification/soil-plasticity.md section 8b):
 - the printed interval value ± error contains the exact limit: what an
   error bar promises;
 - the mesh bar over the true error of the finest mesh, |P_h - exact|, lies

@@ -221,7 +221,7 @@ def richardson(values):
             observed = math.log2((p0 - p1) / (p1 - p2))
             # At most 1, the order of a limit load set by a shear band or
             # a singular corner; a higher observed order came from meshes
-            # not yet asymptotic (doc/soil-plasticity.md section 8b).
+            # not yet asymptotic (doc/verification/soil-plasticity.md 8b).
             if observed >= 0.5:
                 p = min(observed, 1.0)
     fine, coarse = values[-1], values[-2]

@@ -196,10 +196,10 @@ def pile_capacity(context):
 
 
 def rough_disc_mesh(context):
-    """doc/soil-plasticity.md section 6, "Mesh refinement at the rough
-    disc": prm/pile-capacity.prm with a rough shaft (the rough disc times
-    L), n <= 8, to u = 0.03 d in 6 steps, on 24 (shipped), 36 (growth
-    1.075) and 48 (growth 1.06) radial cells."""
+    """doc/verification/soil-plasticity.md section 6, "Mesh refinement at
+    the rough disc": prm/pile-capacity.prm with a rough shaft (the rough
+    disc times L), n <= 8, to u = 0.03 d in 6 steps, on 24 (shipped), 36
+    (growth 1.075) and 48 (growth 1.06) radial cells."""
     rough = {"Interfaces/Interfaces": "5: rough"}
     curve_family(
         context, "prm/pile-capacity.prm",

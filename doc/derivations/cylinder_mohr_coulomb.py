@@ -1,6 +1,8 @@
 #!/usr/bin/python3
 """Thick cylinder of Mohr-Coulomb soil under internal pressure, plane strain
-(prm/cylinder-mohr-coulomb.prm, doc/soil-plasticity.md section 7b).
+(prm/cylinder-mohr-coulomb.prm, doc/soil-plasticity.md section 7b; the
+derivation and the work of the loads: doc/verification/soil-plasticity.md
+sections 7b and 8c).
 
 Compression positive here. Equilibrium d(s_r)/dr + (s_r - s_t)/r = 0; in the
 plastic zone a < r < rho the yield condition on the (r, theta) plane,

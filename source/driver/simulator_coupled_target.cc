@@ -24,7 +24,7 @@ namespace FourierSSI
     /**
      * The ratio of the goal's changes per doubling of n_max where fewer
      * than three values cannot show it; the capacity studies measured
-     * 0.27-0.46 (doc/soil-plasticity.md 8b).
+     * 0.27-0.46 (doc/verification/soil-plasticity.md 8b, 8c).
      */
     constexpr double harmonic_doubling_ratio = 0.5;
 
@@ -386,7 +386,7 @@ namespace FourierSSI
             << triangulation->n_active_cells() << " cells" << std::endl;
         // The truncation on the coarsest mesh: cheap, and the harmonics'
         // share of the error changes little with the mesh
-        // (doc/soil-plasticity.md 8b).
+        // (doc/verification/soil-plasticity.md 8b).
         if (member == 0 && !growth)
           solve_fewer_harmonics(run, progress.known, log);
         progress.goal = run.solve(log);
