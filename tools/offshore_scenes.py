@@ -1,11 +1,11 @@
 #!/usr/bin/python3
-"""The verification table of doc/offshore-foundations.md: the monopile and
-suction-caisson scenes (prm/monopile.prm, prm/suction-caisson.prm) as
-shipped, finer runs of each, the caisson's modelling studies (domain size,
+"""The verification table of doc/offshore-foundations.md: the monopile,
+layered-monopile and suction-caisson scenes (prm/monopile.prm,
+prm/monopile-layered.prm, prm/suction-caisson.prm) as shipped, finer runs of each, the caisson's modelling studies (domain size,
 skirt thickness) and the published or closed-form values beside them.
 
 Usage: tools/offshore_scenes.py [--exe build/fourier-ssi] [--out doc/figures]
-                                [--only monopile|caisson]
+                                [--only monopile|layered|caisson]
 
 Every case is a shipped scene with a few entries appended (a later
 subsection/set wins in deal.II's ParameterHandler), run by the program in
@@ -47,8 +47,8 @@ References:
     (nu = 0.5), as quoted by a third party (the paper itself could not be
     read here; doc/offshore-foundations.md says so).
 
-Writes OUT/offshore-scenes-monopile.{csv,md} and
-OUT/offshore-scenes-caisson.{csv,md} (--only: that group only); prints the
+Writes OUT/offshore-scenes-<group>.{csv,md} for the groups monopile,
+layered and caisson (--only: that group only); prints the
 tables and the total wall time.
 """
 import argparse
@@ -71,6 +71,10 @@ ROWS = {
     "K_M": ("K_M", 1, "K_M_error"),
     "K_MH": ("K_MH", 1, "K_MH_error"),
 }
+
+# The layered monopile writes the 6x6 matrix: K_V is its K_V row [kN/m]
+# (no Vertical force, so no normalised vertical stiffness).
+LAYERED_ROWS = dict(ROWS, K_V=("K_V", 0, "K_V_error"))
 
 DOHERTY_2005 = {  # rigid caisson, L/D = 0.5, homogeneous, as quoted
     0.2: {"K_H": 9.09, "K_M": 16.77},
@@ -109,6 +113,8 @@ end
 # The shipped base meshes (kept equal to the .prm files by hand: the
 # 'shipped' case runs the file itself, and finer = these doubled).
 MONOPILE_MESH = ([6, 1, 20], [0.6, 1, 1.6], [16, 6, 32, 6, 1], [0.55, 1.6, 1, 0.625, 1])
+LAYERED_MESH = ([6, 1, 20], [0.6, 1, 1.6], [16, 6, 24, 7, 2, 6, 1],
+                [0.55, 1.6, 1, 1, 1, 0.625, 1])
 CAISSON_MESH = ([8, 1, 23], [0.7, 1, 1.6], [22, 5, 12, 5, 1], [0.62, 1.5, 1, 0.6667, 1])
 
 NU_02 = """subsection Materials
@@ -157,7 +163,7 @@ def skirt(thickness):
             "end\n")
 
 
-def run_case(exe, scene, appended, name):
+def run_case(exe, scene, appended, name, goal_rows=ROWS):
     """Runs scene + appended entries; returns {goal: (value, error)}, the
     wall time [s] and the DoFs per harmonic of the answer."""
     with tempfile.TemporaryDirectory(prefix="offshore-") as work:
@@ -178,7 +184,7 @@ def run_case(exe, scene, appended, name):
     value = {(r["quantity"], int(r["n"])): float(r["value"])
              for r in rows if int(r["cycle"]) == last}
     result = {}
-    for goal, (quantity, n, error) in ROWS.items():
+    for goal, (quantity, n, error) in goal_rows.items():
         result[goal] = (value[(quantity, n)], value.get((error, n), float("nan")))
     return result, wall, int(value[("n_dofs", 1)])
 
@@ -224,6 +230,10 @@ def scene_cases(group):
         return [("shipped", scene, ""),
                 ("finer", scene, doubled(*MONOPILE_MESH) + FINER_RUN),
                 ("wall cells 0.11 m x 3.5 m", scene, LONG_WALL_CELLS)]
+    if group == "layered":
+        scene = "prm/monopile-layered.prm"
+        return [("shipped", scene, ""),
+                ("finer", scene, doubled(*LAYERED_MESH) + FINER_RUN)]
     scene = "prm/suction-caisson.prm"
     cases = [("nu=0.499 shipped", scene, ""),
              ("nu=0.499 finer", scene, doubled(*CAISSON_MESH) + FINER_RUN),
@@ -245,6 +255,10 @@ def reference_lines(group):
                 f"E_p = {facts['E_p'] / 1e9:.2f} GPa (the solid pile of the tube's EI), "
                 f"E_p/G* = {facts['E_p/G*']:.0f}, l_c = {facts['l_c']:.1f} m, "
                 f"L/l_c = {facts['L/l_c']:.2f}"]
+    if group == "layered":
+        return ["K_V in kN/m; K_H, K_M, K_MH normalised with G = 40 MPa "
+                "(the deep sand) and a = 4.5 m; no published solution for "
+                "this profile: the finer run is the reference"]
     return [f"Doherty et al. (2005), rigid, L/D = 0.5, nu = {nu} (as quoted): "
             f"K_H = {values['K_H']}, K_M = {values['K_M']}"
             for nu, values in DOHERTY_2005.items()]
@@ -275,17 +289,19 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("--exe", default=os.path.join(ROOT, "build", "fourier-ssi"))
     parser.add_argument("--out", default=os.path.join(ROOT, "doc", "figures"))
-    parser.add_argument("--only", choices=["monopile", "caisson"])
+    parser.add_argument("--only", choices=["monopile", "layered", "caisson"])
     args = parser.parse_args()
     exe = os.path.abspath(args.exe)
     os.makedirs(args.out, exist_ok=True)
     start = time.time()
-    for group in ["monopile", "caisson"]:
+    for group in ["monopile", "layered", "caisson"]:
         if args.only not in (None, group):
             continue
         table = []
         for label, scene, appended in scene_cases(group):
-            result, wall, dofs = run_case(exe, scene, appended, f"{group} {label}")
+            rows = LAYERED_ROWS if group == "layered" else ROWS
+            result, wall, dofs = run_case(exe, scene, appended,
+                                          f"{group} {label}", rows)
             print(f"{group}, {label}: {wall:.1f} s, {dofs} DoFs per harmonic: "
                   + ", ".join(f"{g} {fmt(*result[g])}" for g in GOALS), flush=True)
             table.append((label, wall, dofs, result))
