@@ -40,17 +40,20 @@ namespace FourierSSI
     {
       const unsigned int n_max =
         std::max(highest_harmonic(list), settings.maximum_harmonic);
-      // Exact contact at more than 2 n_max + 1 samples asks a band-limited
-      // gap to vanish at more samples than it has values (section 5d): the
-      // multipliers at the contact edge then drift and the updates do not
-      // converge. Its default is one sample per value.
+      // Exact contact, or Newton on a stiff penalty, at more than
+      // 2 n_max + 1 samples asks a band-limited gap to vanish at more samples
+      // than it has values (doc/nonlinear-interfaces.md sections 5b, 5d):
+      // the contact edge then has no consistent active set and the updates
+      // wander. Their default is one sample per value; the
+      // initial-stiffness iteration keeps the general default.
       const bool contact =
         std::any_of(interfaces.laws.begin(),
                     interfaces.laws.end(),
                     [](const auto &entry) { return entry.second.contact; });
+      const bool one_sample_per_value = contact || settings.tangent_stiffness;
       return FourierSSI::theta_samples_for(n_max,
                                            settings.theta_samples == 0 &&
-                                               contact ?
+                                               one_sample_per_value ?
                                              2 * n_max + 1 :
                                              settings.theta_samples);
     }

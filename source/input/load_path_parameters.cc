@@ -13,8 +13,10 @@ namespace FourierSSI
         "0",
         Patterns::Integer(0, LoadPathParameters::most_theta_samples),
         "Angles N at which the interface law is evaluated. 0: "
-        "4 (n_max + 1), 2 n_max + 1 with a contact interface. Must exceed 2 n_max (n_max the highest "
-        "harmonic), else a band-limited field aliases. At "
+        "4 (n_max + 1); 2 n_max + 1 (one sample per value of a "
+        "band-limited gap) with a contact interface or Stiffness = "
+        "tangent in an interface-only scene. Must exceed 2 n_max (n_max "
+        "the highest harmonic), else a band-limited field aliases. At "
         "most 8192; the memory of the coupled state (N times "
         "the soil's quadrature points) is checked against the "
         "free memory before the run.");
@@ -106,10 +108,12 @@ namespace FourierSSI
                         "closed-form consistent tangent of the coulomb return "
                         "mapping, safeguarded by a line search on the "
                         "residual norm (2-3 updates at kappa = kn r0 / G up "
-                        "to 1e6 with Theta samples = 2 n_max + 1; with more "
-                        "samples a stiff penalty over-constrains the "
-                        "band-limited gap: tens of updates at 1e4-1e5, no "
-                        "convergence above; one process only; "
+                        "to 1e6 with its default Theta samples = 2 n_max + "
+                        "1; with more samples a stiff penalty "
+                        "over-constrains the band-limited gap: tens of "
+                        "updates at 1e4-1e5, no convergence above; on "
+                        "several MPI ranks each fills the Jacobian columns "
+                        "of its harmonics; "
                         "doc/nonlinear-interfaces.md section 5b). Plastic "
                         "soil takes Soil plasticity/Stiffness.");
       prm.declare_entry("Anderson depth",
