@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""The verification table of doc/offshore-foundations.md: the monopile,
-layered-monopile and suction-caisson scenes (prm/monopile.prm,
+"""The verification tables of doc/verification/offshore-foundations.md §4:
+the monopile, layered-monopile and suction-caisson scenes (prm/monopile.prm,
 prm/monopile-layered.prm, prm/suction-caisson.prm) as shipped, finer runs of each, the caisson's modelling studies (domain size,
 skirt thickness) and the published or closed-form values beside them.
 
@@ -45,7 +45,7 @@ References:
     131(12) 1498-1508, rigid caisson, L/D = 0.5, homogeneous soil:
     K_H = 9.09, K_M = 16.77 (nu = 0.2) and K_H = 10.95, K_M = 20.06
     (nu = 0.5), as quoted by a third party (the paper itself could not be
-    read here; doc/offshore-foundations.md says so).
+    read here; doc/verification/offshore-foundations.md §4c says so).
 
 Writes OUT/offshore-scenes-<group>.{csv,md} for the groups monopile,
 layered and caisson (--only: that group only); prints the

@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """Rigid-motion capacity probes of the suction caisson in Tresca clay
-(doc/offshore-foundations.md, section "Capacity probes"):
+(doc/offshore-foundations.md section 7, measured in
+doc/verification/offshore-foundations.md §7a):
 
 - pure H: the caisson translated along x with its rotation held at zero
   (Rigid foundation/Held motions = rotation), H_ult = the load at the end
