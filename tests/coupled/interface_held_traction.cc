@@ -18,8 +18,8 @@
 //     from the geostatic state) equal rho Q + lambda V to 1e-8 of the
 //     larger of the two (the iteration's residual is 1e-12 of the force
 //     scale; this bounds the sum of the residuals of a few hundred DoFs);
-//     today's scaling of the traction with lambda breaks it by (1 - lambda)
-//     Q;
+//     a traction scaled with lambda instead of held would break it by
+//     (1 - lambda) Q;
 //  3. the pull-out capacity: with kn = 1 kPa/m the normal stress on the
 //     shaft stays at K0 gamma' z and the base carries nothing (as in the
 //     pull-out check of interface_coulomb_pile.cc), so the pile pulls out

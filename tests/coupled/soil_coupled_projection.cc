@@ -8,7 +8,7 @@
 //      rule is exact for N > 2 n_max);
 //  (1) elastic limit: s_u = 1e9 kPa, load control: 0 out-of-balance
 //      iterations and the linear solution to 1e-13 relative (the same
-//      factorization; "a scene that stays elastic runs as today").
+//      factorization: a scene that stays elastic gives the linear answer).
 #include "soil_test_support.h"
 
 #include <random>
