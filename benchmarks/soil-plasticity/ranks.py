@@ -1,10 +1,12 @@
 #!/usr/bin/python3
 """Plastic soil on 1 vs 2 MPI ranks (doc/soil-plasticity.md section 3c):
 the harmonics distributed over the ranks, Soil plasticity/Stiffness =
-elastic (the initial-stiffness iteration, Aitken; Stiffness = tangent is
-refused on several ranks).
+elastic (the initial-stiffness iteration, Aitken) and tangent (Newton: each
+rank assembles the block rows of its harmonics, one rank factorizes the
+coupled tangent).
 
     /usr/bin/python3 benchmarks/soil-plasticity/ranks.py [BUILD_DIR] [RUNS]
+                                                   [STIFFNESS]
 
 Every case is a bundled scene with a few entries overridden (an appended
 subsection: later `set` lines win). 1 rank is the plain serial run (no
@@ -22,7 +24,8 @@ roundoff depends on it). Equality: whether load-displacement.csv of every
 the step times, and the largest difference of the load and the motion
 relative to their largest value. The load average (1, 5, 15 min) before
 and after each case is written with the table: the 2 cores are shared.
-Writes ranks.csv and ranks.md next to this file.
+Writes ranks.csv and ranks.md (STIFFNESS = elastic, the default) or
+ranks-newton.csv and ranks-newton.md (tangent) next to this file.
 """
 import csv
 import os
@@ -36,11 +39,15 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 SOURCE = os.path.normpath(os.path.join(HERE, "..", ".."))
 
-# (label, scene, harmonics, steps, target [m], load column, motion column)
+# (label, scene, harmonics, steps, target [m], load column, motion column,
+#  Soil plasticity/Stiffness)
 CASES = [
     ("pile capacity, n <= 8, as shipped (6 steps to u = 0.03 d)",
      "prm/pile-capacity.prm", "0, 1, 2, 3, 4, 5, 6, 7, 8", 6, "0.03",
-     "H_kN", "horizontal_m"),
+     "H_kN", "horizontal_m", "elastic"),
+    ("pile capacity, n <= 8, as shipped (6 steps to u = 0.03 d), Newton",
+     "prm/pile-capacity.prm", "0, 1, 2, 3, 4, 5, 6, 7, 8", 6, "0.03",
+     "H_kN", "horizontal_m", "tangent"),
 ]
 # (label, ranks, extra mpirun options)
 CONFIGURATIONS = [
@@ -67,16 +74,16 @@ def load_average():
 
 
 def run_case(exe, case, work, launcher):
-    label, scene, listed, steps, target, load, motion = case
+    label, scene, listed, steps, target, load, motion, stiffness = case
     with open(os.path.join(SOURCE, scene)) as f:
         text = f.read()
     out = os.path.join(work, "out")
     text += ("\nsubsection Discretization\n  set Harmonics = %s\nend\n"
              "subsection Load path\n  set Load steps = %d\n"
              "  set Target = %s\nend\n"
-             "subsection Soil plasticity\n  set Stiffness = elastic\nend\n"
+             "subsection Soil plasticity\n  set Stiffness = %s\nend\n"
              "subsection Output\n  set Directory = %s\nend\n"
-             % (listed, steps, target, out))
+             % (listed, steps, target, stiffness, out))
     prm = os.path.join(work, "case.prm")
     with open(prm, "w") as f:
         f.write(text)
@@ -114,10 +121,12 @@ def max_relative_difference(a, b):
 def main():
     build = sys.argv[1] if len(sys.argv) > 1 else os.path.join(SOURCE, "build")
     runs = int(sys.argv[2]) if len(sys.argv) > 2 else 3
+    stiffness = sys.argv[3] if len(sys.argv) > 3 else "elastic"
+    stem = "ranks" if stiffness == "elastic" else "ranks-newton"
     exe = os.path.join(build, "fourier-ssi")
     rows = []
     with tempfile.TemporaryDirectory() as work:
-        for case in CASES:
+        for case in [c for c in CASES if c[-1] == stiffness]:
             samples = {label: [] for label, _, _ in CONFIGURATIONS}
             loads = [load_average()]
             for _ in range(runs):
@@ -155,15 +164,16 @@ def main():
                             for s in ok)
                 print(row, flush=True)
                 rows.append(row)
-    with open(os.path.join(HERE, "ranks.csv"), "w", newline="") as f:
+    with open(os.path.join(HERE, stem + ".csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=FIELDS)
         w.writeheader()
         w.writerows(rows)
     one = {r["case"]: r for r in rows if r["ranks"] == CONFIGURATIONS[0][0]}
-    with open(os.path.join(HERE, "ranks.md"), "w") as f:
+    with open(os.path.join(HERE, stem + ".md"), "w") as f:
         f.write(
-            "# Plastic soil on 1 vs 2 MPI ranks (Stiffness = elastic)\n\n"
-            "Regenerate: `benchmarks/soil-plasticity/ranks.py` (%d runs of "
+            "# Plastic soil on 1 vs 2 MPI ranks (Stiffness = %s)\n\n"
+            "Regenerate: `benchmarks/soil-plasticity/ranks.py build %d %s` "
+            "(%d runs of "
             "each, alternated, medians). 1 rank: the serial run (harmonics "
             "on 2 threads); 2 ranks: `mpirun -np 2`, each rank its own "
             "harmonics on one thread and every second soil point (yield when "
@@ -176,7 +186,8 @@ def main():
             "[s] | CPU [s] | steps / 1 rank | whole run / 1 rank | same text "
             "| load "
             "agreement | motion agreement | load average |\n"
-            "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n" % runs)
+            "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n"
+            % (stiffness, runs, stiffness, runs))
         for r in rows:
             if "steps" not in r:
                 f.write("| %s | %d | %s | failed |||||||||\n"
@@ -196,7 +207,7 @@ def main():
                        r.get("max_rel_diff_load", float("nan")),
                        r.get("max_rel_diff_motion", float("nan")),
                        r["load"]))
-    print("wrote", os.path.join(HERE, "ranks.md"))
+    print("wrote", os.path.join(HERE, stem + ".md"))
 
 
 if __name__ == "__main__":

@@ -83,6 +83,29 @@ namespace FourierSSI
       for (unsigned int q = 0; q < field.size(); ++q)
         field[q] = with_dilatation(field[q], projection->value_at(c, q));
     }
+
+    /**
+     * fields[h] := its sum over the ranks the harmonics are distributed
+     * over (one sum; on one rank nothing): each field computed by its
+     * harmonic's owner, zero elsewhere, becomes the same bits on every rank.
+     */
+    void
+    sum_fields_over_ranks(const HarmonicSet           &set,
+                          std::vector<Vector<double>> &fields)
+    {
+      if (set.n_owning_ranks() == 1)
+        return;
+      std::vector<double> flat;
+      for (const Vector<double> &field : fields)
+        flat.insert(flat.end(), field.begin(), field.end());
+      set.sum_over_ranks(flat);
+      auto next = flat.begin();
+      for (Vector<double> &field : fields)
+        {
+          std::copy(next, next + field.size(), field.begin());
+          next += field.size();
+        }
+    }
   } // namespace
 
   CoupledSoilSolver::CoupledSoilSolver(const HarmonicSet   &set,
@@ -99,14 +122,6 @@ namespace FourierSSI
     for (const Harmonic &h : harmonics)
       operators.emplace_back(h);
     check_homogeneous_constraints(entry, "plastic soil");
-    // Newton needs the whole coupled block matrix on one rank; the
-    // initial-stiffness iteration re-solves each harmonic on its owner.
-    AssertThrow(!parameters.soil_plasticity.tangent ||
-                  set.n_owning_ranks() == 1,
-                ExcMessage(entry + ": not yet: Stiffness = tangent on several "
-                                   "MPI ranks (the coupled tangent is one "
-                                   "block matrix over all harmonics); use "
-                                   "Stiffness = elastic or one rank"));
     make_points();
     check_initial_stress();
     if (parameters.interfaces.any_nonlinear())
@@ -789,6 +804,8 @@ namespace FourierSSI
         HarmonicPairIntegral   integral(harmonics, sampling, 6, 4);
         for (unsigned int p = first; p < last; ++p)
           {
+            if (!owns_point(p))
+              continue; // its strain samples are on its own rank
             bool yields = false;
             for (unsigned int j = 0; j < N; ++j)
               {
@@ -805,7 +822,43 @@ namespace FourierSSI
               integral.integrals(softening[p]);
           }
       });
+    softening_over_ranks(softening);
     return softening;
+  }
+
+  void
+  CoupledSoilSolver::softening_over_ranks(
+    std::vector<std::vector<double>> &softening) const
+  {
+    if (point_stride == 1)
+      return;
+    // 1. Which points yield: one flag per point, set by its rank.
+    std::vector<double> yields(points.size(), 0.);
+    for (unsigned int p = 0; p < points.size(); ++p)
+      yields[p] = softening[p].empty() ? 0. : 1.;
+    set.sum_over_ranks(yields);
+    // 2. Their integrals, packed in the points' order: each is non-zero on
+    //    one rank only, so the sum is exact (x + 0 = x), the serial bits.
+    const unsigned int  H = set.size(), size = 36 * H * H;
+    std::vector<double> packed;
+    for (unsigned int p = 0; p < points.size(); ++p)
+      if (yields[p] != 0.)
+        {
+          if (softening[p].empty())
+            packed.resize(packed.size() + size, 0.);
+          else
+            packed.insert(packed.end(),
+                          softening[p].begin(),
+                          softening[p].end());
+        }
+    set.sum_over_ranks(packed);
+    for (unsigned int p = 0, next = 0; p < points.size(); ++p)
+      if (yields[p] != 0.)
+        {
+          softening[p].assign(packed.begin() + next,
+                              packed.begin() + next + size);
+          next += size;
+        }
   }
 
   void
@@ -923,8 +976,11 @@ namespace FourierSSI
     const std::vector<unsigned int> yielding = yielding_cells(softening);
     const std::vector<std::vector<ShapeStrains>> strains =
       shape_strains(yielding);
-    // Block row h: K_t,hg -= int Bbar_h^T S_hg Bbar_g.
+    // Block row h: K_t,hg -= int Bbar_h^T S_hg Bbar_g (on h's owner under
+    // MPI, coupled_tangent.h).
     set.for_each([&](const unsigned int h) {
+      if (!set.owns(h))
+        return;
       FullMatrix<double> local(component.size(), component.size());
       for (unsigned int y = 0; y < yielding.size(); ++y)
         for (unsigned int g = 0; g < H; ++g)
@@ -948,6 +1004,8 @@ namespace FourierSSI
     tangent_pattern.resize(H);
     for (unsigned int h = 0; h < H; ++h)
       tangent_pattern[h] = loads.load[h];
+    // F_h is on h's owner only (LoadPattern); the solve takes all of F.
+    sum_fields_over_ranks(set, tangent_pattern);
     tangent->solve(tangent_pattern);
   }
 
@@ -1012,12 +1070,15 @@ namespace FourierSSI
       }
     std::vector<Vector<double>> change(set.size());
     set.for_each([&](const unsigned int h) {
-      du[h].add(load_change, tangent_pattern[h]);
       change[h].reinit(du[h].size());
+      if (!set.owns(h))
+        return; // K_h is on its owner only
+      du[h].add(load_change, tangent_pattern[h]);
       set.problem(h).get_system_matrix().vmult(change[h], du[h]);
       change[h].add(-load_change, loads.load[h]);
       set.problem(h).get_homogeneous_constraints().set_zero(change[h]);
     });
+    sum_fields_over_ranks(set, change);
     return change;
   }
 
@@ -1104,8 +1165,10 @@ namespace FourierSSI
           {
             state.correction_load[h].add(-newton.step_length,
                                          newton.last_load[h]);
-            state.correction_solution[h].add(-newton.step_length,
-                                             newton.last_solution[h]);
+            // A harmonic's displacement is on its owner only.
+            if (set.owns(h))
+              state.correction_solution[h].add(-newton.step_length,
+                                               newton.last_solution[h]);
           }
         return NewtonMove::backtracked;
       }
@@ -1276,7 +1339,9 @@ namespace FourierSSI
       log << "  MPI: " << set.n_rank_sums()
           << " sums over the ranks (strain amplitudes and theta integrals "
              "every iteration, the controlled motion under displacement "
-             "control, a few per step), "
+             "control, a few per step; with Stiffness = tangent the "
+             "softening, the tangent's values and the load correction "
+             "every Newton update), "
           << set.rank_sum_time()
           << " s in them on rank 0 (computing or waiting for the others)\n";
   }

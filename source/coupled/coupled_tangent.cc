@@ -3,6 +3,7 @@
 #include <deal.II/lac/block_vector.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <fourier_ssi/coupled/coupled_tangent.h>
+#include <fourier_ssi/input/messages.h>
 
 namespace FourierSSI
 {
@@ -136,6 +137,8 @@ namespace FourierSSI
   {
     matrix = 0.;
     set.for_each([&](const unsigned int h) {
+      if (!set.owns(h))
+        return; // its block row comes from its owner (the class comment)
       const SparseMatrix<double> &elastic = set.problem(h).get_system_matrix();
       SparseMatrix<double>       &block   = matrix.block(h, h);
       for (unsigned int row = 0; row < elastic.m(); ++row)
@@ -152,6 +155,8 @@ namespace FourierSSI
                       const std::vector<types::global_dof_index> &row_dofs,
                       const std::vector<types::global_dof_index> &column_dofs)
   {
+    if (!set.owns(h))
+      return; // its block row comes from its owner (the class comment)
     const auto &row_constraints = set.problem(h).get_homogeneous_constraints();
     const auto &column_constraints =
       set.problem(g).get_homogeneous_constraints();
@@ -180,8 +185,30 @@ namespace FourierSSI
   CoupledTangent::factorize()
   {
     copy_to_lu();
-    lu.factorize();
+    // The block rows of every rank's harmonics (zero elsewhere): exact.
+    set.sum_over_ranks(lu.values());
     ++factorizations;
+    if (set.n_owning_ranks() == 1)
+      {
+        lu.factorize();
+        return;
+      }
+    // One rank factorizes; a singular matrix stops every rank with its
+    // message instead of leaving the others waiting in solve().
+    std::string failure;
+    if (set.owns(solving_harmonic))
+      try
+        {
+          lu.factorize();
+        }
+      catch (const std::exception &e)
+        {
+          failure = one_line_message(e);
+        }
+    failure = Utilities::MPI::broadcast(set.get_ranks(),
+                                        failure,
+                                        set.owner(solving_harmonic));
+    AssertThrow(failure.empty(), ExcMessage(failure));
   }
 
   void
@@ -201,10 +228,13 @@ namespace FourierSSI
   void
   CoupledTangent::solve(std::vector<Vector<double>> &b_to_x) const
   {
-    std::vector<double> b(offset.back()), x;
+    std::vector<double> b(offset.back()), x(offset.back());
     for (unsigned int h = 0; h < b_to_x.size(); ++h)
       std::copy(b_to_x[h].begin(), b_to_x[h].end(), b.begin() + offset[h]);
-    lu.solve(b, x);
+    // The factorizing rank solves, the others receive its bits.
+    if (set.owns(solving_harmonic))
+      lu.solve(b, x);
+    set.broadcast_from_owner(solving_harmonic, x.data(), x.size());
     for (unsigned int h = 0; h < b_to_x.size(); ++h)
       {
         std::copy(x.begin() + offset[h],

@@ -2,10 +2,11 @@
 """Plastic soil with its harmonics distributed over MPI ranks
 (doc/soil-plasticity.md section 3c): the bundled prm/pile-capacity.prm (the
 rigid pile in a Tresca layer) cut to n = 0, 1, 2 and 4 displacement steps
-to u = 0.02 d with Soil plasticity/Stiffness = elastic (the
-initial-stiffness iteration, Aitken), run by the program on 1 rank and under
-mpirun on 2 ranks (rank 0 owns n = 0 and 2, rank 1 owns n = 1: the loaded
-and controlled harmonic). Checks:
+to u = 0.02 d with Soil plasticity/Stiffness = STIFFNESS (elastic: the
+initial-stiffness iteration, Aitken; tangent: Newton on the coupled
+tangent), run by the program on 1 rank and under mpirun on 2 ranks (rank 0
+owns n = 0 and 2, rank 1 owns n = 1: the loaded and controlled harmonic).
+Checks:
 
 (1) both runs exit 0 and write load-displacement.csv and results.csv once
     (rank 0), and the 2-rank log names the distribution;
@@ -24,13 +25,19 @@ and controlled harmonic). Checks:
     serial run adds them; each harmonic's back-substitution is the same
     sparse direct solve on its owner (one BLAS thread per process in both
     runs: OPENBLAS_NUM_THREADS=1, set by the ctest). A reduction in another
-    order would show here in the last of the 12 digits written.
-With a fifth argument, the scene is prm/pile-adhesion.prm (plastic soil
+    order would show here in the last of the 12 digits written. Newton
+    (tangent) adds: each point's softening integrals from its rank and
+    each block row of the coupled tangent from its harmonic's owner, summed
+    over the ranks (exact, x + 0 = x), one rank's factorization and solve
+    broadcast, the load correction K_h du_h from h's owner: the same
+    iteration counts (a column of load-displacement.csv) and the same
+    digits, or the sum or the solve is not the serial one.
+With a sixth argument, the scene is prm/pile-adhesion.prm (plastic soil
 and a coulomb shaft, doc/soil-plasticity.md section 6b) with that interface
 law: the relative displacements are summed over the ranks too, and
 interface-state.csv must also be written once and be the same text.
 Usage: soil_output_same.py "MPIEXEC;-np;2;..." FOURIER_SSI_EXE SOURCE_DIR
-       WORK_DIR [INTERFACE_LAW]
+       WORK_DIR STIFFNESS [INTERFACE_LAW]
 """
 import os
 import sys
@@ -46,7 +53,7 @@ subsection Load path
   set Target     = 0.02
 end
 subsection Soil plasticity
-  set Stiffness = elastic
+  set Stiffness = %s
 end
 subsection Output
   set Directory = out
@@ -78,12 +85,13 @@ def same_text(name, one, two, skip_row, skip_columns):
 
 
 def main():
-    scene, overrides, files = ("prm/pile-capacity.prm", OVERRIDES,
+    scene, overrides, files = ("prm/pile-capacity.prm",
+                               OVERRIDES % sys.argv[5],
                                {"load-displacement.csv", "results.csv"})
-    if len(sys.argv) > 5:
+    if len(sys.argv) > 6:
         scene = "prm/pile-adhesion.prm"
         overrides += ("subsection Interfaces\n  set Interfaces = %s\nend\n"
-                      % sys.argv[5])
+                      % sys.argv[6])
         files.add("interface-state.csv")
     outputs = rank_runs.on_one_and_two_ranks(
         sys.argv[:5], scene, overrides,

@@ -26,16 +26,19 @@
  * out-of-balance load (NonlinearInterfacePoints) joins G in step 3, and
  * their part of the tangent joins K_t (doc/soil-plasticity.md 6b).
  *
- * Under mpirun (Stiffness = elastic) the harmonics are distributed over the
- * ranks (HarmonicSet::distribute_over), as for the interfaces: each rank
- * re-solves its own harmonics and computes their strain amplitudes, and
- * return-maps every P-th soil point. Two sums over the ranks per iteration
+ * Under mpirun the harmonics are distributed over the ranks
+ * (HarmonicSet::distribute_over), as for the interfaces: each rank re-solves
+ * its own harmonics and computes their strain amplitudes, and return-maps
+ * every P-th soil point. Two sums over the ranks per iteration
  * (MPI_Allreduce: the strain amplitudes, then the theta integrals of s_p)
  * give every rank all of them; each entry is non-zero on one rank only, so
  * the sums are exact, and every rank assembles G, tests convergence and
  * updates c on the same bits as a serial run (doc/soil-plasticity.md
- * section 3c). Stiffness = tangent (one block matrix over all harmonics) on
- * several ranks is refused.
+ * section 3c). Stiffness = tangent: each rank integrates the softening of
+ * its points, a sum gives every rank all of them, each rank assembles the
+ * block rows of its harmonics, a sum completes the block matrix, and one
+ * rank factorizes and solves it for every rank (coupled_tangent.h); all
+ * exact, so Newton too takes the serial run's steps bit for bit.
  */
 #ifndef fourier_ssi_coupled_soil_solver_h
 #define fourier_ssi_coupled_soil_solver_h
@@ -485,6 +488,14 @@ namespace FourierSSI
      */
     std::vector<std::vector<double>>
     softening_integrals(const std::vector<StrainVector> &strain) const;
+
+    /**
+     * Under MPI: every point's softening integrals on every rank (each
+     * computed by the rank that return-maps the point), exactly; the
+     * yielding points only, so the sum stays small while few yield.
+     */
+    void
+    softening_over_ranks(std::vector<std::vector<double>> &softening) const;
 
     /** The coupled tangent's sparsity: the soil cells and interface pairs. */
     void

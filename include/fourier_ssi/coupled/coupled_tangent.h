@@ -11,6 +11,15 @@
  * UMFPACK (the softened part of D_ep need not be symmetric: Mohr-Coulomb
  * with psi < phi) as one matrix whose pattern is analysed once
  * (umfpack_lu.h).
+ *
+ * Under MPI (harmonics distributed over the ranks, HarmonicSet::
+ * distribute_over) every rank builds the same pattern (every harmonic's
+ * sparsity is set up on every rank) and fills the block rows of the
+ * harmonics it owns: the elastic K_h lives on h's owner only, and the
+ * caller gives every rank every point's softening. One sum over the ranks
+ * then completes the matrix, exactly (each entry is non-zero on one rank:
+ * x + 0 = x), so the rank that owns the first harmonic factorizes the
+ * serial run's matrix bit for bit; it solves and broadcasts the solution.
  */
 #ifndef fourier_ssi_coupled_tangent_h
 #define fourier_ssi_coupled_tangent_h
@@ -49,7 +58,8 @@ namespace FourierSSI
     /**
      * Block (h, g) += the condensed local matrix (the softening enters
      * negated; thread-safe per block row h). The rows and columns of a
-     * repeated index are summed first.
+     * repeated index are summed first. Nothing on a rank that does not own
+     * harmonic h (its owner adds the same matrix).
      */
     void
     add(const unsigned int                          h,
@@ -58,10 +68,17 @@ namespace FourierSSI
         const std::vector<types::global_dof_index> &row_dofs,
         const std::vector<types::global_dof_index> &column_dofs);
 
+    /**
+     * LU of K_t (collective under MPI: every rank's block rows summed, one
+     * rank factorizes).
+     */
     void
     factorize();
 
-    /** y_h = sum_g K_t,hg x_g (condensed; a check of the assembly). */
+    /**
+     * y_h = sum_g K_t,hg x_g (condensed; a check of the assembly), of the
+     * harmonics h this rank owns (zero for the others).
+     */
     void
     vmult(std::vector<Vector<double>>       &y,
           const std::vector<Vector<double>> &x) const;
@@ -69,6 +86,7 @@ namespace FourierSSI
     /**
      * b_to_x[h] := (K_t^-1 b)_h for condensed loads b of every harmonic;
      * the constraints of every harmonic then distributed (increments).
+     * Collective under MPI: b must be the same on every rank, and so is x.
      */
     void
     solve(std::vector<Vector<double>> &b_to_x) const;
@@ -80,6 +98,9 @@ namespace FourierSSI
     }
 
   private:
+    /** Its owner factorizes and solves the whole matrix under MPI. */
+    static constexpr unsigned int solving_harmonic = 0;
+
     const HarmonicSet        &set;
     BlockSparsityPattern      pattern;
     BlockSparseMatrix<double> matrix;
