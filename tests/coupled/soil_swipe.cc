@@ -1,0 +1,206 @@
+// The swipe test (Tan 1990; Gottardi, Houlsby & Butterfield 1999) with
+// plastic soil: a vertical preload (Rigid foundation/Held vertical force)
+// brought on in the held stage, then w held at the value the preload
+// reached (Held motions = w) while u is driven by displacement control; the
+// vertical load follows from the extra load multiplier mu that keeps the
+// increment of w at zero (doc/offshore-foundations.md, section 7). The
+// rough footing on Tresca soil of prm/footing-capacity.prm (a = 1 m,
+// s_u = 10 kPa, G = 3000 kPa, nu = 0.49), coarse mesh, n = 0 and 1,
+// 8 theta samples, u to 0.01 m (about 5 elastic yield displacements) in 10
+// steps, as soil_footing_held_loads. Checks, with reasons:
+//  1. w stays at the preload's value at every driven step to 1e-10
+//     relative: mu is chosen so that the (linear) w of the iterate equals
+//     it, so only round-off of that 2x2 solve and of the motion read back
+//     remains;
+//  2. equilibrium: the V the run reports (held V + mu, the V column of
+//     load-displacement.csv and the log) equals the vertical reaction of
+//     the soil on the footing (held_reactions: the virtual work of
+//     K u - G(u) on the unit w), two different computations. They agree
+//     to the iteration's tolerance (|R| <= 1e-8 of the load scale): 1e-6
+//     relative to the preload leaves room for the round-off of the sums;
+//  3. the independent reference, the V-H envelope of a Tresca footing:
+//     H_max does not depend on V while V <= V_ult / 2 (Green 1954 for the
+//     strip; Bransby & Randolph 1998 and Taiebat & Carter 2000 for FE of
+//     strip and circular footings). The swipe starts at V = V_ult / 2
+//     (V_ult from a vertical-capacity run on the same mesh, to w = 0.04 a)
+//     and V falls while it runs, so its H at u = 0.01 m must be that of the
+//     same mesh's pure-H run with V = V_ult / 2 held constant: within 2 %,
+//     the change of H over the last steps of the held-V curve at this
+//     displacement (the plateau is reached to about 1 %, so both runs
+//     carry that much of the hardening of the displacement FE before the
+//     limit); and no step of the swipe lies above it (the envelope bounds
+//     the swipe, tolerance the same 2 %);
+//  4. elastic soil (s_u raised a million-fold): V and H are carried by
+//     harmonics 0 and 1, uncoupled in an axisymmetric elastic body (the
+//     6x6 stiffness matrix has K_VH = 0), so holding w takes no change of
+//     V: the closed form Delta V = -K_VH u = 0, to round-off (1e-10 of the
+//     preload).
+#include "soil_test_support.h"
+
+#include <iomanip>
+
+using namespace FourierSSI;
+using namespace soil_test;
+
+namespace
+{
+  /** V_ult [kN, > 0] of the coarse mesh: w = -0.04 m in 8 steps, n = 0. */
+  double
+  vertical_capacity()
+  {
+    Run run(scene(
+      joined(footing_mesh(true), {{"Load steps", "8"}, {"Target", "-0.04"}})));
+    run.solver->run(std::cout);
+    const auto &steps = run.solver->get_steps();
+    return -run.solver->applied_loads(steps.back().load_factor)[2];
+  }
+
+  /**
+   * The footing pushed sideways to u = 0.01 m after V held (swipe: w held
+   * from where V left it), s_u given.
+   */
+  std::unique_ptr<Run>
+  sideways(const double held_vertical_force,
+           const bool   swipe,
+           const double su,
+           const char  *load_steps)
+  {
+    std::ostringstream load;
+    load << std::setprecision(17)
+         << "0\n  set Horizontal force = 1\n  set Held vertical force = "
+         << held_vertical_force;
+    std::ostringstream law;
+    law << "0: tresca, su=" << su;
+    auto run = std::make_unique<Run>(
+      scene(joined({{"Harmonics", "0, 1"},
+                    {"Vertical force", load.str()},
+                    {"Laws", law.str()},
+                    {"Theta samples", "8"},
+                    {"Controlled motion", "horizontal"},
+                    {"Target", "0.01"},
+                    {"Load steps", load_steps}},
+                   footing_mesh(true))) +
+      (swipe ? "subsection Rigid foundation\n  set Held motions = w\nend\n" :
+               ""));
+    run->solver->run(std::cout);
+    return run;
+  }
+
+  /** The steps of the driven stage (the held stage keeps lambda = 0). */
+  std::vector<SoilStepResult>
+  driven_steps(const Run &run)
+  {
+    std::vector<SoilStepResult> driven;
+    for (const SoilStepResult &s : run.solver->get_steps())
+      if (s.load_factor != 0.)
+        driven.push_back(s);
+    return driven;
+  }
+
+  /** w where the held stage ended. */
+  double
+  preload_settlement(const Run &run)
+  {
+    double w = 0.;
+    for (const SoilStepResult &s : run.solver->get_steps())
+      if (s.load_factor == 0.)
+        w = s.motion.vertical_displacement;
+    return w;
+  }
+
+  /** The V the run reports at a step: held V + the swipe's change. */
+  double
+  reported_vertical_force(const Run &run, const SoilStepResult &s)
+  {
+    return run.solver->applied_loads(s.load_factor, s.held_fraction)[2] +
+           s.swipe_force;
+  }
+
+  /** Checks 1 and 2 at every driven step; the last step's (V, H). */
+  std::pair<double, double>
+  check_swipe(const std::string &name,
+              const Run         &run,
+              const double       preload,
+              const unsigned int n_steps)
+  {
+    const double w0     = preload_settlement(run);
+    const auto   driven = driven_steps(run);
+    check::that(name + "every driven step converged", driven.size() >= n_steps);
+    double worst_w = 0., worst_V = 0.;
+    for (const SoilStepResult &s : driven)
+      {
+        worst_w         = std::max(worst_w,
+                           std::abs(s.motion.vertical_displacement - w0) /
+                             std::abs(w0));
+        double reaction = std::nan("");
+        for (const auto &[motion, load] : s.held_reactions)
+          if (motion == FoundationMotion::w)
+            reaction = load;
+        worst_V =
+          std::max(worst_V,
+                   std::abs(reported_vertical_force(run, s) - reaction) /
+                     std::abs(preload));
+      }
+    check::small(name + "max |w - w_preload| / |w_preload| over the swipe",
+                 worst_w,
+                 1e-10);
+    check::small(name + "max |V reported - vertical reaction| / |V_preload|",
+                 worst_V,
+                 1e-6);
+    const SoilStepResult &last = driven.back();
+    return {reported_vertical_force(run, last),
+            run.solver->applied_loads(last.load_factor, 1.)[0]};
+  }
+} // namespace
+
+int
+main(int argc, char **argv)
+{
+  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  const double                     V_ult = vertical_capacity();
+  std::cout << std::setprecision(8) << "V_ult of the coarse mesh " << V_ult
+            << " kN (N_c = " << V_ult / (numbers::PI * 10.) << ")" << std::endl;
+  const double preload = -0.5 * V_ult;
+
+  // 3. The pure-H run with V = V_ult / 2 held constant (same mesh).
+  const auto   held_V = sideways(preload, false, 10., "10");
+  const auto   held   = driven_steps(*held_V);
+  const double H_held =
+    held_V->solver->applied_loads(held.back().load_factor, 1.)[0];
+  const double H_held9 =
+    held_V->solver->applied_loads(held[held.size() - 3].load_factor, 1.)[0];
+  std::cout << "pure H with V held: H " << H_held
+            << " kN at u = 0.01 m; change over the last 3 steps "
+            << (H_held - H_held9) / H_held * 100. << " %" << std::endl;
+
+  // 1-3. The swipe from the same preload.
+  const auto swipe = sideways(preload, true, 10., "10");
+  check_equilibrium_and_yield("swipe ", swipe->solver->get_steps(), 10.);
+  const auto [V_end, H_end] = check_swipe("swipe: ", *swipe, preload, 10);
+  std::cout << "swipe ends at V " << V_end << " kN (from " << preload << "), H "
+            << H_end << " kN" << std::endl;
+  check::that("swipe: V has fallen below the preload (|V| < V_ult / 2)",
+              std::abs(V_end) < std::abs(preload));
+  double highest_H = 0.;
+  for (const SoilStepResult &s : driven_steps(*swipe))
+    highest_H =
+      std::max(highest_H, swipe->solver->applied_loads(s.load_factor, 1.)[0]);
+  check::in_range("swipe: highest H over the path vs the envelope's H_max",
+                  highest_H,
+                  0.,
+                  1.02 * H_held);
+  check::relative("swipe: H at u = 0.01 m vs pure H with V_ult / 2 held",
+                  H_end,
+                  H_held,
+                  0.02);
+
+  // 4. Elastic soil: Delta V = 0 (K_VH = 0 across harmonics 0 and 1).
+  const auto elastic = sideways(preload, true, 1e7, "2");
+  for (const SoilStepResult &s : driven_steps(*elastic))
+    check::small("elastic swipe: |Delta V| / |V_preload| at u = " +
+                   std::to_string(s.motion.horizontal_displacement),
+                 s.swipe_force / preload,
+                 1e-10);
+  check_swipe("elastic swipe: ", *elastic, preload, 2);
+  return check::summary();
+}
