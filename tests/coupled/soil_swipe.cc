@@ -34,7 +34,10 @@
 //     harmonics 0 and 1, uncoupled in an axisymmetric elastic body (the
 //     6x6 stiffness matrix has K_VH = 0), so holding w takes no change of
 //     V: the closed form Delta V = -K_VH u = 0, to round-off (1e-10 of the
-//     preload).
+//     preload);
+//  5. the initial-stiffness iteration (Stiffness = elastic) gives the V of
+//     Newton's path at the same u (both solve the same equations; 1e-6 of
+//     the preload, the iteration tolerance with room for round-off).
 #include "soil_test_support.h"
 
 #include <iomanip>
@@ -63,21 +66,23 @@ namespace
   sideways(const double held_vertical_force,
            const bool   swipe,
            const double su,
-           const char  *load_steps)
+           const char  *load_steps,
+           const char  *target    = "0.01",
+           const char  *stiffness = "tangent")
   {
     std::ostringstream load;
     load << std::setprecision(17)
          << "0\n  set Horizontal force = 1\n  set Held vertical force = "
          << held_vertical_force;
     std::ostringstream law;
-    law << "0: tresca, su=" << su;
+    law << "0: tresca, su=" << su << "\n  set Stiffness = " << stiffness;
     auto run = std::make_unique<Run>(
       scene(joined({{"Harmonics", "0, 1"},
                     {"Vertical force", load.str()},
                     {"Laws", law.str()},
                     {"Theta samples", "8"},
                     {"Controlled motion", "horizontal"},
-                    {"Target", "0.01"},
+                    {"Target", target},
                     {"Load steps", load_steps}},
                    footing_mesh(true))) +
       (swipe ? "subsection Rigid foundation\n  set Held motions = w\nend\n" :
@@ -193,6 +198,27 @@ main(int argc, char **argv)
                   H_end,
                   H_held,
                   0.02);
+
+  // 5. The initial-stiffness iteration (Stiffness = elastic: lambda and mu
+  //    from the elastic patterns at every iterate) on the swipe's first 4
+  //    steps: the same equations as Newton's 2x2 updates, so the same V at
+  //    each u to the iteration tolerance (1e-8 of the load scale; 1e-6
+  //    relative to the preload leaves room for the round-off).
+  const auto initial = sideways(preload, true, 10., "4", "0.004", "elastic");
+  check_swipe("initial-stiffness swipe: ", *initial, preload, 4);
+  const auto newton_steps  = driven_steps(*swipe);
+  const auto initial_steps = driven_steps(*initial);
+  double     worst_V       = 0.;
+  for (unsigned int s = 0; s < 4 && s < initial_steps.size(); ++s)
+    worst_V =
+      std::max(worst_V,
+               std::abs(reported_vertical_force(*initial, initial_steps[s]) -
+                        reported_vertical_force(*swipe, newton_steps[s])) /
+                 std::abs(preload));
+  check::small("initial stiffness vs Newton: max |Delta V| / |V_preload| "
+               "over u = 0.001 ... 0.004 m",
+               worst_V,
+               1e-6);
 
   // 4. Elastic soil: Delta V = 0 (K_VH = 0 across harmonics 0 and 1).
   const auto elastic = sideways(preload, true, 1e7, "2");
