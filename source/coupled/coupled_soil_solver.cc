@@ -85,6 +85,19 @@ namespace FourierSSI
     }
   } // namespace
 
+  namespace
+  {
+    /** The rigid motion of fields given per harmonic (rigid_motion_of). */
+    RigidMotion
+    motion_of_fields(const HarmonicSet                 &set,
+                     const std::vector<Vector<double>> &fields)
+    {
+      return rigid_motion_of(set, [&fields](const unsigned int h) {
+        return fields[h];
+      });
+    }
+  } // namespace
+
   CoupledSoilSolver::CoupledSoilSolver(const HarmonicSet   &set,
                                        const AllParameters &parameters)
     : LoadPathStates(set, parameters, "kNm")
@@ -768,9 +781,6 @@ namespace FourierSSI
     const double target,
     const bool   displacement_control) const
   {
-    const auto motion_of_fields = [this](const std::vector<Vector<double>> &u) {
-      return rigid_motion_of(set, [&u](const unsigned int h) { return u[h]; });
-    };
     // The state without lambda and mu: K^-1 c + rho u_held.
     const RigidMotion now = rigid_motion_of(set, [&](const unsigned int h) {
       return loads.total_displacement(h,
@@ -780,8 +790,8 @@ namespace FourierSSI
     });
     const auto [load_factor, swipe_force] =
       swipe_multipliers(now,
-                        motion_of_fields(loads.solution),
-                        motion_of_fields(loads.swipe_solution),
+                        motion_of_fields(set, loads.solution),
+                        motion_of_fields(set, loads.swipe_solution),
                         target,
                         swipe_settlement,
                         displacement_control);
@@ -1087,16 +1097,11 @@ namespace FourierSSI
       {
         swipe_pattern = loads.swipe_load;
         tangent->solve(swipe_pattern);
-        const auto motion_of_fields =
-          [this](const std::vector<Vector<double>> &u) {
-            return rigid_motion_of(set,
-                                   [&u](const unsigned int h) { return u[h]; });
-          };
         // The iterate holds both motions already: du must keep them.
         const std::array<double, 2> changes =
-          swipe_multipliers(motion_of_fields(du),
-                            motion_of_fields(tangent_pattern),
-                            motion_of_fields(swipe_pattern),
+          swipe_multipliers(motion_of_fields(set, du),
+                            motion_of_fields(set, tangent_pattern),
+                            motion_of_fields(set, swipe_pattern),
                             0.,
                             0.,
                             displacement_control);
