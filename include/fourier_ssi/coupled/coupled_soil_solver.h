@@ -22,6 +22,11 @@
  *      their kept factorizations, omega by Aitken's Delta^2 rule.
  * Loading (load or displacement control of the rigid foundation), step
  * cutting and the settings are those of subsection "Load path".
+ * A swipe test (Rigid foundation/Held motions = w with a Held vertical
+ * force) adds mu e_V to the loads, e_V the unit vertical force on the
+ * rigid foundation: after the held stage mu is a second unknown beside
+ * lambda, chosen with it so that w stays where the held stage left it
+ * (swipe_multipliers); no constraint changes along the path.
  * Coulomb interfaces in the scene iterate with the soil: their
  * out-of-balance load (NonlinearInterfacePoints) joins G in step 3, and
  * their part of the tangent joins K_t (doc/soil-plasticity.md 6b).
