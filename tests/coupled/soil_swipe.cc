@@ -17,7 +17,13 @@
 //     the soil on the footing (held_reactions: the virtual work of
 //     K u - G(u) on the unit w), two different computations. They agree
 //     to the iteration's tolerance (|R| <= 1e-8 of the load scale): 1e-6
-//     relative to the preload leaves room for the round-off of the sums;
+//     relative to the preload leaves room for the round-off of the sums.
+//     And the soil carries mu itself: at the last step K u - G(u) balances
+//     lambda F + rho F_held + mu e_V with G re-evaluated from the total
+//     displacement u (out_of_balance_load), to 1e-7 (the iteration's 1e-8
+//     plus the round-off of the return mapping done again); a mu that
+//     moved the footing without straining the soil passes the other
+//     checks but not this one;
 //  3. the independent reference, the V-H envelope of a Tresca footing:
 //     H_max does not depend on V while V <= V_ult / 2 (Green 1954 for the
 //     strip; Bransby & Randolph 1998 and Taiebat & Carter 2000 for FE of
@@ -123,6 +129,45 @@ namespace
            s.swipe_force;
   }
 
+  /**
+   * |K u - G(u) - (lambda F + rho F_held + mu e_V)| / |lambda F + rho
+   * F_held + mu e_V| at the last step (2-norms over the unconstrained DoFs
+   * of every harmonic), G(u) returned from the total displacement u: the
+   * soil itself must carry the swipe's load, not only the motion.
+   */
+  double
+  final_imbalance(const Run &run)
+  {
+    const SoilStepResult       &last = run.solver->get_steps().back();
+    std::vector<Vector<double>> u;
+    for (unsigned int h = 0; h < run.set->size(); ++h)
+      u.push_back(run.solver->solution(h));
+    const auto G     = run.solver->out_of_balance_load(u);
+    double     r_sqr = 0., f_sqr = 0.;
+    for (unsigned int h = 0; h < run.set->size(); ++h)
+      {
+        const HarmonicProblem &problem = run.set->problem(h);
+        Vector<double>         f       = load_factor_pattern(problem);
+        f *= last.load_factor;
+        f.add(last.held_fraction, held_stage_load(problem));
+        const Harmonic &harmonic = run.set->harmonic(h);
+        if (harmonic.n == 0 && harmonic.family == Family::symmetric)
+          f.add(last.swipe_force,
+                problem.get_foundation()->unit_axial_load(f.size()));
+        Vector<double> r(f.size());
+        problem.get_system_matrix().vmult(r, u[h]);
+        r -= G[h];
+        r -= f;
+        for (unsigned int i = 0; i < r.size(); ++i)
+          if (!problem.get_constraints().is_constrained(i))
+            {
+              r_sqr += r[i] * r[i];
+              f_sqr += f[i] * f[i];
+            }
+      }
+    return std::sqrt(r_sqr / f_sqr);
+  }
+
   /** Checks 1 and 2 at every driven step; the last step's (V, H). */
   std::pair<double, double>
   check_swipe(const std::string &name,
@@ -154,6 +199,10 @@ namespace
     check::small(name + "max |V reported - vertical reaction| / |V_preload|",
                  worst_V,
                  1e-6);
+    check::small(name + "last step: |K u - G(u) - applied| / |applied|, "
+                        "G from the total u",
+                 final_imbalance(run),
+                 1e-7);
     const SoilStepResult &last = driven.back();
     return {reported_vertical_force(run, last),
             run.solver->applied_loads(last.load_factor, 1.)[0]};
