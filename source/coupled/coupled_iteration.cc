@@ -144,6 +144,7 @@ namespace FourierSSI
                           const unsigned int               step,
                           const double                     load_factor,
                           const double                     held_fraction,
+                          const double                     swipe_force,
                           const RigidFoundationParameters &f,
                           const RigidMotion               &motion,
                           const unsigned int               iterations,
@@ -152,11 +153,11 @@ namespace FourierSSI
     // M about the reference point, as given in the prm.
     const auto loads = applied_foundation_loads(f, load_factor, held_fraction);
     const double moment = moment_about_reference(loads, f);
-    out << step << ',' << load_factor << ',' << loads[2] << ',' << loads[0]
-        << ',' << moment << ',' << loads[5] << ','
-        << motion.vertical_displacement << ',' << motion.horizontal_displacement
-        << ',' << motion.rotation << ',' << motion.twist << ',' << iterations
-        << ',' << residual;
+    out << step << ',' << load_factor << ','
+        << vertical_force_of(loads, swipe_force) << ',' << loads[0] << ','
+        << moment << ',' << loads[5] << ',' << motion.vertical_displacement
+        << ',' << motion.horizontal_displacement << ',' << motion.rotation
+        << ',' << motion.twist << ',' << iterations << ',' << residual;
   }
 
   std::string

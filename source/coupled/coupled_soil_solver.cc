@@ -108,6 +108,19 @@ namespace FourierSSI
     }
   } // namespace
 
+  namespace
+  {
+    /** The rigid motion of fields given per harmonic (rigid_motion_of). */
+    RigidMotion
+    motion_of_fields(const HarmonicSet                 &set,
+                     const std::vector<Vector<double>> &fields)
+    {
+      return rigid_motion_of(set, [&fields](const unsigned int h) {
+        return fields[h];
+      });
+    }
+  } // namespace
+
   CoupledSoilSolver::CoupledSoilSolver(const HarmonicSet   &set,
                                        const AllParameters &parameters)
     : LoadPathStates(set, parameters, "kNm")
@@ -131,6 +144,13 @@ namespace FourierSSI
         point_stride = set.n_owning_ranks();
         point_rank   = Utilities::MPI::this_mpi_process(set.get_ranks());
       }
+    // A swipe's mu and K^-1 e_V are solved on the owner of harmonic 0 and
+    // read there; not written for distributed harmonics yet.
+    AssertThrow(!parameters.rigid_foundation.swipes() ||
+                  set.n_owning_ranks() == 1,
+                ExcMessage("Rigid foundation/Held motions: not yet: a swipe "
+                           "('w' with a Held vertical force) on several MPI "
+                           "ranks; run it on one rank"));
     solve_load_pattern();
     solve_held_loads();
     start_at_rest();
@@ -270,6 +290,11 @@ namespace FourierSSI
     if (interface)
       held_relative =
         interface->relative_displacements(loads.held_solution, sampling);
+    if (parameters.rigid_foundation.swipes())
+      {
+        loads.add_swipe_pattern(set);
+        swipe_strain = strain_amplitudes(loads.swipe_solution);
+      }
   }
 
   double
@@ -352,7 +377,8 @@ namespace FourierSSI
   CoupledSoilSolver::strain_samples(
     const std::vector<Vector<double>> &correction,
     const double                       load_factor,
-    const double                       held_fraction) const
+    const double                       held_fraction,
+    const double                       swipe_force) const
   {
     const unsigned int        N = sampling.n_samples(), H = set.size();
     const auto                amplitude = strain_amplitudes(correction);
@@ -369,6 +395,9 @@ namespace FourierSSI
                 amplitude[p][h][k] + load_factor * pattern_strain[p][h][k] +
                 (held_strain.empty() ? 0. :
                                        held_fraction * held_strain[p][h][k]);
+            if (!swipe_strain.empty())
+              for (unsigned int h = 0; h < H; ++h)
+                a[h] += swipe_force * swipe_strain[p][h][k];
             sampling.evaluate(a, factor_of(k), s);
             for (unsigned int j = 0; j < N; ++j)
               samples[p * N + j][k] = s[j];
@@ -734,6 +763,57 @@ namespace FourierSSI
     return 0.;
   }
 
+  std::array<double, 2>
+  CoupledSoilSolver::swipe_multipliers(const RigidMotion &now,
+                                       const RigidMotion &by_pattern,
+                                       const RigidMotion &by_swipe,
+                                       const double       target,
+                                       const double       settlement,
+                                       const bool displacement_control) const
+  {
+    const auto m = [this](const RigidMotion &motion) {
+      return controlled_component(motion, settings.motion);
+    };
+    // Row 1: the controlled motion (or lambda itself), row 2: w.
+    const double a   = displacement_control ? m(by_pattern) : 1.,
+                 b   = displacement_control ? m(by_swipe) : 0.,
+                 e   = displacement_control ? target - m(now) : target;
+    const double c   = by_pattern.vertical_displacement,
+                 d   = by_swipe.vertical_displacement,
+                 f   = settlement - now.vertical_displacement;
+    const double det = a * d - b * c;
+    AssertThrow(det != 0.,
+                ExcMessage("Rigid foundation/Held motions: the swipe's "
+                           "vertical load does not move w, or the Rigid "
+                           "foundation loads do not drive the Load "
+                           "path/Controlled motion with w held"));
+    return {{(e * d - b * f) / det, (a * f - e * c) / det}};
+  }
+
+  void
+  CoupledSoilSolver::set_swipe_multipliers(
+    StepState   &state,
+    const double target,
+    const bool   displacement_control) const
+  {
+    // The state without lambda and mu: K^-1 c + rho u_held.
+    const RigidMotion now = rigid_motion_of(set, [&](const unsigned int h) {
+      return loads.total_displacement(h,
+                                      0.,
+                                      state.correction_solution[h],
+                                      state.held_fraction);
+    });
+    const auto [load_factor, swipe_force] =
+      swipe_multipliers(now,
+                        motion_of_fields(set, loads.solution),
+                        motion_of_fields(set, loads.swipe_solution),
+                        target,
+                        swipe_settlement,
+                        displacement_control);
+    state.load_factor = load_factor;
+    state.swipe_force = swipe_force;
+  }
+
   StrainVector
   CoupledSoilSolver::elastic_stress(const SoilPoint    &point,
                                     const StrainVector &eps) const
@@ -1012,7 +1092,21 @@ namespace FourierSSI
   void
   CoupledSoilSolver::add_control_stiffening()
   {
-    const Harmonic wanted = controlled_harmonic(settings.motion);
+    stiffen_motion(controlled_harmonic(settings.motion),
+                   [this](const RigidMotion &m) {
+                     return controlled_component(m, settings.motion);
+                   });
+    if (swiping)
+      stiffen_motion({0, Family::symmetric}, [](const RigidMotion &m) {
+        return m.vertical_displacement;
+      });
+  }
+
+  void
+  CoupledSoilSolver::stiffen_motion(
+    const Harmonic                                   &wanted,
+    const std::function<double(const RigidMotion &)> &component)
+  {
     for (unsigned int h = 0; h < set.size(); ++h)
       if (harmonics[h].n == wanted.n && harmonics[h].family == wanted.family)
         {
@@ -1030,7 +1124,7 @@ namespace FourierSSI
           for (unsigned int k = 0; k < masters.size(); ++k)
             {
               unit[masters[k]] = 1.;
-              c[k]             = controlled_motion(h, unit);
+              c[k]             = component(foundation->motion(unit));
               unit[masters[k]] = 0.;
               diagonal =
                 std::max(diagonal, std::abs(K.diag_element(masters[k])));
@@ -1054,8 +1148,25 @@ namespace FourierSSI
   {
     std::vector<Vector<double>> du = residual;
     tangent->solve(du);
-    double load_change = 0.;
-    if (displacement_control)
+    double load_change = 0., swipe_change = 0.;
+    // A swipe: K_t^-1 e_V (one more solve with the factorization).
+    std::vector<Vector<double>> swipe_pattern;
+    if (swiping)
+      {
+        swipe_pattern = loads.swipe_load;
+        tangent->solve(swipe_pattern);
+        // The iterate holds both motions already: du must keep them.
+        const std::array<double, 2> changes =
+          swipe_multipliers(motion_of_fields(set, du),
+                            motion_of_fields(set, tangent_pattern),
+                            motion_of_fields(set, swipe_pattern),
+                            0.,
+                            0.,
+                            displacement_control);
+        load_change  = changes[0];
+        swipe_change = changes[1];
+      }
+    else if (displacement_control)
       {
         const Harmonic wanted = controlled_harmonic(settings.motion);
         for (unsigned int h = 0; h < set.size(); ++h)
@@ -1074,8 +1185,12 @@ namespace FourierSSI
       if (!set.owns(h))
         return; // K_h is on its owner only
       du[h].add(load_change, tangent_pattern[h]);
+      if (swiping)
+        du[h].add(swipe_change, swipe_pattern[h]);
       set.problem(h).get_system_matrix().vmult(change[h], du[h]);
       change[h].add(-load_change, loads.load[h]);
+      if (swiping)
+        change[h].add(-swipe_change, loads.swipe_load[h]);
       set.problem(h).get_homogeneous_constraints().set_zero(change[h]);
     });
     sum_fields_over_ranks(set, change);
@@ -1090,7 +1205,8 @@ namespace FourierSSI
     // 1-2: strains at every (point, theta), the return mapping.
     e.strain = strain_samples(state.correction_solution,
                               state.load_factor,
-                              state.held_fraction);
+                              state.held_fraction,
+                              state.swipe_force);
     return_map(e.strain, e.plastic, result);
     // 3-4: out-of-balance load and force residual R = G - c; the coulomb
     //    interfaces add theirs (one c for both sources).
@@ -1222,6 +1338,8 @@ namespace FourierSSI
       !holding && settings.control == LoadPathParameters::Control::displacement;
     if (holding)
       state.held_fraction = target;
+    // A swipe holds w from the end of the held stage on.
+    swiping = !holding && parameters.rigid_foundation.swipes();
     const bool tangent_stiffness = parameters.soil_plasticity.tangent;
     FixedPointAcceleration acceleration(acceleration_of(settings,
                                                         tangent_stiffness),
@@ -1232,7 +1350,9 @@ namespace FourierSSI
     for (unsigned int iteration = 0; iteration <= settings.maximum_iterations;
          ++iteration)
       {
-        if (!holding)
+        if (swiping)
+          set_swipe_multipliers(state, target, displacement_control);
+        else if (!holding)
           state.load_factor = displacement_control ?
                                 controlled_load_factor(state, target) :
                                 target;
@@ -1312,6 +1432,8 @@ namespace FourierSSI
           load *= committed.load_factor;
           if (!loads.held_solution.empty())
             load.add(committed.held_fraction, held_load(h));
+          if (!loads.swipe_load.empty())
+            load.add(committed.swipe_force, loads.swipe_load[h]);
           parts[h] = load * total_displacement(committed, h);
         }
     return sum_over_harmonics(set, parts, 1)[0];
@@ -1376,6 +1498,8 @@ namespace FourierSSI
   {
     SoilStepResult &result = trial_result;
     commit(result, step);
+    if (holding)
+      swipe_settlement = result.motion.vertical_displacement;
     result.held_reactions = held_reactions(committed);
     steps.push_back(result);
     if (step_observer)
@@ -1402,7 +1526,8 @@ namespace FourierSSI
     const RigidMotion &motion = result.motion;
     const bool         moment = f.moment != 0. || f.held_moment != 0.;
     const bool         torque = f.torque != 0. || f.held_torque != 0.;
-    log << "V " << loads[2] << " kN, H " << loads[0] << " kN";
+    log << "V " << vertical_force_of(loads, result.swipe_force) << " kN, H "
+        << loads[0] << " kN";
     if (moment)
       log << ", M " << moment_about_reference(loads, f) << " kNm";
     if (torque)

@@ -2,6 +2,7 @@
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/load_path.h>
 #include <fourier_ssi/coupled/load_pattern.h>
+#include <fourier_ssi/harmonic/rigid_foundation.h>
 
 namespace FourierSSI
 {
@@ -64,14 +65,38 @@ namespace FourierSSI
   LoadPattern::total_displacement(const unsigned int    h,
                                   const double          load_factor,
                                   const Vector<double> &correction,
-                                  const double          held_fraction) const
+                                  const double          held_fraction,
+                                  const double          swipe_force) const
   {
-    return FourierSSI::total_displacement(solution[h],
-                                          load_factor,
-                                          correction,
-                                          held_solution.empty() ?
-                                            nullptr :
-                                            &held_solution[h],
-                                          held_fraction);
+    Vector<double> u =
+      FourierSSI::total_displacement(solution[h],
+                                     load_factor,
+                                     correction,
+                                     held_solution.empty() ? nullptr :
+                                                             &held_solution[h],
+                                     held_fraction);
+    if (!swipe_solution.empty())
+      u.add(swipe_force, swipe_solution[h]);
+    return u;
+  }
+
+  void
+  LoadPattern::add_swipe_pattern(const HarmonicSet &set)
+  {
+    std::vector<std::vector<Vector<double>>> b(set.size());
+    for (unsigned int h = 0; h < set.size(); ++h)
+      {
+        const unsigned int n_dofs = set.problem(h).get_dof_handler().n_dofs();
+        const RigidFoundation *foundation = set.problem(h).get_foundation();
+        const Harmonic        &harmonic   = set.harmonic(h);
+        const bool carries_w = set.owns(h) && foundation != nullptr &&
+                               harmonic.n == 0 &&
+                               harmonic.family == Family::symmetric;
+        swipe_load.push_back(carries_w ? foundation->unit_axial_load(n_dofs) :
+                                         Vector<double>(n_dofs));
+        if (set.owns(h))
+          b[h] = {swipe_load[h]};
+      }
+    swipe_solution = solutions(set, b);
   }
 } // namespace FourierSSI

@@ -164,22 +164,18 @@ namespace FourierSSI
                       ExcMessage(entry + ": '" + name_of(m) +
                                  "' is not a rigid motion with 'Tied "
                                  "components = normal'"));
-          // A swipe (Tan 1990; Gottardi, Houlsby & Butterfield 1999) holds w
-          // at the value a vertical preload reached, not at zero.
-          AssertThrow(!(m == FoundationMotion::w &&
-                        f.held_vertical_force != 0.),
-                      ExcMessage(entry + ": 'w' with a Held vertical force "
-                                         "is a swipe test, not yet available: "
-                                         "w would be held from the end of the "
-                                         "held-load stage, and the coupled "
-                                         "solvers keep one set of constraints "
-                                         "for the whole path"));
+          // A swipe holds w at the value the Held vertical force reached:
+          // that load is the preload, not a contradiction.
+          const bool swiped = m == FoundationMotion::w && f.swipes();
           for (const auto &[load, value] : loads_on(m, f))
-            AssertThrow(value == 0.,
-                        ExcMessage(entry + ": '" + name_of(m) +
-                                   "' is held at zero and loaded by "
-                                   "Rigid foundation/" +
-                                   load + " at once; drop one"));
+            AssertThrow(value == 0. ||
+                          (swiped && load == "Held vertical force"),
+                        ExcMessage(entry + ": '" + name_of(m) + "' is held " +
+                                   (swiped ? "at the preload's value (a "
+                                             "swipe)" :
+                                             "at zero") +
+                                   " and loaded by Rigid foundation/" + load +
+                                   " at once; drop one"));
         }
     }
 
@@ -382,7 +378,10 @@ namespace FourierSSI
         "the log prints the load that holds each (kN, kN m). A held motion "
         "takes no load (Horizontal force with u, Moment with rotation, "
         "...), is not the Load path/Controlled motion, and "
-        "excludes Stiffness coefficients. Empty: none held.");
+        "excludes Stiffness coefficients. w with a Held vertical force is a "
+        "swipe test (plastic soil): w held at the value the preload "
+        "reached while the loads are scaled, V changing to keep it "
+        "(doc/offshore-foundations.md 7). Empty: none held.");
       prm.declare_entry(
         "Motion direction",
         "",
@@ -802,11 +801,16 @@ namespace FourierSSI
         }
       return g;
     };
+    // The w of a swipe is not constrained: the soil solver holds its
+    // increment through the vertical load (one set of constraints for the
+    // whole path, the preload stage included).
     for (const FoundationMotion m : held_here)
-      hold_combination(gradient(
-                         [m](const RigidMotion &r) { return component(r, m); }),
-                       "Rigid foundation/Held motions: '" + name_of(m) + "'",
-                       constraints);
+      if (!(m == FoundationMotion::w && parameters.swipes()))
+        hold_combination(gradient([m](const RigidMotion &r) {
+                           return component(r, m);
+                         }),
+                         "Rigid foundation/Held motions: '" + name_of(m) + "'",
+                         constraints);
     if (direction_here)
       {
         // u : L theta = d_u : d_theta holds d_theta u - d_u L theta = 0.

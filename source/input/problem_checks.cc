@@ -82,6 +82,31 @@ namespace FourierSSI
                              "other motion"));
     }
 
+    /**
+     * A swipe (w held at the value a Held vertical force reached) is solved
+     * by the plastic soil's load multiplier mu on the vertical load; what
+     * is not written for it yet is refused rather than run with w free.
+     */
+    void
+    check_swipe_path(const AllParameters &parameters)
+    {
+      if (!parameters.rigid_foundation.swipes())
+        return;
+      const std::string entry =
+        "Rigid foundation/Held motions: 'w' with a Held vertical force (a "
+        "swipe)";
+      AssertThrow(!parameters.interfaces.any_nonlinear(),
+                  ExcMessage(entry + ": not yet with coulomb interfaces (w "
+                                     "is kept by the plastic soil's solver; "
+                                     "the interface iteration and the "
+                                     "vertical reaction through coulomb "
+                                     "interfaces are not written for it)"));
+      AssertThrow(parameters.discretization.target_accuracy == 0.,
+                  ExcMessage(entry + ": not yet with Discretization/Target "
+                                     "accuracy (the capacity with error bars "
+                                     "is that of the applied drive alone)"));
+    }
+
     /** True if some load of the scene is not zero. */
     bool
     scene_has_load(const AllParameters &parameters)
@@ -146,6 +171,7 @@ namespace FourierSSI
   {
     check_controlled_motion_not_held(parameters);
     check_motion_direction_path(parameters);
+    check_swipe_path(parameters);
     check_displacement_target(parameters);
     check_load_control_has_load(parameters);
     check_exact_solution_linear(parameters);

@@ -182,12 +182,25 @@ namespace FourierSSI
     "step,load_factor,V_kN,H_kN,M_kNm,T_kNm,vertical_m,horizontal_m,"
     "rotation_rad,twist_rad,iterations,residual";
 
+  /**
+   * The V on the foundation at a step: loads[2] of applied_foundation_loads
+   * plus a swipe's change swipe_force (LoadStep::swipe_force; the load
+   * itself without a swipe).
+   */
+  inline double
+  vertical_force_of(const std::array<double, 6> &loads,
+                    const double                 swipe_force)
+  {
+    return swipe_force == 0. ? loads[2] : loads[2] + swipe_force;
+  }
+
   /** One row's leading columns, in the order of load_step_csv_header. */
   void
   write_load_step_columns(std::ostream                    &out,
                           const unsigned int               step,
                           const double                     load_factor,
                           const double                     held_fraction,
+                          const double                     swipe_force,
                           const RigidFoundationParameters &foundation,
                           const RigidMotion               &motion,
                           const unsigned int               iterations,
@@ -218,6 +231,7 @@ namespace FourierSSI
                                 s + 1,
                                 r.load_factor,
                                 r.held_fraction,
+                                r.swipe_force,
                                 foundation,
                                 r.motion,
                                 r.iterations,
@@ -249,7 +263,11 @@ namespace FourierSSI
         const RigidMotion &m    = r.motion;
         const unsigned int step = s + 1;
         results.add("step_load_factor", any, step, r.load_factor, "-");
-        results.add("step_vertical_force", any, step, loads[2], "kN");
+        results.add("step_vertical_force",
+                    any,
+                    step,
+                    vertical_force_of(loads, r.swipe_force),
+                    "kN");
         results.add("step_horizontal_force", any, step, loads[0], "kN");
         results.add("step_moment", any, step, loads[4], "kN.m");
         results.add("step_torque", any, step, loads[5], "kN.m");

@@ -22,6 +22,11 @@
  *      their kept factorizations, omega by Aitken's Delta^2 rule.
  * Loading (load or displacement control of the rigid foundation), step
  * cutting and the settings are those of subsection "Load path".
+ * A swipe test (Rigid foundation/Held motions = w with a Held vertical
+ * force) adds mu e_V to the loads, e_V the unit vertical force on the
+ * rigid foundation: after the held stage mu is a second unknown beside
+ * lambda, chosen with it so that w stays where the held stage left it
+ * (swipe_multipliers); no constraint changes along the path.
  * Coulomb interfaces in the scene iterate with the soil: their
  * out-of-balance load (NonlinearInterfacePoints) joins G in step 3, and
  * their part of the tangent joins K_t (doc/soil-plasticity.md 6b).
@@ -244,7 +249,10 @@ namespace FourierSSI
     check_initial_stress() const;
     void
     solve_load_pattern();
-    /** K^-1 F_held and its strains (Rigid foundation/Held ...). */
+    /**
+     * K^-1 F_held and its strains (Rigid foundation/Held ...); in a swipe
+     * also K^-1 e_V and its strains.
+     */
     void
     solve_held_loads();
 
@@ -293,7 +301,8 @@ namespace FourierSSI
     std::vector<StrainVector>
     strain_samples(const std::vector<Vector<double>> &correction,
                    const double                       load_factor,
-                   const double                       held_fraction) const;
+                   const double                       held_fraction,
+                   const double                       swipe_force = 0.) const;
 
     /**
      * Coulomb interfaces: the relative displacement at every (interface
@@ -357,6 +366,37 @@ namespace FourierSSI
     /** lambda that puts the controlled motion of the state at target. */
     double
     controlled_load_factor(const StepState &state, const double target) const;
+
+    /**
+     * A swipe (RigidFoundationParameters::swipes()): the multipliers
+     * (lambda, mu) of the load pattern F and of the unit vertical load e_V
+     * that move the foundation from the motion `now` to the controlled
+     * motion `target` (load control: lambda = target) and to w =
+     * `settlement`, where F moves it by `by_pattern` and e_V by `by_swipe`:
+     *   [m(by_pattern)  m(by_swipe)] [lambda]   [target - m(now)]
+     *   [w(by_pattern)  w(by_swipe)] [mu    ] = [settlement - w(now)],
+     * the first row [1 0 | target] under load control. The motions are
+     * linear in the fields, so this holds them exactly: the swipe's
+     * counterpart of controlled_load_factor, with the elastic patterns for
+     * an iterate and the tangent ones for a Newton update.
+     */
+    std::array<double, 2>
+    swipe_multipliers(const RigidMotion &now,
+                      const RigidMotion &by_pattern,
+                      const RigidMotion &by_swipe,
+                      const double       target,
+                      const double       settlement,
+                      const bool         displacement_control) const;
+
+    /**
+     * The state's lambda and mu from its correction (swipe_multipliers with
+     * K^-1 F and K^-1 e_V): the controlled motion at target and w where the
+     * held stage left it.
+     */
+    void
+    set_swipe_multipliers(StepState   &state,
+                          const double target,
+                          const bool   displacement_control) const;
 
     /** The residual and the state of the soil and interfaces at an iterate. */
     struct Evaluation
@@ -536,22 +576,34 @@ namespace FourierSSI
     /**
      * Displacement control: add alpha c c^T to K_t, c the controlled motion
      * as a functional of the controlled harmonic's master DoFs (m(u) =
-     * c^T u). The update du keeps m(du) = 0, so alpha c c^T du = 0 and no
-     * update changes; but at a limit load the collapse mechanism, which
-     * moves the foundation, is a null vector of K_t, and K_t^-1 R and
-     * K_t^-1 F lose their digits there while K_t + alpha c c^T stays
-     * regular (the bordered system of Riks-type control, solved with one
-     * factorization).
+     * c^T u), and in a swipe the same for w (kept by mu). The update du keeps
+     * m(du) = 0, so alpha c c^T du = 0 and no update changes; but at a limit
+     * load the collapse mechanism, which moves the foundation, is a null vector
+     * of K_t, and K_t^-1 R and K_t^-1 F lose their digits there while K_t +
+     * alpha c c^T stays regular (the bordered system of Riks-type control,
+     * solved with one factorization).
      */
     void
     add_control_stiffening();
+
+    /**
+     * alpha c c^T on the master DoFs of the harmonic `wanted`, c_k =
+     * component(motion of a unit master DoF k), alpha scaling it to the
+     * masters' own stiffness (add_control_stiffening).
+     */
+    void
+    stiffen_motion(const Harmonic                                   &wanted,
+                   const std::function<double(const RigidMotion &)> &component);
 
     /**
      * The out-of-balance load correction of one tangent (Newton) step:
      * du = K_t^-1 (R + dlambda F), dlambda keeping the controlled motion
      * (displacement control; 0 under load control); returns
      * dc = K du - dlambda F, the change of the correction load that moves
-     * the total displacement by du.
+     * the total displacement by du. In a swipe du = K_t^-1 (R + dlambda F +
+     * dmu e_V), (dlambda, dmu) keeping the controlled motion and w
+     * (swipe_multipliers with K_t^-1 F and K_t^-1 e_V), and dc = K du -
+     * dlambda F - dmu e_V.
      */
     std::vector<Vector<double>>
     tangent_correction(const std::vector<Vector<double>> &residual,
@@ -594,6 +646,12 @@ namespace FourierSSI
     std::vector<SoilPoint>                 points;
     std::vector<unsigned int>              component;
     std::vector<std::vector<StrainVector>> held_strain;
+    /** A swipe: the strain amplitudes of K^-1 e_V [point][harmonic]. */
+    std::vector<std::vector<StrainVector>> swipe_strain;
+    /** A swipe: w where the held stage left it [m], the value held. */
+    double swipe_settlement = 0.;
+    /** The step solved is a swipe's (not in its held stage): mu keeps w. */
+    bool swiping = false;
     /** Strain amplitudes of the load pattern [point][harmonic]. */
     std::vector<std::vector<StrainVector>> pattern_strain;
     /** The records of the step being solved. */

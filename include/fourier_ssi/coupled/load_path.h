@@ -52,6 +52,12 @@ namespace FourierSSI
      * then stays 1 while the load factor scales the foundation's loads.
      */
     double held_fraction = 0.;
+    /**
+     * A swipe (RigidFoundationParameters::swipes()): the change mu of the
+     * vertical load [kN] that keeps w at the preload's value; the V on the
+     * foundation is the held one plus mu (0 without a swipe).
+     */
+    double swipe_force = 0.;
     /** Rigid motion of the foundation (RigidMotion fields). */
     RigidMotion motion;
     /** Out-of-balance solves of this step (0: elastic). */

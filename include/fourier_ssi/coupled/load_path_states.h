@@ -31,6 +31,8 @@ namespace FourierSSI
     double load_factor = 0.;
     /** rho: the held loads' part rho F_held of the load. */
     double held_fraction = 0.;
+    /** mu: a swipe's change of the vertical load (LoadStep::swipe_force). */
+    double swipe_force = 0.;
     /** K^-1 c per harmonic, and c (condensed). */
     std::vector<Vector<double>> correction_solution, correction_load;
   };
@@ -115,7 +117,11 @@ namespace FourierSSI
         return;
       log << "held at zero (Rigid foundation/Held motions):";
       for (const FoundationMotion m : foundation_parameters.held_motions)
-        log << ' ' << name_of(m);
+        log << ' ' << name_of(m)
+            << (m == FoundationMotion::w && foundation_parameters.swipes() ?
+                  " (at the value the held loads leave: a swipe, V changes "
+                  "to keep it)" :
+                  "");
       log << note << '\n';
     }
 
@@ -138,14 +144,18 @@ namespace FourierSSI
                 const double ratio,
                 State       &state) const = 0;
 
-    /** u_h = lambda u_F + K^-1 c + rho u_held of a state (owner's field). */
+    /**
+     * u_h = lambda u_F + K^-1 c + rho u_held (+ mu K^-1 e_V in a swipe) of
+     * a state (owner's field).
+     */
     Vector<double>
     total_displacement(const State &state, const unsigned int h) const
     {
       return loads.total_displacement(h,
                                       state.load_factor,
                                       state.correction_solution[h],
-                                      state.held_fraction);
+                                      state.held_fraction,
+                                      state.swipe_force);
     }
 
     /** The rigid motion of a state (rigid_motion_of). */
@@ -168,6 +178,7 @@ namespace FourierSSI
       committed            = trial;
       result.load_factor   = committed.load_factor;
       result.held_fraction = committed.held_fraction;
+      result.swipe_force   = committed.swipe_force;
       result.motion        = step.motion;
       result.time          = step.time;
     }

@@ -39,12 +39,25 @@ namespace FourierSSI
     double
     applied_norm(const double load_factor, const double held_fraction) const;
 
-    /** u_h = lambda K^-1 F_h + correction + rho K^-1 F_held,h. */
+    /**
+     * u_h = lambda K^-1 F_h + correction + rho K^-1 F_held,h (+ mu K^-1
+     * e_V,h in a swipe).
+     */
     Vector<double>
     total_displacement(const unsigned int    h,
                        const double          load_factor,
                        const Vector<double> &correction,
-                       const double          held_fraction) const;
+                       const double          held_fraction,
+                       const double          swipe_force = 0.) const;
+
+    /**
+     * A swipe (RigidFoundationParameters::swipes()): e_V, the unit vertical
+     * force on the rigid foundation (harmonic 0 symmetric, zero vectors on
+     * the others), and K^-1 e_V: the pattern of the multiplier mu that
+     * keeps w at the preload's value.
+     */
+    void
+    add_swipe_pattern(const HarmonicSet &set);
 
     /** F per harmonic (zero on the harmonics this rank does not own). */
     std::vector<Vector<double>> load;
@@ -52,6 +65,8 @@ namespace FourierSSI
     std::vector<Vector<double>> solution;
     /** K^-1 F_held per harmonic; empty if the scene holds no load. */
     std::vector<Vector<double>> held_solution;
+    /** e_V and K^-1 e_V per harmonic; empty without a swipe. */
+    std::vector<Vector<double>> swipe_load, swipe_solution;
     /** |F|, |F_held| and F . F_held. */
     double load_norm = 0., held_norm = 0., load_held_dot = 0.;
   };

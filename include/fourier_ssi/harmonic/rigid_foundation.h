@@ -131,6 +131,19 @@ namespace FourierSSI
              held_motions.end();
     }
     /**
+     * A swipe test (Tan 1990; Gottardi, Houlsby & Butterfield 1999): w in
+     * Held motions together with a Held vertical force holds w at the value
+     * the preload reached, not at zero. w is then not constrained: the
+     * coupled soil solver keeps its increment at zero through a multiplier
+     * mu on the unit vertical load (CoupledSoilSolver::swipe_multipliers),
+     * and the V that does it is reported as the load that holds w.
+     */
+    bool
+    swipes() const
+    {
+      return holds(FoundationMotion::w) && held_vertical_force != 0.;
+    }
+    /**
      * A displacement probe (Motion direction): the n = 1 rigid motion kept
      * along u : L theta = direction_u : direction_rotation (L the Direction
      * length), i.e. the combination direction_rotation u - direction_u L
@@ -247,9 +260,10 @@ namespace FourierSSI
     /**
      * Hold the motions of Held motions that this harmonic carries at zero:
      * a master DoF with weight in that motion is constrained to the others (U_A
-     * = -V_A (z_A - z_ref) / r_A holds U_h; V_A = 0 holds Theta). Call after
-     * every other constraint and before close(): the constraints without the
-     * hold are kept for the reactions.
+     * = -V_A (z_A - z_ref) / r_A holds U_h; V_A = 0 holds Theta); the w of a
+     * swipe is left free (swipes(): held by the solver, reported here). Call
+     * after every other constraint and before close(): the constraints without
+     * the hold are kept for the reactions.
      */
     void
     add_held_motion_constraints(AffineConstraints<double> &constraints);
