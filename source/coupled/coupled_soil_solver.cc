@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <deal.II/base/quadrature_lib.h>
@@ -1561,16 +1562,32 @@ namespace FourierSSI
   void
   CoupledSoilSolver::write_csv(const std::string &filename) const
   {
+    // The loads that hold the held motions, or a direction probe's H and M,
+    // one column each (their results rows' names and units): the H and M
+    // columns before them are the applied drive.
+    std::string reaction_header;
+    if (!steps.empty())
+      for (const auto &[motion, load] : steps.back().held_reactions)
+        {
+          // Units as in the leading columns: kN, kNm.
+          std::string unit = load_unit_of(motion);
+          unit.erase(std::remove(unit.begin(), unit.end(), '.'), unit.end());
+          reaction_header +=
+            ',' + parameters.rigid_foundation.reaction_row(motion) + '_' + unit;
+        }
     write_load_step_csv(filename,
                         steps,
                         parameters.rigid_foundation,
                         "elastic,plastic,max_yield_kPa,time_s,held_fraction,"
-                        "stick,slip,open",
+                        "stick,slip,open" +
+                          reaction_header,
                         [](std::ostream &out, const SoilStepResult &r) {
                           out << r.n_elastic << ',' << r.n_plastic << ','
                               << r.largest_yield_value << ',' << r.time << ','
                               << r.held_fraction << ',' << r.contact[0] << ','
                               << r.contact[1] << ',' << r.contact[2];
+                          for (const auto &reaction : r.held_reactions)
+                            out << ',' << reaction.second;
                         });
   }
 } // namespace FourierSSI

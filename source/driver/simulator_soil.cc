@@ -10,6 +10,7 @@
 #include <fourier_ssi/estimation/capacity_plateau.h>
 #include <fourier_ssi/input/problem_checks.h>
 #include <fourier_ssi/mesh/discretization_design.h>
+#include <functional>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -94,20 +95,48 @@ namespace FourierSSI
       double    rise = 0., plateau_error = 0.;
     };
 
-    /** The capacity of a displacement-controlled curve of >= 2 steps. */
-    Capacity
-    capacity_of(const CoupledSoilSolver &solver,
-                const AllParameters     &parameters)
+    /** A load read at each converged step. */
+    using LoadAtStep = std::function<NamedLoad(const SoilStepResult &)>;
+
+    /** The applied load that works on the controlled motion. */
+    LoadAtStep
+    applied_load(const CoupledSoilSolver &solver,
+                 const AllParameters     &parameters)
     {
-      const LoadPathParameters &settings = parameters.load_path;
-      const auto               &steps    = solver.get_steps();
-      const auto                load_at  = [&](const SoilStepResult &s) {
+      return [&](const SoilStepResult &s) {
         return conjugate_load(solver.applied_loads(s.load_factor,
                                                    s.held_fraction),
                               parameters.rigid_foundation,
-                              settings.motion);
+                              parameters.load_path.motion);
       };
-      const auto motion_at = [&](const SoilStepResult &s) {
+    }
+
+    /**
+     * A direction probe's H (or M): the load on the foundation along the
+     * probe (probe_H, probe_M), not the drive.
+     */
+    LoadAtStep
+    probe_load(const FoundationMotion motion, const AllParameters &parameters)
+    {
+      return [motion, &parameters](const SoilStepResult &s) {
+        NamedLoad load{parameters.rigid_foundation.reaction_row(motion),
+                       load_unit_of(motion)};
+        for (const auto &[held, value] : s.held_reactions)
+          if (held == motion)
+            load.value = value;
+        return load;
+      };
+    }
+
+    /** The capacity of a displacement-controlled curve of >= 2 steps. */
+    Capacity
+    capacity_of(const CoupledSoilSolver &solver,
+                const AllParameters     &parameters,
+                const LoadAtStep        &load_at)
+    {
+      const LoadPathParameters &settings  = parameters.load_path;
+      const auto               &steps     = solver.get_steps();
+      const auto                motion_at = [&](const SoilStepResult &s) {
         return controlled_component(s.motion, settings.motion);
       };
       // The controlled path starts where the held loads left it.
@@ -136,15 +165,13 @@ namespace FourierSSI
       return result;
     }
 
+    /** A displacement-controlled curve of >= 2 steps: it has a capacity. */
     bool
     has_capacity(const CoupledSoilSolver &solver,
                  const AllParameters     &parameters)
     {
-      // A direction probe's capacity is the point (probe_H, probe_M), not
-      // the applied load that drives it.
       return parameters.load_path.control ==
                LoadPathParameters::Control::displacement &&
-             !parameters.rigid_foundation.probes_direction() &&
              solver.get_steps().size() >= 2;
     }
 
@@ -266,9 +293,22 @@ namespace FourierSSI
                   solver.get_steps().size(),
                   load,
                   load_unit_of(motion));
-    if (has_capacity(solver, parameters))
+    if (has_capacity(solver, parameters) &&
+        parameters.rigid_foundation.probes_direction())
+      // A direction probe's capacity is the point (probe_H, probe_M), each
+      // with its plateau, not the applied load that drives it.
+      for (const FoundationMotion motion :
+           parameters.rigid_foundation.reported_motions())
+        report_capacity(capacity_of(solver,
+                                    parameters,
+                                    probe_load(motion, parameters)),
+                        solver,
+                        log,
+                        results);
+    else if (has_capacity(solver, parameters))
       {
-        const Capacity c = capacity_of(solver, parameters);
+        const Capacity c =
+          capacity_of(solver, parameters, applied_load(solver, parameters));
         report_capacity(c, solver, log, results);
         // Without a target the capacity's error bar is the plateau's alone.
         report_normalised_capacity(c.load.name,
@@ -335,9 +375,10 @@ namespace FourierSSI
         return CoupledGoal{"work", "kJ", solver->load_work(), 0., steps};
       AssertThrow(has_capacity(*solver, parameters),
                   ExcMessage("Discretization/Target accuracy: the curve "
-                                   "has fewer than two steps (Nonlinear "
-                                   "interfaces/Load steps)"));
-      const Capacity c = capacity_of(*solver, parameters);
+                                   "has fewer than two steps (Load "
+                                   "path/Load steps)"));
+      const Capacity c =
+        capacity_of(*solver, parameters, applied_load(*solver, parameters));
       return CoupledGoal{
         c.load.name, c.load.unit, c.load.value, c.plateau_error, steps};
     };

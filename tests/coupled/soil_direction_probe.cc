@@ -30,6 +30,10 @@
 // theta) is -19 to -29 instead of 1 and check 1 fails at every step.
 #include "soil_test_support.h"
 
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
 using namespace FourierSSI;
 using namespace soil_test;
 
@@ -117,6 +121,40 @@ main(int argc, char **argv)
   check::equal("probe_H and probe_M reported",
                steps.back().held_reactions.size(),
                2);
+
+  // The probe's H and M are also columns of load-displacement.csv (after
+  // the applied drive's H_kN, M_kNm): the last row carries the step's
+  // values, printed to 12 digits.
+  {
+    const std::string csv = "soil_direction_probe_load_displacement.csv";
+    probe.solver->write_csv(csv);
+    std::ifstream in(csv);
+    std::string   header, line, last;
+    std::getline(in, header);
+    while (std::getline(in, line))
+      last = line;
+    const auto cells = [](const std::string &text) {
+      std::vector<std::string> out;
+      std::stringstream        stream(text);
+      for (std::string cell; std::getline(stream, cell, ',');)
+        out.push_back(cell);
+      return out;
+    };
+    const std::vector<std::string> names = cells(header), values = cells(last);
+    for (const auto &[name, value] :
+         {std::pair<std::string, double>{"probe_H_kN", P.H},
+          std::pair<std::string, double>{"probe_M_kNm", P.M}})
+      {
+        const auto column = std::find(names.begin(), names.end(), name);
+        check::that("load-displacement.csv has the column " + name,
+                    column != names.end() && values.size() == names.size());
+        if (column != names.end() && values.size() == names.size())
+          check::relative(name + " of the last row",
+                          std::stod(values[column - names.begin()]),
+                          value,
+                          1e-11);
+      }
+  }
 
   // 2. Equilibrium with the supports of the n = 1 harmonic.
   unsigned int lateral = 0;
