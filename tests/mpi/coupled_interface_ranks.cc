@@ -122,7 +122,7 @@ main(int argc, char **argv)
   const bool root = Utilities::MPI::this_mpi_process(world) == 0;
   try
     {
-      using coupled_test::with_entry;
+      using test_support::with_entry;
       std::string pile = test_support::bundled_prm("prm/pile-lateral-slip.prm");
       pile             = with_entry(pile, "Target", "0.02");
       pile             = with_entry(pile, "Load steps", "4");

@@ -64,7 +64,7 @@ namespace
   std::string
   pile_scene()
   {
-    using coupled_test::with_entry;
+    using test_support::with_entry;
     std::string text = test_support::bundled_prm("prm/pile-lateral-slip.prm");
     text             = with_entry(text, "Target", "0.02");
     text             = with_entry(text, "Load steps", "4");

@@ -8,7 +8,6 @@
 
 #include <fourier_ssi/coupled/coupled_interface_solver.h>
 #include <iostream>
-#include <regex>
 #include <string>
 #include <vector>
 
@@ -33,18 +32,6 @@ namespace coupled_test
     double       seconds     = 0.;
   };
 
-  /** `text` with the line "set <entry> = ..." replaced (first match). */
-  inline std::string
-  with_entry(const std::string &text,
-             const std::string &entry,
-             const std::string &value)
-  {
-    return std::regex_replace(text,
-                              std::regex("set " + entry + " *= [^\n]*"),
-                              "set " + entry + " = " + value,
-                              std::regex_constants::format_first_only);
-  }
-
   /**
    * prm/disc-gap.prm (the disc in a ring) with `law` on the interface
    * (boundary 5, the text after "5: "), harmonics n = 0..32, no VTU: the
@@ -53,13 +40,13 @@ namespace coupled_test
   inline std::string
   disc_in_ring(const std::string &law)
   {
-    std::string text      = test_support::bundled_prm("prm/disc-gap.prm");
-    text                  = with_entry(text, "Interfaces", "5: " + law);
-    text                  = with_entry(text, "Write vtu", "false");
+    std::string text = test_support::bundled_prm("prm/disc-gap.prm");
+    text = test_support::with_entry(text, "Interfaces", "5: " + law);
+    text = test_support::with_entry(text, "Write vtu", "false");
     std::string harmonics = "0";
     for (unsigned int n = 1; n <= 32; ++n)
       harmonics += ", " + std::to_string(n);
-    return with_entry(text, "Harmonics", harmonics);
+    return test_support::with_entry(text, "Harmonics", harmonics);
   }
 
   inline Curve
@@ -96,8 +83,8 @@ namespace coupled_test
   inline double
   linear_lateral_slope(std::string text, const std::string &law)
   {
-    text = with_entry(text, "Interfaces", law);
-    text = with_entry(text, "Harmonics", "1");
+    text = test_support::with_entry(text, "Interfaces", law);
+    text = test_support::with_entry(text, "Harmonics", "1");
     test_support::FactorizedScene scene(text);
     const AllParameters          &parameters = scene.parameters;
     HarmonicSet                  &set        = scene.set;
