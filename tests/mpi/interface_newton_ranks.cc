@@ -37,9 +37,9 @@
 #include <check.h>
 #include <cmath>
 #include <coupled_interface_test_support.h>
-#include <deal.II/base/mpi.h>
 #include <iomanip>
 #include <sstream>
+#include <two_ranks.h>
 
 using namespace FourierSSI;
 
@@ -149,15 +149,14 @@ namespace
   void
   compare(const std::string &name,
           const std::string &text,
-          const bool         rotation_is_response,
-          const bool         root)
+          const bool         rotation_is_response)
   {
-    std::ostream  silent(nullptr);
-    std::ostream &log    = root ? std::cout : silent;
-    const Run     serial = solve(text, false, silent);
-    log << name << ", harmonics distributed over 2 ranks:" << std::endl;
-    const Run distributed = solve(text, true, log);
-    if (!root)
+    const auto [serial, distributed] = two_ranks::serial_and_distributed(
+      [&](const bool distribute, std::ostream &log) {
+        return solve(text, distribute, log);
+      },
+      name + ", harmonics distributed over 2 ranks:");
+    if (!two_ranks::is_root())
       return;
     check::equal(name + ": converged steps, 2 ranks vs 1",
                  distributed.steps.size(),
@@ -181,36 +180,13 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const MPI_Comm                   world = MPI_COMM_WORLD;
-  if (Utilities::MPI::n_mpi_processes(world) != 2)
-    {
-      std::cerr << "run with mpirun -np 2" << std::endl;
-      return 1;
-    }
-  const bool root = Utilities::MPI::this_mpi_process(world) == 0;
-  try
-    {
-      std::ostringstream penalty;
-      penalty << std::setprecision(17) << "coulomb, kn=" << 1e6 * G / r0
-              << ", ks=" << 1e6 * G / r0 << ", c=0, phi=" << friction_angle()
-              << ", sigma_t=0";
-      compare("coulomb kn = 1e6 G/r0", scene(penalty.str()), false, root);
-      compare("contact",
-              scene("contact, c=0, phi=" + friction_angle()),
-              false,
-              root);
-      compare("pile", pile_scene(), true, root);
-    }
-  catch (const std::exception &e)
-    {
-      std::cerr << "error: " << e.what() << std::endl;
-      return 1;
-    }
-  // Rank 0 did the checking; every rank returns its verdict.
-  const int failed =
-    Utilities::MPI::broadcast(world, check::n_failed(), /*root=*/0);
-  if (root)
-    return check::summary();
-  return failed == 0 ? 0 : 1;
+  return two_ranks::run(argc, argv, [] {
+    std::ostringstream penalty;
+    penalty << std::setprecision(17) << "coulomb, kn=" << 1e6 * G / r0
+            << ", ks=" << 1e6 * G / r0 << ", c=0, phi=" << friction_angle()
+            << ", sigma_t=0";
+    compare("coulomb kn = 1e6 G/r0", scene(penalty.str()), false);
+    compare("contact", scene("contact, c=0, phi=" + friction_angle()), false);
+    compare("pile", pile_scene(), true);
+  });
 }
