@@ -34,29 +34,6 @@ using namespace FourierSSI;
 
 namespace
 {
-  struct Run
-  {
-    std::vector<LoadStepResult> steps;
-    std::vector<double>         applied; // H or P per step [kN]
-    unsigned int                n_harmonics = 0;
-  };
-
-  Run
-  solve(const std::string &text, const bool distributed, std::ostream &log)
-  {
-    test_support::FactorizedScene scene(text, distributed);
-    const AllParameters          &parameters = scene.parameters;
-    HarmonicSet                  &set        = scene.set;
-    CoupledInterfaceSolver        solver(set, parameters);
-    solver.run(log);
-    Run run;
-    run.steps = solver.get_steps();
-    for (const LoadStepResult &r : run.steps)
-      run.applied.push_back(solver.applied_loads(r.load_factor)[0]);
-    run.n_harmonics = set.size();
-    return run;
-  }
-
   void
   compare(const std::string &name,
           const std::string &text,
@@ -64,7 +41,7 @@ namespace
   {
     const auto [serial, distributed] = two_ranks::serial_and_distributed(
       [&](const bool distribute, std::ostream &log) {
-        return solve(text, distribute, log);
+        return coupled_test::solve_steps(text, distribute, log);
       },
       name + ", harmonics distributed over 2 ranks:");
     if (!two_ranks::is_root())

@@ -80,29 +80,6 @@ namespace
     return phi.str();
   }
 
-  struct Run
-  {
-    std::vector<LoadStepResult> steps;
-    std::vector<double>         applied; // H per step [kN]
-    double                      seconds = 0.;
-  };
-
-  Run
-  solve(const std::string &text, const bool distributed, std::ostream &log)
-  {
-    test_support::FactorizedScene scene(text, distributed);
-    CoupledInterfaceSolver        solver(scene.set, scene.parameters);
-    solver.run(log);
-    Run run;
-    run.steps = solver.get_steps();
-    for (const LoadStepResult &r : run.steps)
-      {
-        run.applied.push_back(solver.applied_loads(r.load_factor)[0]);
-        run.seconds += r.time;
-      }
-    return run;
-  }
-
   void
   compare_step(const std::string    &step,
                const LoadStepResult &d,
@@ -153,7 +130,7 @@ namespace
   {
     const auto [serial, distributed] = two_ranks::serial_and_distributed(
       [&](const bool distribute, std::ostream &log) {
-        return solve(text, distribute, log);
+        return coupled_test::solve_steps(text, distribute, log);
       },
       name + ", harmonics distributed over 2 ranks:");
     if (!two_ranks::is_root())

@@ -49,19 +49,50 @@ namespace coupled_test
     return test_support::with_entry(text, "Harmonics", harmonics);
   }
 
+  /** The converged load steps of a coupled solve, as the solver gives them. */
+  struct StepResults
+  {
+    std::vector<LoadStepResult> steps;
+    std::vector<double>         applied; // H or P per step [kN]
+    /** Harmonics of the set after the run (growth included). */
+    unsigned int n_harmonics = 0;
+    double       seconds     = 0.;
+  };
+
+  /**
+   * The scene's load steps through CoupledInterfaceSolver, serial or with
+   * the harmonics distributed over the ranks of MPI_COMM_WORLD.
+   */
+  inline StepResults
+  solve_steps(const std::string &text,
+              const bool         distributed = false,
+              std::ostream      &log         = std::cout)
+  {
+    test_support::FactorizedScene scene(text, distributed);
+    CoupledInterfaceSolver        solver(scene.set, scene.parameters);
+    solver.run(log);
+    StepResults results;
+    results.steps = solver.get_steps();
+    for (const LoadStepResult &r : results.steps)
+      {
+        results.applied.push_back(solver.applied_loads(r.load_factor)[0]);
+        results.seconds += r.time;
+      }
+    results.n_harmonics = scene.set.size();
+    return results;
+  }
+
+  /** The serial solve_steps() as a lateral (H, u) curve. */
   inline Curve
   run(const std::string &text, std::ostream &log = std::cout)
   {
-    test_support::FactorizedScene scene(text);
-    const AllParameters          &parameters = scene.parameters;
-    HarmonicSet                  &set        = scene.set;
-    CoupledInterfaceSolver        solver(set, parameters);
-    solver.run(log);
-    Curve curve;
-    for (const LoadStepResult &r : solver.get_steps())
+    const StepResults results = solve_steps(text, false, log);
+    Curve             curve;
+    for (unsigned int i = 0; i < results.steps.size(); ++i)
       {
-        Step s;
-        s.H           = solver.applied_loads(r.load_factor)[0];
+        const LoadStepResult &r = results.steps[i];
+        Step                  s;
+        s.H           = results.applied[i];
         s.u           = r.motion.horizontal_displacement;
         s.iterations  = r.iterations;
         s.n_harmonics = r.n_harmonics;
@@ -69,10 +100,10 @@ namespace coupled_test
         s.slip        = r.states[1];
         s.open        = r.states[2];
         s.equilibrium = std::abs(r.resultant[0] - s.H) / std::abs(s.H);
-        curve.seconds += r.time;
         curve.steps.push_back(s);
       }
-    curve.n_harmonics = set.size();
+    curve.seconds     = results.seconds;
+    curve.n_harmonics = results.n_harmonics;
     return curve;
   }
 
