@@ -76,6 +76,8 @@ import sys
 import tempfile
 import time
 
+from mesh_grading import growth_for
+
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 G_REF = 1000.0  # kPa, G at depth e (footing) or L (pile)
 RIGID = "rigid"  # Ep/Es of a rigid pile
@@ -96,25 +98,6 @@ def parse_sweep(path):
         if key not in entries or len(entries[key]) != 1:
             sys.exit(f"{path}: 'set {key} = ...' (one value) is required")
     return entries
-
-
-def growth_for(n, length, h_end):
-    """Ratio g of n geometric cells summing to 'length' whose LAST cell is
-    h_end (g < 1 shrinks toward the segment end)."""
-    if abs(n * h_end - length) < 1e-12:
-        return 1.0
-
-    def total(g):
-        return sum(h_end / g ** (n - 1 - i) for i in range(n))
-
-    lo, hi = (1e-3, 1.0) if n * h_end < length else (1.0, 1e3)
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        if (total(mid) > length) == (n * h_end < length):
-            lo = mid
-        else:
-            hi = mid
-    return 0.5 * (lo + hi)
 
 
 def footing_overrides(case, designed=False):

@@ -45,6 +45,7 @@ import time
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)),
                                 "..", "..", "tools"))
 from batch_runs import read_last_cycle, run_batch  # noqa: E402
+from mesh_grading import growth_for  # noqa: E402
 
 THESIS = {
     "bonded": [0.66060, 0.67329, 0.67255, 0.65629, 0.62132, 0.56882],
@@ -61,25 +62,6 @@ LABEL = {
     "k1e10": "interface k = 1e10",
     "smooth": "smooth, exact 3(1-nu^2)/4",
 }
-
-
-def growth_for(n, length, h_end):
-    """Ratio g of n geometric cells summing to 'length' whose LAST cell is
-    h_end (g < 1 shrinks toward the segment end)."""
-    if abs(n * h_end - length) < 1e-12:
-        return 1.0
-
-    def total(g):  # first cell h_end / g^(n-1)
-        return sum(h_end / g ** (n - 1 - i) for i in range(n))
-
-    lo, hi = (1e-3, 1.0) if n * h_end < length else (1.0, 1e3)
-    for _ in range(200):
-        mid = 0.5 * (lo + hi)
-        if (total(mid) > length) == (n * h_end < length):
-            lo = mid
-        else:
-            hi = mid
-    return 0.5 * (lo + hi)
 
 
 def mesh_entries(L, h_edge=0.05, n_foot=6, n_out=14, n_depth=16):

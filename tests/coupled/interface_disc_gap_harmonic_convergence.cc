@@ -28,7 +28,7 @@
 #include <cmath>
 
 using namespace FourierSSI;
-using coupled_test::with_entry;
+using test_support::with_entry;
 
 namespace
 {

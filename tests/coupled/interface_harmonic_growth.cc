@@ -26,7 +26,7 @@
 #include <fourier_ssi/driver/simulator.h>
 
 using namespace FourierSSI;
-using coupled_test::with_entry;
+using test_support::with_entry;
 
 namespace
 {

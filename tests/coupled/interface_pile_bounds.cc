@@ -23,7 +23,7 @@
 #include "coupled_interface_test_support.h"
 
 using namespace FourierSSI;
-using coupled_test::with_entry;
+using test_support::with_entry;
 
 namespace
 {

@@ -18,10 +18,13 @@
 #include "check.h"
 #include "test_support.h"
 
+#include <array>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <fourier_ssi/fourier/harmonic.h>
 #include <sstream>
+#include <stdexcept>
 
 using namespace FourierSSI;
 
@@ -40,27 +43,6 @@ namespace
   const double study_bonded[6] =
     {0.66244, 0.67512, 0.67426, 0.65773, 0.62231, 0.56975};
 
-  /** Ratio g of n geometric cells summing to 'length' whose last cell is
-   * h_end (same as benchmarks/table-4-1/run.py). */
-  double
-  growth_for(const unsigned int n, const double length, const double h_end)
-  {
-    const bool shrink = n * h_end < length;
-    double     lo = shrink ? 1e-3 : 1., hi = shrink ? 1. : 1e3;
-    for (unsigned int it = 0; it < 200; ++it)
-      {
-        const double g     = 0.5 * (lo + hi);
-        double       total = 0;
-        for (unsigned int i = 0; i < n; ++i)
-          total += h_end / std::pow(g, double(n - 1 - i));
-        if ((total > length) == shrink)
-          lo = g;
-        else
-          hi = g;
-      }
-    return 0.5 * (lo + hi);
-  }
-
   enum class Model
   {
     bonded,
@@ -75,6 +57,43 @@ namespace
     std::ostringstream s;
     s << std::setprecision(12) << x;
     return s.str();
+  }
+
+  /**
+   * The growth ratios (R growth on the footing and beyond it, Z growth) of
+   * the study's graded mesh with edge cells h_e, as .prm text: read from
+   * benchmarks/table-4-1/run.py's mesh_entries() (tools/mesh_grading.py),
+   * the one definition of that grading, so that this test and the study
+   * grade their meshes alike.
+   */
+  std::array<std::string, 3>
+  study_grading(const double       L,
+                const double       h_e,
+                const unsigned int n_foot,
+                const unsigned int n_out,
+                const unsigned int n_depth)
+  {
+    std::ostringstream command;
+    command << "/usr/bin/python3 -c 'import sys; sys.path.insert(0, \""
+            << test_support::source_dir()
+            << "/benchmarks/table-4-1\"); from run import mesh_entries; "
+               "print(*(\"%.12g\" % g for g in mesh_entries("
+            << L << ", " << h_e << ", " << n_foot << ", " << n_out << ", "
+            << n_depth << ")))'";
+    FILE *pipe = popen(command.str().c_str(), "r");
+    if (!pipe)
+      throw std::runtime_error("cannot run python3 for the study's grading");
+    char        buffer[256];
+    std::string output;
+    while (std::fgets(buffer, sizeof(buffer), pipe))
+      output += buffer;
+    const int                  status = pclose(pipe);
+    std::istringstream         words(output);
+    std::array<std::string, 3> grading;
+    if (status != 0 || !(words >> grading[0] >> grading[1] >> grading[2]))
+      throw std::runtime_error(
+        "benchmarks/table-4-1/run.py: mesh_entries() gave no grading");
+    return grading;
   }
 
   /**
@@ -94,14 +113,13 @@ namespace
   {
     const double       L = 100, h_e = 0.08;
     const unsigned int n_foot = 4, n_out = 10, n_depth = 12;
-    const std::string  E      = text(2 * 1000. * (1 + nu)),
-                      g_depth = text(growth_for(n_depth, L, h_e));
+    const auto [g_foot, g_out, g_depth] =
+      study_grading(L, h_e, n_foot, n_out, n_depth);
+    const std::string E = text(2 * 1000. * (1 + nu));
     std::vector<std::pair<std::string, std::string>> changes = {
       {"Refinement cycles", std::to_string(cycles)},
       {"R cells", std::to_string(n_foot) + ", " + std::to_string(n_out)},
-      {"R growth",
-       text(growth_for(n_foot, 1., h_e)) + ", " +
-         text(1. / growth_for(n_out, L - 1., h_e))},
+      {"R growth", g_foot + ", " + g_out},
       {"Reference Poisson ratio", text(nu)}};
     std::string mesh_and_tie;
     if (model == Model::interface)

@@ -28,47 +28,23 @@
 // tolerance times the stiffness ratio of the open modes).
 #include <check.h>
 #include <coupled_interface_test_support.h>
-#include <deal.II/base/mpi.h>
+#include <two_ranks.h>
 
 using namespace FourierSSI;
 
 namespace
 {
-  struct Run
-  {
-    std::vector<LoadStepResult> steps;
-    std::vector<double>         applied; // H or P per step [kN]
-    unsigned int                n_harmonics = 0;
-  };
-
-  Run
-  solve(const std::string &text, const bool distributed, std::ostream &log)
-  {
-    test_support::FactorizedScene scene(text, distributed);
-    const AllParameters          &parameters = scene.parameters;
-    HarmonicSet                  &set        = scene.set;
-    CoupledInterfaceSolver        solver(set, parameters);
-    solver.run(log);
-    Run run;
-    run.steps = solver.get_steps();
-    for (const LoadStepResult &r : run.steps)
-      run.applied.push_back(solver.applied_loads(r.load_factor)[0]);
-    run.n_harmonics = set.size();
-    return run;
-  }
-
   void
   compare(const std::string &name,
           const std::string &text,
-          const bool         equilibrium,
-          const bool         root)
+          const bool         equilibrium)
   {
-    std::ostream  silent(nullptr);
-    std::ostream &log    = root ? std::cout : silent;
-    const Run     serial = solve(text, false, silent);
-    log << name << ", harmonics distributed over 2 ranks:" << std::endl;
-    const Run distributed = solve(text, true, log);
-    if (!root)
+    const auto [serial, distributed] = two_ranks::serial_and_distributed(
+      [&](const bool distribute, std::ostream &log) {
+        return coupled_test::solve_steps(text, distribute, log);
+      },
+      name + ", harmonics distributed over 2 ranks:");
+    if (!two_ranks::is_root())
       return;
     check::equal(name + ": converged steps, 2 ranks vs 1",
                  distributed.steps.size(),
@@ -112,37 +88,17 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const MPI_Comm                   world = MPI_COMM_WORLD;
-  if (Utilities::MPI::n_mpi_processes(world) != 2)
-    {
-      std::cerr << "run with mpirun -np 2" << std::endl;
-      return 1;
-    }
-  const bool root = Utilities::MPI::this_mpi_process(world) == 0;
-  try
-    {
-      using coupled_test::with_entry;
-      std::string pile = test_support::bundled_prm("prm/pile-lateral-slip.prm");
-      pile             = with_entry(pile, "Target", "0.02");
-      pile             = with_entry(pile, "Load steps", "4");
-      compare("pile", pile, false, root);
-      std::string disc = test_support::bundled_prm("prm/disc-gap.prm");
-      disc             = with_entry(disc, "Harmonics", "1");
-      disc += "subsection Load path\n"
-              "  set Maximum harmonic = 16\n"
-              "end\n";
-      compare("disc grown from n = 1", disc, true, root);
-    }
-  catch (const std::exception &e)
-    {
-      std::cerr << "error: " << e.what() << std::endl;
-      return 1;
-    }
-  // Rank 0 did the checking; every rank returns its verdict.
-  const int failed =
-    Utilities::MPI::broadcast(world, check::n_failed(), /*root=*/0);
-  if (root)
-    return check::summary();
-  return failed == 0 ? 0 : 1;
+  return two_ranks::run(argc, argv, [] {
+    using test_support::with_entry;
+    std::string pile = test_support::bundled_prm("prm/pile-lateral-slip.prm");
+    pile             = with_entry(pile, "Target", "0.02");
+    pile             = with_entry(pile, "Load steps", "4");
+    compare("pile", pile, false);
+    std::string disc = test_support::bundled_prm("prm/disc-gap.prm");
+    disc             = with_entry(disc, "Harmonics", "1");
+    disc += "subsection Load path\n"
+            "  set Maximum harmonic = 16\n"
+            "end\n";
+    compare("disc grown from n = 1", disc, true);
+  });
 }

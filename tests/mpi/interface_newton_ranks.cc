@@ -37,9 +37,9 @@
 #include <check.h>
 #include <cmath>
 #include <coupled_interface_test_support.h>
-#include <deal.II/base/mpi.h>
 #include <iomanip>
 #include <sstream>
+#include <two_ranks.h>
 
 using namespace FourierSSI;
 
@@ -64,7 +64,7 @@ namespace
   std::string
   pile_scene()
   {
-    using coupled_test::with_entry;
+    using test_support::with_entry;
     std::string text = test_support::bundled_prm("prm/pile-lateral-slip.prm");
     text             = with_entry(text, "Target", "0.02");
     text             = with_entry(text, "Load steps", "4");
@@ -78,29 +78,6 @@ namespace
     std::ostringstream phi;
     phi << std::setprecision(17) << std::atan(0.3) * 180. / M_PI;
     return phi.str();
-  }
-
-  struct Run
-  {
-    std::vector<LoadStepResult> steps;
-    std::vector<double>         applied; // H per step [kN]
-    double                      seconds = 0.;
-  };
-
-  Run
-  solve(const std::string &text, const bool distributed, std::ostream &log)
-  {
-    test_support::FactorizedScene scene(text, distributed);
-    CoupledInterfaceSolver        solver(scene.set, scene.parameters);
-    solver.run(log);
-    Run run;
-    run.steps = solver.get_steps();
-    for (const LoadStepResult &r : run.steps)
-      {
-        run.applied.push_back(solver.applied_loads(r.load_factor)[0]);
-        run.seconds += r.time;
-      }
-    return run;
   }
 
   void
@@ -149,15 +126,14 @@ namespace
   void
   compare(const std::string &name,
           const std::string &text,
-          const bool         rotation_is_response,
-          const bool         root)
+          const bool         rotation_is_response)
   {
-    std::ostream  silent(nullptr);
-    std::ostream &log    = root ? std::cout : silent;
-    const Run     serial = solve(text, false, silent);
-    log << name << ", harmonics distributed over 2 ranks:" << std::endl;
-    const Run distributed = solve(text, true, log);
-    if (!root)
+    const auto [serial, distributed] = two_ranks::serial_and_distributed(
+      [&](const bool distribute, std::ostream &log) {
+        return coupled_test::solve_steps(text, distribute, log);
+      },
+      name + ", harmonics distributed over 2 ranks:");
+    if (!two_ranks::is_root())
       return;
     check::equal(name + ": converged steps, 2 ranks vs 1",
                  distributed.steps.size(),
@@ -181,36 +157,13 @@ namespace
 int
 main(int argc, char **argv)
 {
-  Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const MPI_Comm                   world = MPI_COMM_WORLD;
-  if (Utilities::MPI::n_mpi_processes(world) != 2)
-    {
-      std::cerr << "run with mpirun -np 2" << std::endl;
-      return 1;
-    }
-  const bool root = Utilities::MPI::this_mpi_process(world) == 0;
-  try
-    {
-      std::ostringstream penalty;
-      penalty << std::setprecision(17) << "coulomb, kn=" << 1e6 * G / r0
-              << ", ks=" << 1e6 * G / r0 << ", c=0, phi=" << friction_angle()
-              << ", sigma_t=0";
-      compare("coulomb kn = 1e6 G/r0", scene(penalty.str()), false, root);
-      compare("contact",
-              scene("contact, c=0, phi=" + friction_angle()),
-              false,
-              root);
-      compare("pile", pile_scene(), true, root);
-    }
-  catch (const std::exception &e)
-    {
-      std::cerr << "error: " << e.what() << std::endl;
-      return 1;
-    }
-  // Rank 0 did the checking; every rank returns its verdict.
-  const int failed =
-    Utilities::MPI::broadcast(world, check::n_failed(), /*root=*/0);
-  if (root)
-    return check::summary();
-  return failed == 0 ? 0 : 1;
+  return two_ranks::run(argc, argv, [] {
+    std::ostringstream penalty;
+    penalty << std::setprecision(17) << "coulomb, kn=" << 1e6 * G / r0
+            << ", ks=" << 1e6 * G / r0 << ", c=0, phi=" << friction_angle()
+            << ", sigma_t=0";
+    compare("coulomb kn = 1e6 G/r0", scene(penalty.str()), false);
+    compare("contact", scene("contact, c=0, phi=" + friction_angle()), false);
+    compare("pile", pile_scene(), true);
+  });
 }

@@ -8,7 +8,6 @@
 
 #include <fourier_ssi/coupled/coupled_interface_solver.h>
 #include <iostream>
-#include <regex>
 #include <string>
 #include <vector>
 
@@ -33,18 +32,6 @@ namespace coupled_test
     double       seconds     = 0.;
   };
 
-  /** `text` with the line "set <entry> = ..." replaced (first match). */
-  inline std::string
-  with_entry(const std::string &text,
-             const std::string &entry,
-             const std::string &value)
-  {
-    return std::regex_replace(text,
-                              std::regex("set " + entry + " *= [^\n]*"),
-                              "set " + entry + " = " + value,
-                              std::regex_constants::format_first_only);
-  }
-
   /**
    * prm/disc-gap.prm (the disc in a ring) with `law` on the interface
    * (boundary 5, the text after "5: "), harmonics n = 0..32, no VTU: the
@@ -53,28 +40,59 @@ namespace coupled_test
   inline std::string
   disc_in_ring(const std::string &law)
   {
-    std::string text      = test_support::bundled_prm("prm/disc-gap.prm");
-    text                  = with_entry(text, "Interfaces", "5: " + law);
-    text                  = with_entry(text, "Write vtu", "false");
+    std::string text = test_support::bundled_prm("prm/disc-gap.prm");
+    text = test_support::with_entry(text, "Interfaces", "5: " + law);
+    text = test_support::with_entry(text, "Write vtu", "false");
     std::string harmonics = "0";
     for (unsigned int n = 1; n <= 32; ++n)
       harmonics += ", " + std::to_string(n);
-    return with_entry(text, "Harmonics", harmonics);
+    return test_support::with_entry(text, "Harmonics", harmonics);
   }
 
+  /** The converged load steps of a coupled solve, as the solver gives them. */
+  struct StepResults
+  {
+    std::vector<LoadStepResult> steps;
+    std::vector<double>         applied; // H or P per step [kN]
+    /** Harmonics of the set after the run (growth included). */
+    unsigned int n_harmonics = 0;
+    double       seconds     = 0.;
+  };
+
+  /**
+   * The scene's load steps through CoupledInterfaceSolver, serial or with
+   * the harmonics distributed over the ranks of MPI_COMM_WORLD.
+   */
+  inline StepResults
+  solve_steps(const std::string &text,
+              const bool         distributed = false,
+              std::ostream      &log         = std::cout)
+  {
+    test_support::FactorizedScene scene(text, distributed);
+    CoupledInterfaceSolver        solver(scene.set, scene.parameters);
+    solver.run(log);
+    StepResults results;
+    results.steps = solver.get_steps();
+    for (const LoadStepResult &r : results.steps)
+      {
+        results.applied.push_back(solver.applied_loads(r.load_factor)[0]);
+        results.seconds += r.time;
+      }
+    results.n_harmonics = scene.set.size();
+    return results;
+  }
+
+  /** The serial solve_steps() as a lateral (H, u) curve. */
   inline Curve
   run(const std::string &text, std::ostream &log = std::cout)
   {
-    test_support::FactorizedScene scene(text);
-    const AllParameters          &parameters = scene.parameters;
-    HarmonicSet                  &set        = scene.set;
-    CoupledInterfaceSolver        solver(set, parameters);
-    solver.run(log);
-    Curve curve;
-    for (const LoadStepResult &r : solver.get_steps())
+    const StepResults results = solve_steps(text, false, log);
+    Curve             curve;
+    for (unsigned int i = 0; i < results.steps.size(); ++i)
       {
-        Step s;
-        s.H           = solver.applied_loads(r.load_factor)[0];
+        const LoadStepResult &r = results.steps[i];
+        Step                  s;
+        s.H           = results.applied[i];
         s.u           = r.motion.horizontal_displacement;
         s.iterations  = r.iterations;
         s.n_harmonics = r.n_harmonics;
@@ -82,10 +100,10 @@ namespace coupled_test
         s.slip        = r.states[1];
         s.open        = r.states[2];
         s.equilibrium = std::abs(r.resultant[0] - s.H) / std::abs(s.H);
-        curve.seconds += r.time;
         curve.steps.push_back(s);
       }
-    curve.n_harmonics = set.size();
+    curve.seconds     = results.seconds;
+    curve.n_harmonics = results.n_harmonics;
     return curve;
   }
 
@@ -96,8 +114,8 @@ namespace coupled_test
   inline double
   linear_lateral_slope(std::string text, const std::string &law)
   {
-    text = with_entry(text, "Interfaces", law);
-    text = with_entry(text, "Harmonics", "1");
+    text = test_support::with_entry(text, "Interfaces", law);
+    text = test_support::with_entry(text, "Harmonics", "1");
     test_support::FactorizedScene scene(text);
     const AllParameters          &parameters = scene.parameters;
     HarmonicSet                  &set        = scene.set;

@@ -59,17 +59,17 @@ namespace test_support
   }
 
   /**
-   * A bundled scene with entries changed where the file sets them: the
-   * `set ENTRY = ...` line takes the new value. An entry the file sets
-   * nowhere, or more than once, is an error (the change would be lost or
-   * ambiguous); an entry the file leaves at its default is appended with
-   * entries().
+   * Parameter text with entries changed where it sets them: the
+   * `set ENTRY = ...` line takes the new value. An entry the text sets
+   * nowhere, or more than once, is an error naming `source` (the change
+   * would be lost or ambiguous); an entry the text leaves at its default is
+   * appended with entries().
    */
   inline std::string
-  bundled_prm(const std::string &relative_path,
-              const std::vector<std::pair<std::string, std::string>> &changes)
+  with_entries(std::string                                             text,
+               const std::vector<std::pair<std::string, std::string>> &changes,
+               const std::string &source = "parameter text")
   {
-    std::string text = bundled_prm(relative_path);
     for (const auto &[entry, value] : changes)
       {
         const std::regex line("set " + entry + " *= [^\n]*");
@@ -77,12 +77,28 @@ namespace test_support
           std::distance(std::sregex_iterator(text.begin(), text.end(), line),
                         std::sregex_iterator());
         if (n != 1)
-          throw std::runtime_error(relative_path + ": entry '" + entry +
-                                   "' is set " + std::to_string(n) +
-                                   " times, not once");
+          throw std::runtime_error(source + ": entry '" + entry + "' is set " +
+                                   std::to_string(n) + " times, not once");
         text = std::regex_replace(text, line, "set " + entry + " = " + value);
       }
     return text;
+  }
+
+  /** with_entries() for one entry. */
+  inline std::string
+  with_entry(const std::string &text,
+             const std::string &entry,
+             const std::string &value)
+  {
+    return with_entries(text, {{entry, value}});
+  }
+
+  /** A bundled scene with entries changed (with_entries()). */
+  inline std::string
+  bundled_prm(const std::string &relative_path,
+              const std::vector<std::pair<std::string, std::string>> &changes)
+  {
+    return with_entries(bundled_prm(relative_path), changes, relative_path);
   }
 
   /**

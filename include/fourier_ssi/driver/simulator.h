@@ -19,11 +19,11 @@
 #include <fourier_ssi/driver/scene_plan.h>
 #include <fourier_ssi/estimation/goal_estimator.h>
 #include <fourier_ssi/estimation/sequence_error_estimate.h>
-#include <fourier_ssi/harmonic/harmonic_postprocessors.h>
 #include <fourier_ssi/harmonic/harmonic_set.h>
 #include <fourier_ssi/input/parameters.h>
 #include <fourier_ssi/mesh/adaptivity.h>
 #include <fourier_ssi/postprocess/field_reconstruction.h>
+#include <fourier_ssi/postprocess/harmonic_postprocessors.h>
 #include <fourier_ssi/postprocess/results_table.h>
 #include <fourier_ssi/postprocess/soil_reaction_curves.h>
 #include <functional>

@@ -1,5 +1,5 @@
 #include <cmath>
-#include <fourier_ssi/harmonic/harmonic_postprocessors.h>
+#include <fourier_ssi/postprocess/harmonic_postprocessors.h>
 #include <fourier_ssi/postprocess/pile_head_formulas.h>
 #include <iomanip>
 
