@@ -107,10 +107,7 @@ namespace FourierSSI
           next += field.size();
         }
     }
-  } // namespace
 
-  namespace
-  {
     /** The rigid motion of fields given per harmonic (rigid_motion_of). */
     RigidMotion
     motion_of_fields(const HarmonicSet                 &set,

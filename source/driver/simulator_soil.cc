@@ -293,32 +293,33 @@ namespace FourierSSI
                   solver.get_steps().size(),
                   load,
                   load_unit_of(motion));
-    if (has_capacity(solver, parameters) &&
-        parameters.rigid_foundation.probes_direction())
-      // A direction probe's capacity is the point (probe_H, probe_M), each
-      // with its plateau, not the applied load that drives it.
-      for (const FoundationMotion motion :
-           parameters.rigid_foundation.reported_motions())
-        report_capacity(capacity_of(solver,
-                                    parameters,
-                                    probe_load(motion, parameters)),
-                        solver,
-                        log,
-                        results);
-    else if (has_capacity(solver, parameters))
+    if (!has_capacity(solver, parameters))
+      return;
+    if (parameters.rigid_foundation.probes_direction())
       {
-        const Capacity c =
-          capacity_of(solver, parameters, applied_load(solver, parameters));
-        report_capacity(c, solver, log, results);
-        // Without a target the capacity's error bar is the plateau's alone.
-        report_normalised_capacity(c.load.name,
-                                   c.load.value,
-                                   c.load.unit,
-                                   c.plateau_error / std::abs(c.load.value),
-                                   "the plateau's error only",
-                                   solver.get_steps().size(),
-                                   log);
+        // A direction probe's capacity is the point (probe_H, probe_M),
+        // each with its plateau, not the applied load that drives it.
+        for (const FoundationMotion motion :
+             parameters.rigid_foundation.reported_motions())
+          report_capacity(capacity_of(solver,
+                                      parameters,
+                                      probe_load(motion, parameters)),
+                          solver,
+                          log,
+                          results);
+        return;
       }
+    const Capacity c =
+      capacity_of(solver, parameters, applied_load(solver, parameters));
+    report_capacity(c, solver, log, results);
+    // Without a target the capacity's error bar is the plateau's alone.
+    report_normalised_capacity(c.load.name,
+                               c.load.value,
+                               c.load.unit,
+                               c.plateau_error / std::abs(c.load.value),
+                               "the plateau's error only",
+                               solver.get_steps().size(),
+                               log);
   }
 
   void

@@ -37,12 +37,6 @@ namespace
 {
   const double G = 1000., a = 1.; // the scene's normalisation
 
-  std::string
-  scene(const std::string &rigid_foundation)
-  {
-    return test_support::tied_footing(rigid_foundation);
-  }
-
   struct Probe
   {
     std::string z_ref;
@@ -57,9 +51,9 @@ namespace
     const std::string at = " (z_ref = " + p.z_ref + " m)";
     const std::string reference =
       " set Reference elevation = " + p.z_ref + "\n";
-    const ResultsTable free = test_support::run(
-      scene(" set Stiffness coefficients = true\n" + reference));
-    const double K_H = free.get("K_H", h, 0), K_M = free.get("K_M", h, 0),
+    const ResultsTable free = test_support::run(test_support::tied_footing(
+      " set Stiffness coefficients = true\n" + reference));
+    const double       K_H = free.get("K_H", h, 0), K_M = free.get("K_M", h, 0),
                  K_MH = free.get("K_MH", h, 0);
     std::ostringstream direction;
     direction << std::setprecision(17) << " set Motion direction = u: " << p.d_u
@@ -68,9 +62,9 @@ namespace
     std::ostringstream loads;
     loads << std::setprecision(17) << " set Horizontal force = " << p.H_applied
           << "\n set Moment = " << p.M_applied << "\n";
-    const ResultsTable probe =
-      test_support::run(scene(" set Stiffness coefficients = false\n" +
-                              reference + direction.str() + loads.str()));
+    const ResultsTable probe = test_support::run(
+      test_support::tied_footing(" set Stiffness coefficients = false\n" +
+                                 reference + direction.str() + loads.str()));
     const double u     = probe.get("foundation_horizontal_displacement", h, 0);
     const double theta = probe.get("foundation_rotation", h, 0);
     const double H     = probe.get("probe_H", h, 0);

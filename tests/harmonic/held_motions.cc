@@ -31,12 +31,6 @@ namespace
 {
   const double G = 1000., a = 1.; // the scene's normalisation
 
-  std::string
-  scene(const std::string &rigid_foundation)
-  {
-    return test_support::tied_footing(rigid_foundation);
-  }
-
   struct SupportResultant
   {
     double force = 0., moment = 0.;
@@ -60,19 +54,19 @@ main(int argc, char **argv)
 {
   Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const Harmonic                   h{1, Family::symmetric};
-  const ResultsTable               free =
-    test_support::run(scene(" set Stiffness coefficients = true\n"));
+  const ResultsTable               free = test_support::run(
+    test_support::tied_footing(" set Stiffness coefficients = true\n"));
   const double K_H = free.get("K_H", h, 0), K_M = free.get("K_M", h, 0),
                K_MH = free.get("K_MH", h, 0);
   std::cout << "  free footing: K_H " << K_H << ", K_M " << K_M << ", K_MH "
             << K_MH << std::endl;
 
   // Pure H: rotation held.
-  const double       H = 100.;
-  const ResultsTable pure_H =
-    test_support::run(scene(" set Stiffness coefficients = false\n"
-                            " set Horizontal force = 100\n"
-                            " set Held motions = rotation\n"));
+  const double       H      = 100.;
+  const ResultsTable pure_H = test_support::run(
+    test_support::tied_footing(" set Stiffness coefficients = false\n"
+                               " set Horizontal force = 100\n"
+                               " set Held motions = rotation\n"));
   const double u      = pure_H.get("foundation_horizontal_displacement", h, 0);
   const double theta  = pure_H.get("foundation_rotation", h, 0);
   const double M_hold = pure_H.get("held_rotation_reaction", h, 0);
@@ -98,16 +92,17 @@ main(int argc, char **argv)
       const std::string at = " (z_ref = " + z_ref + " m)";
       const std::string reference =
         " set Reference elevation = " + z_ref + "\n";
-      const ResultsTable free_here = test_support::run(
-        scene(" set Stiffness coefficients = true\n" + reference));
-      const double K_M_here  = free_here.get("K_M", h, 0),
-                   K_MH_here = free_here.get("K_MH", h, 0);
-      const double       M   = 50.;
-      const ResultsTable pure_M =
-        test_support::run(scene(" set Stiffness coefficients = false\n"
-                                " set Moment = 50\n"
-                                " set Held motions = u\n" +
-                                reference));
+      const ResultsTable free_here =
+        test_support::run(test_support::tied_footing(
+          " set Stiffness coefficients = true\n" + reference));
+      const double K_M_here     = free_here.get("K_M", h, 0),
+                   K_MH_here    = free_here.get("K_MH", h, 0);
+      const double       M      = 50.;
+      const ResultsTable pure_M = test_support::run(
+        test_support::tied_footing(" set Stiffness coefficients = false\n"
+                                   " set Moment = 50\n"
+                                   " set Held motions = u\n" +
+                                   reference));
       const double u_M = pure_M.get("foundation_horizontal_displacement", h, 0);
       const double theta_M = pure_M.get("foundation_rotation", h, 0);
       const double H_hold  = pure_M.get("held_u_reaction", h, 0);

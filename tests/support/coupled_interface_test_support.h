@@ -5,6 +5,7 @@
 #define fourier_ssi_tests_coupled_interface_test_support_h
 
 #include "factorized_scene.h"
+#include "two_ranks.h"
 
 #include <fourier_ssi/coupled/coupled_interface_solver.h>
 #include <iostream>
@@ -80,6 +81,27 @@ namespace coupled_test
       }
     results.n_harmonics = scene.set.size();
     return results;
+  }
+
+  /**
+   * solve_steps() alone on every rank and then with the harmonics over the
+   * ranks (two_ranks::serial_and_distributed), the converged step counts
+   * compared on rank 0; (serial, distributed), meaningful on rank 0.
+   */
+  inline std::pair<StepResults, StepResults>
+  solve_steps_serial_and_distributed(const std::string &name,
+                                     const std::string &text)
+  {
+    auto pair = two_ranks::serial_and_distributed(
+      [&](const bool distribute, std::ostream &log) {
+        return solve_steps(text, distribute, log);
+      },
+      name + ", harmonics distributed over 2 ranks:");
+    if (two_ranks::is_root())
+      check::equal(name + ": converged steps, 2 ranks vs 1",
+                   pair.second.steps.size(),
+                   pair.first.steps.size());
+    return pair;
   }
 
   /** The serial solve_steps() as a lateral (H, u) curve. */
