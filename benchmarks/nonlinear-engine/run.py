@@ -13,8 +13,9 @@ Four solvers side by side in this one invocation, RUNS times each
 (default 3, medians; a case that fails or times out is run once):
   * newton65: this build, Stiffness = tangent, Theta samples = 65 =
     2 n_max + 1 (one sample per degree of freedom of the band-limited gap);
-  * newton:  this build, Load path/Stiffness = tangent, the
-    default Theta samples 4 (n_max + 1) = 132;
+  * newton:  this build, Load path/Stiffness = tangent, Theta samples =
+    4 (n_max + 1) = 132 (the default before Newton's default became
+    2 n_max + 1; set explicitly so that the table stays reproducible);
   * initial: this build, Stiffness = initial, Acceleration = anderson (the
     same iteration as before, with the convergence test against the
     internal force scale);
@@ -68,6 +69,8 @@ def scene(kappa, solver, out):
         text += "  set Stiffness = tangent\n"
         if solver in ("newton65", "main65"):
             text += "  set Theta samples = 65\n"
+        elif solver == "newton":
+            text += "  set Theta samples = 132\n"
     else:
         text += "  set Maximum iterations = 20000\n"
         if solver == "initial":
@@ -180,7 +183,7 @@ def write_table(rows, runs, load):
            "n = 0..32, tensionless Coulomb mu = 0.3, 4 displacement steps to "
            "ubar = 1e-3 m; kappa = kn r0 / G. newton65: Stiffness = tangent, "
            "Theta samples = 65 = 2 n_max + 1; newton: Stiffness = tangent, "
-           "the default 132 samples; "
+           "Theta samples = 132 = 4 (n_max + 1); "
            "initial: Stiffness = initial, Anderson, this build; main: the "
            "main build, Anderson. Fixed-point runs: Maximum iterations "
            "20000 per step. The main build is /work/main/build/fourier-ssi as "
