@@ -16,20 +16,6 @@ namespace FourierSSI
     const std::string entry = "Load path";
 
     /**
-     * Contact (augmented Lagrangian): the multipliers have converged when
-     * an update moves the origin of the return by no more than this times
-     * Tolerance times the largest relative displacement. The force test
-     * leaves the displacements uncertain by about Tolerance times their
-     * size, so the penetration cannot be driven below that; on the disc in
-     * a ring the updates contract by 15-20 each down to 2.4e-10 of the
-     * largest relative displacement at Tolerance 1e-10, and stall there.
-     */
-    constexpr double contact_tolerance = 10.;
-
-    /** Uzawa updates of the contact multipliers before the step is cut. */
-    constexpr unsigned int maximum_multiplier_updates = 50;
-
-    /**
      * With growth n_max is Maximum harmonic, so that the samples (and the
      * state kept at them) stay valid when harmonics are added.
      */
@@ -40,22 +26,12 @@ namespace FourierSSI
     {
       const unsigned int n_max =
         std::max(highest_harmonic(list), settings.maximum_harmonic);
-      // Exact contact, or Newton on a stiff penalty, at more than
-      // 2 n_max + 1 samples asks a band-limited gap to vanish at more samples
-      // than it has values (doc/nonlinear-interfaces.md sections 5b, 5d):
-      // the contact edge then has no consistent active set and the updates
-      // wander. Their default is one sample per value; the
-      // initial-stiffness iteration keeps the general default.
-      const bool contact =
-        std::any_of(interfaces.laws.begin(),
-                    interfaces.laws.end(),
-                    [](const auto &entry) { return entry.second.contact; });
-      const bool one_sample_per_value = contact || settings.tangent_stiffness;
-      return FourierSSI::theta_samples_for(n_max,
-                                           settings.theta_samples == 0 &&
-                                               one_sample_per_value ?
-                                             2 * n_max + 1 :
-                                             settings.theta_samples);
+      // Exact contact and Newton on a stiff penalty take one sample per
+      // value of the gap; the initial-stiffness iteration keeps the general
+      // default.
+      return interfaces.any_contact() || settings.tangent_stiffness ?
+               constrained_theta_samples(n_max, settings.theta_samples) :
+               FourierSSI::theta_samples_for(n_max, settings.theta_samples);
     }
 
     std::string
@@ -520,16 +496,14 @@ namespace FourierSSI
         // Augmented Lagrangian (section 5d): lambda <- t, until the
         // multipliers no longer move the origin of the return by more
         // than the force test resolves.
-        double largest = 0.;
-        for (const LocalVector &d : e.relative)
-          for (const double v : d)
-            largest = std::max(largest, std::abs(v));
         const double violation =
           interface.update_multipliers(e.traction, state.slip, state.origin);
         result.multiplier_updates = update + 1;
-        if (violation <= contact_tolerance * settings.tolerance * largest)
+        if (NonlinearInterfacePoints::multipliers_converged(violation,
+                                                            e.relative,
+                                                            settings.tolerance))
           break;
-        if (update == maximum_multiplier_updates)
+        if (update == NonlinearInterfacePoints::maximum_multiplier_updates)
           return false;
       }
     return accept(target, e, iterations, state, result, snapshot);

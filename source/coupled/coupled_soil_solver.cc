@@ -129,6 +129,12 @@ namespace FourierSSI
     , sampling(harmonics,
                theta_samples_for(highest_harmonic(harmonics),
                                  parameters.load_path.theta_samples))
+    , interface_sampling(
+        harmonics,
+        parameters.interfaces.any_contact() ?
+          constrained_theta_samples(highest_harmonic(harmonics),
+                                    parameters.load_path.theta_samples) :
+          sampling.n_samples())
   {
     for (const Harmonic &h : harmonics)
       operators.emplace_back(h);
@@ -155,9 +161,13 @@ namespace FourierSSI
     committed.plastic.assign(points.size() * sampling.n_samples(),
                              {{0., 0., 0., 0., 0., 0.}});
     if (interface)
-      committed.interface_plastic.assign(interface->size() *
-                                           sampling.n_samples(),
-                                         {{0., 0., 0.}});
+      {
+        committed.interface_plastic.assign(interface->size() *
+                                             interface_sampling.n_samples(),
+                                           {{0., 0., 0.}});
+        committed.interface_origin = committed.interface_plastic;
+        committed.interface_slip   = committed.interface_plastic;
+      }
   }
 
   void
@@ -276,7 +286,7 @@ namespace FourierSSI
     pattern_strain = strain_amplitudes(loads.solution);
     if (interface)
       pattern_relative =
-        interface->relative_displacements(loads.solution, sampling);
+        interface->relative_displacements(loads.solution, interface_sampling);
   }
 
   void
@@ -286,8 +296,8 @@ namespace FourierSSI
       return;
     held_strain = strain_amplitudes(loads.held_solution);
     if (interface)
-      held_relative =
-        interface->relative_displacements(loads.held_solution, sampling);
+      held_relative = interface->relative_displacements(loads.held_solution,
+                                                        interface_sampling);
     if (parameters.rigid_foundation.swipes())
       {
         loads.add_swipe_pattern(set);
@@ -411,7 +421,7 @@ namespace FourierSSI
     const double                       held_fraction) const
   {
     std::vector<LocalVector> relative =
-      interface->relative_displacements(correction, sampling);
+      interface->relative_displacements(correction, interface_sampling);
     for (unsigned int k = 0; k < relative.size(); ++k)
       for (unsigned int c = 0; c < 3; ++c)
         relative[k][c] +=
@@ -677,6 +687,7 @@ namespace FourierSSI
         std::vector<LocalVector> interface_plastic;
         InterfaceSnapshot        snapshot;
         add_interface_load(relative_samples(fields, 0., 0.),
+                           committed.interface_origin,
                            interface_plastic,
                            snapshot,
                            load);
@@ -687,19 +698,16 @@ namespace FourierSSI
   ContactCounts
   CoupledSoilSolver::add_interface_load(
     const std::vector<LocalVector> &relative,
+    const std::vector<LocalVector> &origin,
     std::vector<LocalVector>       &plastic,
     InterfaceSnapshot              &snapshot,
     std::vector<Vector<double>>    &load) const
   {
-    snapshot.relative = relative;
-    const ContactCounts counts =
-      interface->return_map(relative,
-                            committed.interface_plastic,
-                            plastic,
-                            snapshot.traction,
-                            snapshot.state);
+    snapshot.relative          = relative;
+    const ContactCounts counts = interface->return_map(
+      relative, origin, plastic, snapshot.traction, snapshot.state);
     const std::vector<Vector<double>> interface_load =
-      interface->load_of(plastic, sampling);
+      interface->load_of(plastic, interface_sampling);
     for (unsigned int h = 0; h < set.size(); ++h)
       load[h] += interface_load[h];
     return counts;
@@ -711,7 +719,8 @@ namespace FourierSSI
   {
     update_tangent(strain_samples(fields, 0., 0.),
                    interface ? relative_samples(fields, 0., 0.) :
-                               std::vector<LocalVector>());
+                               std::vector<LocalVector>(),
+                   committed.interface_origin);
     std::vector<Vector<double>> y;
     tangent->vmult(y, x);
     return y;
@@ -1033,9 +1042,11 @@ namespace FourierSSI
   }
 
   void
-  CoupledSoilSolver::update_tangent(const std::vector<StrainVector> &strain,
-                                    const std::vector<LocalVector>  &relative,
-                                    const bool displacement_control)
+  CoupledSoilSolver::update_tangent(
+    const std::vector<StrainVector> &strain,
+    const std::vector<LocalVector>  &relative,
+    const std::vector<LocalVector>  &interface_origin,
+    const bool                       displacement_control)
   {
     const unsigned int H = set.size();
     // 1. S_hg = theta integral of factor_h (D_e - D_ep) factor_g per point,
@@ -1073,8 +1084,8 @@ namespace FourierSSI
     //    that slip or open.
     if (interface)
       interface->add_softening(relative,
-                               committed.interface_plastic,
-                               sampling,
+                               interface_origin,
+                               interface_sampling,
                                *tangent);
     if (displacement_control)
       add_control_stiffening();
@@ -1234,6 +1245,7 @@ namespace FourierSSI
     for (unsigned int h = 0; h < set.size(); ++h)
       interface_load[h].reinit(e.residual[h].size());
     result.contact    = add_interface_load(e.relative,
+                                        state.interface_origin,
                                         e.interface_plastic,
                                         result.interface_state,
                                         interface_load);
@@ -1254,8 +1266,18 @@ namespace FourierSSI
     count_over_ranks(result);
     state.plastic           = std::move(e.plastic);
     state.interface_plastic = std::move(e.interface_plastic);
-    result.iterations       = iteration;
-    result.residual         = e.scale.relative(e.residual_norm);
+    if (interface)
+      {
+        // Exact contact keeps its slip apart; its origin carries lambda = t
+        // into the next step (NonlinearInterfacePoints::commit_contact).
+        interface->commit_contact(e.relative,
+                                  result.interface_state.traction,
+                                  state.interface_slip,
+                                  state.interface_plastic);
+        state.interface_origin = state.interface_plastic;
+      }
+    result.iterations = iteration;
+    result.residual   = e.scale.relative(e.residual_norm);
   }
 
   CoupledSoilSolver::NewtonMove
@@ -1298,7 +1320,10 @@ namespace FourierSSI
     newton.step_length   = 1.;
     // Rebuilt at every update: keeping it for 3-10 updates (modified
     // Newton) was measured slower (doc/soil-plasticity.md 3b).
-    update_tangent(e.strain, e.relative, displacement_control);
+    update_tangent(e.strain,
+                   e.relative,
+                   state.interface_origin,
+                   displacement_control);
     e.residual = tangent_correction(e.residual, displacement_control);
     ++newton.updates;
     return NewtonMove::updated;
@@ -1332,12 +1357,48 @@ namespace FourierSSI
                                 SoilStepResult &result)
   {
     // Holding: the held loads come on at a fixed load factor.
-    const bool displacement_control =
-      !holding && settings.control == LoadPathParameters::Control::displacement;
     if (holding)
       state.held_fraction = target;
     // A swipe holds w from the end of the held stage on.
     swiping = !holding && parameters.rigid_foundation.swipes();
+    Evaluation   e;
+    unsigned int iterations = 0;
+    for (unsigned int update = 0;; ++update)
+      {
+        if (!iterate(target, holding, state, result, e, iterations))
+          return false;
+        if (!interface || !interface->any_contact())
+          break;
+        // Augmented Lagrangian (doc/nonlinear-interfaces.md section 5d):
+        // lambda <- t at the contact samples, until the multipliers no
+        // longer move the origin of the return by more than the force test
+        // resolves.
+        const double violation =
+          interface->update_multipliers(result.interface_state.traction,
+                                        state.interface_slip,
+                                        state.interface_origin);
+        result.multiplier_updates = update + 1;
+        if (NonlinearInterfacePoints::multipliers_converged(violation,
+                                                            e.relative,
+                                                            settings.tolerance))
+          break;
+        if (update == NonlinearInterfacePoints::maximum_multiplier_updates)
+          return false;
+      }
+    accept(e, iterations, state, result);
+    return true;
+  }
+
+  bool
+  CoupledSoilSolver::iterate(const double    target,
+                             const bool      holding,
+                             StepState      &state,
+                             SoilStepResult &result,
+                             Evaluation     &e,
+                             unsigned int   &iterations)
+  {
+    const bool displacement_control =
+      !holding && settings.control == LoadPathParameters::Control::displacement;
     const bool tangent_stiffness = parameters.soil_plasticity.tangent;
     FixedPointAcceleration acceleration(acceleration_of(settings,
                                                         tangent_stiffness),
@@ -1354,12 +1415,12 @@ namespace FourierSSI
           state.load_factor = displacement_control ?
                                 controlled_load_factor(state, target) :
                                 target;
-        Evaluation e = evaluate(state, result);
+        e = evaluate(state, result);
         if (!std::isfinite(e.residual_norm))
           return false;
         if (e.scale.converged(e.residual_norm, settings.tolerance))
           {
-            accept(e, iteration, state, result);
+            iterations += iteration;
             return true;
           }
         if (tangent_stiffness)
@@ -1453,6 +1514,10 @@ namespace FourierSSI
         << settings.load_steps << " steps, tolerance " << settings.tolerance
         << ", " << iteration_name(settings, parameters.soil_plasticity.tangent)
         << (cells.front().projection ? ", B-bar" : "") << '\n';
+    if (interface)
+      interface->describe(log,
+                          interface_sampling.n_samples(),
+                          highest_harmonic(harmonics));
     write_held_motions(log, "");
     LoadPath(settings, entry, *this).run(log);
     if (set.n_owning_ranks() > 1)
@@ -1510,6 +1575,8 @@ namespace FourierSSI
     if (interface)
       log << "interface stick/slip/open " << result.contact[0] << '/'
           << result.contact[1] << '/' << result.contact[2] << "; ";
+    if (result.multiplier_updates > 0)
+      log << result.multiplier_updates << " multiplier updates; ";
     log << result.time << " s" << std::endl;
   }
 
@@ -1553,7 +1620,7 @@ namespace FourierSSI
     std::vector<InterfaceSnapshot> snapshots;
     for (const SoilStepResult &step : steps)
       snapshots.push_back(step.interface_state);
-    interface->write_state_csv(filename, snapshots, sampling);
+    interface->write_state_csv(filename, snapshots, interface_sampling);
   }
 
   void

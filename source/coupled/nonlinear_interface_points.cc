@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cmath>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/lac/full_matrix.h>
 #include <fourier_ssi/coupled/nonlinear_interface_points.h>
@@ -351,6 +352,19 @@ namespace FourierSSI
               origin[k][c] -= change;
             }
     return violation;
+  }
+
+  bool
+  NonlinearInterfacePoints::multipliers_converged(
+    const double                    violation,
+    const std::vector<LocalVector> &relative,
+    const double                    tolerance)
+  {
+    double largest = 0.;
+    for (const LocalVector &d : relative)
+      for (const double v : d)
+        largest = std::max(largest, std::abs(v));
+    return violation <= 10. * tolerance * largest;
   }
 
   void

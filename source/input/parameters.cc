@@ -418,15 +418,10 @@ namespace FourierSSI
             VolumetricStrain::standard;
     }
 
-    /** Interface laws and soil laws that do not go together. */
+    /** Every soil law on a material that exists. */
     void
     check_laws(const AllParameters &parameters)
     {
-      for (const auto &[id, law] : parameters.interfaces.laws)
-        AssertThrow(!law.contact || !parameters.soil_plasticity.any(),
-                    ExcMessage("Interfaces/Interfaces: not yet: contact with "
-                               "Soil plasticity (boundary id " +
-                               std::to_string(id) + "; use coulomb)"));
       for (const auto &law : parameters.soil_plasticity.laws)
         AssertThrow(parameters.materials.has(law.first),
                     ExcMessage("Soil plasticity/Laws: material " +

@@ -331,6 +331,14 @@ namespace FourierSSI
     });
   }
 
+  bool
+  InterfaceParameters::any_contact() const
+  {
+    return std::any_of(laws.begin(), laws.end(), [](const auto &entry) {
+      return entry.second.contact;
+    });
+  }
+
   MohrCoulombInterface::MohrCoulombInterface(const InterfaceLaw &law)
     : MohrCoulombInterface(law, law.normal, law.shear)
   {}

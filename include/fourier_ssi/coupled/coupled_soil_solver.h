@@ -83,6 +83,8 @@ namespace FourierSSI
      * (all zero without).
      */
     ContactCounts contact = {{0, 0, 0}};
+    /** `contact` interfaces: Uzawa updates of the multipliers (0 without). */
+    unsigned int multiplier_updates = 0;
     /** Largest f(t) of the coulomb interfaces [kPa] (<= 0 admissible). */
     double largest_interface_yield_value = 0.;
     /** The coulomb interfaces at every (point, theta) (empty without). */
@@ -101,6 +103,13 @@ namespace FourierSSI
     std::vector<StrainVector> plastic;
     /** Coulomb interfaces: d_p per (interface point, theta). */
     std::vector<LocalVector> interface_plastic;
+    /**
+     * Nonlinear interfaces: the origin of the return per (interface point,
+     * theta), d_p of the last converged step; at `contact` samples it also
+     * carries the multipliers (NonlinearInterfacePoints::update_multipliers)
+     * and the slip p_c is kept apart.
+     */
+    std::vector<LocalVector> interface_origin, interface_slip;
   };
 
   class CoupledSoilSolver : private LoadPathStates<SoilStepState>
@@ -315,12 +324,13 @@ namespace FourierSSI
                      const double                       held_fraction) const;
 
     /**
-     * Coulomb interfaces at the relative displacements given: the return
-     * mapping from the committed state into `plastic` and `snapshot`, and
+     * Nonlinear interfaces at the relative displacements given: the return
+     * mapping from `origin` into `plastic` and `snapshot`, and
      * their out-of-balance load added to `load`; the sample counts.
      */
     ContactCounts
     add_interface_load(const std::vector<LocalVector> &relative,
+                       const std::vector<LocalVector> &origin,
                        std::vector<LocalVector>       &plastic,
                        InterfaceSnapshot              &snapshot,
                        std::vector<Vector<double>>    &load) const;
@@ -488,6 +498,20 @@ namespace FourierSSI
                SoilStepResult &result);
 
     /**
+     * The iteration of solve_step() at fixed contact multipliers: Newton
+     * (Stiffness = tangent) or the accelerated initial-stiffness iteration
+     * until the force test holds (true; `e` the converged evaluation,
+     * `iterations` raised by the iterations taken) or the step must be cut.
+     */
+    bool
+    iterate(const double    target,
+            const bool      holding,
+            StepState      &state,
+            SoilStepResult &result,
+            Evaluation     &e,
+            unsigned int   &iterations);
+
+    /**
      * F_held,h: the held loads of harmonic h (held_stage_load: Rigid
      * foundation/Held ..., body force and tractions; zero without).
      */
@@ -571,6 +595,7 @@ namespace FourierSSI
     void
     update_tangent(const std::vector<StrainVector> &strain,
                    const std::vector<LocalVector>  &relative,
+                   const std::vector<LocalVector>  &interface_origin,
                    const bool displacement_control = false);
 
     /**
@@ -635,12 +660,17 @@ namespace FourierSSI
     void
     count_over_ranks(SoilStepResult &result) const;
 
-    const HarmonicSet                     &set;
-    const AllParameters                   &parameters;
-    LoadPathParameters                     settings;
-    std::vector<Harmonic>                  harmonics;
-    std::vector<HarmonicOperator>          operators;
-    ThetaSampling                          sampling;
+    const HarmonicSet            &set;
+    const AllParameters          &parameters;
+    LoadPathParameters            settings;
+    std::vector<Harmonic>         harmonics;
+    std::vector<HarmonicOperator> operators;
+    ThetaSampling                 sampling;
+    /**
+     * The nonlinear interfaces' samples: those of the soil, but 2 n_max + 1
+     * by default with `contact` (constrained_theta_samples()).
+     */
+    ThetaSampling                          interface_sampling;
     std::vector<SoilLaw>                   laws;
     std::vector<SoilCell>                  cells;
     std::vector<SoilPoint>                 points;

@@ -62,6 +62,23 @@ namespace FourierSSI
   unsigned int
   theta_samples_for(const unsigned int n_max, const unsigned int requested);
 
+  /**
+   * theta_samples_for() where a condition must hold at every sample of a
+   * band-limited field (exact contact, Newton on a stiff penalty): the
+   * automatic N is 2 n_max + 1, one sample per value. More samples ask a
+   * band-limited gap to vanish at more samples than it has values
+   * (doc/nonlinear-interfaces.md sections 5b, 5d): the contact edge then has
+   * no consistent active set and the iteration wanders.
+   */
+  inline unsigned int
+  constrained_theta_samples(const unsigned int n_max,
+                            const unsigned int requested)
+  {
+    return theta_samples_for(n_max,
+                             requested == 0 ? minimum_theta_samples(n_max) :
+                                              requested);
+  }
+
   class ThetaSampling
   {
   public:

@@ -145,6 +145,10 @@ namespace FourierSSI
     bool
     any_nonlinear() const;
 
+    /** True if some interface is `contact` (exact, augmented Lagrangian). */
+    bool
+    any_contact() const;
+
     std::map<types::boundary_id, InterfaceLaw> laws;
     /** Twin faces and nodes must coincide within this times face length. */
     double pairing_tolerance = 1e-8;
