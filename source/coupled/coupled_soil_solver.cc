@@ -129,12 +129,10 @@ namespace FourierSSI
     , sampling(harmonics,
                theta_samples_for(highest_harmonic(harmonics),
                                  parameters.load_path.theta_samples))
-    , interface_sampling(
-        harmonics,
-        parameters.interfaces.any_contact() ?
-          constrained_theta_samples(highest_harmonic(harmonics),
-                                    parameters.load_path.theta_samples) :
-          sampling.n_samples())
+    , interface_sampling(harmonics,
+                         parameters.interfaces.any_contact() ?
+                           minimum_theta_samples(highest_harmonic(harmonics)) :
+                           sampling.n_samples())
   {
     for (const Harmonic &h : harmonics)
       operators.emplace_back(h);
@@ -1441,14 +1439,24 @@ namespace FourierSSI
   }
 
   std::vector<std::pair<FoundationMotion, double>>
-  CoupledSoilSolver::held_reactions(const StepState &state) const
+  CoupledSoilSolver::held_reactions(
+    const StepState         &state,
+    const InterfaceSnapshot &interface_state) const
   {
     const std::vector<FoundationMotion> held =
       parameters.rigid_foundation.reported_motions();
-    if (held.empty() || interface)
+    if (held.empty())
       return {};
-    const std::vector<Vector<double>> plastic_load =
-      load_of(state.plastic, false);
+    std::vector<Vector<double>> plastic_load = load_of(state.plastic, false);
+    if (interface)
+      {
+        const std::vector<Vector<double>> interface_load =
+          interface->load_of(interface->spring_plastic(interface_state),
+                             interface_sampling,
+                             false);
+        for (unsigned int h = 0; h < set.size(); ++h)
+          plastic_load[h] += interface_load[h];
+      }
     // One value per held motion, from the owner of its harmonic.
     std::vector<double> values(held.size(), 0.);
     for (unsigned int h = 0; h < set.size(); ++h)
@@ -1563,7 +1571,7 @@ namespace FourierSSI
     commit(result, step);
     if (holding)
       swipe_settlement = result.motion.vertical_displacement;
-    result.held_reactions = held_reactions(committed);
+    result.held_reactions = held_reactions(committed, result.interface_state);
     steps.push_back(result);
     if (step_observer)
       step_observer(result);
@@ -1606,9 +1614,6 @@ namespace FourierSSI
     for (const auto &[held, load] : result.held_reactions)
       log << "; " << parameters.rigid_foundation.reaction_label(held) << " "
           << load << " " << load_unit_of(held);
-    if (!parameters.rigid_foundation.held_motions.empty() && interface)
-      log << "; the loads that hold the held motions: not yet with coulomb "
-             "interfaces";
   }
 
   void

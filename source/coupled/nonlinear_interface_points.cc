@@ -354,6 +354,24 @@ namespace FourierSSI
     return violation;
   }
 
+  std::vector<LocalVector>
+  NonlinearInterfacePoints::spring_plastic(const InterfaceSnapshot &state) const
+  {
+    const unsigned int N = state.relative.size() / std::max<size_t>(size(), 1);
+    std::vector<LocalVector> plastic(state.relative.size());
+    for (unsigned int i = 0; i < points.size(); ++i)
+      for (unsigned int j = 0; j < N; ++j)
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            const unsigned int k = i * N + j;
+            plastic[k][c] =
+              state.relative[k][c] -
+              (state.traction[k][c] - points[i].initial_traction[c]) /
+                stiffness[points[i].law][c];
+          }
+    return plastic;
+  }
+
   bool
   NonlinearInterfacePoints::multipliers_converged(
     const double                    violation,
@@ -407,7 +425,8 @@ namespace FourierSSI
 
   std::vector<Vector<double>>
   NonlinearInterfacePoints::load_of(const std::vector<LocalVector> &plastic,
-                                    const ThetaSampling &sampling) const
+                                    const ThetaSampling            &sampling,
+                                    const bool condensed) const
   {
     const unsigned int          N = sampling.n_samples(), H = set.size();
     std::vector<Vector<double>> load(H);
@@ -454,9 +473,13 @@ namespace FourierSSI
                     local(3 * k + c) -= f[c];
                   }
               }
-            set.problem(h)
-              .get_homogeneous_constraints()
-              .distribute_local_to_global(local, pair.dof_indices, load[h]);
+            if (condensed)
+              set.problem(h)
+                .get_homogeneous_constraints()
+                .distribute_local_to_global(local, pair.dof_indices, load[h]);
+            else
+              for (unsigned int d = 0; d < local.size(); ++d)
+                load[h](pair.dof_indices[d]) += local(d);
           }
       }
     return load;

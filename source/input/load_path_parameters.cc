@@ -12,10 +12,12 @@ namespace FourierSSI
         "Theta samples",
         "0",
         Patterns::Integer(0, LoadPathParameters::most_theta_samples),
-        "Angles N at which the interface law is evaluated. 0: "
-        "4 (n_max + 1); 2 n_max + 1 (one sample per value of a "
-        "band-limited gap) with a contact interface or Stiffness = "
-        "tangent in an interface-only scene. Must exceed 2 n_max (n_max "
+        "Angles N at which the interface law and the soil law are "
+        "evaluated. 0: 4 (n_max + 1); 2 n_max + 1 (one sample per value "
+        "of a band-limited gap) with a contact interface or Stiffness = "
+        "tangent in an interface-only scene. With plastic soil it sets "
+        "the soil's samples, and a contact interface always takes "
+        "2 n_max + 1. Must exceed 2 n_max (n_max "
         "the highest harmonic), else a band-limited field aliases. At "
         "most 8192; the memory of the coupled state (N times "
         "the soil's quadrature points) is checked against the "

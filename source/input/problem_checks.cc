@@ -59,11 +59,13 @@ namespace FourierSSI
       if (!f.probes_direction() || !parameters.coupled())
         return;
       const std::string entry = "Rigid foundation/Motion direction";
-      AssertThrow(!parameters.interfaces.any_nonlinear(),
-                  ExcMessage(entry + ": not yet with coulomb interfaces (the "
-                                     "probe's H and M are read from the "
-                                     "soil's nodal forces, which the "
-                                     "interface solver does not report)"));
+      AssertThrow(!parameters.interfaces.any_nonlinear() ||
+                    parameters.soil_plasticity.any(),
+                  ExcMessage(entry + ": not yet with nonlinear interfaces on "
+                                     "elastic soil (the probe's H and M are "
+                                     "read from the nodal forces, which the "
+                                     "interface solver does not report; "
+                                     "with Soil plasticity/Laws it runs)"));
       AssertThrow(parameters.discretization.target_accuracy == 0.,
                   ExcMessage(entry + ": not yet with Discretization/Target "
                                      "accuracy (the capacity with error bars "

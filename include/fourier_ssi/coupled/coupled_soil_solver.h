@@ -91,7 +91,7 @@ namespace FourierSSI
     InterfaceSnapshot interface_state;
     /**
      * The load that holds each of Rigid foundation/Held motions [kN or
-     * kN m] (held_reactions(); empty without, or with coulomb interfaces).
+     * kN m] (held_reactions(); empty without).
      */
     std::vector<std::pair<FoundationMotion, double>> held_reactions;
   };
@@ -358,11 +358,13 @@ namespace FourierSSI
      * in a converged state: the work of the internal force K u - G(u)
      * (G unconstrained: load_of(plastic, false)) minus the body force
      * lambda f on the unit held motion (RigidFoundation::held_reactions).
-     * Empty without held motions; coulomb interfaces: not yet (their
-     * plastic load is only assembled condensed).
+     * The nonlinear interfaces' part of G is that of their tractions in
+     * `interface_state` (NonlinearInterfacePoints::spring_plastic). Empty
+     * without held motions.
      */
     std::vector<std::pair<FoundationMotion, double>>
-    held_reactions(const StepState &state) const;
+    held_reactions(const StepState         &state,
+                   const InterfaceSnapshot &interface_state) const;
 
     /**
      * int Bbar_h^T field dV over one cell (its local vector): `field` is
@@ -667,8 +669,10 @@ namespace FourierSSI
     std::vector<HarmonicOperator> operators;
     ThetaSampling                 sampling;
     /**
-     * The nonlinear interfaces' samples: those of the soil, but 2 n_max + 1
-     * by default with `contact` (constrained_theta_samples()).
+     * The nonlinear interfaces' samples: those of the soil, but with
+     * `contact` always 2 n_max + 1, one per value of the band-limited gap
+     * (constrained_theta_samples(): more make the multipliers drift), while
+     * Theta samples sets the soil's.
      */
     ThetaSampling                          interface_sampling;
     std::vector<SoilLaw>                   laws;

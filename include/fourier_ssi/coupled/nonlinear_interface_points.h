@@ -227,12 +227,23 @@ namespace FourierSSI
     /**
      * G_h = int int B_h^T D d_p of the plastic samples, every harmonic,
      * with the homogeneous constraints of each harmonic applied
-     * (distribute_local_to_global). Points without plastic part cost
-     * nothing.
+     * (distribute_local_to_global), or at the DoFs as they are
+     * (`condensed` false: a nodal force, as HarmonicProblem::nodal_forces
+     * gives them). Points without plastic part cost nothing.
      */
     std::vector<Vector<double>>
     load_of(const std::vector<LocalVector> &plastic,
-            const ThetaSampling            &sampling) const;
+            const ThetaSampling            &sampling,
+            const bool                      condensed = true) const;
+
+    /**
+     * d - D_K^-1 (t - t0) at every sample of a converged state, D_K the
+     * springs in K: K_i d minus load_of() of it is the nodal force of the
+     * tractions t - t0 the interface carries, whatever the law (for
+     * contact the committed origin is not that plastic part).
+     */
+    std::vector<LocalVector>
+    spring_plastic(const InterfaceSnapshot &state) const;
 
     /**
      * CSV of the interface state at every (point, theta sample) of every
