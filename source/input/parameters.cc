@@ -251,7 +251,7 @@ namespace FourierSSI
     prm.declare_entry("Soil reaction depths",
                       "",
                       Patterns::Anything(),
-                      "Soil-reaction curves of a rigid pile in plastic soil "
+                      "Soil-reaction curves of a pile in plastic soil "
                       "(PISA: p-v, m-psi, base H_B-v and M_B-psi, one point "
                       "per load step) at these depths [m below the pile's "
                       "head], or 'auto' (10 evenly spaced) or 'auto N'; "
