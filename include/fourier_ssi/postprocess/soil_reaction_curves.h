@@ -1,5 +1,5 @@
 /**
- * Soil-reaction curves of a rigid pile as the PISA design method uses them
+ * Soil-reaction curves of a pile as the PISA design method uses them
  * (Byrne et al. 2020, Burd et al. 2020): at chosen depths the lateral
  * reaction p [kN/m] against the pile's displacement v there, the
  * distributed moment m [kN m/m] against the rotation psi, and the base
