@@ -79,6 +79,11 @@ def main():
         raise SystemExit(f"{args.csv}: no rows")
     panels = DIMENSIONAL if args.dimensional else NORMALISED
     first = by_depth[min(by_depth)][0]
+    # A flexible pile's base turns by its own psi_base (a rigid pile's
+    # psi is the same at every depth and has no such column).
+    if args.dimensional and "psi_base [rad]" in first:
+        panels = panels[:3] + [("psi_base [rad]",) + panels[3][1:2] +
+                               ("psi_base [rad]",) + panels[3][3:]]
     clay = first["normalised by"] == "s_u"
     strength = "s_u" if clay else "sigma'_v"
     # m / (|p| D) is left out where p passes zero (sand, normalised).

@@ -259,6 +259,7 @@ namespace FourierSSI
         solver.applied_loads(step.load_factor, step.held_fraction);
       curves.record(shaft[h],
                     base[h],
+                    solver.solution(h),
                     step.motion,
                     loads[0],
                     moment_about_reference(loads, parameters.rigid_foundation));
@@ -284,6 +285,7 @@ namespace FourierSSI
           "soil_reaction_imbalance_H", any, step, imbalance.first, "-");
         results.add(
           "soil_reaction_imbalance_M", any, step, imbalance.second, "-");
+        reaction_curves->add_result_rows(results);
       }
     keep_last_step(solver);
     const Harmonic any{0, Family::symmetric};

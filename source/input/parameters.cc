@@ -251,12 +251,20 @@ namespace FourierSSI
     prm.declare_entry("Soil reaction depths",
                       "",
                       Patterns::Anything(),
-                      "Soil-reaction curves of a rigid pile in plastic soil "
+                      "Soil-reaction curves of a pile in plastic soil "
                       "(PISA: p-v, m-psi, base H_B-v and M_B-psi, one point "
                       "per load step) at these depths [m below the pile's "
                       "head], or 'auto' (10 evenly spaced) or 'auto N'; "
                       "written to soil-reaction-curves.csv "
                       "(doc/soil-reaction-curves.md). Empty: none.");
+    prm.declare_entry("Soil reaction pile",
+                      "auto",
+                      Patterns::Anything(),
+                      "The material id of the pile whose soil-reaction "
+                      "curves are written: a solid or hollow (tube) pile, "
+                      "rigid or an elastic material region loaded through "
+                      "the Rigid foundation's tied material. auto: the "
+                      "Rigid foundation's Id (a rigid pile).");
     prm.leave_subsection();
   }
 
@@ -304,6 +312,26 @@ namespace FourierSSI
   }
 
   void
+  OutputParameters::parse_soil_reaction_pile(const std::string &text)
+  {
+    soil_reaction_pile = -1;
+    if (text == "auto")
+      return;
+    const std::string message = "Output/Soil reaction pile: '" + text +
+                                "' is not 'auto' or a material id (0 to 255)";
+    try
+      {
+        soil_reaction_pile = Utilities::string_to_int(text);
+      }
+    catch (...)
+      {
+        AssertThrow(false, ExcMessage(message));
+      }
+    AssertThrow(soil_reaction_pile >= 0 && soil_reaction_pile <= 255,
+                ExcMessage(message));
+  }
+
+  void
   OutputParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Output");
@@ -319,6 +347,7 @@ namespace FourierSSI
          Utilities::split_string_list(prm.get("Theta values")))
       theta_degrees.push_back(Utilities::string_to_double(t));
     parse_soil_reaction_depths(prm.get("Soil reaction depths"));
+    parse_soil_reaction_pile(prm.get("Soil reaction pile"));
     lines.clear();
     for (const std::string &item : split_top_level(prm.get("Lines 3D"), ';'))
       {

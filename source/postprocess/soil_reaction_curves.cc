@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cmath>
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
@@ -9,6 +10,7 @@
 #include <fourier_ssi/postprocess/soil_reaction_curves.h>
 #include <iomanip>
 #include <limits>
+#include <set>
 #include <sstream>
 
 namespace FourierSSI
@@ -34,16 +36,25 @@ namespace FourierSSI
   SoilReactionCurves::SoilReactionCurves(const DoFHandler<2> &dofs,
                                          const AllParameters &parameters)
     : parameters(parameters)
+    , pile_id(parameters.output.soil_reaction_pile >= 0 ?
+                parameters.output.soil_reaction_pile :
+                parameters.rigid_foundation.id)
     , line_fe(dofs.get_fe().degree)
   {
+    // The loads reach the pile through the Rigid foundation's tied
+    // material (the pile itself, or a ring on a flexible pile's head).
     AssertThrow(parameters.rigid_foundation.enabled &&
                   parameters.rigid_foundation.tie == FoundationTie::material,
-                ExcMessage(entry + ": needs a rigid pile (Rigid foundation/"
-                                   "Enabled = true, Tie = material)"));
+                ExcMessage(entry + ": needs a Rigid foundation with Tie = "
+                                   "material (the pile, or a ring on its "
+                                   "head that carries the loads)"));
+    rigid_pile = pile_id == parameters.rigid_foundation.id;
     find_pile(dofs.get_triangulation());
     find_touching_cells(dofs.get_triangulation());
     make_shaft_line(dofs);
     map_shaft_nodes(dofs);
+    if (!rigid_pile)
+      make_section_weights(dofs);
     choose_depths();
   }
 
@@ -53,46 +64,84 @@ namespace FourierSSI
     double r_min = std::numeric_limits<double>::max();
     top          = -std::numeric_limits<double>::max();
     toe          = std::numeric_limits<double>::max();
-    bool found   = false;
+    bool   found = false;
+    double area  = 0.;
     for (const auto &cell : triangulation.active_cell_iterators())
-      if (cell->material_id() == parameters.rigid_foundation.id)
-        for (const unsigned int v : cell->vertex_indices())
-          {
-            const Point<2> &x = cell->vertex(v);
-            found             = true;
-            r_min             = std::min(r_min, x[0]);
-            pile_radius       = std::max(pile_radius, x[0]);
-            top               = std::max(top, x[1]);
-            toe               = std::min(toe, x[1]);
-          }
+      if (cell->material_id() == pile_id)
+        {
+          area += cell->measure();
+          for (const unsigned int v : cell->vertex_indices())
+            {
+              const Point<2> &x = cell->vertex(v);
+              found             = true;
+              r_min             = std::min(r_min, x[0]);
+              pile_radius       = std::max(pile_radius, x[0]);
+              top               = std::max(top, x[1]);
+              toe               = std::min(toe, x[1]);
+            }
+        }
     AssertThrow(found,
-                ExcMessage(entry + ": no cell of the Rigid foundation's "
-                                   "material (Id)"));
-    AssertThrow(r_min <= tolerance(top - toe),
-                ExcMessage(entry + ": not yet for a hollow pile (the tied "
-                                   "material does not reach the axis): the "
-                                   "soil plug inside would react too"));
+                ExcMessage(entry + ": no cell of the pile's material " +
+                           std::to_string(pile_id) +
+                           " (Output/Soil reaction pile, or the Rigid "
+                           "foundation's Id)"));
+    hollow      = r_min > tolerance(top - toe);
+    bore_radius = hollow ? r_min : 0.;
+    // Its cells fill the rectangle r_i <= r <= R, toe <= z <= top (a
+    // solid cylinder or a tube's wall), else the outline below is wrong.
+    const double box = (pile_radius - bore_radius) * (top - toe);
+    AssertThrow(std::abs(area - box) <= 1e-9 * box,
+                ExcMessage(entry + ": not yet for a pile whose material " +
+                           std::to_string(pile_id) +
+                           " is not one rectangle in (r, z) (a solid "
+                           "cylinder or a tube's wall)"));
+  }
+
+  bool
+  SoilReactionCurves::on_outline(const Point<2> &x) const
+  {
+    // The outer face r = R, a tube's inner face r = r_i, and the base
+    // z = toe (the disc r <= R, or the annulus r_i <= r <= R).
+    const double tol     = tolerance(top - toe);
+    const bool   on_span = x[1] >= toe - tol && x[1] <= top + tol;
+    return (std::abs(x[0] - pile_radius) <= tol && on_span) ||
+           (hollow && std::abs(x[0] - bore_radius) <= tol && on_span) ||
+           (std::abs(x[1] - toe) <= tol && x[0] <= pile_radius + tol &&
+            x[0] >= bore_radius - tol);
   }
 
   void
   SoilReactionCurves::find_touching_cells(const Triangulation<2> &triangulation)
   {
     // A soil cell touches the pile if one of its vertices lies on the
-    // pile's outline (the shaft r = R or the base z = toe).
-    const double tol     = tolerance(top - toe);
-    const auto   on_pile = [&](const Point<2> &x) {
-      return (std::abs(x[0] - pile_radius) <= tol && x[1] >= toe - tol &&
-              x[1] <= top + tol) ||
-             (std::abs(x[1] - toe) <= tol && x[0] <= pile_radius + tol);
-    };
+    // pile's outline (on_outline). The tied material of a flexible pile
+    // carries the loads to it: soil touching that material elsewhere
+    // would take a share the curves miss.
+    const types::material_id            tied = parameters.rigid_foundation.id;
+    std::set<std::pair<double, double>> tied_vertices;
+    if (!rigid_pile)
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->material_id() == tied)
+          for (const unsigned int v : cell->vertex_indices())
+            tied_vertices.insert(key_of(cell->vertex(v)));
     const auto &laws = parameters.soil_plasticity.laws;
     for (const auto &cell : triangulation.active_cell_iterators())
       {
-        if (cell->material_id() == parameters.rigid_foundation.id)
+        if (cell->material_id() == pile_id || cell->material_id() == tied)
           continue;
         bool touches = false;
         for (const unsigned int v : cell->vertex_indices())
-          touches = touches || on_pile(cell->vertex(v));
+          {
+            const bool on_pile = on_outline(cell->vertex(v));
+            AssertThrow(on_pile ||
+                          tied_vertices.count(key_of(cell->vertex(v))) == 0,
+                        ExcMessage(entry +
+                                   ": not yet with soil touching "
+                                   "the Rigid foundation's material "
+                                   "of a flexible pile (material " +
+                                   std::to_string(cell->material_id()) + ")"));
+            touches = touches || on_pile;
+          }
         if (!touches)
           continue;
         const Point<2> c = cell->center();
@@ -105,11 +154,13 @@ namespace FourierSSI
         AssertThrow(c[1] < top,
                     ExcMessage(entry + ": not yet with soil above the "
                                        "pile's head touching it"));
-        // The base is the soil under the pile's footprint; the cell
-        // diagonal to the corner (r > R, z < toe) flows around the tip
-        // with the shaft's soil, so it joins the shaft (its force at the
-        // corner node is the shaft's p at the toe).
-        if (c[1] < toe && c[0] < pile_radius)
+        // The base is the soil under the pile's footprint (a tube's: the
+        // annulus r_i < r < R); the cell diagonal to the corner (r > R,
+        // z < toe) flows around the tip with the shaft's soil, so it joins
+        // the shaft (its force at the corner node is the shaft's p at the
+        // toe); under a tube, the plug's base (r < r_i) is not the pile's
+        // and the cell diagonal to the inner corner joins the inner face.
+        if (c[1] < toe && c[0] < pile_radius && c[0] > bore_radius)
           base_cells[key_of(c)] = cell->material_id();
         else
           shaft_cells[key_of(c)] = cell->material_id();
@@ -133,15 +184,19 @@ namespace FourierSSI
   {
     const double tol = tolerance(top - toe);
     // The shaft line's vertices: the ends of the faces of the soil cells
-    // beside it that lie on r = R.
+    // beside it that lie on r = R (and on a tube's inner face r = r_i).
+    const auto on_face = [&](const Point<2> &x) {
+      return std::abs(x[0] - pile_radius) <= tol ||
+             (hollow && std::abs(x[0] - bore_radius) <= tol);
+    };
     std::vector<double> z;
     for (const auto &cell : dofs.active_cell_iterators())
       if (beside_shaft(cell->center()))
         for (const unsigned int f : cell->face_indices())
           {
             const auto face = cell->face(f);
-            if (std::abs(face->vertex(0)[0] - pile_radius) <= tol &&
-                std::abs(face->vertex(1)[0] - pile_radius) <= tol &&
+            if (on_face(face->vertex(0)) && on_face(face->vertex(1)) &&
+                std::abs(face->vertex(0)[0] - face->vertex(1)[0]) <= tol &&
                 face->center()[1] > toe)
               for (const unsigned int v : {0u, 1u})
                 z.push_back(face->vertex(v)[1]);
@@ -205,6 +260,7 @@ namespace FourierSSI
     DoFTools::map_dofs_to_support_points(MappingQ1<2>(), dofs, points);
     line_dof_of.assign(dofs.n_dofs(), -1);
     on_base.assign(dofs.n_dofs(), 0);
+    on_outer_face.assign(dofs.n_dofs(), 0);
     dof_radius.resize(dofs.n_dofs());
     dof_component.resize(dofs.n_dofs());
     std::vector<types::global_dof_index> cell_dofs(
@@ -220,10 +276,14 @@ namespace FourierSSI
       {
         const Point<2> &x = points[i];
         dof_radius[i]     = x[0];
-        on_base[i] =
-          std::abs(x[1] - toe) <= tol && x[0] <= pile_radius + tol ? 1 : 0;
-        if (std::abs(x[0] - pile_radius) > tol || x[1] < toe - tol ||
-            x[1] > top + tol)
+        on_base[i] = std::abs(x[1] - toe) <= tol && x[0] <= pile_radius + tol &&
+                         x[0] >= bore_radius - tol ?
+                       1 :
+                       0;
+        const bool outer = std::abs(x[0] - pile_radius) <= tol;
+        const bool inner = hollow && std::abs(x[0] - bore_radius) <= tol;
+        on_outer_face[i] = outer ? 1 : 0;
+        if (!(outer || inner) || x[1] < toe - tol || x[1] > top + tol)
           continue;
         for (unsigned int k = 0; k < n; ++k)
           if (std::abs(line_points[k][0] - x[1]) <= tol)
@@ -232,6 +292,103 @@ namespace FourierSSI
                     ExcMessage(entry + ": a node of the shaft is not a node "
                                        "of its line (curved cells?)"));
       }
+  }
+
+  void
+  SoilReactionCurves::make_section_weights(const DoFHandler<2> &dofs)
+  {
+    // The section integrals of section_motion at the elevation of each
+    // line DoF, by Gauss points in r across each cell of the wall that
+    // spans that elevation (each column of cells once); the cells must be
+    // axis-parallel rectangles, so that the points lie on one elevation.
+    const double          tol = tolerance(top - toe);
+    const unsigned int    n   = line_dofs.n_dofs();
+    std::vector<Point<1>> line_points(n);
+    DoFTools::map_dofs_to_support_points(MappingQ1<1>(),
+                                         line_dofs,
+                                         line_points);
+    const FiniteElement<2> &fe = dofs.get_fe();
+    const QGauss<1>         gauss(fe.degree + 2);
+    const double            area_moment = // int r dr over the wall
+      (pile_radius * pile_radius - bore_radius * bore_radius) / 2.;
+    const double inertia_moment = // int r^3 dr over the wall
+      (std::pow(pile_radius, 4) - std::pow(bore_radius, 4)) / 4.;
+    const MappingQ1<2>                        mapping;
+    std::vector<types::global_dof_index>      cell_dofs(fe.n_dofs_per_cell());
+    std::set<std::pair<unsigned int, double>> done; // (line DoF, column r)
+    section_weights.assign(n, {});
+    for (const auto &cell : dofs.active_cell_iterators())
+      {
+        if (cell->material_id() != pile_id)
+          continue;
+        const BoundingBox<2> box = cell->bounding_box();
+        const Point<2>       low = box.get_boundary_points().first,
+                       high      = box.get_boundary_points().second;
+        AssertThrow(std::abs(cell->measure() - box.volume()) <=
+                      1e-9 * box.volume(),
+                    ExcMessage(entry + ": not yet for a flexible pile "
+                                       "whose cells are not rectangles "
+                                       "parallel to r and z"));
+        cell->get_dof_indices(cell_dofs);
+        for (unsigned int k = 0; k < n; ++k)
+          {
+            const double z = line_points[k][0];
+            if (z < low[1] - tol || z > high[1] + tol ||
+                !done.insert({k, low[0]}).second)
+              continue;
+            for (unsigned int q = 0; q < gauss.size(); ++q)
+              {
+                const double   width = high[0] - low[0];
+                const double   r     = low[0] + gauss.point(q)[0] * width;
+                const double   w     = gauss.weight(q) * width;
+                const Point<2> unit =
+                  mapping.transform_real_to_unit_cell(cell, Point<2>(r, z));
+                for (unsigned int i = 0; i < cell_dofs.size(); ++i)
+                  {
+                    const unsigned int c =
+                      fe.system_to_component_index(i).first;
+                    const double phi = fe.shape_value(i, unit);
+                    // v = int (U - W)/2 r dr / int r dr;
+                    // psi = -int V r^2 dr / int r^3 dr (section_motion).
+                    const double in_v   = c == 0 ? 0.5 : (c == 2 ? -0.5 : 0.);
+                    const double in_psi = c == 1 ? -1. : 0.;
+                    if (in_v != 0. || in_psi != 0.)
+                      section_weights[k].emplace_back(cell_dofs[i],
+                                                      in_v * phi * r * w /
+                                                        area_moment,
+                                                      in_psi * phi * r * r * w /
+                                                        inertia_moment);
+                  }
+              }
+          }
+      }
+  }
+
+  void
+  SoilReactionCurves::section_motion(const Vector<double> &u, Step &step) const
+  {
+    // The n = 1 symmetric amplitudes: u_r = U cos(theta), u_z = V
+    // cos(theta), u_theta = W sin(theta), so u_x = U cos^2 - W sin^2.
+    // v is the mean of u_x over the section (its centroid's motion, the
+    // work conjugate of a lateral load spread over it):
+    //   v = int int u_x r dr dtheta / A = int (U - W)/2 r dr / int r dr;
+    // psi is the plane section's rotation about +y that fits u_z best,
+    // u_z ~ -psi x (the rigid rotation's u_z = -Theta x), least squares
+    // over the section (the work conjugate of the bending moment):
+    //   psi = -int int u_z x dA / int int x^2 dA
+    //       = -int V r^2 dr / int r^3 dr.
+    // Both give v = U_h + Theta (z - z_ref) and psi = Theta for a rigid
+    // motion, and the mid-wall values to O(t/R) for a thin tube; the
+    // ovalisation (U + W) does not enter v.
+    const unsigned int n = line_dofs.n_dofs();
+    step.v.reinit(n);
+    step.psi.reinit(n);
+    for (unsigned int k = 0; k < n; ++k)
+      for (const auto &[dof, in_v, in_psi] : section_weights[k])
+        {
+          step.v(k) += in_v * u(dof);
+          step.psi(k) += in_psi * u(dof);
+        }
   }
 
   void
@@ -264,6 +421,7 @@ namespace FourierSSI
   void
   SoilReactionCurves::record(const Vector<double> &shaft_force,
                              const Vector<double> &base_force,
+                             const Vector<double> &displacement,
                              const RigidMotion    &motion,
                              const double          applied_H,
                              const double          applied_M)
@@ -271,8 +429,10 @@ namespace FourierSSI
     // The work of the nodal forces on the rigid modes, node by node:
     // P = f_U - f_W (u_x = 1: U = 1, W = -1 for n = 1 symmetric) and
     // Q = -f_V r (a rotation about y through the node's level: V = -r).
+    // The same works hold for a flexible body: its internal forces do no
+    // work on a rigid mode, so the sums balance the loads on its head.
     const unsigned int n = line_dofs.n_dofs();
-    Vector<double>     P(n), Q(n);
+    Vector<double>     P(n), Q(n), P_outer(n), Q_outer(n);
     Step               step;
     step.applied_H = applied_H;
     step.applied_M = applied_M;
@@ -286,6 +446,11 @@ namespace FourierSSI
           {
             P(line_dof_of[i]) += work_x * shaft_force(i);
             Q(line_dof_of[i]) += work_y * shaft_force(i);
+            if (on_outer_face[i])
+              {
+                P_outer(line_dof_of[i]) += work_x * shaft_force(i);
+                Q_outer(line_dof_of[i]) += work_y * shaft_force(i);
+              }
           }
         if (on_base[i])
           {
@@ -298,6 +463,15 @@ namespace FourierSSI
     step.m.reinit(n);
     inverse_mass.vmult(step.p, P);
     inverse_mass.vmult(step.m, Q);
+    if (hollow)
+      {
+        step.p_outer.reinit(n);
+        step.m_outer.reinit(n);
+        inverse_mass.vmult(step.p_outer, P_outer);
+        inverse_mass.vmult(step.m_outer, Q_outer);
+      }
+    if (!rigid_pile)
+      section_motion(displacement, step);
     steps.push_back(std::move(step));
   }
 
@@ -317,6 +491,16 @@ namespace FourierSSI
   }
 
   std::pair<double, double>
+  SoilReactionCurves::outer_face_reaction(const unsigned int step,
+                                          const double       z) const
+  {
+    if (!hollow)
+      return shaft_reaction(step, z);
+    return {line_value(steps[step].p_outer, z),
+            line_value(steps[step].m_outer, z)};
+  }
+
+  std::pair<double, double>
   SoilReactionCurves::base_reaction(const unsigned int step) const
   {
     return {steps[step].base_shear, steps[step].base_moment};
@@ -326,10 +510,19 @@ namespace FourierSSI
   SoilReactionCurves::displacement(const unsigned int step,
                                    const double       z) const
   {
+    if (!rigid_pile)
+      return line_value(steps[step].v, z);
     // The rigid motion: U = U_h + Theta (z - z_ref) (rigid_foundation.h).
     const RigidMotion &m = steps[step].motion;
     return m.horizontal_displacement +
            m.rotation * (z - parameters.rigid_foundation.reference_elevation);
+  }
+
+  double
+  SoilReactionCurves::rotation(const unsigned int step, const double z) const
+  {
+    return rigid_pile ? steps[step].motion.rotation :
+                        line_value(steps[step].psi, z);
   }
 
   std::pair<double, double>
@@ -398,12 +591,13 @@ namespace FourierSSI
                                 const double       depth) const
   {
     const double z = top - depth, D = 2. * pile_radius;
-    const auto [p, m] = shaft_reaction(s, z);
-    const double  v   = displacement(s, z);
-    const double  psi = step.motion.rotation;
-    Normalisation n   = normalisation_at(z, false);
-    Normalisation b   = normalisation_at(toe, true);
-    const double  nan = std::numeric_limits<double>::quiet_NaN();
+    const auto [p, m]      = shaft_reaction(s, z);
+    const double  v        = displacement(s, z);
+    const double  psi      = rotation(s, z);
+    const double  psi_base = rotation(s, toe);
+    Normalisation n        = normalisation_at(z, false);
+    Normalisation b        = normalisation_at(toe, true);
+    const double  nan      = std::numeric_limits<double>::quiet_NaN();
     // PISA: clay p/(s_u D), v G/(s_u D), m/(s_u D^2), psi G/s_u (Byrne et
     // al. 2020); sand p/(sigma'_v D), v G/(sigma'_v D), m/(|p| D), psi
     // G/sigma'_v (Burd et al. 2020); the base H_B/(s D^2), M_B/(s D^3).
@@ -422,7 +616,41 @@ namespace FourierSSI
         << ',' << ratio(step.base_shear, b.strength * D * D) << ','
         << ratio(v_base * b.shear_modulus, b.strength * D) << ','
         << ratio(step.base_moment, b.strength * D * D * D) << ','
-        << ratio(psi * b.shear_modulus, b.strength) << '\n';
+        << ratio(psi_base * b.shear_modulus, b.strength);
+    if (!rigid_pile || hollow)
+      {
+        const auto [p_outer, m_outer] = outer_face_reaction(s, z);
+        out << ',' << psi_base << ',' << p_outer << ',' << p - p_outer << ','
+            << m_outer << ',' << m - m_outer;
+      }
+    out << '\n';
+  }
+
+  void
+  SoilReactionCurves::add_result_rows(ResultsTable &results) const
+  {
+    const Harmonic any{0, Family::symmetric};
+    const double   D = 2. * pile_radius;
+    for (const double depth : curve_depths)
+      {
+        const double        z = top - depth;
+        const Normalisation n = normalisation_at(z, false);
+        std::ostringstream  at;
+        at << "_at_" << depth << "m";
+        for (unsigned int s = 0; s < steps.size(); ++s)
+          results.add("soil_reaction_p_normalised" + at.str(),
+                      any,
+                      s + 1,
+                      shaft_reaction(s, z).first / (n.strength * D),
+                      "-");
+        for (unsigned int s = 0; s < steps.size(); ++s)
+          results.add("soil_reaction_secant" + at.str(),
+                      any,
+                      s + 1,
+                      shaft_reaction(s, z).first /
+                        (n.shear_modulus * displacement(s, z)),
+                      "-");
+      }
   }
 
   void
@@ -435,7 +663,13 @@ namespace FourierSSI
            "m [kN m/m],v_base [m],H_B [kN],M_B [kN m],normalised by,"
            "s [kPa],G [kPa],p/(s D) [-],v G/(s D) [-],m/(s D^2) or "
            "m/(|p| D) [-],psi G/s [-],s_base [kPa],H_B/(s D^2) [-],"
-           "v_base G/(s D) [-],M_B/(s D^3) [-],psi G/s_base [-]\n";
+           "v_base G/(s D) [-],M_B/(s D^3) [-],psi G/s_base [-]";
+    // A tube or a flexible pile: the base's own rotation and the faces'
+    // shares (the plug's is the inner face's).
+    if (!rigid_pile || hollow)
+      out << ",psi_base [rad],p outer face [kN/m],p inner face [kN/m],"
+             "m outer face [kN m/m],m inner face [kN m/m]";
+    out << '\n';
     for (unsigned int s = 0; s < steps.size(); ++s)
       for (const double depth : curve_depths)
         write_row(out, steps[s], s, depth);

@@ -96,6 +96,7 @@ namespace
       const auto loads = run.solver->applied_loads(step.load_factor);
       curves.record(shaft[h1],
                     base[h1],
+                    run.solver->solution(h1),
                     step.motion,
                     loads[0],
                     moment_about_reference(loads,

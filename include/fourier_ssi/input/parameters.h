@@ -129,6 +129,16 @@ namespace FourierSSI
     parse_soil_reaction_depths(const std::string &text);
 
     /**
+     * Soil reaction pile: the pile's material id, or -1 (auto) for the
+     * Rigid foundation's tied material (doc/soil-reaction-curves.md 8).
+     */
+    int soil_reaction_pile = -1;
+
+    /** Read the entry Soil reaction pile; one line if it is malformed. */
+    void
+    parse_soil_reaction_pile(const std::string &text);
+
+    /**
      * Only Output/Directory and Output/Results file of a parameter file,
      * read before (and whatever) the rest of the file is refused: every
      * other entry, unknown ones included, is skipped and no value is

@@ -1,5 +1,5 @@
 /**
- * Soil-reaction curves of a rigid pile as the PISA design method uses them
+ * Soil-reaction curves of a pile as the PISA design method uses them
  * (Byrne et al. 2020, Burd et al. 2020): at chosen depths the lateral
  * reaction p [kN/m] against the pile's displacement v there, the
  * distributed moment m [kN m/m] against the rotation psi, and the base
@@ -27,6 +27,16 @@
  * Signs: v and H along +x, psi = the rotation about +y (the rigid motion's
  * Theta, the head moving along +x relative to the toe); p, m, H_B, M_B are
  * the soil's resistance, positive when it opposes positive v and psi.
+ *
+ * A hollow pile (Output/Soil reaction pile names a tube's wall, r_i <= r
+ * <= R): the shaft line collects the nodes of both faces, so p and m are
+ * the net reactions of the soil outside and of the plug inside; the base
+ * is the soil under the annular tip (the plug's base is not the pile's).
+ * The same rigid-mode works P, Q hold for any body, so the balance holds
+ * for a flexible pile too (its internal forces do no work on a rigid
+ * mode). A flexible pile (a material other than the tied one) has v and
+ * psi of its own cross-section (section_motion, doc/soil-reaction-
+ * curves.md section 8).
  */
 #ifndef fourier_ssi_soil_reaction_curves_h
 #define fourier_ssi_soil_reaction_curves_h
@@ -39,8 +49,10 @@
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/harmonic/rigid_foundation.h>
 #include <fourier_ssi/input/parameters.h>
+#include <fourier_ssi/postprocess/results_table.h>
 #include <map>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -52,11 +64,13 @@ namespace FourierSSI
   {
   public:
     /**
-     * The pile (the tied material of Rigid foundation) and its shaft line
-     * found in the mesh of `dofs` (the n = 1 symmetric harmonic's). Throws
-     * one line naming the entry if the scene is not one this can read yet
-     * (a hollow pile, a boundary tie, soil without a plastic law or above
-     * the pile touching it, a depth outside the shaft).
+     * The pile (Output/Soil reaction pile, by default the tied material of
+     * Rigid foundation) and its shaft line found in the mesh of `dofs` (the
+     * n = 1 symmetric harmonic's). Throws one line naming the entry if the
+     * scene is not one this can read yet (a boundary tie, a pile that is
+     * not one rectangle in (r, z), soil without a plastic law or above the
+     * pile touching it, soil touching the tied material of a flexible
+     * pile, a depth outside the shaft).
      */
     SoilReactionCurves(const DoFHandler<2> &dofs,
                        const AllParameters &parameters);
@@ -74,12 +88,14 @@ namespace FourierSSI
 
     /**
      * One converged step: the n = 1 symmetric nodal forces of the cells
-     * beside the shaft and of those below the base, the rigid motion and
-     * the applied H and M (about the reference point).
+     * beside the shaft and of those below the base, the n = 1 displacement
+     * (read for a flexible pile only), the rigid motion and the applied H
+     * and M (about the reference point).
      */
     void
     record(const Vector<double> &shaft_force,
            const Vector<double> &base_force,
+           const Vector<double> &displacement,
            const RigidMotion    &motion,
            const double          applied_H,
            const double          applied_M);
@@ -101,9 +117,20 @@ namespace FourierSSI
     std::pair<double, double>
     base_reaction(const unsigned int step) const;
 
+    /**
+     * p and m [kN/m, kN m/m] at elevation z from the soil beside the outer
+     * face r = R only (the whole reaction for a solid pile).
+     */
+    std::pair<double, double>
+    outer_face_reaction(const unsigned int step, const double z) const;
+
     /** The local displacement v [m] at elevation z of a step. */
     double
     displacement(const unsigned int step, const double z) const;
+
+    /** The local rotation psi [rad] at elevation z of a step. */
+    double
+    rotation(const unsigned int step, const double z) const;
 
     /**
      * The largest imbalance over the steps, relative to |H|: of the
@@ -128,12 +155,35 @@ namespace FourierSSI
       return pile_radius;
     }
 
+    /** The inner face's radius r_i of a hollow pile (0 for a solid one). */
+    double
+    inner_radius() const
+    {
+      return bore_radius;
+    }
+
+    /** True if the pile is the Rigid foundation's tied material. */
+    bool
+    rigid() const
+    {
+      return rigid_pile;
+    }
+
     /** The depths of the curves [m below the pile's head]. */
     const std::vector<double> &
     depths() const
     {
       return curve_depths;
     }
+
+    /**
+     * Rows of results.csv per depth d and step (cycle): the normalised
+     * reaction soil_reaction_p_normalised_at_<d>m = p/(s D) and the secant
+     * of the normalised p-v curve soil_reaction_secant_at_<d>m = p/(G v)
+     * (its first step's is the initial slope).
+     */
+    void
+    add_result_rows(ResultsTable &results) const;
 
     /** soil-reaction-curves.csv: one row per step and depth, units named. */
     void
@@ -145,6 +195,10 @@ namespace FourierSSI
       double         applied_H = 0., applied_M = 0.;
       RigidMotion    motion;
       Vector<double> p, m; // on the shaft line's DoFs
+      /** A hollow pile: the outer face's share of p and m. */
+      Vector<double> p_outer, m_outer;
+      /** A flexible pile: the section's v and psi on the line's DoFs. */
+      Vector<double> v, psi;
       double         base_shear = 0., base_moment = 0.;
     };
 
@@ -165,6 +219,15 @@ namespace FourierSSI
     make_shaft_line(const DoFHandler<2> &dofs);
     void
     map_shaft_nodes(const DoFHandler<2> &dofs);
+    /** A flexible pile: the weights of section_motion at the line's DoFs. */
+    void
+    make_section_weights(const DoFHandler<2> &dofs);
+    /** The section's v and psi at the shaft line's DoFs from u (n = 1). */
+    void
+    section_motion(const Vector<double> &u, Step &step) const;
+    /** A node of the pile's outline: a face, or the base (annulus). */
+    bool
+    on_outline(const Point<2> &x) const;
     void
     choose_depths();
     /** s_u or sigma'_v and G of the soil beside the shaft at elevation z. */
@@ -180,7 +243,10 @@ namespace FourierSSI
               const double       depth) const;
 
     const AllParameters &parameters;
-    double               pile_radius = 0., top = 0., toe = 0.;
+    /** The pile's material: Output/Soil reaction pile or the tied one. */
+    types::material_id pile_id;
+    bool               rigid_pile = true, hollow = false;
+    double             pile_radius = 0., bore_radius = 0., top = 0., toe = 0.;
     /** Centres of the touching soil cells and their material ids. */
     std::map<std::pair<double, double>, types::material_id> shaft_cells,
       base_cells;
@@ -195,10 +261,17 @@ namespace FourierSSI
      * lies on the base (r <= R at the toe); its radius and component.
      */
     std::vector<int>          line_dof_of;
-    std::vector<char>         on_base;
+    std::vector<char>         on_base, on_outer_face;
     std::vector<double>       dof_radius;
     std::vector<unsigned int> dof_component;
     std::vector<Step>         steps;
+    /**
+     * A flexible pile, per line DoF: (n = 1 DoF, weight in v, weight in
+     * psi) of the section integrals (section_motion).
+     */
+    std::vector<
+      std::vector<std::tuple<types::global_dof_index, double, double>>>
+      section_weights;
   };
 } // namespace FourierSSI
 
