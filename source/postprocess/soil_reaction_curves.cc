@@ -637,19 +637,22 @@ namespace FourierSSI
         const Normalisation n = normalisation_at(z, false);
         std::ostringstream  at;
         at << "_at_" << depth << "m";
-        for (unsigned int s = 0; s < steps.size(); ++s)
-          results.add("soil_reaction_p_normalised" + at.str(),
-                      any,
-                      s + 1,
-                      shaft_reaction(s, z).first / (n.strength * D),
-                      "-");
-        for (unsigned int s = 0; s < steps.size(); ++s)
-          results.add("soil_reaction_secant" + at.str(),
-                      any,
-                      s + 1,
-                      shaft_reaction(s, z).first /
-                        (n.shear_modulus * displacement(s, z)),
-                      "-");
+        if (steps.empty())
+          continue;
+        // The curve's end and its initial slope: the whole curve is in
+        // soil-reaction-curves.csv.
+        const unsigned int last = steps.size() - 1;
+        results.add("soil_reaction_p_normalised" + at.str(),
+                    any,
+                    last + 1,
+                    shaft_reaction(last, z).first / (n.strength * D),
+                    "-");
+        results.add("soil_reaction_secant" + at.str(),
+                    any,
+                    1,
+                    shaft_reaction(0, z).first /
+                      (n.shear_modulus * displacement(0, z)),
+                    "-");
       }
   }
 

@@ -177,10 +177,10 @@ namespace FourierSSI
     }
 
     /**
-     * Rows of results.csv per depth d and step (cycle): the normalised
-     * reaction soil_reaction_p_normalised_at_<d>m = p/(s D) and the secant
-     * of the normalised p-v curve soil_reaction_secant_at_<d>m = p/(G v)
-     * (its first step's is the initial slope).
+     * Rows of results.csv per depth d (cycle = the step): the normalised
+     * reaction soil_reaction_p_normalised_at_<d>m = p/(s D) at the last
+     * step, and the initial slope of the normalised p-v curve, the secant
+     * soil_reaction_secant_at_<d>m = p/(G v) of the first step.
      */
     void
     add_result_rows(ResultsTable &results) const;
