@@ -29,9 +29,9 @@ What makes it 5 % in about 5 minutes (measured,
 doc/verification/offshore-foundations.md 7a):
 - the base mesh (33 cells) is graded geometrically toward the skirt tip,
   the stress singularity that sets the mesh error: its members (33, 132,
-  528 cells) reach what uniform members of 104, 416, 1664 cells reach, and
-  the third member gives the estimator an observed ratio (0.39) instead
-  of the assumed 0.65;
+  528 cells) reach what the previous ungraded members of 104, 416, 1664
+  cells reached, and the third member, cheap now, gives the estimator an
+  observed ratio (0.39) instead of the assumed 0.65;
 - harmonics n = 0..3, not 0..2: a cos(theta) load on a plastic body
   drives mainly the odd harmonics, so n = 3 carries the first correction
   (-2.0 % of H on the first mesh) and n = 2 a small one (+0.9 %); with
@@ -89,9 +89,9 @@ end
 subsection Mesh
   # Graded geometrically toward the skirt tip (r = 4 m, z = -4 m), the
   # stress singularity that sets the mesh error: 2 cells per near segment,
-  # each 4 times the size of the next one toward the tip (0.79 m at the
-  # tip, 3.2 m away from it); the far field (r > 10 m, z < -10 m) one cell
-  # each. The members keep the grading (2^k cells per segment, growth to
+  # each 4 times the size of the next one toward the tip (at the tip 0.8 m
+  # inside the skirt and above it, 1.2 m outside and below); the far field
+  # (r > 10 m, z < -10 m) one cell each. The members keep the grading (2^k cells per segment, growth to
   # the 2^-k).
   set R breakpoints    = 0, 3.96, 4, 10, 24
   set R cells          = 2, 1, 2, 1
