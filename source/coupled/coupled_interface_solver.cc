@@ -646,8 +646,7 @@ namespace FourierSSI
           << settings.harmonic_tolerance << ")";
     log << '\n';
     interface.describe(log, sampling.n_samples(), highest_harmonic(harmonics));
-    write_held_motions(
-      log, "; the loads that hold them: not yet with coulomb interfaces");
+    write_held_motions(log, "");
     if (interface.without_strength())
       log << "warning: " << entry
           << ": a coulomb interface has c = 0 and no Initial stress: it has "
@@ -687,6 +686,14 @@ namespace FourierSSI
     LoadStepResult &result = trial_result;
     commit(result, step);
     result.n_harmonics = set.size();
+    // The interfaces are the only nonlinear source: their part of G is that
+    // of the tractions they carry.
+    if (!parameters.rigid_foundation.reported_motions().empty())
+      result.held_reactions = held_reactions_of(
+        committed,
+        interface.load_of(interface.spring_plastic(trial_snapshot),
+                          sampling,
+                          false));
     steps.push_back(result);
     snapshots.push_back(std::move(trial_snapshot));
     const auto loads = applied_loads(result.load_factor, result.held_fraction);
@@ -702,6 +709,7 @@ namespace FourierSSI
         << " rad; " << result.iterations << " iterations; stick/slip/open "
         << result.states[0] << '/' << result.states[1] << '/'
         << result.states[2] << "; " << result.n_harmonics << " harmonics";
+    write_held_reactions(log, result);
     if (result.multiplier_updates > 0)
       log << "; " << result.multiplier_updates << " contact multiplier updates";
     log << '\n';

@@ -20,15 +20,21 @@ namespace FourierSSI
   void
   CoupledInterfaceSolver::write_csv(const std::string &filename) const
   {
-    write_load_step_csv(filename,
-                        steps,
-                        parameters.rigid_foundation,
-                        "stick,slip,open,time_s,harmonics,held_fraction",
-                        [](std::ostream &out, const LoadStepResult &r) {
-                          out << r.states[0] << ',' << r.states[1] << ','
-                              << r.states[2] << ',' << r.time << ','
-                              << r.n_harmonics << ',' << r.held_fraction;
-                        });
+    // The loads that hold the held motions, or a direction probe's H and M.
+    write_load_step_csv(
+      filename,
+      steps,
+      parameters.rigid_foundation,
+      "stick,slip,open,time_s,harmonics,held_fraction" +
+        (steps.empty() ? std::string() :
+                         held_reaction_columns(parameters.rigid_foundation,
+                                               steps.back().held_reactions)),
+      [](std::ostream &out, const LoadStepResult &r) {
+        out << r.states[0] << ',' << r.states[1] << ',' << r.states[2] << ','
+            << r.time << ',' << r.n_harmonics << ',' << r.held_fraction;
+        for (const auto &reaction : r.held_reactions)
+          out << ',' << reaction.second;
+      });
   }
 
   void

@@ -139,6 +139,21 @@ namespace FourierSSI
     return {};
   }
 
+  std::string
+  held_reaction_columns(
+    const RigidFoundationParameters                        &foundation,
+    const std::vector<std::pair<FoundationMotion, double>> &reactions)
+  {
+    std::string columns;
+    for (const auto &[motion, load] : reactions)
+      {
+        std::string unit = load_unit_of(motion);
+        unit.erase(std::remove(unit.begin(), unit.end(), '.'), unit.end());
+        columns += ',' + foundation.reaction_row(motion) + '_' + unit;
+      }
+    return columns;
+  }
+
   void
   write_load_step_columns(std::ostream                    &out,
                           const unsigned int               step,

@@ -1443,11 +1443,9 @@ namespace FourierSSI
     const StepState         &state,
     const InterfaceSnapshot &interface_state) const
   {
-    const std::vector<FoundationMotion> held =
-      parameters.rigid_foundation.reported_motions();
-    if (held.empty())
+    if (parameters.rigid_foundation.reported_motions().empty())
       return {};
-    std::vector<Vector<double>> plastic_load = load_of(state.plastic, false);
+    std::vector<Vector<double>> nonlinear_load = load_of(state.plastic, false);
     if (interface)
       {
         const std::vector<Vector<double>> interface_load =
@@ -1455,30 +1453,9 @@ namespace FourierSSI
                              interface_sampling,
                              false);
         for (unsigned int h = 0; h < set.size(); ++h)
-          plastic_load[h] += interface_load[h];
+          nonlinear_load[h] += interface_load[h];
       }
-    // One value per held motion, from the owner of its harmonic.
-    std::vector<double> values(held.size(), 0.);
-    for (unsigned int h = 0; h < set.size(); ++h)
-      {
-        const RigidFoundation *foundation = set.problem(h).get_foundation();
-        if (!set.owns(h) || foundation == nullptr ||
-            !foundation->holds_motion())
-          continue;
-        Vector<double> force =
-          set.problem(h).nodal_forces(total_displacement(state, h),
-                                      state.load_factor);
-        force -= plastic_load[h];
-        for (const auto &[motion, load] : foundation->held_reactions(force))
-          for (unsigned int i = 0; i < held.size(); ++i)
-            if (held[i] == motion)
-              values[i] = load;
-      }
-    set.sum_over_ranks(values);
-    std::vector<std::pair<FoundationMotion, double>> reactions;
-    for (unsigned int i = 0; i < held.size(); ++i)
-      reactions.emplace_back(held[i], values[i]);
-    return reactions;
+    return held_reactions_of(state, nonlinear_load);
   }
 
   Vector<double>
@@ -1611,9 +1588,7 @@ namespace FourierSSI
       log << ", rotation " << motion.rotation << " rad";
     if (torque)
       log << ", twist " << motion.twist << " rad";
-    for (const auto &[held, load] : result.held_reactions)
-      log << "; " << parameters.rigid_foundation.reaction_label(held) << " "
-          << load << " " << load_unit_of(held);
+    write_held_reactions(log, result);
   }
 
   void
@@ -1632,18 +1607,12 @@ namespace FourierSSI
   CoupledSoilSolver::write_csv(const std::string &filename) const
   {
     // The loads that hold the held motions, or a direction probe's H and M,
-    // one column each (their results rows' names and units): the H and M
-    // columns before them are the applied drive.
-    std::string reaction_header;
-    if (!steps.empty())
-      for (const auto &[motion, load] : steps.back().held_reactions)
-        {
-          // Units as in the leading columns: kN, kNm.
-          std::string unit = load_unit_of(motion);
-          unit.erase(std::remove(unit.begin(), unit.end(), '.'), unit.end());
-          reaction_header +=
-            ',' + parameters.rigid_foundation.reaction_row(motion) + '_' + unit;
-        }
+    // one column each: the H and M columns before them are the applied
+    // drive.
+    const std::string reaction_header =
+      steps.empty() ? std::string() :
+                      held_reaction_columns(parameters.rigid_foundation,
+                                            steps.back().held_reactions);
     write_load_step_csv(filename,
                         steps,
                         parameters.rigid_foundation,

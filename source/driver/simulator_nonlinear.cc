@@ -56,6 +56,7 @@ namespace FourierSSI
   {
     add_load_step_rows(solver, results);
     keep_last_step(solver);
+    add_held_reaction_rows(solver);
   }
 
   void

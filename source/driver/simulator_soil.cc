@@ -288,13 +288,7 @@ namespace FourierSSI
         reaction_curves->add_result_rows(results);
       }
     keep_last_step(solver);
-    const Harmonic any{0, Family::symmetric};
-    for (const auto &[motion, load] : solver.get_steps().back().held_reactions)
-      results.add(parameters.rigid_foundation.reaction_row(motion),
-                  any,
-                  solver.get_steps().size(),
-                  load,
-                  load_unit_of(motion));
+    add_held_reaction_rows(solver);
     if (!has_capacity(solver, parameters))
       return;
     if (parameters.rigid_foundation.probes_direction())

@@ -49,8 +49,8 @@ namespace FourierSSI
      * A direction probe (Rigid foundation/Motion direction) moves u and
      * theta in a fixed ratio: displacement control must drive a motion
      * with a component along it, and what is not written for the probe yet
-     * (its loads with coulomb interfaces, a capacity with error bars) is
-     * refused rather than reported from the applied loads alone.
+     * (a capacity with error bars) is refused rather than reported from
+     * the applied loads alone.
      */
     void
     check_motion_direction_path(const AllParameters &parameters)
@@ -59,13 +59,6 @@ namespace FourierSSI
       if (!f.probes_direction() || !parameters.coupled())
         return;
       const std::string entry = "Rigid foundation/Motion direction";
-      AssertThrow(!parameters.interfaces.any_nonlinear() ||
-                    parameters.soil_plasticity.any(),
-                  ExcMessage(entry + ": not yet with nonlinear interfaces on "
-                                     "elastic soil (the probe's H and M are "
-                                     "read from the nodal forces, which the "
-                                     "interface solver does not report; "
-                                     "with Soil plasticity/Laws it runs)"));
       AssertThrow(parameters.discretization.target_accuracy == 0.,
                   ExcMessage(entry + ": not yet with Discretization/Target "
                                      "accuracy (the capacity with error bars "

@@ -194,6 +194,16 @@ namespace FourierSSI
     return swipe_force == 0. ? loads[2] : loads[2] + swipe_force;
   }
 
+  /**
+   * The columns of the held reactions (LoadStep::held_reactions) in
+   * load-displacement.csv: ",<results row>_<unit>" each, units as in the
+   * leading columns (kN, kNm); empty without.
+   */
+  std::string
+  held_reaction_columns(
+    const RigidFoundationParameters                        &foundation,
+    const std::vector<std::pair<FoundationMotion, double>> &reactions);
+
   /** One row's leading columns, in the order of load_step_csv_header. */
   void
   write_load_step_columns(std::ostream                    &out,

@@ -89,11 +89,6 @@ namespace FourierSSI
     double largest_interface_yield_value = 0.;
     /** The coulomb interfaces at every (point, theta) (empty without). */
     InterfaceSnapshot interface_state;
-    /**
-     * The load that holds each of Rigid foundation/Held motions [kN or
-     * kN m] (held_reactions(); empty without).
-     */
-    std::vector<std::pair<FoundationMotion, double>> held_reactions;
   };
 
   /** Iteration state of a load step of the plastic soil. */

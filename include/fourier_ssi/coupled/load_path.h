@@ -66,6 +66,12 @@ namespace FourierSSI
     double residual = 0.;
     /** Wall time of the step [s]. */
     double time = 0.;
+    /**
+     * The load that holds each of Rigid foundation/Held motions, or a
+     * direction probe's H and M [kN or kN m] (LoadPathStates::
+     * held_reactions_of(); empty without).
+     */
+    std::vector<std::pair<FoundationMotion, double>> held_reactions;
   };
 
   /**

@@ -125,6 +125,57 @@ namespace FourierSSI
       log << note << '\n';
     }
 
+    /**
+     * The load that holds each reported motion (Rigid foundation/Held
+     * motions, a direction probe's loads) in a converged state: the work of
+     * the internal force K u - G on the unit motion minus lambda f
+     * (RigidFoundation::held_reactions). `nonlinear_load` is G, the nodal
+     * force (unconstrained) of the nonlinear sources per harmonic: the
+     * soil's plastic part and the interfaces' (their tractions). One value
+     * per motion from the owner of its harmonic, summed over the ranks (a
+     * collective). Empty without reported motions.
+     */
+    std::vector<std::pair<FoundationMotion, double>>
+    held_reactions_of(const State                       &state,
+                      const std::vector<Vector<double>> &nonlinear_load) const
+    {
+      const std::vector<FoundationMotion> held =
+        foundation_parameters.reported_motions();
+      if (held.empty())
+        return {};
+      std::vector<double> values(held.size(), 0.);
+      for (unsigned int h = 0; h < harmonic_set.size(); ++h)
+        {
+          const RigidFoundation *foundation =
+            harmonic_set.problem(h).get_foundation();
+          if (!harmonic_set.owns(h) || foundation == nullptr ||
+              !foundation->holds_motion())
+            continue;
+          Vector<double> force =
+            harmonic_set.problem(h).nodal_forces(total_displacement(state, h),
+                                                 state.load_factor);
+          force -= nonlinear_load[h];
+          for (const auto &[motion, load] : foundation->held_reactions(force))
+            for (unsigned int i = 0; i < held.size(); ++i)
+              if (held[i] == motion)
+                values[i] = load;
+        }
+      harmonic_set.sum_over_ranks(values);
+      std::vector<std::pair<FoundationMotion, double>> reactions;
+      for (unsigned int i = 0; i < held.size(); ++i)
+        reactions.emplace_back(held[i], values[i]);
+      return reactions;
+    }
+
+    /** "; rotation held by M ... kN.m" per held reaction of a step. */
+    void
+    write_held_reactions(std::ostream &log, const LoadStep &step) const
+    {
+      for (const auto &[held, load] : step.held_reactions)
+        log << "; " << foundation_parameters.reaction_label(held) << " " << load
+            << " " << load_unit_of(held);
+    }
+
     /** The held loads (V, H, M about the reference point, T). */
     void
     write_held_loads(std::ostream &log) const override

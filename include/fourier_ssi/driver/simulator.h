@@ -209,6 +209,25 @@ namespace FourierSSI
     }
 
     /**
+     * The rows <reaction_row> of a coupled run's held reactions (the loads
+     * that hold Rigid foundation/Held motions, a probe's H and M) at its
+     * last converged step.
+     */
+    template <class Solver>
+    void
+    add_held_reaction_rows(const Solver &solver)
+    {
+      const Harmonic any{0, Family::symmetric};
+      for (const auto &[motion, load] :
+           solver.get_steps().back().held_reactions)
+        results.add(parameters.rigid_foundation.reaction_row(motion),
+                    any,
+                    solver.get_steps().size(),
+                    load,
+                    load_unit_of(motion));
+    }
+
+    /**
      * The last converged step of a coupled solver as every harmonic's
      * solution (3D and per-harmonic output). Collective under mpirun: the
      * owner of each harmonic sends its field.
