@@ -300,6 +300,10 @@ namespace FourierSSI
       {
         loads.add_swipe_pattern(set);
         swipe_strain = strain_amplitudes(loads.swipe_solution);
+        if (interface)
+          swipe_relative =
+            interface->relative_displacements(loads.swipe_solution,
+                                              interface_sampling);
       }
   }
 
@@ -416,7 +420,8 @@ namespace FourierSSI
   CoupledSoilSolver::relative_samples(
     const std::vector<Vector<double>> &correction,
     const double                       load_factor,
-    const double                       held_fraction) const
+    const double                       held_fraction,
+    const double                       swipe_force) const
   {
     std::vector<LocalVector> relative =
       interface->relative_displacements(correction, interface_sampling);
@@ -424,7 +429,8 @@ namespace FourierSSI
       for (unsigned int c = 0; c < 3; ++c)
         relative[k][c] +=
           load_factor * pattern_relative[k][c] +
-          (held_relative.empty() ? 0. : held_fraction * held_relative[k][c]);
+          (held_relative.empty() ? 0. : held_fraction * held_relative[k][c]) +
+          (swipe_relative.empty() ? 0. : swipe_force * swipe_relative[k][c]);
     return relative;
   }
 
@@ -1238,7 +1244,8 @@ namespace FourierSSI
   {
     e.relative = relative_samples(state.correction_solution,
                                   state.load_factor,
-                                  state.held_fraction);
+                                  state.held_fraction,
+                                  state.swipe_force);
     std::vector<Vector<double>> interface_load(set.size());
     for (unsigned int h = 0; h < set.size(); ++h)
       interface_load[h].reinit(e.residual[h].size());

@@ -128,6 +128,23 @@ namespace FourierSSI
       };
     }
 
+    /**
+     * The load whose capacity Target accuracy estimates: the applied load
+     * on the controlled motion, or for a direction probe the probe's own
+     * load on it (probe_H when u is driven, probe_M when the rotation is).
+     */
+    LoadAtStep
+    goal_load(const CoupledSoilSolver &solver, const AllParameters &parameters)
+    {
+      if (!parameters.rigid_foundation.probes_direction())
+        return applied_load(solver, parameters);
+      return probe_load(parameters.load_path.motion ==
+                            LoadPathParameters::Motion::rotation ?
+                          FoundationMotion::rotation :
+                          FoundationMotion::u,
+                        parameters);
+    }
+
     /** The capacity of a displacement-controlled curve of >= 2 steps. */
     Capacity
     capacity_of(const CoupledSoilSolver &solver,
@@ -374,8 +391,9 @@ namespace FourierSSI
                   ExcMessage("Discretization/Target accuracy: the curve "
                                    "has fewer than two steps (Load "
                                    "path/Load steps)"));
-      const Capacity c =
-        capacity_of(*solver, parameters, applied_load(*solver, parameters));
+      const Capacity c = capacity_of(*solver,
+                                     parameters,
+                                     goal_load(*solver, parameters));
       return CoupledGoal{
         c.load.name, c.load.unit, c.load.value, c.plateau_error, steps};
     };

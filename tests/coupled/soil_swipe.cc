@@ -45,7 +45,16 @@
 //     preload);
 //  5. the initial-stiffness iteration (Stiffness = elastic) gives the V of
 //     Newton's path at the same u (both solve the same equations; 1e-6 of
-//     the preload, the iteration tolerance with room for round-off).
+//     the preload, the iteration tolerance with room for round-off);
+//  6. through a nonlinear interface: the free-head rigid pile of
+//     prm/pile-free-head.prm (n = 0, 1) with a coulomb shaft that slips
+//     (c = 5 kPa, phi = 0, no tension cut-off), preloaded by V = -100 kN
+//     (about 0.45 of the shaft adhesion plus the base's 9 s_u A) and then
+//     swiped to u = 0.01 m: checks 1 and 2 (w held, V = the vertical
+//     reaction, K u - G(u) balancing the loads with the interface's part of
+//     G re-evaluated from u). Measured 0, 1.3e-7 and 1.4e-9; with mu left
+//     out of the interface's relative displacement the last two read
+//     3.0e-6 and 1.1e-3.
 #include "soil_test_support.h"
 
 #include <iomanip>
@@ -270,6 +279,28 @@ main(int argc, char **argv)
                "over u = 0.001 ... 0.004 m",
                worst_V,
                1e-6);
+
+  // 6. Through a slipping coulomb shaft.
+  {
+    Run pile(
+      test_support::bundled_prm(
+        "prm/pile-free-head.prm",
+        {{"Harmonics", "0, 1"},
+         {"Theta samples", "8"},
+         {"Interfaces", "5: coulomb, kn=1e5, ks=1e5, c=5, phi=0, sigma_t=none"},
+         {"Target", "0.01"},
+         {"Load steps", "4"},
+         {"Soil reaction depths", ""}}) +
+      test_support::entries("Rigid foundation",
+                            {{"Held vertical force", "-100"},
+                             {"Held motions", "w"}}));
+    pile.solver->run(std::cout);
+    check_swipe("pile, coulomb shaft: ", pile, -100., 4);
+    check::in_range("pile, coulomb shaft: samples slipping at the last step",
+                    pile.solver->get_steps().back().contact[1],
+                    1u,
+                    100000u);
+  }
 
   // 4. Elastic soil: Delta V = 0 (K_VH = 0 across harmonics 0 and 1).
   const auto elastic = sideways(preload, true, 1e7, "2");

@@ -309,14 +309,15 @@ namespace FourierSSI
                    const double                       swipe_force = 0.) const;
 
     /**
-     * Coulomb interfaces: the relative displacement at every (interface
-     * point, theta) at lambda and rho (correction + lambda u_F + rho
-     * u_held).
+     * Nonlinear interfaces: the relative displacement at every (interface
+     * point, theta) at lambda, rho and a swipe's mu (correction + lambda u_F
+     * + rho u_held + mu K^-1 e_V).
      */
     std::vector<LocalVector>
     relative_samples(const std::vector<Vector<double>> &correction,
                      const double                       load_factor,
-                     const double                       held_fraction) const;
+                     const double                       held_fraction,
+                     const double                       swipe_force = 0.) const;
 
     /**
      * Nonlinear interfaces at the relative displacements given: the return
@@ -693,8 +694,10 @@ namespace FourierSSI
      * Coulomb interfaces (null: none): their points, the relative
      * displacements of the load pattern and of the held loads.
      */
-    std::unique_ptr<NonlinearInterfacePoints>   interface;
-    std::vector<LocalVector>                    pattern_relative, held_relative;
+    std::unique_ptr<NonlinearInterfacePoints> interface;
+    std::vector<LocalVector>                  pattern_relative, held_relative;
+    /** A swipe: the relative displacements of K^-1 e_V. */
+    std::vector<LocalVector>                    swipe_relative;
     std::function<void(const SoilStepResult &)> step_observer;
     /** owns_point(): the ranks and this rank (1, 0: every point). */
     unsigned int point_stride = 1, point_rank = 0;
