@@ -496,14 +496,18 @@ namespace FourierSSI
         // Augmented Lagrangian (section 5d): lambda <- t, until the
         // multipliers no longer move the origin of the return by more
         // than the force test resolves.
-        const double violation =
-          interface.update_multipliers(e.traction, state.slip, state.origin);
+        using Update              = NonlinearInterfacePoints::MultiplierUpdate;
         result.multiplier_updates = update + 1;
-        if (NonlinearInterfacePoints::multipliers_converged(violation,
-                                                            e.relative,
-                                                            settings.tolerance))
+        const Update next =
+          interface.update_and_test_multipliers(e.traction,
+                                                e.relative,
+                                                state.slip,
+                                                state.origin,
+                                                settings.tolerance,
+                                                update);
+        if (next == Update::converged)
           break;
-        if (update == NonlinearInterfacePoints::maximum_multiplier_updates)
+        if (next == Update::too_many)
           return false;
       }
     return accept(target, e, iterations, state, result, snapshot);

@@ -1378,16 +1378,18 @@ namespace FourierSSI
         // lambda <- t at the contact samples, until the multipliers no
         // longer move the origin of the return by more than the force test
         // resolves.
-        const double violation =
-          interface->update_multipliers(result.interface_state.traction,
-                                        state.interface_slip,
-                                        state.interface_origin);
+        using Update              = NonlinearInterfacePoints::MultiplierUpdate;
         result.multiplier_updates = update + 1;
-        if (NonlinearInterfacePoints::multipliers_converged(violation,
-                                                            e.relative,
-                                                            settings.tolerance))
+        const Update next         = interface->update_and_test_multipliers(
+          result.interface_state.traction,
+          e.relative,
+          state.interface_slip,
+          state.interface_origin,
+          settings.tolerance,
+          update);
+        if (next == Update::converged)
           break;
-        if (update == NonlinearInterfacePoints::maximum_multiplier_updates)
+        if (next == Update::too_many)
           return false;
       }
     accept(e, iterations, state, result);

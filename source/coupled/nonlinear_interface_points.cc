@@ -372,17 +372,24 @@ namespace FourierSSI
     return plastic;
   }
 
-  bool
-  NonlinearInterfacePoints::multipliers_converged(
-    const double                    violation,
+  NonlinearInterfacePoints::MultiplierUpdate
+  NonlinearInterfacePoints::update_and_test_multipliers(
+    const std::vector<LocalVector> &traction,
     const std::vector<LocalVector> &relative,
-    const double                    tolerance)
+    const std::vector<LocalVector> &slip,
+    std::vector<LocalVector>       &origin,
+    const double                    tolerance,
+    const unsigned int              update) const
   {
-    double largest = 0.;
+    const double violation = update_multipliers(traction, slip, origin);
+    double       largest   = 0.;
     for (const LocalVector &d : relative)
       for (const double v : d)
         largest = std::max(largest, std::abs(v));
-    return violation <= 10. * tolerance * largest;
+    if (violation <= 10. * tolerance * largest)
+      return MultiplierUpdate::converged;
+    return update == maximum_multiplier_updates ? MultiplierUpdate::too_many :
+                                                  MultiplierUpdate::again;
   }
 
   void

@@ -246,17 +246,22 @@ namespace FourierSSI
     inverse_mass.invert(mass);
   }
 
+  std::vector<Point<1>>
+  SoilReactionCurves::line_support_points() const
+  {
+    std::vector<Point<1>> points(line_dofs.n_dofs());
+    DoFTools::map_dofs_to_support_points(MappingQ1<1>(), line_dofs, points);
+    return points;
+  }
+
   void
   SoilReactionCurves::map_shaft_nodes(const DoFHandler<2> &dofs)
   {
     // Each DoF of the harmonic's field: its place on the line or the base.
-    const double          tol = tolerance(top - toe);
-    const unsigned int    n   = line_dofs.n_dofs();
-    std::vector<Point<1>> line_points(n);
-    DoFTools::map_dofs_to_support_points(MappingQ1<1>(),
-                                         line_dofs,
-                                         line_points);
-    std::vector<Point<2>> points(dofs.n_dofs());
+    const double                tol         = tolerance(top - toe);
+    const unsigned int          n           = line_dofs.n_dofs();
+    const std::vector<Point<1>> line_points = line_support_points();
+    std::vector<Point<2>>       points(dofs.n_dofs());
     DoFTools::map_dofs_to_support_points(MappingQ1<2>(), dofs, points);
     line_dof_of.assign(dofs.n_dofs(), -1);
     on_base.assign(dofs.n_dofs(), 0);
@@ -301,15 +306,12 @@ namespace FourierSSI
     // line DoF, by Gauss points in r across each cell of the wall that
     // spans that elevation (each column of cells once); the cells must be
     // axis-parallel rectangles, so that the points lie on one elevation.
-    const double          tol = tolerance(top - toe);
-    const unsigned int    n   = line_dofs.n_dofs();
-    std::vector<Point<1>> line_points(n);
-    DoFTools::map_dofs_to_support_points(MappingQ1<1>(),
-                                         line_dofs,
-                                         line_points);
-    const FiniteElement<2> &fe = dofs.get_fe();
-    const QGauss<1>         gauss(fe.degree + 2);
-    const double            area_moment = // int r dr over the wall
+    const double                tol         = tolerance(top - toe);
+    const unsigned int          n           = line_dofs.n_dofs();
+    const std::vector<Point<1>> line_points = line_support_points();
+    const FiniteElement<2>     &fe          = dofs.get_fe();
+    const QGauss<1>             gauss(fe.degree + 2);
+    const double                area_moment = // int r dr over the wall
       (pile_radius * pile_radius - bore_radius * bore_radius) / 2.;
     const double inertia_moment = // int r^3 dr over the wall
       (std::pow(pile_radius, 4) - std::pow(bore_radius, 4)) / 4.;

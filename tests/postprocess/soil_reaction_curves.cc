@@ -24,7 +24,7 @@
 //     grows along the path near the head; head and toe move opposite ways;
 //  3. the depths 'auto 4' are the middles of four equal parts.
 #include "check.h"
-#include "soil_test_support.h"
+#include "soil_reaction_test_support.h"
 
 #include <deal.II/base/quadrature_lib.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
@@ -33,6 +33,7 @@
 #include <limits>
 
 using namespace FourierSSI;
+using namespace reaction_test;
 
 namespace
 {
@@ -53,23 +54,6 @@ namespace
            test_support::entries("Output",
                                  {{"Soil reaction depths", "auto 4"}});
   }
-
-  /** int f(z) dz over the shaft, 3 Gauss points per cell of its line. */
-  template <class F>
-  double
-  over_shaft(const SoilReactionCurves &curves, const F &f)
-  {
-    const QGauss<1>            gauss(3);
-    const std::vector<double> &z   = curves.shaft_vertices();
-    double                     sum = 0.;
-    for (unsigned int c = 0; c + 1 < z.size(); ++c)
-      for (unsigned int q = 0; q < gauss.size(); ++q)
-        {
-          const double x = z[c] + gauss.point(q)[0] * (z[c + 1] - z[c]);
-          sum += f(x) * gauss.weight(q) * (z[c + 1] - z[c]);
-        }
-    return sum;
-  }
 } // namespace
 
 namespace
@@ -82,26 +66,11 @@ namespace
   check_case(const std::string &law, const double penalty)
   {
     std::cout << "shaft: " << law << std::endl;
-    soil_test::Run run(pile_scene(law));
-    unsigned int   h1 = 0;
-    while (run.set->harmonic(h1).n != 1)
-      ++h1;
+    soil_test::Run     run(pile_scene(law));
+    const unsigned int h1 = lateral_harmonic(*run.set);
     SoilReactionCurves curves(run.set->problem(h1).get_dof_handler(),
                               run.parameters);
-    run.solver->set_step_observer([&](const SoilStepResult &step) {
-      const auto shaft = run.solver->soil_nodal_force(
-        [&](const Point<2> &c) { return curves.beside_shaft(c); });
-      const auto base = run.solver->soil_nodal_force(
-        [&](const Point<2> &c) { return curves.below_base(c); });
-      const auto loads = run.solver->applied_loads(step.load_factor);
-      curves.record(shaft[h1],
-                    base[h1],
-                    run.solver->solution(h1),
-                    step.motion,
-                    loads[0],
-                    moment_about_reference(loads,
-                                           run.parameters.rigid_foundation));
-    });
+    record_every_step(run, curves, h1);
     run.solver->run(std::cout);
     const auto &steps = run.solver->get_steps();
     check::equal("steps recorded", curves.n_steps(), steps.size());
@@ -117,15 +86,9 @@ namespace
         const double H     = loads[0];
         const double M_ref =
           moment_about_reference(loads, run.parameters.rigid_foundation);
-        const auto [H_B, M_B] = curves.base_reaction(s);
-        const double shaft_H  = over_shaft(curves, [&](double z) {
-          return curves.shaft_reaction(s, z).first;
-        });
-        const double shaft_M  = over_shaft(curves, [&](double z) {
-          const auto [p, m] = curves.shaft_reaction(s, z);
-          return m + p * (z - z_ref);
-        });
-        const double M_total  = shaft_M + M_B + H_B * (z_toe - z_ref);
+        const Resultant r       = resultant_at(curves, s, z_ref, z_toe);
+        const double    shaft_H = r.shaft_H, H_B = r.base_H;
+        const double    shaft_M = r.shaft_M, M_total = r.total_M;
         // The converged residual's rigid-body part, and the round-off of
         // a penalty shaft: its forces k A du with du ~ eps |u| (A = pi R L,
         // the shaft's area in the n = 1 integral), ten times for the sum.
@@ -139,7 +102,7 @@ namespace
         std::cout << "step " << s + 1 << ": H = " << H
                   << " kN, int p dz = " << shaft_H << " kN, H_B = " << H_B
                   << " kN; moment about z_ref: shaft " << shaft_M << ", base "
-                  << M_B + H_B * (z_toe - z_ref) << " kN m; imbalance H "
+                  << M_total - shaft_M << " kN m; imbalance H "
                   << shaft_H + H_B - H << " kN, M " << M_total - M_ref
                   << " kN m" << std::endl;
         check::small("|int p dz + H_B - H| [kN]" + at,

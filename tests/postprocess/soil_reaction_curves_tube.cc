@@ -23,7 +23,7 @@
 //     psi(0) = Theta of the rigid motion to round-off; below, the wall
 //     bends, so psi(toe) differs from Theta by more than 1e-3 of it.
 #include "check.h"
-#include "soil_test_support.h"
+#include "soil_reaction_test_support.h"
 
 #include <deal.II/base/quadrature_lib.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
@@ -32,6 +32,7 @@
 #include <limits>
 
 using namespace FourierSSI;
+using namespace reaction_test;
 
 namespace
 {
@@ -53,32 +54,13 @@ namespace
        {"Target", "0.009"},
        {"Load steps", "2"}});
   }
-
-  /** int f(z) dz over the shaft, 3 Gauss points per cell of its line. */
-  template <class F>
-  double
-  over_shaft(const SoilReactionCurves &curves, const F &f)
-  {
-    const QGauss<1>            gauss(3);
-    const std::vector<double> &z   = curves.shaft_vertices();
-    double                     sum = 0.;
-    for (unsigned int c = 0; c + 1 < z.size(); ++c)
-      for (unsigned int q = 0; q < gauss.size(); ++q)
-        {
-          const double x = z[c] + gauss.point(q)[0] * (z[c + 1] - z[c]);
-          sum += f(x) * gauss.weight(q) * (z[c + 1] - z[c]);
-        }
-    return sum;
-  }
 } // namespace
 
 int
 main()
 {
-  soil_test::Run run(tube_scene());
-  unsigned int   h1 = 0;
-  while (run.set->harmonic(h1).n != 1)
-    ++h1;
+  soil_test::Run     run(tube_scene());
+  const unsigned int h1 = lateral_harmonic(*run.set);
   SoilReactionCurves curves(run.set->problem(h1).get_dof_handler(),
                             run.parameters);
   check::that("the wall is a flexible pile", !curves.rigid());
@@ -86,20 +68,7 @@ main()
                   curves.inner_radius(),
                   radius - wall,
                   1e-14);
-  run.solver->set_step_observer([&](const SoilStepResult &step) {
-    const auto shaft = run.solver->soil_nodal_force(
-      [&](const Point<2> &c) { return curves.beside_shaft(c); });
-    const auto base = run.solver->soil_nodal_force(
-      [&](const Point<2> &c) { return curves.below_base(c); });
-    const auto loads = run.solver->applied_loads(step.load_factor);
-    curves.record(shaft[h1],
-                  base[h1],
-                  run.solver->solution(h1),
-                  step.motion,
-                  loads[0],
-                  moment_about_reference(loads,
-                                         run.parameters.rigid_foundation));
-  });
+  record_every_step(run, curves, h1);
   run.solver->run(std::cout);
   const auto &steps = run.solver->get_steps();
   check::equal("steps recorded", curves.n_steps(), steps.size());
@@ -119,19 +88,13 @@ main()
       const double H     = loads[0];
       const double M_ref =
         moment_about_reference(loads, run.parameters.rigid_foundation);
-      const auto [H_B, M_B] = curves.base_reaction(s);
-      const double shaft_H  = over_shaft(curves, [&](double z) {
-        return curves.shaft_reaction(s, z).first;
-      });
-      const double outer_H  = over_shaft(curves, [&](double z) {
+      const Resultant r       = resultant_at(curves, s, z_ref, z_toe);
+      const double    shaft_H = r.shaft_H, H_B = r.base_H;
+      const double    M_total = r.total_M;
+      const double    outer_H = over_shaft(curves, [&](double z) {
         return curves.outer_face_reaction(s, z).first;
       });
-      const double shaft_M  = over_shaft(curves, [&](double z) {
-        const auto [p, m] = curves.shaft_reaction(s, z);
-        return m + p * (z - z_ref);
-      });
-      const double M_total  = shaft_M + M_B + H_B * (z_toe - z_ref);
-      const double u_max    = std::abs(curves.displacement(s, 0.)) +
+      const double    u_max   = std::abs(curves.displacement(s, 0.)) +
                            std::abs(curves.displacement(s, z_toe));
       const double bound =
         steps[s].residual * steps[s].load_factor * pattern_norm +

@@ -192,19 +192,35 @@ namespace FourierSSI
     /** Uzawa updates of the contact multipliers before a step is cut. */
     static constexpr unsigned int maximum_multiplier_updates = 50;
 
+    /** What an update of the contact multipliers left. */
+    enum class MultiplierUpdate
+    {
+      /** the contact conditions hold to what the force test resolves */
+      converged,
+      /** iterate again at the moved multipliers */
+      again,
+      /** maximum_multiplier_updates reached: cut the step */
+      too_many
+    };
+
     /**
-     * The multipliers have converged when an update moved the origin of the
-     * return by `violation` <= 10 `tolerance` times the largest relative
-     * displacement. The force test (Load path/Tolerance) leaves the
+     * The update_multipliers() that follows the `update`-th (from 0)
+     * converged iteration of a step (the augmented Lagrangian of both
+     * coupled solvers), and its test. Converged when it moved the origin of
+     * the return by no more than 10 `tolerance` times the largest relative
+     * displacement: the force test (Load path/Tolerance) leaves the
      * displacements uncertain by about Tolerance times their size, so the
      * penetration cannot be driven below that; on the disc in a ring the
      * updates contract by 15-20 each down to 2.4e-10 of the largest
      * relative displacement at Tolerance 1e-10, and stall there.
      */
-    static bool
-    multipliers_converged(const double                    violation,
-                          const std::vector<LocalVector> &relative,
-                          const double                    tolerance);
+    MultiplierUpdate
+    update_and_test_multipliers(const std::vector<LocalVector> &traction,
+                                const std::vector<LocalVector> &relative,
+                                const std::vector<LocalVector> &slip,
+                                std::vector<LocalVector>       &origin,
+                                const double                    tolerance,
+                                const unsigned int              update) const;
 
     /**
      * A converged step at the contact samples: p_c <- (d_s, 0, d_theta)

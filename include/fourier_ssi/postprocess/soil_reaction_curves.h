@@ -219,6 +219,10 @@ namespace FourierSSI
     make_shaft_line(const DoFHandler<2> &dofs);
     void
     map_shaft_nodes(const DoFHandler<2> &dofs);
+
+    /** The elevations z of the shaft line's DoFs (as 1D points). */
+    std::vector<Point<1>>
+    line_support_points() const;
     /** A flexible pile: the weights of section_motion at the line's DoFs. */
     void
     make_section_weights(const DoFHandler<2> &dofs);
