@@ -667,7 +667,8 @@ namespace FourierSSI
     /**
      * The nonlinear interfaces' samples: those of the soil, but with
      * `contact` always 2 n_max + 1, one per value of the band-limited gap
-     * (constrained_theta_samples(): more make the multipliers drift), while
+     * (minimum_theta_samples(); more make the multipliers drift,
+     * constrained_theta_samples()), while
      * Theta samples sets the soil's.
      */
     ThetaSampling                          interface_sampling;
