@@ -1605,7 +1605,7 @@ namespace FourierSSI
     const std::string &filename) const
   {
     AssertThrow(interface != nullptr,
-                ExcMessage(entry + ": the scene has no coulomb interface"));
+                ExcMessage(entry + ": the scene has no nonlinear interface"));
     std::vector<InterfaceSnapshot> snapshots;
     for (const SoilStepResult &step : steps)
       snapshots.push_back(step.interface_state);

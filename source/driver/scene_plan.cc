@@ -319,7 +319,7 @@ namespace FourierSSI
     interface_tractions_output(const AllParameters &parameters)
     {
       if (parameters.interfaces.any_nonlinear())
-        return "interface-state.csv (coulomb interfaces: state, tractions "
+        return "interface-state.csv (nonlinear interfaces: state, tractions "
                "and relative displacements per point, angle and step)";
       if (parameters.soil_plasticity.any())
         return "not written with plastic soil and linear interfaces";
