@@ -487,30 +487,19 @@ namespace FourierSSI
     Evaluation   e;
     unsigned int iterations = 0;
     state.origin            = committed.origin;
-    for (unsigned int update = 0;; ++update)
-      {
-        if (!iterate(target, state, e, iterations))
-          return false;
-        if (!interface.any_contact())
-          break;
-        // Augmented Lagrangian (section 5d): lambda <- t, until the
-        // multipliers no longer move the origin of the return by more
-        // than the force test resolves.
-        using Update              = NonlinearInterfacePoints::MultiplierUpdate;
-        result.multiplier_updates = update + 1;
-        const Update next =
-          interface.update_and_test_multipliers(e.traction,
-                                                e.relative,
-                                                state.slip,
-                                                state.origin,
-                                                settings.tolerance,
-                                                update);
-        if (next == Update::converged)
-          break;
-        if (next == Update::too_many)
-          return false;
-      }
-    return accept(target, e, iterations, state, result, snapshot);
+    // Augmented Lagrangian (section 5d) with contact interfaces.
+    const bool converged = interface.iterate_with_multipliers(
+      [&]() { return iterate(target, state, e, iterations); },
+      [&](const unsigned int update) {
+        return interface.update_and_test_multipliers(e.traction,
+                                                     e.relative,
+                                                     state.slip,
+                                                     state.origin,
+                                                     settings.tolerance,
+                                                     update);
+      },
+      result.multiplier_updates);
+    return converged && accept(target, e, iterations, state, result, snapshot);
   }
 
   std::array<double, 6>

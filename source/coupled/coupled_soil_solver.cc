@@ -1368,32 +1368,29 @@ namespace FourierSSI
     swiping = !holding && parameters.rigid_foundation.swipes();
     Evaluation   e;
     unsigned int iterations = 0;
-    for (unsigned int update = 0;; ++update)
-      {
-        if (!iterate(target, holding, state, result, e, iterations))
-          return false;
-        if (!interface || !interface->any_contact())
-          break;
-        // Augmented Lagrangian (doc/nonlinear-interfaces.md section 5d):
-        // lambda <- t at the contact samples, until the multipliers no
-        // longer move the origin of the return by more than the force test
-        // resolves.
-        using Update              = NonlinearInterfacePoints::MultiplierUpdate;
-        result.multiplier_updates = update + 1;
-        const Update next         = interface->update_and_test_multipliers(
-          result.interface_state.traction,
-          e.relative,
-          state.interface_slip,
-          state.interface_origin,
-          settings.tolerance,
-          update);
-        if (next == Update::converged)
-          break;
-        if (next == Update::too_many)
-          return false;
-      }
-    accept(e, iterations, state, result);
-    return true;
+    const auto   converge   = [&]() {
+      return iterate(target, holding, state, result, e, iterations);
+    };
+    // With contact interfaces the multipliers move between converged
+    // iterations (augmented Lagrangian).
+    const auto move_multipliers = [&](const unsigned int update) {
+      return interface->update_and_test_multipliers(
+        result.interface_state.traction,
+        e.relative,
+        state.interface_slip,
+        state.interface_origin,
+        settings.tolerance,
+        update);
+    };
+    const bool converged =
+      interface ?
+        interface->iterate_with_multipliers(converge,
+                                            move_multipliers,
+                                            result.multiplier_updates) :
+        converge();
+    if (converged)
+      accept(e, iterations, state, result);
+    return converged;
   }
 
   bool

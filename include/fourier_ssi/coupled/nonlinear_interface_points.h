@@ -223,6 +223,34 @@ namespace FourierSSI
                                 const unsigned int              update) const;
 
     /**
+     * A load step of either coupled solver with the augmented Lagrangian
+     * (doc/nonlinear-interfaces.md section 5d): iterate() converges the step
+     * at the current multipliers (false: cut the step); with a contact
+     * interface update(u) then moves them (update_and_test_multipliers()
+     * after the u-th converged iteration), until they no longer move the
+     * return by more than the force test resolves. `updates` counts them.
+     * False: the step must be cut.
+     */
+    template <class Iterate, class Update>
+    bool
+    iterate_with_multipliers(const Iterate &iterate,
+                             const Update  &update,
+                             unsigned int  &updates) const
+    {
+      for (unsigned int u = 0;; ++u)
+        {
+          if (!iterate())
+            return false;
+          if (!any_contact())
+            return true;
+          updates                     = u + 1;
+          const MultiplierUpdate next = update(u);
+          if (next != MultiplierUpdate::again)
+            return next == MultiplierUpdate::converged;
+        }
+    }
+
+    /**
      * A converged step at the contact samples: p_c <- (d_s, 0, d_theta)
      * (exact contact has no elastic slip), and the origin of the next step
      * from lambda = t.
