@@ -92,7 +92,9 @@ def with_entries(text, changes):
 
 
 def run(exe, text):
-    """Run the parameter text; (wall s, log, {quantity: {cycle: value}})."""
+    """Run the parameter text; (wall s, log, {quantity: {cycle: value}}),
+    with p/(s D) per depth and step from soil-reaction-curves.csv as
+    "p/(s D) at <depth>" (results.csv has its last step only)."""
     with tempfile.TemporaryDirectory() as work:
         with open(os.path.join(work, "scene.prm"), "w") as f:
             f.write(text)
@@ -109,6 +111,14 @@ def run(exe, text):
             for row in csv.DictReader(f):
                 rows.setdefault(row["quantity"], {})[int(row["cycle"])] = \
                     float(row["value"])
+        curves = os.path.join(os.path.dirname(results[0]),
+                              "soil-reaction-curves.csv")
+        if os.path.exists(curves):
+            with open(curves, newline="") as f:
+                for row in csv.DictReader(f):
+                    key = "p/(s D) at %g" % float(row["depth [m]"])
+                    rows.setdefault(key, {})[int(row["step"])] = \
+                        float(row["p/(s D) [-]"])
         return wall, done.stdout, rows
 
 
@@ -164,7 +174,7 @@ def main():
         "|---|---|---|---|---|---|",
     ]
     for d in DEPTHS:
-        p = rows["soil_reaction_p_normalised_at_%sm" % d]
+        p = rows["p/(s D) at %s" % d]
         a = coarse["soil_reaction_secant_at_%sm" % d][1]
         b = halved["soil_reaction_secant_at_%sm" % d][1]
         lines.append("| %s | %.3f | %.3f | %.3f | %.3f | %+.1f %% |" % (
