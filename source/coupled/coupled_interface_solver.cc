@@ -492,10 +492,11 @@ namespace FourierSSI
       [&]() { return iterate(target, state, e, iterations); },
       [&](const unsigned int update) {
         return interface.update_and_test_multipliers(e.traction,
-                                                     e.relative,
                                                      state.slip,
+                                                     sampling,
                                                      state.origin,
-                                                     settings.tolerance,
+                                                     settings.tolerance *
+                                                       e.scale.largest(),
                                                      update);
       },
       result.multiplier_updates);

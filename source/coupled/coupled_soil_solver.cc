@@ -1376,10 +1376,10 @@ namespace FourierSSI
     const auto move_multipliers = [&](const unsigned int update) {
       return interface->update_and_test_multipliers(
         result.interface_state.traction,
-        e.relative,
         state.interface_slip,
+        interface_sampling,
         state.interface_origin,
-        settings.tolerance,
+        settings.tolerance * e.scale.largest(),
         update);
     };
     const bool converged =

@@ -2,6 +2,7 @@
 #include <cmath>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/lac/full_matrix.h>
+#include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/nonlinear_interface_points.h>
 #include <fourier_ssi/fourier/harmonic_pair_integral.h>
 #include <fourier_ssi/input/atomic_file.h>
@@ -327,14 +328,13 @@ namespace FourierSSI
     return std::find(contact.begin(), contact.end(), true) != contact.end();
   }
 
-  double
+  void
   NonlinearInterfacePoints::update_multipliers(
     const std::vector<LocalVector> &traction,
     const std::vector<LocalVector> &slip,
     std::vector<LocalVector>       &origin) const
   {
     const unsigned int N = traction.size() / std::max<size_t>(size(), 1);
-    double             violation = 0.;
     for (unsigned int i = 0; i < points.size(); ++i)
       if (contact[points[i].law])
         for (unsigned int j = 0; j < N; ++j)
@@ -347,11 +347,8 @@ namespace FourierSSI
               const double       r      = stiffness[points[i].law][c];
               const double       t0     = points[i].initial_traction[c];
               const double       lambda = t0 + r * (slip[k][c] - origin[k][c]);
-              const double       change = (traction[k][c] - lambda) / r;
-              violation                 = std::max(violation, std::abs(change));
-              origin[k][c] -= change;
+              origin[k][c] -= (traction[k][c] - lambda) / r;
             }
-    return violation;
   }
 
   std::vector<LocalVector>
@@ -375,18 +372,20 @@ namespace FourierSSI
   NonlinearInterfacePoints::MultiplierUpdate
   NonlinearInterfacePoints::update_and_test_multipliers(
     const std::vector<LocalVector> &traction,
-    const std::vector<LocalVector> &relative,
     const std::vector<LocalVector> &slip,
+    const ThetaSampling            &sampling,
     std::vector<LocalVector>       &origin,
-    const double                    tolerance,
+    const double                    allowed_force,
     const unsigned int              update) const
   {
-    const double violation = update_multipliers(traction, slip, origin);
-    double       largest   = 0.;
-    for (const LocalVector &d : relative)
-      for (const double v : d)
-        largest = std::max(largest, std::abs(v));
-    if (violation <= 10. * tolerance * largest)
+    std::vector<LocalVector> change = origin;
+    update_multipliers(traction, slip, origin);
+    for (unsigned int k = 0; k < change.size(); ++k)
+      for (unsigned int c = 0; c < 3; ++c)
+        change[k][c] = origin[k][c] - change[k][c];
+    // The change of the multipliers acts on the displacements only through
+    // its nodal force (the origin's change is a plastic part, load_of).
+    if (norm_over_harmonics(load_of(change, sampling)) <= allowed_force)
       return MultiplierUpdate::converged;
     return update == maximum_multiplier_updates ? MultiplierUpdate::too_many :
                                                   MultiplierUpdate::again;
