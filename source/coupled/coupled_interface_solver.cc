@@ -704,8 +704,9 @@ namespace FourierSSI
         << result.states[0] << '/' << result.states[1] << '/'
         << result.states[2] << "; " << result.n_harmonics << " harmonics";
     write_held_reactions(log, result);
-    if (result.multiplier_updates > 0)
-      log << "; " << result.multiplier_updates << " contact multiplier updates";
+    interface.write_multiplier_updates(log,
+                                       result.multiplier_updates,
+                                       snapshots.back().relative);
     log << '\n';
   }
 } // namespace FourierSSI

@@ -1562,13 +1562,16 @@ namespace FourierSSI
     write_foundation_state(log, result);
     log << "; " << result.iterations << " iterations; plastic samples "
         << result.n_plastic << " of " << result.n_plastic + result.n_elastic
-        << "; max f " << result.largest_yield_value << " kPa; ";
+        << "; max f " << result.largest_yield_value << " kPa";
     if (interface)
-      log << "interface stick/slip/open " << result.contact[0] << '/'
-          << result.contact[1] << '/' << result.contact[2] << "; ";
-    if (result.multiplier_updates > 0)
-      log << result.multiplier_updates << " multiplier updates; ";
-    log << result.time << " s" << std::endl;
+      {
+        log << "; interface stick/slip/open " << result.contact[0] << '/'
+            << result.contact[1] << '/' << result.contact[2];
+        interface->write_multiplier_updates(log,
+                                            result.multiplier_updates,
+                                            result.interface_state.relative);
+      }
+    log << "; " << result.time << " s" << std::endl;
   }
 
   void

@@ -429,6 +429,36 @@ namespace FourierSSI
     return largest;
   }
 
+  double
+  NonlinearInterfacePoints::largest_penetration(
+    const std::vector<LocalVector> &relative) const
+  {
+    const unsigned int N = relative.size() / std::max<size_t>(size(), 1);
+    double             penetration = 0., largest = 0.;
+    for (unsigned int i = 0; i < points.size(); ++i)
+      for (unsigned int j = 0; j < N; ++j)
+        {
+          const LocalVector &d = relative[i * N + j];
+          for (const double v : d)
+            largest = std::max(largest, std::abs(v));
+          if (contact[points[i].law])
+            penetration = std::max(penetration, -d[1]);
+        }
+    return largest > 0. ? penetration / largest : 0.;
+  }
+
+  void
+  NonlinearInterfacePoints::write_multiplier_updates(
+    std::ostream                   &log,
+    const unsigned int              updates,
+    const std::vector<LocalVector> &relative) const
+  {
+    if (updates > 0)
+      log << "; " << updates << " contact multiplier updates, penetration "
+          << largest_penetration(relative)
+          << " of the largest relative displacement";
+  }
+
   std::vector<Vector<double>>
   NonlinearInterfacePoints::load_of(const std::vector<LocalVector> &plastic,
                                     const ThetaSampling            &sampling,

@@ -33,7 +33,8 @@
 //      inside the Coulomb cone (f <= 1e-8 kPa), samples sticking, slipping
 //      and open; the largest penetration below 1e-4 of the largest |d|
 //      (measured 3.5e-5: what the over-constrained samples keep, since their
-//      multipliers act without nodal force).
+//      multipliers act without nodal force), and the log line of the step
+//      prints it (to its 6 digits, 1e-5).
 #include "check.h"
 #include "coupled_interface_test_support.h"
 
@@ -66,7 +67,18 @@ namespace
     std::vector<LoadStepResult> steps;
     std::vector<double>         H;
     InterfaceSnapshot           last;
+    std::string                 log;
   };
+
+  /** The number after "penetration " on the last step's log line. */
+  double
+  logged_penetration(const std::string &log)
+  {
+    const auto at = log.rfind("penetration ");
+    check::that("the last step's log line prints the penetration",
+                at != std::string::npos);
+    return at == std::string::npos ? -1. : std::stod(log.substr(at + 12));
+  }
 
   Run
   run(const std::string &law)
@@ -74,8 +86,11 @@ namespace
     std::cout << law << std::endl;
     test_support::FactorizedScene scene_(scene(law));
     CoupledInterfaceSolver        solver(scene_.set, scene_.parameters);
-    solver.run(std::cout);
+    std::ostringstream            log;
+    solver.run(log);
+    std::cout << log.str();
     Run r;
+    r.log   = log.str();
     r.steps = solver.get_steps();
     for (const LoadStepResult &s : r.steps)
       r.H.push_back(solver.applied_loads(s.load_factor)[0]);
@@ -95,7 +110,7 @@ namespace
 
   /** (4): the contact law at every sample of the last step. */
   void
-  check_law(const InterfaceSnapshot &last)
+  check_law(const InterfaceSnapshot &last, const std::string &log)
   {
     double       largest_d = 0., penetration = 0., tension = 0., cone = -1e300;
     const double tan_phi = std::tan(20. * M_PI / 180.);
@@ -113,6 +128,10 @@ namespace
     check::small("largest penetration / largest |d|",
                  penetration / largest_d,
                  1e-4);
+    check::relative("the penetration the log prints",
+                    logged_penetration(log),
+                    penetration / largest_d,
+                    1e-5);
     unsigned int counts[3] = {0, 0, 0};
     for (const ContactState s : last.state)
       ++counts[static_cast<int>(s)];
@@ -138,7 +157,7 @@ main()
   // (3) homogeneity.
   check::relative("H(0.02 m) = 2 H(0.01 m)", exact.H[1], 2. * exact.H[0], 1e-6);
   // (4) the law.
-  check_law(exact.last);
+  check_law(exact.last, exact.log);
   // (2) the penalty limit.
   const Run    k3 = run(penalty(1e3)), k5 = run(penalty(1e5));
   const double limit = k5.H[1] + (k5.H[1] - k3.H[1]) / 99.;

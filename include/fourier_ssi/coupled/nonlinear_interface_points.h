@@ -275,6 +275,24 @@ namespace FourierSSI
     largest_yield_value(const std::vector<LocalVector> &traction) const;
 
     /**
+     * The largest penetration -d_n over the contact samples, over the
+     * largest |d| of any sample (0 without contact): what the samples that
+     * outnumber the displacements keep (update_and_test_multipliers).
+     */
+    double
+    largest_penetration(const std::vector<LocalVector> &relative) const;
+
+    /**
+     * "; N contact multiplier updates, penetration P of the largest
+     * relative displacement" for a step's log line (nothing without
+     * updates).
+     */
+    void
+    write_multiplier_updates(std::ostream                   &log,
+                             const unsigned int              updates,
+                             const std::vector<LocalVector> &relative) const;
+
+    /**
      * G_h = int int B_h^T D d_p of the plastic samples, every harmonic,
      * with the homogeneous constraints of each harmonic applied
      * (distribute_local_to_global), or at the DoFs as they are
