@@ -109,11 +109,8 @@ namespace
     std::cout << law << std::endl;
     test_support::FactorizedScene scene_(scene(law, samples));
     CoupledInterfaceSolver        solver(scene_.set, scene_.parameters);
-    std::ostringstream            log;
-    solver.run(log);
-    std::cout << log.str();
-    Run r;
-    r.log = log.str();
+    Run                           r;
+    r.log = coupled_test::run_with_log(solver);
     r.kn =
       scene_.set.problem(0).get_interfaces()->get_law_stiffness()[0].normal;
     for (const LoadStepResult &s : solver.get_steps())

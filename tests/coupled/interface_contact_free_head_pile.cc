@@ -86,11 +86,8 @@ namespace
     std::cout << law << std::endl;
     test_support::FactorizedScene scene_(scene(law));
     CoupledInterfaceSolver        solver(scene_.set, scene_.parameters);
-    std::ostringstream            log;
-    solver.run(log);
-    std::cout << log.str();
-    Run r;
-    r.log   = log.str();
+    Run                           r;
+    r.log   = coupled_test::run_with_log(solver);
     r.steps = solver.get_steps();
     for (const LoadStepResult &s : r.steps)
       r.H.push_back(solver.applied_loads(s.load_factor)[0]);

@@ -9,6 +9,7 @@
 
 #include <fourier_ssi/coupled/coupled_interface_solver.h>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -48,6 +49,16 @@ namespace coupled_test
     for (unsigned int n = 1; n <= 32; ++n)
       harmonics += ", " + std::to_string(n);
     return test_support::with_entry(text, "Harmonics", harmonics);
+  }
+
+  /** The solver's load steps; their log echoed to std::cout and returned. */
+  inline std::string
+  run_with_log(CoupledInterfaceSolver &solver)
+  {
+    std::ostringstream log;
+    solver.run(log);
+    std::cout << log.str();
+    return log.str();
   }
 
   /** The converged load steps of a coupled solve, as the solver gives them. */
