@@ -213,12 +213,11 @@ namespace FourierSSI
      * test as it stands, so further updates cannot move the displacements.
      * A test on the change at each sample instead asks for what the
      * samples cannot give where they outnumber the displacements they
-     * constrain: 3 Gauss points of a quadratic face against its 2 nodes,
-     * and a sample next to the bonded corner at a pile tip. There an
-     * update moves a multiplier by the same amount every time, without
-     * force, and never settles (the free-head pile with contact, phi = 20:
-     * 1.3e-7 m at every one of 50 updates; doc/nonlinear-interfaces.md
-     * section 5d).
+     * constrain (3 Gauss points of a quadratic face against its 2 new
+     * nodes). There an update moves a multiplier by the same amount every
+     * time, without force, and never settles (the free-head pile with
+     * contact, phi = 20: a sample next to the bonded tip, 1.3e-7 m at
+     * every one of 50 updates; doc/nonlinear-interfaces.md section 5d).
      */
     MultiplierUpdate
     update_and_test_multipliers(const std::vector<LocalVector> &traction,
