@@ -6,6 +6,7 @@
 #include <fourier_ssi/coupled/nonlinear_interface_points.h>
 #include <fourier_ssi/fourier/harmonic_pair_integral.h>
 #include <fourier_ssi/input/atomic_file.h>
+#include <fourier_ssi/interfaces/interface_element.h>
 #include <fstream>
 #include <iomanip>
 #include <limits>
@@ -71,9 +72,10 @@ namespace FourierSSI
           strengthless = true;
         nonlinear_pairs.push_back(i);
         const unsigned int p = pairs[i].nodes.size() - 1;
-        // Gauss p + 1 points: exact for the elastic part N_i N_j r (degree
-        // 2p + 1), so a sticking interface gives exactly no correction.
-        const QGauss<1> gauss(p + 1);
+        // The rule K's matrix of this interface was integrated with, so a
+        // sticking interface gives exactly no correction.
+        const Quadrature<1> gauss =
+          nonlinear_interface_rule(p, parameters.interfaces.nodal_integration);
         for (unsigned int q = 0; q < gauss.size(); ++q)
           {
             InterfacePoint point;

@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/polynomial.h>
+#include <deal.II/base/quadrature_lib.h>
 #include <fourier_ssi/interfaces/interface_element.h>
 #include <iomanip>
 #include <sstream>
@@ -236,6 +237,14 @@ namespace FourierSSI
   }
 
 
+
+  dealii::Quadrature<1>
+  nonlinear_interface_rule(const unsigned int degree, const bool nodal)
+  {
+    if (nodal)
+      return dealii::QGaussLobatto<1>(degree + 1);
+    return dealii::QGauss<1>(degree + 1);
+  }
 
   dealii::FullMatrix<double>
   interface_matrix_by_quadrature(const unsigned int                   degree,

@@ -111,8 +111,15 @@ namespace FourierSSI
             k.shear          = std::min(k.shear, cap);
           }
         stiffness.push_back(k);
-        matrices.push_back(
-          interface_matrix(pair.nodes.size() - 1, pair.nodes, k, harmonic));
+        const unsigned int degree = pair.nodes.size() - 1;
+        matrices.push_back(law.is_nonlinear() && parameters.nodal_integration ?
+                             interface_matrix_by_quadrature(
+                               degree,
+                               pair.nodes,
+                               k,
+                               harmonic,
+                               nonlinear_interface_rule(degree, true)) :
+                             interface_matrix(degree, pair.nodes, k, harmonic));
       }
   }
 

@@ -166,6 +166,17 @@ namespace FourierSSI
                                  const dealii::Quadrature<1> &quadrature);
 
   /**
+   * The points along a face of degree `degree` where a nonlinear interface
+   * is sampled, and with which its matrix is integrated (one rule for
+   * both, so that a sticking interface gives exactly no correction):
+   * Gauss with degree + 1 points (exact for N_i N_j r, the closed-form
+   * matrix), or with `nodal` Gauss-Lobatto at the degree + 1 nodes (a
+   * lumped matrix: one sample per node, Schellekens & de Borst 1993).
+   */
+  dealii::Quadrature<1>
+  nonlinear_interface_rule(const unsigned int degree, const bool nodal);
+
+  /**
    * Print an element matrix as produced by interface_matrix(): a header line
    * with its size, then one line per row labelled with the DoF it belongs to
    * ("A0.r", "A0.z", "A0.t", ..., "Bp.t") and the entries in %.10e format.

@@ -152,6 +152,11 @@ namespace FourierSSI
     std::map<types::boundary_id, InterfaceLaw> laws;
     /** Twin faces and nodes must coincide within this times face length. */
     double pairing_tolerance = 1e-8;
+    /**
+     * Nonlinear integration = nodal: the coulomb and contact interfaces are
+     * sampled and integrated at their nodes (nonlinear_interface_rule()).
+     */
+    bool nodal_integration = false;
   };
 
   /** Local interface vector (s, n, theta). */
