@@ -74,19 +74,19 @@ namespace FourierSSI
         const unsigned int p = pairs[i].nodes.size() - 1;
         // The rule K's matrix of this interface was integrated with, so a
         // sticking interface gives exactly no correction.
-        const Quadrature<1> gauss =
+        const Quadrature<1> rule =
           nonlinear_interface_rule(p, parameters.interfaces.nodal_integration);
-        for (unsigned int q = 0; q < gauss.size(); ++q)
+        for (unsigned int q = 0; q < rule.size(); ++q)
           {
             InterfacePoint point;
             point.pair  = i;
             point.law   = law_index;
-            point.shape = lagrange_values(p, gauss.point(q)[0]);
+            point.shape = lagrange_values(p, rule.point(q)[0]);
             for (unsigned int k = 0; k <= p; ++k)
               for (unsigned int d = 0; d < 2; ++d)
                 point.position[d] += point.shape[k] * pairs[i].nodes[k][d];
             point.area_per_radian =
-              gauss.weight(q) * pairs[i].length * point.position[0];
+              rule.weight(q) * pairs[i].length * point.position[0];
             point.initial_traction =
               parameters.initial_stress.interface_traction(
                 pairs[i].tangent,
@@ -330,13 +330,14 @@ namespace FourierSSI
     return std::find(contact.begin(), contact.end(), true) != contact.end();
   }
 
-  void
+  std::vector<LocalVector>
   NonlinearInterfacePoints::update_multipliers(
     const std::vector<LocalVector> &traction,
     const std::vector<LocalVector> &slip,
     std::vector<LocalVector>       &origin) const
   {
-    const unsigned int N = traction.size() / std::max<size_t>(size(), 1);
+    const unsigned int       N = traction.size() / std::max<size_t>(size(), 1);
+    std::vector<LocalVector> change(origin.size(), LocalVector{{0., 0., 0.}});
     for (unsigned int i = 0; i < points.size(); ++i)
       if (contact[points[i].law])
         for (unsigned int j = 0; j < N; ++j)
@@ -349,8 +350,10 @@ namespace FourierSSI
               const double       r      = stiffness[points[i].law][c];
               const double       t0     = points[i].initial_traction[c];
               const double       lambda = t0 + r * (slip[k][c] - origin[k][c]);
-              origin[k][c] -= (traction[k][c] - lambda) / r;
+              change[k][c]              = (lambda - traction[k][c]) / r;
+              origin[k][c] += change[k][c];
             }
+    return change;
   }
 
   std::vector<LocalVector>
@@ -380,11 +383,8 @@ namespace FourierSSI
     const double                    allowed_force,
     const unsigned int              update) const
   {
-    std::vector<LocalVector> change = origin;
-    update_multipliers(traction, slip, origin);
-    for (unsigned int k = 0; k < change.size(); ++k)
-      for (unsigned int c = 0; c < 3; ++c)
-        change[k][c] = origin[k][c] - change[k][c];
+    const std::vector<LocalVector> change =
+      update_multipliers(traction, slip, origin);
     // The change of the multipliers acts on the displacements only through
     // its nodal force (the origin's change is a plastic part, load_of).
     if (norm_over_harmonics(load_of(change, sampling)) <= allowed_force)

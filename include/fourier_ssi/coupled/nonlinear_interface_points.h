@@ -182,9 +182,10 @@ namespace FourierSSI
      * augmentation), so its trial traction is lambda + r (d - p_c); here
      * lambda <- t: the origin moves by the penetration and elastic slip
      * the augmentation still allowed, not at all where the contact
-     * conditions hold exactly.
+     * conditions hold exactly. Returns that change per sample [m] (zero
+     * at the samples of other laws).
      */
-    void
+    std::vector<LocalVector>
     update_multipliers(const std::vector<LocalVector> &traction,
                        const std::vector<LocalVector> &slip,
                        std::vector<LocalVector>       &origin) const;
