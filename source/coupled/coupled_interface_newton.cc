@@ -3,32 +3,33 @@
 // is the correction load c on the write DoFs of every harmonic, the
 // residual R(c) = G(c) - c, and
 //   dG/dc = load_of( (I - D_K^-1 D_t) dd/dc ),  dd/dc = B F (+ dlambda/dc d_F),
-// with D_K the springs assembled into K (a coulomb interface's kn, ks capped
-// at interface_iteration_stiffness G / l, so that K, F and c stay those of
-// a moderate interface however stiff the law; the augmentation for
-// contact), D_t the closed-form consistent tangent of the return mapping, F the
-// flexibility blocks K^-1 (read x write) kept by the condensation and, under
-// displacement control, dlambda/dc = -m(K^-1 e_j) / m(u_F) (lambda keeps the
-// controlled motion on its target). The update solves (I - dG/dc) dc = R,
-// dense on the write DoFs (tens to a few thousand unknowns). Full steps are
-// taken while they improve on the best |R| within a few steps (a gap that
-// closes or a slip that reverses beyond the tangent's foresight is corrected
-// by the next tangent, as in an active-set Newton); otherwise (the states
-// cycle) the iteration returns to the best iterate and a backtracking line
-// search halves the step until |R| falls by the Armijo fraction, so the
-// best |R| decreases at least every few updates and stick/slip cycling
-// cannot go on. Where not even that lowers |R| (a kink of the return
-// mapping at the iterate), the solver takes one initial-stiffness update
-// (coupled_interface_solver.cc, solve_step).
+// with D_K the springs assembled into K and in the return mapping (a
+// coulomb interface's kn, ks capped at interface_iteration_stiffness G / l,
+// so that K, F and c stay those of a moderate interface however stiff the
+// law, whose own springs come in through the augmented Lagrangian's
+// multipliers; the augmentation for contact), D_t the closed-form consistent
+// tangent of the return mapping, F the flexibility blocks K^-1 (read x write)
+// kept by the condensation and, under displacement control, dlambda/dc =
+// -m(K^-1 e_j) / m(u_F) (lambda keeps the controlled motion on its target). The
+// update solves (I - dG/dc) dc = R, dense on the write DoFs (tens to a few
+// thousand unknowns). Full steps are taken while they improve on the best |R|
+// within a few steps (a gap that closes or a slip that reverses beyond the
+// tangent's foresight is corrected by the next tangent, as in an active-set
+// Newton); otherwise (the states cycle) the iteration returns to the best
+// iterate and a backtracking line search halves the step until |R| falls by the
+// Armijo fraction, so the best |R| decreases at least every few updates and
+// stick/slip cycling cannot go on. Where not even that lowers |R| (a kink of
+// the return mapping at the iterate), the solver takes one initial-stiffness
+// update (coupled_interface_solver.cc, solve_step).
+//
 // Under MPI (harmonics distributed over the ranks, HarmonicSet::
-// distribute_over) harmonic g's flexibility block lives on its owner only:
-// each rank fills the columns of dG/dc of the harmonics it owns (the
-// projection of their plastic change onto every harmonic is local math on
-// the samples every rank shares), one sum over the ranks completes the
-// matrix (each column non-zero on exactly one rank: exact), and the owner
-// of the first harmonic solves the dense system and broadcasts dc, so every
-// rank takes the same step and the line search and watchdog compare the
-// same |R| on every rank.
+// distribute_over) harmonic g's flexibility block lives on its owner only: each
+// rank fills the columns of dG/dc of the harmonics it owns (the projection of
+// their plastic change onto every harmonic is local math on the samples every
+// rank shares), one sum over the ranks completes the matrix (each column
+// non-zero on exactly one rank: exact), and the owner of the first harmonic
+// solves the dense system and broadcasts dc, so every rank takes the same step
+// and the line search and watchdog compare the same |R| on every rank.
 #include <deal.II/lac/lapack_full_matrix.h>
 #include <fourier_ssi/coupled/coupled_interface_solver.h>
 

@@ -34,6 +34,27 @@ namespace FourierSSI
                FourierSSI::theta_samples_for(n_max, settings.theta_samples);
     }
 
+    /**
+     * A coulomb law stiffer than Newton's cap on K's springs is solved by
+     * the augmented Lagrangian (NonlinearInterfacePoints) where the samples
+     * are no more than the 2 n_max + 1 values of the band-limited gap (the
+     * default): its multipliers settle in a few updates. Where they are more
+     * (Theta samples set above that), the extra samples' multipliers at the
+     * contact edge move without nodal force and contract by only 1 - r/k an
+     * update (the disc at kappa = 1e4 with 132 samples: 50 updates without
+     * settling), so Newton iterates on the stiff law itself.
+     */
+    bool
+    augments_stiff_laws(const std::vector<Harmonic> &list,
+                        const LoadPathParameters    &settings,
+                        const InterfaceParameters   &interfaces)
+    {
+      const unsigned int n_max =
+        std::max(highest_harmonic(list), settings.maximum_harmonic);
+      return theta_samples_for(list, settings, interfaces) <=
+             minimum_theta_samples(n_max);
+    }
+
     std::string
     name_of(const LoadPathParameters &settings)
     {
@@ -95,7 +116,9 @@ namespace FourierSSI
                theta_samples_for(harmonics, settings, parameters.interfaces))
     , candidates(candidate_harmonics(harmonics, settings.maximum_harmonic))
     , spectrum(candidates, sampling.n_samples())
-    , interface(set, parameters)
+    , interface(set,
+                parameters,
+                augments_stiff_laws(harmonics, settings, parameters.interfaces))
     , points(interface.get_points())
     , pattern_solution(loads.solution)
   {
@@ -422,7 +445,10 @@ namespace FourierSSI
     (void)target; // the load path checks that the motion reached it
     complete(state);
     state.plastic = e.plastic;
-    interface.commit_contact(e.relative, e.traction, state.slip, state.plastic);
+    interface.commit_augmented(e.relative,
+                               e.traction,
+                               state.slip,
+                               state.plastic);
     state.origin      = state.plastic;
     result.iterations = iteration;
     result.residual   = e.scale.relative(e.residual_norm);

@@ -1274,11 +1274,11 @@ namespace FourierSSI
     if (interface)
       {
         // Exact contact keeps its slip apart; its origin carries lambda = t
-        // into the next step (NonlinearInterfacePoints::commit_contact).
-        interface->commit_contact(e.relative,
-                                  result.interface_state.traction,
-                                  state.interface_slip,
-                                  state.interface_plastic);
+        // into the next step (NonlinearInterfacePoints::commit_augmented).
+        interface->commit_augmented(e.relative,
+                                    result.interface_state.traction,
+                                    state.interface_slip,
+                                    state.interface_plastic);
         state.interface_origin = state.interface_plastic;
       }
     result.iterations = iteration;

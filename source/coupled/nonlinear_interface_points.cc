@@ -38,6 +38,28 @@ namespace FourierSSI
       return problem.get_interfaces()->get_pairs();
     }
 
+    /**
+     * 1/r - 1/k per component, r the springs of the return mapping (those
+     * in K), k the law's own (infinite for exact contact): an augmented
+     * sample's origin is p_c - (lambda - t0) times it, so that where lambda
+     * = t the return from it gives t - t0 = k (d - p), the law's own (p its
+     * slip; doc/nonlinear-interfaces.md section 5d); 0 where k is K's
+     * spring.
+     */
+    LocalVector
+    augmented_flexibility(const LocalVector &r,
+                          const LocalVector &k,
+                          const bool         exact)
+    {
+      LocalVector a = {{0., 0., 0.}};
+      for (unsigned int c = 0; c < 3; ++c)
+        if (exact)
+          a[c] = 1. / r[c];
+        else if (k[c] != r[c])
+          a[c] = 1. / r[c] - 1. / k[c];
+      return a;
+    }
+
     ThetaFactor
     factor_of(const unsigned int c)
     {
@@ -47,7 +69,8 @@ namespace FourierSSI
 
   NonlinearInterfacePoints::NonlinearInterfacePoints(
     const HarmonicSet   &set,
-    const AllParameters &parameters)
+    const AllParameters &parameters,
+    const bool           augment_stiff_laws)
     : set(set)
   {
     const std::vector<InterfacePair> &pairs = pairs_of(set.problem(0));
@@ -63,10 +86,22 @@ namespace FourierSSI
         const InterfaceStiffness &spring    = integrator.get_law_stiffness()[i];
         const InterfaceStiffness &in_K      = integrator.get_stiffness()[i];
         const unsigned int        law_index = laws.size();
-        laws.emplace_back(law, spring.normal, spring.shear);
-        stiffness.push_back({{in_K.shear, in_K.normal, in_K.shear}});
+        const LocalVector law_k = {{spring.shear, spring.normal, spring.shear}};
+        const LocalVector K_k   = {{in_K.shear, in_K.normal, in_K.shear}};
+        // A coulomb law stiffer than K (Newton's cap) is solved by the
+        // augmented Lagrangian on K's springs with its own compliance
+        // (augmented_flexibility), as contact is with none.
+        const bool augmented =
+          law.contact || (augment_stiff_laws && law_k != K_k);
+        laws.emplace_back(law,
+                          augmented ? in_K.normal : spring.normal,
+                          augmented ? in_K.shear : spring.shear);
+        stiffness.push_back(K_k);
         contact.push_back(law.contact);
-        law_springs.push_back({{spring.shear, spring.normal, spring.shear}});
+        law_springs.push_back(law_k);
+        flexibility.push_back(augmented ?
+                                augmented_flexibility(K_k, law_k, law.contact) :
+                                LocalVector{{0., 0., 0.}});
         soil_scale.push_back(integrator.get_soil_scale()[i]);
         if (law.cohesion == 0. && !parameters.initial_stress.enabled())
           strengthless = true;
@@ -265,7 +300,7 @@ namespace FourierSSI
     for (unsigned int i = 0; i < points.size(); ++i)
       {
         const unsigned int law = points[i].law;
-        if (stiffness[law] == law_springs[law])
+        if (augmented(law) || stiffness[law] == law_springs[law])
           continue;
         for (unsigned int j = 0; j < N; ++j)
           for (unsigned int c = 0; c < 3; ++c)
@@ -288,14 +323,16 @@ namespace FourierSSI
     // faces (the largest compliance error).
     struct Springs
     {
-      bool   contact  = false;
-      double smallest = std::numeric_limits<double>::max();
+      bool   contact   = false;
+      bool   augmented = false;
+      double smallest  = std::numeric_limits<double>::max();
     };
     std::map<types::boundary_id, Springs> by_id;
     for (const InterfacePoint &point : points)
       {
-        Springs &springs = by_id[pair_of(point).boundary_id];
-        springs.contact  = contact[point.law];
+        Springs &springs  = by_id[pair_of(point).boundary_id];
+        springs.contact   = contact[point.law];
+        springs.augmented = springs.augmented || augmented(point.law);
         springs.smallest =
           std::min(springs.smallest,
                    law_springs[point.law][1] / soil_scale[point.law]);
@@ -314,7 +351,11 @@ namespace FourierSSI
                  "compliance error against rigid contact about "
               << compliance_error_coefficient << " G/(kn r0) <= "
               << compliance_error_coefficient / springs.smallest
-              << " for a foundation of size r0 >= l";
+              << " for a foundation of size r0 >= l"
+              << (springs.augmented ?
+                    " (springs stiffer than K's: solved by the augmented "
+                    "Lagrangian on K's)" :
+                    "");
         log << "; " << n_samples
             << " theta samples for n <= " << highest_harmonic
             << " (2 n_max + 1 = " << needed << " carry the band-limited gap"
@@ -325,9 +366,12 @@ namespace FourierSSI
   }
 
   bool
-  NonlinearInterfacePoints::any_contact() const
+  NonlinearInterfacePoints::any_augmented() const
   {
-    return std::find(contact.begin(), contact.end(), true) != contact.end();
+    for (unsigned int law = 0; law < laws.size(); ++law)
+      if (augmented(law))
+        return true;
+    return false;
   }
 
   std::vector<LocalVector>
@@ -339,18 +383,20 @@ namespace FourierSSI
     const unsigned int       N = traction.size() / std::max<size_t>(size(), 1);
     std::vector<LocalVector> change(origin.size(), LocalVector{{0., 0., 0.}});
     for (unsigned int i = 0; i < points.size(); ++i)
-      if (contact[points[i].law])
+      if (augmented(points[i].law))
         for (unsigned int j = 0; j < N; ++j)
           for (unsigned int c = 0; c < 3; ++c)
             {
-              // The origin p_c - (lambda - t0) / r makes the trial traction
-              // lambda + r (d - p_c); lambda <- t moves it by (t - lambda)/r,
-              // the penetration (c = n) or elastic slip the spring allowed.
-              const unsigned int k      = i * N + j;
-              const double       r      = stiffness[points[i].law][c];
-              const double       t0     = points[i].initial_traction[c];
-              const double       lambda = t0 + r * (slip[k][c] - origin[k][c]);
-              change[k][c]              = (lambda - traction[k][c]) / r;
+              // The origin p_c - a (lambda - t0) (a = augmented_flexibility,
+              // 1 / r for contact); lambda <- t moves it by a (lambda - t):
+              // for contact the penetration (c = n) or elastic slip the
+              // spring r allowed, for a stiff coulomb law the part of it
+              // its own k would not have allowed.
+              const unsigned int k  = i * N + j;
+              const double       a  = flexibility[points[i].law][c];
+              const double       t0 = points[i].initial_traction[c];
+              change[k][c] =
+                slip[k][c] - origin[k][c] - a * (traction[k][c] - t0);
               origin[k][c] += change[k][c];
             }
     return change;
@@ -394,7 +440,7 @@ namespace FourierSSI
   }
 
   void
-  NonlinearInterfacePoints::commit_contact(
+  NonlinearInterfacePoints::commit_augmented(
     const std::vector<LocalVector> &relative,
     const std::vector<LocalVector> &traction,
     std::vector<LocalVector>       &slip,
@@ -402,19 +448,29 @@ namespace FourierSSI
   {
     const unsigned int N = relative.size() / std::max<size_t>(size(), 1);
     for (unsigned int i = 0; i < points.size(); ++i)
-      if (contact[points[i].law])
+      {
+        const unsigned int law = points[i].law;
+        if (!augmented(law))
+          continue;
         for (unsigned int j = 0; j < N; ++j)
           {
             // Exact contact keeps no elastic slip: the tangential relative
             // displacement is all slip; the gap is no memory (its normal
-            // part 0), and the next step starts from lambda = t.
-            const unsigned int k = i * N + j;
-            slip[k]              = {{relative[k][0], 0., relative[k][2]}};
+            // part 0). A stiff coulomb law keeps its own elastic part,
+            // p = d - (t - t0) / k, as its return mapping does. The next
+            // step starts from lambda = t.
+            const unsigned int k  = i * N + j;
+            const LocalVector &t0 = points[i].initial_traction;
+            for (unsigned int c = 0; c < 3; ++c)
+              slip[k][c] = contact[law] ?
+                             (c == 1 ? 0. : relative[k][c]) :
+                             relative[k][c] -
+                               (traction[k][c] - t0[c]) / law_springs[law][c];
             for (unsigned int c = 0; c < 3; ++c)
               origin[k][c] =
-                slip[k][c] - (traction[k][c] - points[i].initial_traction[c]) /
-                               stiffness[points[i].law][c];
+                slip[k][c] - flexibility[law][c] * (traction[k][c] - t0[c]);
           }
+      }
   }
 
   double
@@ -455,7 +511,13 @@ namespace FourierSSI
     const unsigned int              updates,
     const std::vector<LocalVector> &relative) const
   {
-    if (updates > 0)
+    if (updates == 0)
+      return;
+    // Only exact contact has a penetration to report; a stiff coulomb law's
+    // is its own compliance.
+    if (std::find(contact.begin(), contact.end(), true) == contact.end())
+      log << "; " << updates << " multiplier updates";
+    else
       log << "; " << updates << " contact multiplier updates, penetration "
           << largest_penetration(relative)
           << " of the largest relative displacement";

@@ -71,10 +71,15 @@ namespace FourierSSI
     /**
      * The Gauss points of every pair whose boundary id has a coulomb law;
      * one line if there is none. `set` may grow later (harmonics added):
-     * every call reads its current harmonics.
+     * every call reads its current harmonics. `augment_stiff_laws`: a
+     * coulomb law stiffer than the springs in K (Newton's cap) is solved by
+     * the augmented Lagrangian on K's springs (update_multipliers);
+     * otherwise Newton iterates on its own springs through the return
+     * mapping (iteration_plastic).
      */
     NonlinearInterfacePoints(const HarmonicSet   &set,
-                             const AllParameters &parameters);
+                             const AllParameters &parameters,
+                             const bool           augment_stiff_laws = false);
 
     const std::vector<InterfacePoint> &
     get_points() const
@@ -147,11 +152,12 @@ namespace FourierSSI
      * d_p of the springs assembled into K at every sample,
      * d - D_K^-1 (t - t0): load_of() of it is the correction load c =
      * int B^T (D_K d - (t - t0)) that makes K u = lambda F + c carry the
-     * law's traction t. Where K holds the law's springs (no cap; contact)
-     * that is the law's plastic part, taken as it is (the difference
-     * d - (d - d_p) would add round-off of d to it, which slowed the
-     * fixed-point iteration 2.3 times at kappa = 1e4); under Newton's cap
-     * (coulomb) it holds what the law's stiffer response adds.
+     * law's traction t. Where the return mapping has K's springs (no cap;
+     * an augmented law) that is its plastic part, taken as it is (the
+     * difference d - (d - d_p) would add round-off of d to it, which
+     * slowed the fixed-point iteration 2.3 times at kappa = 1e4); under
+     * Newton's cap without augmentation it holds what the law's stiffer
+     * response adds.
      */
     std::vector<LocalVector>
     iteration_plastic(const std::vector<LocalVector> &relative,
@@ -171,18 +177,25 @@ namespace FourierSSI
              const unsigned int n_samples,
              const unsigned int highest_harmonic) const;
 
-    /** Some nonlinear interface is `contact` (augmented Lagrangian). */
+    /**
+     * Some nonlinear interface is solved by the augmented Lagrangian:
+     * `contact`, or a coulomb law stiffer than the springs in K (Newton's
+     * cap, interface_iteration_stiffness).
+     */
     bool
-    any_contact() const;
+    any_augmented() const;
 
     /**
-     * Uzawa update of the contact multipliers (doc/nonlinear-interfaces.md
-     * section 5d): at every contact sample the return starts from the
-     * origin p_c - (lambda - t0) / r (p_c the committed slip, r the
-     * augmentation), so its trial traction is lambda + r (d - p_c); here
-     * lambda <- t: the origin moves by the penetration and elastic slip
-     * the augmentation still allowed, not at all where the contact
-     * conditions hold exactly. Returns that change per sample [m] (zero
+     * Uzawa update of the multipliers (doc/nonlinear-interfaces.md section
+     * 5d): at every augmented sample the return starts from the origin
+     * p_c - a (lambda - t0) (p_c the committed slip, r the springs in K,
+     * k the law's own, a = 1/r - 1/k, 1/r for contact), so its trial
+     * traction is lambda + r (d - p_c) - (r/k) (lambda - t0); here lambda
+     * <- t. Where it stops, t - t0 = k (d - p): exact contact for k
+     * infinite, the stiff coulomb law's own springs otherwise, while every
+     * Newton iteration sees only the moderate r. The origin moves by a
+     * (lambda - t): for contact the penetration and elastic slip the
+     * augmentation still allowed. Returns that change per sample [m] (zero
      * at the samples of other laws).
      */
     std::vector<LocalVector>
@@ -190,10 +203,10 @@ namespace FourierSSI
                        const std::vector<LocalVector> &slip,
                        std::vector<LocalVector>       &origin) const;
 
-    /** Uzawa updates of the contact multipliers before a step is cut. */
+    /** Uzawa updates of the multipliers before a step is cut. */
     static constexpr unsigned int maximum_multiplier_updates = 50;
 
-    /** What an update of the contact multipliers left. */
+    /** What an update of the multipliers left. */
     enum class MultiplierUpdate
     {
       /** the change no longer acts on the displacements (its nodal force) */
@@ -231,10 +244,10 @@ namespace FourierSSI
     /**
      * A load step of either coupled solver with the augmented Lagrangian
      * (doc/nonlinear-interfaces.md section 5d): iterate() converges the step
-     * at the current multipliers (false: cut the step); with a contact
-     * interface update(u) then moves them (update_and_test_multipliers()
-     * after the u-th converged iteration), until their change no longer
-     * acts on the displacements. `updates` counts them.
+     * at the current multipliers (false: cut the step); with an augmented
+     * interface (any_augmented()) update(u) then moves them
+     * (update_and_test_multipliers() after the u-th converged iteration), until
+     * their change no longer acts on the displacements. `updates` counts them.
      * False: the step must be cut.
      */
     template <class Iterate, class Update>
@@ -247,7 +260,7 @@ namespace FourierSSI
         {
           if (!iterate())
             return false;
-          if (!any_contact())
+          if (!any_augmented())
             return true;
           updates                     = u + 1;
           const MultiplierUpdate next = update(u);
@@ -257,15 +270,16 @@ namespace FourierSSI
     }
 
     /**
-     * A converged step at the contact samples: p_c <- (d_s, 0, d_theta)
-     * (exact contact has no elastic slip), and the origin of the next step
-     * from lambda = t.
+     * A converged step at the augmented samples: p_c <- (d_s, 0, d_theta)
+     * for contact (no elastic slip), d - (t - t0) / k for a stiff coulomb
+     * law (its own elastic part), and the origin of the next step from
+     * lambda = t.
      */
     void
-    commit_contact(const std::vector<LocalVector> &relative,
-                   const std::vector<LocalVector> &traction,
-                   std::vector<LocalVector>       &slip,
-                   std::vector<LocalVector>       &origin) const;
+    commit_augmented(const std::vector<LocalVector> &relative,
+                     const std::vector<LocalVector> &traction,
+                     std::vector<LocalVector>       &slip,
+                     std::vector<LocalVector>       &origin) const;
 
     /**
      * The largest f(t) = tau + t_n tan(phi) - c over the samples given
@@ -284,8 +298,9 @@ namespace FourierSSI
 
     /**
      * "; N contact multiplier updates, penetration P of the largest
-     * relative displacement" for a step's log line (nothing without
-     * updates).
+     * relative displacement" for a step's log line, "; N multiplier
+     * updates" where only stiff coulomb laws are augmented (nothing
+     * without updates).
      */
     void
     write_multiplier_updates(std::ostream                   &log,
@@ -390,6 +405,22 @@ namespace FourierSSI
     std::vector<LocalVector> stiffness;
     /** Per law: contact (augmented Lagrangian) rather than coulomb. */
     std::vector<bool> contact;
+    /**
+     * Per law: 1/r - 1/k of each spring of an augmented law (r in K and
+     * in the return mapping, k the law's own, infinite for contact), zero
+     * elsewhere (augmented_flexibility in the source).
+     */
+    std::vector<LocalVector> flexibility;
+
+    /**
+     * The law's multipliers move between converged iterations (augmented
+     * Lagrangian): contact, and a coulomb law stiffer than K's springs.
+     */
+    bool
+    augmented(const unsigned int law) const
+    {
+      return flexibility[law] != LocalVector{{0., 0., 0.}};
+    }
     /** Per law: its springs (ks, kn, ks) and G / l of its pair. */
     std::vector<LocalVector>    law_springs;
     std::vector<double>         soil_scale;

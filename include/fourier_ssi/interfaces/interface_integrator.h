@@ -111,7 +111,8 @@ namespace FourierSSI
      * The springs of each pair's law (kn, ks resolved: vermeer's rule, the
      * augmentation of contact); get_stiffness() but where Newton caps a
      * coulomb interface's springs in K (InterfaceParameters::
-     * iteration_stiffness_cap).
+     * iteration_stiffness_cap; the law's own springs then act through the
+     * augmented Lagrangian, NonlinearInterfacePoints).
      */
     const std::vector<InterfaceStiffness> &
     get_law_stiffness() const

@@ -86,8 +86,10 @@ namespace FourierSSI
    * given, in units of G / l (G the shear modulus of the softer side at the
    * face, l the interface's mean face length): the augmentation of
    * `contact`, and under Newton (Load path/Stiffness = tangent)
-   * the cap on the springs of a coulomb interface assembled into K (its
-   * own kn, ks stay in the return mapping). Stiffer springs make K^-1 and
+   * the cap on the springs of a coulomb interface assembled into K and in
+   * its return mapping; its own stiffer kn, ks then come in through the
+   * augmented Lagrangian's multipliers (NonlinearInterfacePoints::
+   * update_multipliers). Stiffer springs make K^-1 and
    * the correction load c = int B^T (D d - (t - t0)) carry about kappa
    * times the round-off of the applied load, which at kappa = 1e8 left the
    * Newton matrix without a correct digit (section 5b).
