@@ -140,7 +140,10 @@ namespace FourierSSI
     make_points();
     check_initial_stress();
     if (parameters.interfaces.any_nonlinear())
-      interface = std::make_unique<NonlinearInterfacePoints>(set, parameters);
+      // Coulomb laws above the soil cap (soil_iteration_stiffness) through
+      // the multipliers, on the soil's samples.
+      interface =
+        std::make_unique<NonlinearInterfacePoints>(set, parameters, true);
     if (set.n_owning_ranks() > 1)
       {
         point_stride = set.n_owning_ranks();

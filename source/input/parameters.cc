@@ -533,9 +533,12 @@ namespace FourierSSI
     choose_element(*this);
     initial_stress.parse_parameters(prm);
     load_path.parse_parameters(prm);
-    // Newton on the interface-only iteration assembles coulomb springs no
-    // stiffer than interface_iteration_stiffness G / l (interface_law.h).
-    if (load_path.tangent_stiffness && !soil_plasticity.any())
+    // Newton (of either coupled solver) assembles coulomb springs no
+    // stiffer than a cap times G / l; stiffer laws act through the augmented
+    // Lagrangian's multipliers (interface_law.h).
+    if (soil_plasticity.any() && soil_plasticity.tangent)
+      interfaces.iteration_stiffness_cap = soil_iteration_stiffness;
+    else if (!soil_plasticity.any() && load_path.tangent_stiffness)
       interfaces.iteration_stiffness_cap = interface_iteration_stiffness;
     check_laws(*this);
     check_target_accuracy(*this);
