@@ -1,5 +1,5 @@
-// AndersonAcceleration (include/fourier_ssi/coupled/anderson_acceleration.h) on an
-// affine fixed point x = A x + b split in two blocks, against properties
+// AndersonAcceleration (include/fourier_ssi/coupled/anderson_acceleration.h) on
+// an affine fixed point x = A x + b split in two blocks, against properties
 // that hold independently of the implementation:
 //  * on an affine map, Anderson with depth m >= n (the dimension) and
 //    beta = 1 is equivalent to GMRES on (I - A) x = b (Walker & Ni 2011,

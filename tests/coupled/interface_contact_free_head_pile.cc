@@ -59,23 +59,6 @@ using namespace FourierSSI;
 
 namespace
 {
-  const double G_over_l = 3000. / (10. / 12.); // kPa/m
-
-  std::string
-  scene(const std::string &law, const std::string &integration)
-  {
-    std::string text = test_support::bundled_prm("prm/pile-free-head.prm",
-                                                 {{"Laws", ""},
-                                                  {"Soil reaction depths", ""},
-                                                  {"Interfaces", "5: " + law},
-                                                  {"Theta samples", "9"},
-                                                  {"Load steps", "2"},
-                                                  {"Target", "0.02"}});
-    return text + "subsection Load path\n  set Stiffness = tangent\nend\n" +
-           "subsection Interfaces\n  set Nonlinear integration = " +
-           integration + "\nend\n";
-  }
-
   struct Run
   {
     std::vector<LoadStepResult> steps;
@@ -98,9 +81,10 @@ namespace
   run(const std::string &law, const std::string &integration = "gauss")
   {
     std::cout << law << ", " << integration << " integration" << std::endl;
-    test_support::FactorizedScene scene_(scene(law, integration));
-    CoupledInterfaceSolver        solver(scene_.set, scene_.parameters);
-    Run                           r;
+    test_support::FactorizedScene scene_(
+      coupled_test::free_head_pile(law, integration));
+    CoupledInterfaceSolver solver(scene_.set, scene_.parameters);
+    Run                    r;
     r.log   = coupled_test::run_with_log(solver);
     r.steps = solver.get_steps();
     for (const LoadStepResult &s : r.steps)
@@ -111,14 +95,6 @@ namespace
     return r;
   }
 
-  std::string
-  penalty(const double kappa)
-  {
-    std::ostringstream law;
-    law << std::setprecision(17) << "coulomb, kn=" << kappa * G_over_l
-        << ", ks=" << kappa * G_over_l << ", c=0, phi=20, sigma_t=0";
-    return law.str();
-  }
 
   /** (4): the contact law at every sample of the last step. */
   void
@@ -173,7 +149,8 @@ main()
   // (4) the law.
   check_law(exact.last, exact.log, 1e-4);
   // (2) the penalty limit.
-  const Run    k3 = run(penalty(1e3)), k5 = run(penalty(1e5));
+  const Run k3       = run(coupled_test::free_head_pile_penalty(1e3)),
+            k5       = run(coupled_test::free_head_pile_penalty(1e5));
   const double limit = k5.H[1] + (k5.H[1] - k3.H[1]) / 99.;
   std::cout << "  penalty extrapolated to 1/kappa = 0: "
             << std::setprecision(12) << limit << " kN" << std::endl;
@@ -186,7 +163,8 @@ main()
   // (5) nodal integration.
   const Run nodal = run("contact, phi=20", "nodal");
   check_law(nodal.last, nodal.log, 1e-6);
-  const Run    n3 = run(penalty(1e3), "nodal"), n4 = run(penalty(1e4), "nodal");
+  const Run n3 = run(coupled_test::free_head_pile_penalty(1e3), "nodal"),
+            n4 = run(coupled_test::free_head_pile_penalty(1e4), "nodal");
   const double nodal_limit = n4.H[1] + (n4.H[1] - n3.H[1]) / 9.;
   check::relative("nodal: contact H vs the 1/kappa extrapolation of kappa = "
                   "1e3, 1e4",

@@ -42,32 +42,6 @@ using namespace FourierSSI;
 
 namespace
 {
-  const double G_over_l = 3000. / (10. / 12.); // kPa/m
-
-  std::string
-  scene(const std::string &law)
-  {
-    std::string text = test_support::bundled_prm("prm/pile-free-head.prm",
-                                                 {{"Laws", ""},
-                                                  {"Soil reaction depths", ""},
-                                                  {"Interfaces", "5: " + law},
-                                                  {"Theta samples", "9"},
-                                                  {"Load steps", "2"},
-                                                  {"Target", "0.02"}});
-    return text + "subsection Load path\n  set Stiffness = tangent\nend\n" +
-           "subsection Interfaces\n  set Nonlinear integration = nodal\n" +
-           "end\n";
-  }
-
-  std::string
-  penalty(const double kappa)
-  {
-    std::ostringstream law;
-    law << std::setprecision(17) << "coulomb, kn=" << kappa * G_over_l
-        << ", ks=" << kappa * G_over_l << ", c=0, phi=20, sigma_t=0";
-    return law.str();
-  }
-
   struct Run
   {
     std::vector<double>         H;
@@ -79,8 +53,9 @@ namespace
   run(const std::string &law)
   {
     std::cout << law << std::endl;
-    test_support::FactorizedScene scene_(scene(law));
-    CoupledInterfaceSolver        solver(scene_.set, scene_.parameters);
+    test_support::FactorizedScene scene_(
+      coupled_test::free_head_pile(law, "nodal"));
+    CoupledInterfaceSolver solver(scene_.set, scene_.parameters);
     coupled_test::run_with_log(solver);
     Run r;
     for (const LoadStepResult &s : solver.get_steps())
@@ -117,9 +92,11 @@ main()
 {
   // (1) every run converges.
   const Run exact = run("contact, phi=20");
-  const Run plain = run(penalty(500.));
-  const Run k4 = run(penalty(1e4)), k6 = run(penalty(1e6));
-  const Run k8 = run(penalty(1e8)), k10 = run(penalty(1e10));
+  const Run plain = run(coupled_test::free_head_pile_penalty(500.));
+  const Run k4    = run(coupled_test::free_head_pile_penalty(1e4)),
+            k6    = run(coupled_test::free_head_pile_penalty(1e6));
+  const Run k8    = run(coupled_test::free_head_pile_penalty(1e8)),
+            k10   = run(coupled_test::free_head_pile_penalty(1e10));
 
   // (2) the 1/kappa law, one contact set.
   for (const Run *r : {&plain, &k4, &k6, &k8, &k10})

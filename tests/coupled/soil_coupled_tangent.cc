@@ -1,5 +1,6 @@
 // The coupled tangent of the plastic soil (Stiffness = tangent,
-// include/fourier_ssi/coupled/coupled_tangent.h, doc/soil-plasticity.md section 3):
+// include/fourier_ssi/coupled/coupled_tangent.h, doc/soil-plasticity.md section
+// 3):
 //  (0) derivative: on prm/footing-capacity.prm with harmonics n = 0, 1, 2
 //      (both families, N = 13, nu = 0.3 so that the softened shear part is
 //      not hidden under the bulk stiffness) and random fields strained to

@@ -1,6 +1,6 @@
 // The closed-form return mapping of the perfectly plastic soil laws
-// (include/fourier_ssi/coupled/soil_law.h, doc/soil-plasticity.md section 2) against
-// hand-computed returns, the yield condition after every return, the
+// (include/fourier_ssi/coupled/soil_law.h, doc/soil-plasticity.md section 2)
+// against hand-computed returns, the yield condition after every return, the
 // closest-point property of associated flow, and the rejected inputs.
 //
 // Hand cases, G = 1000 kPa, K = 2000 kPa (stresses in kPa, tension +):
@@ -21,8 +21,8 @@
 
 #include <cmath>
 #include <deal.II/base/symmetric_tensor.h>
-#include <fourier_ssi/input/messages.h>
 #include <fourier_ssi/coupled/soil_law.h>
+#include <fourier_ssi/input/messages.h>
 #include <random>
 
 using namespace FourierSSI;

@@ -8,6 +8,7 @@
 #include "two_ranks.h"
 
 #include <fourier_ssi/coupled/coupled_interface_solver.h>
+#include <iomanip>
 #include <iostream>
 #include <sstream>
 #include <string>
@@ -49,6 +50,46 @@ namespace coupled_test
     for (unsigned int n = 1; n <= 32; ++n)
       harmonics += ", " + std::to_string(n);
     return test_support::with_entry(text, "Harmonics", harmonics);
+  }
+
+  /** G / l of the free-head pile's shaft faces (3000 kPa, l = 10 m / 12). */
+  constexpr double free_head_pile_G_over_l = 3000. / (10. / 12.); // kPa/m
+
+  /**
+   * prm/pile-free-head.prm in elastic soil with `law` on the shaft (the
+   * text after "5: "), n = 0..4 with Theta samples = 2 n_max + 1 = 9,
+   * Newton, pushed to u = 0.02 m in 2 steps, the nonlinear interfaces
+   * integrated by `integration` (gauss or nodal): the scene of the
+   * frictional-contact and stiff-penalty tests.
+   */
+  inline std::string
+  free_head_pile(const std::string &law, const std::string &integration)
+  {
+    std::string text = test_support::bundled_prm("prm/pile-free-head.prm",
+                                                 {{"Laws", ""},
+                                                  {"Soil reaction depths", ""},
+                                                  {"Interfaces", "5: " + law},
+                                                  {"Theta samples", "9"},
+                                                  {"Load steps", "2"},
+                                                  {"Target", "0.02"}});
+    return text + "subsection Load path\n  set Stiffness = tangent\nend\n" +
+           "subsection Interfaces\n  set Nonlinear integration = " +
+           integration + "\nend\n";
+  }
+
+  /**
+   * A tensionless coulomb shaft of the free-head pile, phi = 20, c = 0,
+   * kn = ks = kappa G / l.
+   */
+  inline std::string
+  free_head_pile_penalty(const double kappa)
+  {
+    std::ostringstream law;
+    law << std::setprecision(17)
+        << "coulomb, kn=" << kappa * free_head_pile_G_over_l
+        << ", ks=" << kappa * free_head_pile_G_over_l
+        << ", c=0, phi=20, sigma_t=0";
+    return law.str();
   }
 
   /** The solver's load steps; their log echoed to std::cout and returned. */
