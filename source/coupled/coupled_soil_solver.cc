@@ -108,6 +108,35 @@ namespace FourierSSI
         }
     }
 
+    /**
+     * Some nonlinear interface holds its faces together by multipliers
+     * where they can open: `contact`, or a coulomb law with a tension
+     * cut-off whose springs Newton's cap softened in K. Its samples are
+     * then 2 n_max + 1, one per value of the band-limited gap (more ask it
+     * to vanish where it has no values, and the multipliers at the contact
+     * edge drift; constrained_theta_samples()).
+     */
+    bool
+    holds_gaps_by_multipliers(const HarmonicSet   &set,
+                              const AllParameters &parameters)
+    {
+      if (parameters.interfaces.any_contact())
+        return true;
+      const InterfaceIntegrator *interfaces = set.problem(0).get_interfaces();
+      if (interfaces == nullptr || !parameters.interfaces.any_nonlinear())
+        return false;
+      const std::vector<InterfacePair> &pairs = interfaces->get_pairs();
+      for (unsigned int i = 0; i < pairs.size(); ++i)
+        {
+          const InterfaceStiffness &in_K = interfaces->get_stiffness()[i];
+          const InterfaceStiffness &own  = interfaces->get_law_stiffness()[i];
+          if (parameters.interfaces.laws.at(pairs[i].boundary_id).can_open() &&
+              (in_K.normal != own.normal || in_K.shear != own.shear))
+            return true;
+        }
+      return false;
+    }
+
     /** The rigid motion of fields given per harmonic (rigid_motion_of). */
     RigidMotion
     motion_of_fields(const HarmonicSet                 &set,
@@ -130,7 +159,7 @@ namespace FourierSSI
                theta_samples_for(highest_harmonic(harmonics),
                                  parameters.load_path.theta_samples))
     , interface_sampling(harmonics,
-                         parameters.interfaces.any_contact() ?
+                         holds_gaps_by_multipliers(set, parameters) ?
                            minimum_theta_samples(highest_harmonic(harmonics)) :
                            sampling.n_samples())
   {

@@ -105,10 +105,16 @@ namespace FourierSSI
         if (law.coulomb && parameters.iteration_stiffness_cap > 0.)
           {
             // Newton: K with springs no stiffer than the cap (the law's
-            // kn, ks act through the return mapping, section 5b).
-            const double cap = parameters.iteration_stiffness_cap * G_over_l;
-            k.normal         = std::min(k.normal, cap);
-            k.shear          = std::min(k.shear, cap);
+            // kn, ks act through the multipliers, section 5b); a law whose
+            // faces can open no stiffer than interface_iteration_stiffness
+            // (soil_iteration_stiffness says why).
+            const double cap =
+              (law.can_open() ? std::min(parameters.iteration_stiffness_cap,
+                                         interface_iteration_stiffness) :
+                                parameters.iteration_stiffness_cap) *
+              G_over_l;
+            k.normal = std::min(k.normal, cap);
+            k.shear  = std::min(k.shear, cap);
           }
         stiffness.push_back(k);
         const unsigned int degree = pair.nodes.size() - 1;

@@ -666,10 +666,10 @@ namespace FourierSSI
     ThetaSampling                 sampling;
     /**
      * The nonlinear interfaces' samples: those of the soil, but with
-     * `contact` always 2 n_max + 1, one per value of the band-limited gap
-     * (minimum_theta_samples(); more make the multipliers drift,
-     * constrained_theta_samples()), while
-     * Theta samples sets the soil's.
+     * `contact` or a stiff coulomb law that can open (through the
+     * multipliers) always 2 n_max + 1, one per value of the band-limited
+     * gap (minimum_theta_samples(); more make the multipliers drift,
+     * constrained_theta_samples()), while Theta samples sets the soil's.
      */
     ThetaSampling                          interface_sampling;
     std::vector<SoilLaw>                   laws;
