@@ -109,29 +109,30 @@ namespace FourierSSI
     }
 
     /**
-     * Some nonlinear interface holds its faces together by multipliers
-     * where they can open: `contact`, or a coulomb law with a tension
-     * cut-off whose springs Newton's cap softened in K. Its samples are
-     * then 2 n_max + 1, one per value of the band-limited gap (more ask it
-     * to vanish where it has no values, and the multipliers at the contact
+     * Some nonlinear interface holds faces that can open by multipliers
+     * (NonlinearInterfacePoints::augments: `contact`, or a coulomb law with
+     * a tension cut-off above Newton's cap). Its samples are then
+     * 2 n_max + 1, one per value of the band-limited gap (more ask it to
+     * vanish where it has no values, and the multipliers at the contact
      * edge drift; constrained_theta_samples()).
      */
     bool
     holds_gaps_by_multipliers(const HarmonicSet   &set,
                               const AllParameters &parameters)
     {
-      if (parameters.interfaces.any_contact())
-        return true;
       const InterfaceIntegrator *interfaces = set.problem(0).get_interfaces();
       if (interfaces == nullptr || !parameters.interfaces.any_nonlinear())
         return false;
       const std::vector<InterfacePair> &pairs = interfaces->get_pairs();
       for (unsigned int i = 0; i < pairs.size(); ++i)
         {
-          const InterfaceStiffness &in_K = interfaces->get_stiffness()[i];
-          const InterfaceStiffness &own  = interfaces->get_law_stiffness()[i];
-          if (parameters.interfaces.laws.at(pairs[i].boundary_id).can_open() &&
-              (in_K.normal != own.normal || in_K.shear != own.shear))
+          const InterfaceLaw &law =
+            parameters.interfaces.laws.at(pairs[i].boundary_id);
+          if (law.can_open() && NonlinearInterfacePoints::augments(
+                                  law,
+                                  interfaces->get_law_stiffness()[i],
+                                  interfaces->get_stiffness()[i],
+                                  true))
             return true;
         }
       return false;
@@ -170,7 +171,7 @@ namespace FourierSSI
     check_initial_stress();
     if (parameters.interfaces.any_nonlinear())
       // Coulomb laws above the soil cap (soil_iteration_stiffness) through
-      // the multipliers, on the soil's samples.
+      // the multipliers (on interface_sampling).
       interface =
         std::make_unique<NonlinearInterfacePoints>(set, parameters, true);
     if (set.n_owning_ranks() > 1)

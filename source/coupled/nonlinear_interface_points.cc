@@ -91,8 +91,7 @@ namespace FourierSSI
         // A coulomb law stiffer than K (Newton's cap) is solved by the
         // augmented Lagrangian on K's springs with its own compliance
         // (augmented_flexibility), as contact is with none.
-        const bool augmented =
-          law.contact || (augment_stiff_laws && law_k != K_k);
+        const bool augmented = augments(law, spring, in_K, augment_stiff_laws);
         laws.emplace_back(law,
                           augmented ? in_K.normal : spring.normal,
                           augmented ? in_K.shear : spring.shear);
@@ -132,6 +131,16 @@ namespace FourierSSI
       }
     AssertThrow(!points.empty(),
                 ExcMessage(entry + ": no face of a coulomb interface"));
+  }
+
+  bool
+  NonlinearInterfacePoints::augments(const InterfaceLaw       &law,
+                                     const InterfaceStiffness &own,
+                                     const InterfaceStiffness &in_K,
+                                     const bool augment_stiff_laws)
+  {
+    return law.contact || (augment_stiff_laws && (own.normal != in_K.normal ||
+                                                  own.shear != in_K.shear));
   }
 
   const InterfacePair &

@@ -26,21 +26,11 @@ using namespace soil_test;
 
 namespace
 {
-  /**
-   * The free-head rigid pile of prm/pile-free-head.prm (d = 1 m, L = 10 m,
-   * Tresca s_u = 10 kPa) with `law` on its shaft, n = 0 and 1, pushed to
-   * u = 0.01 m at the head in 4 steps with its rotation held.
-   */
+  /** free_head_pile() with 8 theta samples and its rotation held. */
   std::string
   pile_with_shaft(const std::string &law)
   {
-    return test_support::bundled_prm("prm/pile-free-head.prm",
-                                     {{"Harmonics", "0, 1"},
-                                      {"Theta samples", "8"},
-                                      {"Interfaces", "5: " + law},
-                                      {"Target", "0.01"},
-                                      {"Load steps", "4"},
-                                      {"Soil reaction depths", ""}}) +
+    return free_head_pile(law, {{"Theta samples", "8"}}) +
            test_support::entries("Rigid foundation",
                                  {{"Held motions", "rotation"}});
   }

@@ -34,17 +34,6 @@ using namespace soil_test;
 
 namespace
 {
-  std::string
-  pile_with_shaft(const std::string &law)
-  {
-    return test_support::bundled_prm("prm/pile-free-head.prm",
-                                     {{"Harmonics", "0, 1"},
-                                      {"Interfaces", "5: " + law},
-                                      {"Target", "0.01"},
-                                      {"Load steps", "4"},
-                                      {"Soil reaction depths", ""}});
-  }
-
   struct Curve
   {
     double                      H = 0.;
@@ -56,7 +45,7 @@ namespace
   run(const std::string &law)
   {
     std::cout << law << std::endl;
-    Run pile(pile_with_shaft(law));
+    Run pile(free_head_pile(law));
     pile.solver->run(std::cout);
     const std::vector<SoilStepResult> &steps = pile.solver->get_steps();
     check::equal(law + ": steps", steps.size(), std::size_t(4));

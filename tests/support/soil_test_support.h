@@ -43,6 +43,27 @@ namespace soil_test
             {"Z growth", "0.85"}};
   }
 
+  /**
+   * The free-head rigid pile of prm/pile-free-head.prm (d = 1 m, L = 10 m,
+   * Tresca s_u = 10 kPa) with `law` on its shaft, n = 0 and 1, pushed to
+   * u = 0.01 m at the head in 4 steps, without soil-reaction curves;
+   * `more` changes on top.
+   */
+  inline std::string
+  free_head_pile(
+    const std::string                                      &law,
+    const std::vector<std::pair<std::string, std::string>> &more = {})
+  {
+    std::vector<std::pair<std::string, std::string>> changes = {
+      {"Harmonics", "0, 1"},
+      {"Interfaces", "5: " + law},
+      {"Target", "0.01"},
+      {"Load steps", "4"},
+      {"Soil reaction depths", ""}};
+    changes.insert(changes.end(), more.begin(), more.end());
+    return test_support::bundled_prm("prm/pile-free-head.prm", changes);
+  }
+
   /** changes followed by more changes (one list for scene()). */
   inline std::vector<std::pair<std::string, std::string>>
   joined(std::vector<std::pair<std::string, std::string>>        changes,

@@ -81,6 +81,18 @@ namespace FourierSSI
                              const AllParameters &parameters,
                              const bool           augment_stiff_laws = false);
 
+    /**
+     * The one rule for whether a pair's law is solved by the augmented
+     * Lagrangian: `contact`, or (augment_stiff_laws) a coulomb law whose own
+     * springs `own` are stiffer than those assembled into K, `in_K`
+     * (Newton's cap).
+     */
+    static bool
+    augments(const InterfaceLaw       &law,
+             const InterfaceStiffness &own,
+             const InterfaceStiffness &in_K,
+             const bool                augment_stiff_laws);
+
     const std::vector<InterfacePoint> &
     get_points() const
     {
