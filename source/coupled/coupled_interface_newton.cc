@@ -12,15 +12,8 @@
 // kept by the condensation and, under displacement control, dlambda/dc =
 // -m(K^-1 e_j) / m(u_F) (lambda keeps the controlled motion on its target). The
 // update solves (I - dG/dc) dc = R, dense on the write DoFs (tens to a few
-// thousand unknowns). Full steps are taken while they improve on the best |R|
-// within a few steps (a gap that closes or a slip that reverses beyond the
-// tangent's foresight is corrected by the next tangent, as in an active-set
-// Newton); otherwise (the states cycle) the iteration returns to the best
-// iterate and a backtracking line search halves the step until |R| falls by the
-// Armijo fraction, so the best |R| decreases at least every few updates and
-// stick/slip cycling cannot go on. Where not even that lowers |R| (a kink of
-// the return mapping at the iterate), the solver takes one initial-stiffness
-// update (coupled_interface_solver.cc, solve_step).
+// thousand unknowns); the globalisation is the one of every coupled Newton
+// (safeguarded_newton.h, set in coupled_interface_solver.cc, iterate).
 //
 // Under MPI (harmonics distributed over the ranks, HarmonicSet::
 // distribute_over) harmonic g's flexibility block lives on its owner only: each
@@ -54,16 +47,6 @@ namespace FourierSSI
       std::copy(entries.begin(), entries.end(), first);
     }
 
-    /** Armijo fraction: accept a step alpha if |R| falls by c1 alpha |R|. */
-    constexpr double armijo_fraction = 1e-4;
-    /** Halvings of the Newton step before the update gives up (2^-16). */
-    constexpr unsigned int maximum_halvings = 16;
-    /**
-     * Full Newton steps that may fail to improve on the best |R| before
-     * the iteration returns to the best iterate and searches along its
-     * direction (the watchdog of Chamberlain et al., 1982).
-     */
-    constexpr unsigned int watchdog_steps = 4;
   } // namespace
 
   FullMatrix<double>
@@ -164,73 +147,4 @@ namespace FourierSSI
     add_correction(step, state);
   }
 
-  bool
-  CoupledInterfaceSolver::line_search(const double target,
-                                      StepState   &state,
-                                      Evaluation  &e) const
-  {
-    const Vector<double> dc    = newton_direction(e, state);
-    const StepState      start = state;
-    // The first step that meets the Armijo condition, else the step of the
-    // smallest |R| if it is below the start's.
-    double alpha = 1., best_alpha = 0., best_norm = e.residual_norm;
-    for (unsigned int halving = 0; halving <= maximum_halvings; ++halving)
-      {
-        add_scaled_correction(alpha, dc, state);
-        Evaluation trial = evaluate(target, state);
-        if (std::isfinite(trial.residual_norm) &&
-            trial.residual_norm <=
-              (1. - armijo_fraction * alpha) * e.residual_norm)
-          {
-            e = std::move(trial);
-            return true;
-          }
-        if (std::isfinite(trial.residual_norm) &&
-            trial.residual_norm < best_norm)
-          best_alpha = alpha, best_norm = trial.residual_norm;
-        state = start;
-        alpha /= 2.;
-      }
-    if (best_alpha == 0.)
-      return false;
-    add_scaled_correction(best_alpha, dc, state);
-    e = evaluate(target, state);
-    return true;
-  }
-
-  bool
-  CoupledInterfaceSolver::newton_update(const double    target,
-                                        StepState      &state,
-                                        Evaluation     &e,
-                                        NewtonWatchdog &watchdog) const
-  {
-    // 1. The best iterate so far; the full steps keep going while they
-    //    improve on it within watchdog_steps.
-    if (e.residual_norm < watchdog.best_norm)
-      {
-        watchdog.best       = state;
-        watchdog.best_norm  = e.residual_norm;
-        watchdog.since_best = 0;
-      }
-    else if (++watchdog.since_best > watchdog_steps)
-      {
-        // 2. No improvement over watchdog_steps full steps (the states
-        //    cycle): back to the best iterate and along its Newton
-        //    direction only as far as |R| decreases.
-        state               = watchdog.best;
-        e                   = evaluate(target, state);
-        watchdog.since_best = 0;
-        if (!line_search(target, state, e))
-          return false;
-        watchdog.best      = state;
-        watchdog.best_norm = e.residual_norm;
-        return true;
-      }
-    // 3. The full Newton step: a state change it does not foresee (a gap
-    //    that closes, a slip that reverses) is corrected by the next
-    //    tangent, as in an active-set (semismooth) Newton.
-    add_scaled_correction(1., newton_direction(e, state), state);
-    e = evaluate(target, state);
-    return std::isfinite(e.residual_norm);
-  }
 } // namespace FourierSSI

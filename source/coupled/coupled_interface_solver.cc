@@ -4,6 +4,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <fourier_ssi/coupled/coupled_interface_solver.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
+#include <fourier_ssi/coupled/safeguarded_newton.h>
 #include <fstream>
 #include <iomanip>
 #include <set>
@@ -466,7 +467,20 @@ namespace FourierSSI
   {
     FixedPointAcceleration acceleration(settings.acceleration,
                                         settings.anderson_depth);
-    NewtonWatchdog         watchdog;
+    // The globalisation (safeguarded_newton.h): up to 4 full steps may go on
+    // without a new best |R| (a gap that closes or a slip that reverses
+    // beyond the tangent's foresight is put right by the next tangent),
+    // then the line search from the best iterate halves down to 2^-16.
+    using Newton = SafeguardedNewton<StepState, Evaluation, Vector<double>>;
+    Newton newton(
+      Newton::Settings{4, 1. / 65536.},
+      [&](StepState &iterate) { return evaluate(target, iterate); },
+      [&](const Evaluation &at, const StepState &iterate) {
+        return newton_direction(at, iterate);
+      },
+      [&](const double alpha, const Vector<double> &dc, StepState &iterate) {
+        add_scaled_correction(alpha, dc, iterate);
+      });
     e = evaluate(target, state);
     for (const unsigned int last = iterations + settings.maximum_iterations;
          iterations <= last;
@@ -485,12 +499,11 @@ namespace FourierSSI
             if (e.scale.converged(e.residual_norm, settings.tolerance))
               return true;
           }
-        // Newton on the interface DoFs, safeguarded by a watchdog line
-        // search (coupled_interface_newton.cc); where no step along the
-        // Newton direction lowers |R| (a kink of the return mapping right
-        // at the iterate), one initial-stiffness update moves off it.
-        if (settings.tangent_stiffness &&
-            newton_update(target, state, e, watchdog))
+        // Newton on the interface DoFs (coupled_interface_newton.cc); where
+        // no step along the Newton direction lowers |R| (a kink of the
+        // return mapping right at the iterate), one initial-stiffness
+        // update (exact and cheap, condensed) moves off it.
+        if (settings.tangent_stiffness && newton.update(state, e))
           continue;
         // 5: c <- c + dc and v <- v + K^-1 dc at the interface (section 5,
         //    condensed: exact, without a re-solve).

@@ -7,6 +7,7 @@
 #include <fourier_ssi/coupled/coupled_soil_solver.h>
 #include <fourier_ssi/coupled/load_path.h>
 #include <fourier_ssi/coupled/load_pattern.h>
+#include <fourier_ssi/coupled/safeguarded_newton.h>
 #include <fourier_ssi/fourier/harmonic_pair_integral.h>
 #include <fourier_ssi/harmonic/stress_postprocessor.h>
 #include <fourier_ssi/linear_algebra/thread_ranges.h>
@@ -21,15 +22,6 @@ namespace FourierSSI
   namespace
   {
     const std::string entry = "Soil plasticity";
-
-    /**
-     * Stiffness = tangent: the shortest fraction of a Newton update the
-     * backtracking tries, and how many updates without a new smallest
-     * residual mean the iteration cycles between plastic states (the step
-     * is then cut).
-     */
-    constexpr double       smallest_step_length = 1. / 16.;
-    constexpr unsigned int stagnation_limit     = 20;
 
     /**
      * The acceleration of the out-of-balance iteration: Newton updates are
@@ -1318,74 +1310,46 @@ namespace FourierSSI
     result.residual   = e.scale.relative(e.residual_norm);
   }
 
-  CoupledSoilSolver::NewtonMove
-  CoupledSoilSolver::newton_update(Evaluation     &e,
-                                   const bool      displacement_control,
-                                   StepState      &state,
-                                   NewtonProgress &newton)
+  CoupledSoilSolver::Correction
+  CoupledSoilSolver::newton_correction(const Evaluation &e,
+                                       const StepState  &state,
+                                       const bool        displacement_control)
   {
-    // A Newton update that increased the residual crossed many changes of
-    // plastic state: halve it (backtracking).
-    if (newton.updates > 0 && e.residual_norm > newton.previous_norm)
-      {
-        // No decrease even at the shortest step: the Newton direction is
-        // wrong (a near-singular tangent at a plateau); going on from the
-        // worse point wanders off (measured: |R| / |F| up to 1e6 before
-        // the stagnation rule stops it), so cut the step at once.
-        if (newton.step_length <= smallest_step_length)
-          return NewtonMove::failed;
-        newton.step_length /= 2.;
-        for (unsigned int h = 0; h < set.size(); ++h)
-          {
-            state.correction_load[h].add(-newton.step_length,
-                                         newton.last_load[h]);
-            // A harmonic's displacement is on its owner only.
-            if (set.owns(h))
-              state.correction_solution[h].add(-newton.step_length,
-                                               newton.last_solution[h]);
-          }
-        return NewtonMove::backtracked;
-      }
-    // Cycling between plastic states: cut the step instead.
-    if (e.residual_norm < newton.smallest_norm)
-      {
-        newton.smallest_norm  = e.residual_norm;
-        newton.since_smallest = 0;
-      }
-    else if (++newton.since_smallest > stagnation_limit)
-      return NewtonMove::failed;
-    newton.previous_norm = e.residual_norm;
-    newton.step_length   = 1.;
     // Rebuilt at every update: keeping it for 3-10 updates (modified
     // Newton) was measured slower (doc/soil-plasticity.md 3b).
     update_tangent(e.strain,
                    e.relative,
                    state.interface_origin,
                    displacement_control);
-    e.residual = tangent_correction(e.residual, displacement_control);
-    ++newton.updates;
-    return NewtonMove::updated;
+    return correction_of(tangent_correction(e.residual, displacement_control));
   }
 
-  void
-  CoupledSoilSolver::apply_correction(std::vector<Vector<double>> correction,
-                                      StepState                  &state,
-                                      NewtonProgress             &newton) const
+  CoupledSoilSolver::Correction
+  CoupledSoilSolver::correction_of(std::vector<Vector<double>> load) const
   {
     std::vector<std::vector<Vector<double>>> increment(set.size());
     for (unsigned int h = 0; h < set.size(); ++h)
-      {
-        state.correction_load[h] += correction[h];
-        newton.last_load[h] = correction[h];
-        increment[h]        = {std::move(correction[h])};
-      }
+      increment[h] = {load[h]};
     set.solve_increments(increment);
+    Correction correction;
+    correction.load = std::move(load);
     for (unsigned int h = 0; h < set.size(); ++h)
-      if (set.owns(h))
-        {
-          state.correction_solution[h] += increment[h][0];
-          newton.last_solution[h] = increment[h][0];
-        }
+      correction.solution.push_back(std::move(increment[h][0]));
+    return correction;
+  }
+
+  void
+  CoupledSoilSolver::add_correction(const double      alpha,
+                                    const Correction &correction,
+                                    StepState        &state) const
+  {
+    for (unsigned int h = 0; h < set.size(); ++h)
+      {
+        state.correction_load[h].add(alpha, correction.load[h]);
+        // A harmonic's displacement is on its owner only.
+        if (set.owns(h))
+          state.correction_solution[h].add(alpha, correction.solution[h]);
+      }
   }
 
   bool
@@ -1426,6 +1390,22 @@ namespace FourierSSI
     return converged;
   }
 
+  CoupledSoilSolver::Evaluation
+  CoupledSoilSolver::evaluate_at(const double    target,
+                                 const bool      holding,
+                                 StepState      &state,
+                                 SoilStepResult &result)
+  {
+    const bool displacement_control =
+      !holding && settings.control == LoadPathParameters::Control::displacement;
+    if (swiping)
+      set_swipe_multipliers(state, target, displacement_control);
+    else if (!holding)
+      state.load_factor =
+        displacement_control ? controlled_load_factor(state, target) : target;
+    return evaluate(state, result);
+  }
+
   bool
   CoupledSoilSolver::iterate(const double    target,
                              const bool      holding,
@@ -1440,19 +1420,29 @@ namespace FourierSSI
     FixedPointAcceleration acceleration(acceleration_of(settings,
                                                         tangent_stiffness),
                                         settings.anderson_depth);
-    NewtonProgress         newton;
-    newton.last_load.resize(set.size());
-    newton.last_solution.resize(set.size());
+    const auto             evaluate_iterate = [&](StepState &iterate) {
+      return evaluate_at(target, holding, iterate, result);
+    };
+    // The globalisation (safeguarded_newton.h): a full step that raises |R|
+    // is halved at once, down to 1/16, and the step is cut if even that
+    // does not lower |R|. Going on from a worse plastic state wanders off
+    // (measured: |R| / |F| up to 1e6 at a plateau, where the tangent is
+    // near-singular), and an initial-stiffness update of the whole soil does
+    // not move off it (doc/soil-plasticity.md 3b).
+    using Newton = SafeguardedNewton<StepState, Evaluation, Correction>;
+    Newton newton(
+      Newton::Settings{0, 1. / 16.},
+      evaluate_iterate,
+      [&](const Evaluation &at, const StepState &iterate) {
+        return newton_correction(at, iterate, displacement_control);
+      },
+      [&](const double alpha, const Correction &dc, StepState &iterate) {
+        add_correction(alpha, dc, iterate);
+      });
+    e = evaluate_iterate(state);
     for (unsigned int iteration = 0; iteration <= settings.maximum_iterations;
          ++iteration)
       {
-        if (swiping)
-          set_swipe_multipliers(state, target, displacement_control);
-        else if (!holding)
-          state.load_factor = displacement_control ?
-                                controlled_load_factor(state, target) :
-                                target;
-        e = evaluate(state, result);
         if (!std::isfinite(e.residual_norm))
           return false;
         if (e.scale.converged(e.residual_norm, settings.tolerance))
@@ -1462,17 +1452,16 @@ namespace FourierSSI
           }
         if (tangent_stiffness)
           {
-            const NewtonMove move =
-              newton_update(e, displacement_control, state, newton);
-            if (move == NewtonMove::failed)
+            // No decrease along the Newton direction: cut (soil_newton).
+            if (!newton.update(state, e))
               return false;
-            if (move == NewtonMove::backtracked)
-              continue;
+            continue;
           }
-        apply_correction(acceleration.increment(state.correction_load,
-                                                e.residual),
-                         state,
-                         newton);
+        add_correction(1.,
+                       correction_of(acceleration.increment(
+                         state.correction_load, e.residual)),
+                       state);
+        e = evaluate_iterate(state);
       }
     return false;
   }

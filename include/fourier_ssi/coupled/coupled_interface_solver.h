@@ -318,27 +318,6 @@ namespace FourierSSI
            LoadStepResult    &result,
            InterfaceSnapshot &snapshot) const;
 
-    /** The best iterate of a Newton step so far (its |R|). */
-    struct NewtonWatchdog
-    {
-      StepState    best;
-      double       best_norm  = std::numeric_limits<double>::infinity();
-      unsigned int since_best = 0;
-    };
-
-    /**
-     * Stiffness = tangent: one Newton update of c on the write DoFs
-     * (coupled_interface_newton.cc): the full step, or, when full steps
-     * have not improved on the best |R| for a few updates, a backtracking
-     * line search from the best iterate. `e` becomes the evaluation at the
-     * new iterate. False if no step along the direction decreases |R|.
-     */
-    bool
-    newton_update(const double    target,
-                  StepState      &state,
-                  Evaluation     &e,
-                  NewtonWatchdog &watchdog) const;
-
     /** dc of (I - dG/dc) dc = R, the write DoFs of every harmonic in turn. */
     Vector<double>
     newton_direction(const Evaluation &e, const StepState &state) const;
@@ -348,13 +327,6 @@ namespace FourierSSI
     add_scaled_correction(const double          alpha,
                           const Vector<double> &dc,
                           StepState            &state) const;
-
-    /**
-     * Along the Newton direction at `state`, halving the step until |R|
-     * falls by the Armijo fraction; false if 2^-16 of it does not.
-     */
-    bool
-    line_search(const double target, StepState &state, Evaluation &e) const;
 
     /** dG/dc on the write DoFs of every harmonic, dense (column (h, j)). */
     FullMatrix<double>

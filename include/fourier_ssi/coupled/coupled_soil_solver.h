@@ -444,46 +444,40 @@ namespace FourierSSI
            StepState         &state,
            SoilStepResult    &result) const;
 
-    /**
-     * Stiffness = tangent: the last update of a step (to go back along it
-     * when it overshot) and the progress of the iteration.
-     */
-    struct NewtonProgress
+    /** A change of c and the displacement K^-1 dc it makes (per harmonic). */
+    struct Correction
     {
-      std::vector<Vector<double>> last_load, last_solution;
-      double                      step_length = 1., previous_norm = 0.;
-      double       smallest_norm  = std::numeric_limits<double>::max();
-      unsigned int updates        = 0;
-      unsigned int since_smallest = 0;
-    };
-
-    /** What a Newton update did. */
-    enum class NewtonMove
-    {
-      /** e.residual is now the tangent correction dc. */
-      updated,
-      /** the last update was halved: evaluate again. */
-      backtracked,
-      /** no decrease even at the shortest step, or stagnation: cut. */
-      failed
+      std::vector<Vector<double>> load, solution;
     };
 
     /**
-     * Stiffness = tangent: backtrack the last update if it raised |R|,
-     * else rebuild the tangent at the iterate and turn e.residual into the
-     * Newton correction (tangent_correction).
+     * Steps 1-4 at `state` after its load factor (or a swipe's multipliers)
+     * is set from `target` for the control (evaluate()).
      */
-    NewtonMove
-    newton_update(Evaluation     &e,
-                  const bool      displacement_control,
-                  StepState      &state,
-                  NewtonProgress &newton);
+    Evaluation
+    evaluate_at(const double    target,
+                const bool      holding,
+                StepState      &state,
+                SoilStepResult &result);
 
-    /** c <- c + dc and v <- v + K^-1 dc (one solve per harmonic). */
+    /**
+     * Stiffness = tangent: the Newton correction at an iterate, the tangent
+     * rebuilt there (tangent_correction), with its K^-1 dc.
+     */
+    Correction
+    newton_correction(const Evaluation &e,
+                      const StepState  &state,
+                      const bool        displacement_control);
+
+    /** dc and its K^-1 dc (one solve per harmonic). */
+    Correction
+    correction_of(std::vector<Vector<double>> load) const;
+
+    /** c <- c + alpha dc and v <- v + alpha K^-1 dc. */
     void
-    apply_correction(std::vector<Vector<double>> correction,
-                     StepState                  &state,
-                     NewtonProgress             &newton) const;
+    add_correction(const double      alpha,
+                   const Correction &correction,
+                   StepState        &state) const;
 
     /**
      * Solve one step to `target`: the held fraction (holding), else the

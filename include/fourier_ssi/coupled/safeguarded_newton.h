@@ -1,0 +1,146 @@
+/**
+ * The Newton update of every coupled iteration under Load path/Stiffness =
+ * tangent, whatever linearises it (the interfaces' condensed Jacobian,
+ * coupled_interface_newton.cc; the coupled tangent of the plastic soil,
+ * coupled_soil_solver.cc): one globalisation for both
+ * (doc/nonlinear-interfaces.md section 5b, doc/soil-plasticity.md 3b).
+ *
+ * The unknown is the correction load c; an iterate is a solver's state, its
+ * evaluation holds |R| (R = G(c) - c). From the best iterate so far Newton
+ * takes the full step. Full steps may go on without improving on the best
+ * |R| for `nonmonotone_steps` updates: a gap that closes or a slip that
+ * reverses beyond the tangent's foresight is corrected by the next
+ * tangent, as in an active-set (semismooth) Newton. After that (the states
+ * cycle) the iteration returns to the best iterate and searches along the
+ * direction it took from there, halving the step from 1/2 (the full step
+ * did not improve) until |R| falls by the Armijo fraction, down to
+ * `shortest_step`; failing that, the step of the smallest |R| below the
+ * best is taken. So the best |R| falls at least every nonmonotone_steps + 1
+ * updates and stick/slip or plastic cycling cannot go on (the watchdog of
+ * Chamberlain et al., 1982, with a backtracking line search). Where no
+ * step along the direction lowers |R| at all, update() returns false and
+ * the solver decides (a cut of the load step, or one initial-stiffness
+ * update off a kink of the return mapping).
+ */
+#ifndef fourier_ssi_safeguarded_newton_h
+#define fourier_ssi_safeguarded_newton_h
+
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <utility>
+
+namespace FourierSSI
+{
+  /**
+   * State: a solver's iterate (copyable). Evaluation: what it evaluates at
+   * an iterate, with a member residual_norm (|R|). Direction: a Newton
+   * direction, added to a state with a step length.
+   */
+  template <class State, class Evaluation, class Direction>
+  class SafeguardedNewton
+  {
+  public:
+    struct Settings
+    {
+      /** Full steps without a new best |R| before the line search. */
+      unsigned int nonmonotone_steps = 0;
+      /** The shortest fraction of a Newton step the line search tries. */
+      double shortest_step = 1. / 16.;
+    };
+
+    /** The evaluation at an iterate (may set its load factor). */
+    using Evaluate = std::function<Evaluation(State &)>;
+    /** The Newton direction at an iterate and its evaluation. */
+    using Solve = std::function<Direction(const Evaluation &, const State &)>;
+    /** state += alpha direction. */
+    using Move = std::function<void(double, const Direction &, State &)>;
+
+    SafeguardedNewton(const Settings &settings,
+                      Evaluate        evaluate,
+                      Solve           solve,
+                      Move            move)
+      : settings(settings)
+      , evaluate(std::move(evaluate))
+      , solve(std::move(solve))
+      , move(std::move(move))
+    {}
+
+    /**
+     * One Newton update of `state`; `e` is its evaluation on entry and the
+     * new iterate's on return. False if no step along the best iterate's
+     * direction lowers its |R| (the state is then the best iterate).
+     */
+    bool
+    update(State &state, Evaluation &e)
+    {
+      if (e.residual_norm <= best_norm)
+        keep_as_best(state, e);
+      else if (++since_best > settings.nonmonotone_steps)
+        return search_from_best(state, e);
+      Direction direction = solve(e, state);
+      move(1., direction, state);
+      if (since_best == 0)
+        best_direction = std::move(direction);
+      e = evaluate(state);
+      return std::isfinite(e.residual_norm);
+    }
+
+  private:
+    /** Armijo fraction: a step alpha is taken if |R| falls by c1 alpha |R|. */
+    static constexpr double armijo_fraction = 1e-4;
+
+    void
+    keep_as_best(const State &state, const Evaluation &e)
+    {
+      best_state      = state;
+      best_evaluation = e;
+      best_norm       = e.residual_norm;
+      since_best      = 0;
+    }
+
+    bool
+    search_from_best(State &state, Evaluation &e)
+    {
+      double best_alpha = 0., smallest_norm = best_norm;
+      for (double alpha = 0.5; alpha >= settings.shortest_step; alpha /= 2.)
+        {
+          state = best_state;
+          move(alpha, best_direction, state);
+          e = evaluate(state);
+          if (!std::isfinite(e.residual_norm))
+            continue;
+          if (e.residual_norm <= (1. - armijo_fraction * alpha) * best_norm)
+            {
+              keep_as_best(state, e);
+              return true;
+            }
+          if (e.residual_norm < smallest_norm)
+            best_alpha = alpha, smallest_norm = e.residual_norm;
+        }
+      state = best_state;
+      if (best_alpha == 0.)
+        {
+          e = best_evaluation;
+          return false;
+        }
+      move(best_alpha, best_direction, state);
+      e = evaluate(state);
+      keep_as_best(state, e);
+      return true;
+    }
+
+    const Settings settings;
+    Evaluate       evaluate;
+    Solve          solve;
+    Move           move;
+
+    State        best_state;
+    Evaluation   best_evaluation;
+    Direction    best_direction;
+    double       best_norm  = std::numeric_limits<double>::infinity();
+    unsigned int since_best = 0;
+  };
+} // namespace FourierSSI
+
+#endif
