@@ -74,14 +74,17 @@ namespace FourierSSI
     bool
     update(State &state, Evaluation &e)
     {
-      if (e.residual_norm <= best_norm)
-        keep_as_best(state, e);
-      else if (++since_best > settings.nonmonotone_steps)
+      const bool from_best = e.residual_norm <= best_norm;
+      if (!from_best && ++since_best > settings.nonmonotone_steps)
         return search_from_best(state, e);
       Direction direction = solve(e, state);
+      if (from_best)
+        {
+          // e is evaluated anew below: the best keeps it without a copy.
+          keep_as_best(state, std::move(e));
+          best_direction = direction;
+        }
       move(1., direction, state);
-      if (since_best == 0)
-        best_direction = std::move(direction);
       e = evaluate(state);
       return std::isfinite(e.residual_norm);
     }
@@ -91,17 +94,20 @@ namespace FourierSSI
     static constexpr double armijo_fraction = 1e-4;
 
     void
-    keep_as_best(const State &state, const Evaluation &e)
+    keep_as_best(const State &state, Evaluation &&e)
     {
       best_state      = state;
-      best_evaluation = e;
       best_norm       = e.residual_norm;
+      best_evaluation = std::move(e);
       since_best      = 0;
     }
 
     bool
     search_from_best(State &state, Evaluation &e)
     {
+      // Full steps may go on again from wherever the search leaves the
+      // iterate (the solver's own update where it finds no descent).
+      since_best        = 0;
       double best_alpha = 0., smallest_norm = best_norm;
       for (double alpha = 0.5; alpha >= settings.shortest_step; alpha /= 2.)
         {
@@ -111,10 +117,7 @@ namespace FourierSSI
           if (!std::isfinite(e.residual_norm))
             continue;
           if (e.residual_norm <= (1. - armijo_fraction * alpha) * best_norm)
-            {
-              keep_as_best(state, e);
-              return true;
-            }
+            return true; // the next update() keeps it as the best
           if (e.residual_norm < smallest_norm)
             best_alpha = alpha, smallest_norm = e.residual_norm;
         }
@@ -126,8 +129,7 @@ namespace FourierSSI
         }
       move(best_alpha, best_direction, state);
       e = evaluate(state);
-      keep_as_best(state, e);
-      return true;
+      return true; // the next update() keeps it as the best
     }
 
     const Settings settings;
