@@ -7,6 +7,7 @@
 #include <fourier_ssi/coupled/safeguarded_newton.h>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -470,10 +471,13 @@ namespace FourierSSI
     // The globalisation (safeguarded_newton.h): up to 4 full steps may go on
     // without a new best |R| (a gap that closes or a slip that reverses
     // beyond the tangent's foresight is put right by the next tangent),
-    // then the line search from the best iterate halves down to 2^-16.
+    // then the line search from the best iterate halves down to 2^-16; its
+    // iterations are cheap (condensed), so no step is given up early.
     using Newton = SafeguardedNewton<StepState, Evaluation, Vector<double>>;
     Newton newton(
-      Newton::Settings{4, 1. / 65536.},
+      Newton::Settings{4,
+                       1. / 65536.,
+                       std::numeric_limits<unsigned int>::max()},
       [&](StepState &iterate) { return evaluate(target, iterate); },
       [&](const Evaluation &at, const StepState &iterate) {
         return newton_direction(at, iterate);

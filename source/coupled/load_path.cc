@@ -89,7 +89,8 @@ namespace FourierSSI
   void
   LoadPath::StepSize::converged()
   {
-    cuts = 0;
+    cuts    = 0;
+    retried = false;
     if (just_grown) // the doubled size converged: back to the default
       needed = 2;
     just_grown = false;
@@ -151,6 +152,12 @@ namespace FourierSSI
           }
         if (!converged)
           {
+            if (size.cuts == settings.maximum_step_cuts && !size.retried &&
+                iteration.retry_persistently(log))
+              {
+                size.retried = true;
+                continue;
+              }
             AssertThrow(
               ++size.cuts <= settings.maximum_step_cuts,
               ExcMessage(unconverged_step_message(entry,

@@ -267,6 +267,14 @@ namespace FourierSSI
     /** LoadPath::Iteration: the trial step and its commit (load_path.h). */
     bool
     solve_trial(const double target, const bool holding) override;
+    /**
+     * Newton's retry of a step that failed after the last cut: where it
+     * finds no descent it takes one initial-stiffness update and goes on
+     * (a tensionless frictional shaft whose contact states chatter, the
+     * same at every step size), until |R| stalls.
+     */
+    bool
+    retry_persistently(std::ostream &log) override;
     void
     commit_trial(const LoadStep &step,
                  const bool      holding,
@@ -677,6 +685,8 @@ namespace FourierSSI
     double swipe_settlement = 0.;
     /** The step solved is a swipe's (not in its held stage): mu keeps w. */
     bool swiping = false;
+    /** The trial is the retry after the last cut (retry_persistently). */
+    bool persistent = false;
     /** Strain amplitudes of the load pattern [point][harmonic]. */
     std::vector<std::vector<StrainVector>> pattern_strain;
     /** The records of the step being solved. */

@@ -21,6 +21,8 @@
  *     motion) is not converged;
  *   - the rigid motion of a state, summed over the harmonics in their order
  *     after one exact sum over the MPI ranks (rigid_motion_of);
+ *   - one more try of a step that failed at the last cut, where the solver
+ *     has a surer iteration (Iteration::retry_persistently);
  *   - the one-line error of a step that does not converge after the cuts.
  * The iteration of a step, its records and its log line are the solver's
  * (LoadPath::Iteration).
@@ -136,6 +138,18 @@ namespace FourierSSI
       }
 
       /**
+       * After a step failed at the last cut: true if the solver has a
+       * slower, surer iteration for one more try of that step (then used
+       * for the next solve_trial() only); it logs the retry.
+       */
+      virtual bool
+      retry_persistently(std::ostream &log)
+      {
+        (void)log;
+        return false;
+      }
+
+      /**
        * The converged trial becomes the committed state (the committed one
        * is kept for the predictor); `step` holds its motion and wall time.
        * The solver records the step and writes its log line.
@@ -194,6 +208,8 @@ namespace FourierSSI
       double       step = 1., increment = 1.;
       unsigned int cuts = 0, easy_steps = 0, needed = 2;
       bool         just_grown = false;
+      /** This step had its retry after the last cut (retry_persistently). */
+      bool retried = false;
 
       void
       cut();

@@ -47,6 +47,8 @@ namespace FourierSSI
       unsigned int nonmonotone_steps = 0;
       /** The shortest fraction of a Newton step the line search tries. */
       double shortest_step = 1. / 16.;
+      /** Updates without a new smallest |R| before the step is cut. */
+      unsigned int patience = 20;
     };
 
     /** The evaluation at an iterate (may set its load factor). */
@@ -74,6 +76,7 @@ namespace FourierSSI
     bool
     update(State &state, Evaluation &e)
     {
+      note_progress(e.residual_norm);
       const bool from_best = e.residual_norm <= best_norm;
       if (!from_best && ++since_best > settings.nonmonotone_steps)
         return search_from_best(state, e);
@@ -89,9 +92,40 @@ namespace FourierSSI
       return std::isfinite(e.residual_norm);
     }
 
+    /**
+     * After the solver's own update where update() found no descent: the
+     * iterate it reached is the start of the Newton steps that follow,
+     * whatever its |R| (the best one so far led nowhere).
+     */
+    void
+    restart()
+    {
+      best_norm  = std::numeric_limits<double>::infinity();
+      since_best = 0;
+    }
+
+    /**
+     * True once `patience` updates in a row have not lowered the smallest
+     * |R| of the step: the states cycle and the step is to be cut.
+     */
+    bool
+    stalled() const
+    {
+      return since_smallest > settings.patience;
+    }
+
   private:
     /** Armijo fraction: a step alpha is taken if |R| falls by c1 alpha |R|. */
     static constexpr double armijo_fraction = 1e-4;
+
+    void
+    note_progress(const double residual_norm)
+    {
+      if (residual_norm < smallest_norm)
+        smallest_norm = residual_norm, since_smallest = 0;
+      else
+        ++since_smallest;
+    }
 
     void
     keep_as_best(const State &state, Evaluation &&e)
@@ -140,8 +174,10 @@ namespace FourierSSI
     State        best_state;
     Evaluation   best_evaluation;
     Direction    best_direction;
-    double       best_norm  = std::numeric_limits<double>::infinity();
-    unsigned int since_best = 0;
+    double       best_norm      = std::numeric_limits<double>::infinity();
+    unsigned int since_best     = 0;
+    double       smallest_norm  = std::numeric_limits<double>::infinity();
+    unsigned int since_smallest = 0;
   };
 } // namespace FourierSSI
 
