@@ -20,7 +20,9 @@
  * Chamberlain et al., 1982, with a backtracking line search). Where no
  * step along the direction lowers |R| at all, update() returns false and
  * the solver decides (a cut of the load step, or one initial-stiffness
- * update off a kink of the return mapping).
+ * update off a kink of the return mapping; after such an update restart()
+ * makes its iterate the start of the next Newton steps, and stalled() says
+ * when `patience` updates in a row brought no new smallest |R|).
  */
 #ifndef fourier_ssi_safeguarded_newton_h
 #define fourier_ssi_safeguarded_newton_h
