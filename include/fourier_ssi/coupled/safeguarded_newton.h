@@ -15,7 +15,7 @@
  * direction it took from there, halving the step from 1/2 (the full step
  * did not improve) until |R| falls by the Armijo fraction, down to
  * `shortest_step`; failing that, the step of the smallest |R| below the
- * best is taken. So the best |R| falls at least every nonmonotone_steps + 1
+ * best is taken. So the best |R| falls at least every nonmonotone_steps + 2
  * updates and stick/slip or plastic cycling cannot go on (the watchdog of
  * Chamberlain et al., 1982, with a backtracking line search). Where no
  * step along the direction lowers |R| at all, update() returns false and

@@ -1,0 +1,170 @@
+// The load path's step sizes and its retry after the last cut (load_path.h,
+// doc/soil-plasticity.md section 3b), on a scripted iteration: a trial
+// converges when its step (target minus the committed load factor) is at
+// most `plain_size`, or, on the retry (retry_persistently), at most
+// `retry_size`. One stage of 1 load-controlled step, Maximum step cuts = 2,
+// so a step is tried at 1, 1/2, 1/4 of what is left of its size:
+//  (1) plain_size = 0.3: 1 and 1/2 fail, 1/4 converges; no retry; the path
+//      ends at 1.
+//  (2) plain_size = 0.05, retry_size = 0.25: the first step fails at 1,
+//      1/2, 1/4 and is retried once at 1/4, which converges; the next
+//      (1/4 again) fails at 1/4, 1/8, 1/16 and converges on its retry; the
+//      rest converge at 1/32 and its regrowth. Exactly 2 retries, each
+//      after 3 failed trials at sizes 4:2:1; the path ends at 1.
+//  (3) the retry fails too (retry_size = 0): one line naming the solver's
+//      section and the cuts, after exactly 4 trials (3 sizes and 1 retry)
+//      and 1 retry: a retry is not repeated.
+#include "check.h"
+
+#include <cmath>
+#include <fourier_ssi/coupled/load_path.h>
+#include <sstream>
+
+using namespace FourierSSI;
+
+namespace
+{
+  class ScriptedIteration : public LoadPath::Iteration
+  {
+  public:
+    ScriptedIteration(const double plain_size, const double retry_size)
+      : plain_size(plain_size)
+      , retry_size(retry_size)
+    {}
+
+    void
+    start_trial(const double) override
+    {
+      trial = committed;
+    }
+
+    bool
+    solve_trial(const double target, const bool) override
+    {
+      const double size = target - committed;
+      const bool   converged =
+        size <= (persistent ? retry_size : plain_size) + 1e-12;
+      sizes.push_back(size);
+      retried.push_back(persistent);
+      persistent = false;
+      if (converged)
+        trial = target;
+      return converged;
+    }
+
+    RigidMotion
+    trial_motion() const override
+    {
+      return {};
+    }
+
+    void
+    commit_trial(const LoadStep &, const bool, std::ostream &) override
+    {
+      committed = trial;
+      ++n_steps;
+    }
+
+    RigidMotion
+    committed_motion() const override
+    {
+      return {};
+    }
+
+    unsigned int
+    n_converged_steps() const override
+    {
+      return n_steps;
+    }
+
+    bool
+    holds_loads() const override
+    {
+      return false;
+    }
+
+    void
+    write_held_loads(std::ostream &) const override
+    {}
+
+    bool
+    retry_persistently(std::ostream &) override
+    {
+      ++n_retries;
+      persistent = true;
+      return true;
+    }
+
+    const double        plain_size, retry_size;
+    double              committed = 0., trial = 0.;
+    bool                persistent = false;
+    unsigned int        n_steps = 0, n_retries = 0;
+    std::vector<double> sizes;
+    std::vector<bool>   retried;
+  };
+
+  LoadPathParameters
+  one_step_two_cuts()
+  {
+    LoadPathParameters settings;
+    settings.load_steps        = 1;
+    settings.maximum_step_cuts = 2;
+    return settings;
+  }
+} // namespace
+
+int
+main()
+{
+  const LoadPathParameters settings = one_step_two_cuts();
+  std::ostringstream       log;
+
+  // (1)
+  {
+    ScriptedIteration iteration(0.3, 0.);
+    LoadPath(settings, "Scripted", iteration).run_stage(false, 1, log);
+    check::relative("(1) the path ends at", iteration.committed, 1., 1e-12);
+    check::equal("(1) retries", iteration.n_retries, 0);
+    check::relative("(1) first converged size",
+                    iteration.sizes[2],
+                    0.25,
+                    1e-12);
+  }
+
+  // (2)
+  {
+    ScriptedIteration iteration(0.05, 0.25);
+    LoadPath(settings, "Scripted", iteration).run_stage(false, 1, log);
+    check::relative("(2) the path ends at", iteration.committed, 1., 1e-12);
+    check::equal("(2) retries", iteration.n_retries, 2);
+    bool         as_scripted = iteration.sizes.size() >= 8;
+    const double expected[8] = {
+      1., 0.5, 0.25, 0.25, 0.25, 0.125, 0.0625, 0.0625};
+    for (unsigned int k = 0; as_scripted && k < 8; ++k)
+      as_scripted = std::abs(iteration.sizes[k] - expected[k]) < 1e-12 &&
+                    iteration.retried[k] == (k == 3 || k == 7);
+    check::that("(2) trials 1, 1/2, 1/4, retry 1/4, then 1/4, 1/8, 1/16, "
+                "retry 1/16",
+                as_scripted);
+  }
+
+  // (3)
+  {
+    ScriptedIteration iteration(0.05, 0.);
+    std::string       message;
+    try
+      {
+        LoadPath(settings, "Scripted", iteration).run_stage(false, 1, log);
+      }
+    catch (const std::exception &error)
+      {
+        message = error.what();
+      }
+    check::that("(3) the error names the section and the cuts",
+                message.find("Scripted: load step 1 of 1 (after 2 cuts) did "
+                             "not converge") != std::string::npos);
+    check::equal("(3) trials", iteration.sizes.size(), 4);
+    check::equal("(3) retries", iteration.n_retries, 1);
+  }
+  return check::summary();
+}
