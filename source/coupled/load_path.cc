@@ -76,6 +76,15 @@ namespace FourierSSI
              1e-8 * std::abs(target);
   }
 
+  bool
+  LoadPath::StepSize::can_cut() const
+  {
+    // Cuts reset at every converged step, so without a floor a path that
+    // converges only ever closer to a limit would take steps without end.
+    return increment / 2. >=
+           step * std::ldexp(1., -int(LoadPathParameters::most_step_cuts));
+  }
+
   void
   LoadPath::StepSize::cut()
   {
@@ -152,14 +161,15 @@ namespace FourierSSI
           }
         if (!converged)
           {
-            if (size.cuts == settings.maximum_step_cuts && !size.retried &&
-                iteration.retry_persistently(log))
+            const bool last_cut =
+              size.cuts == settings.maximum_step_cuts || !size.can_cut();
+            if (last_cut && !size.retried && iteration.retry_persistently(log))
               {
                 size.retried = true;
                 continue;
               }
             AssertThrow(
-              ++size.cuts <= settings.maximum_step_cuts,
+              !last_cut && ++size.cuts <= settings.maximum_step_cuts,
               ExcMessage(unconverged_step_message(entry,
                                                   done,
                                                   n_steps,

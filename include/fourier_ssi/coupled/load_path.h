@@ -8,10 +8,12 @@
  *     load factor at 0), then the loading (Load steps) by load or
  *     displacement control from where the held loads left the motion;
  *   - the step size: a step that does not converge is cut in half, up to
- *     Maximum step cuts in a row; after a cut, `needed` converged steps at
- *     the cut size double it back toward the stage's step (a cut at a sharp
- *     change of state need not slow the rest of the path), and a doubled
- *     size that fails at once doubles `needed` (doc/soil-plasticity.md 3b);
+ *     Maximum step cuts in a row and never below 2^-20 of the stage's step
+ *     (a path converging ever closer to a limit load ends); after a cut,
+ *     `needed` converged steps at the cut size double it back toward the
+ *     stage's step (a cut at a sharp change of state need not slow the
+ *     rest of the path), and a doubled size that fails at once doubles
+ *     `needed` (doc/soil-plasticity.md 3b);
  *   - the secant predictor: a step starts from the committed state moved
  *     on by the change over the last converged step, scaled to the step's
  *     size (none at a stage's start and after the harmonics grow);
@@ -211,6 +213,13 @@ namespace FourierSSI
       /** This step had its retry after the last cut (retry_persistently). */
       bool retried = false;
 
+      /**
+       * A cut keeps the size at or above 2^-most_step_cuts of the stage's
+       * step (LoadPathParameters::most_step_cuts), however many steps
+       * converged at cut sizes before.
+       */
+      bool
+      can_cut() const;
       void
       cut();
       void
