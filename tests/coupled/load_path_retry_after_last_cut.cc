@@ -115,6 +115,22 @@ namespace
     std::vector<bool>   retried;
   };
 
+  /** The error a stage of one step ends with (empty: none). */
+  std::string
+  error_of(const LoadPathParameters &settings, ScriptedIteration &iteration)
+  {
+    std::ostringstream log;
+    try
+      {
+        LoadPath(settings, "Scripted", iteration).run_stage(false, 1, log);
+      }
+    catch (const std::exception &error)
+      {
+        return error.what();
+      }
+    return "";
+  }
+
   LoadPathParameters
   one_step_two_cuts()
   {
@@ -163,15 +179,7 @@ main()
   // (3)
   {
     ScriptedIteration iteration(0.05, 0.);
-    std::string       message;
-    try
-      {
-        LoadPath(settings, "Scripted", iteration).run_stage(false, 1, log);
-      }
-    catch (const std::exception &error)
-      {
-        message = error.what();
-      }
+    const std::string message = error_of(settings, iteration);
     check::that("(3) the error names the section and the cuts",
                 message.find("Scripted: load step 1 of 1 (after 2 cuts) did "
                              "not converge") != std::string::npos);
@@ -181,15 +189,7 @@ main()
   // (4)
   {
     ScriptedIteration iteration(0.3, 0.3, true);
-    std::string       message;
-    try
-      {
-        LoadPath(settings, "Scripted", iteration).run_stage(false, 1, log);
-      }
-    catch (const std::exception &error)
-      {
-        message = error.what();
-      }
+    const std::string message = error_of(settings, iteration);
     check::that("(4) the path ends with the one-line error",
                 message.find("Scripted: load step 1 of 1") !=
                   std::string::npos);
