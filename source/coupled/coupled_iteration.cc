@@ -180,6 +180,7 @@ namespace FourierSSI
                            const double              done,
                            const unsigned int        n_steps,
                            const bool                held,
+                           const unsigned int        cuts,
                            const unsigned int        converged_steps,
                            const LoadPathParameters &settings)
   {
@@ -190,8 +191,11 @@ namespace FourierSSI
       static_cast<unsigned int>(std::floor(done * n_steps + 1e-9)) + 1);
     return entry + ": load step " + std::to_string(step) + " of " +
            std::to_string(n_steps) + (held ? " of the held loads" : "") +
-           " (after " + std::to_string(settings.maximum_step_cuts) +
-           " cuts) did not converge in " +
+           " (after " + std::to_string(cuts) + " cuts" +
+           (cuts < settings.maximum_step_cuts ?
+              ", at the smallest step size, 2^-20 of a load step" :
+              "") +
+           ") did not converge in " +
            std::to_string(settings.maximum_iterations) + " iterations; the " +
            std::to_string(converged_steps) + " converged steps are kept";
   }

@@ -174,6 +174,7 @@ namespace FourierSSI
                                                   done,
                                                   n_steps,
                                                   holding,
+                                                  size.cuts,
                                                   iteration.n_converged_steps(),
                                                   settings)));
             size.cut();

@@ -190,9 +190,10 @@ main()
   {
     ScriptedIteration iteration(0.3, 0.3, true);
     const std::string message = error_of(settings, iteration);
-    check::that("(4) the path ends with the one-line error",
-                message.find("Scripted: load step 1 of 1") !=
-                  std::string::npos);
+    check::that("(4) the path ends with the one-line error, naming the "
+                "floor its last step started at",
+                message.find("Scripted: load step 1 of 1 (after 0 cuts, at "
+                             "the smallest step size") != std::string::npos);
     check::in_range("(4) trials", iteration.sizes.size(), 1, 200);
     check::in_range("(4) converged steps", iteration.n_steps, 1, 200);
   }

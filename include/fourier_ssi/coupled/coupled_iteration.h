@@ -305,13 +305,16 @@ namespace FourierSSI
    * step is numbered as the user counts them, "load step 2 of 2 (after 4
    * cuts)": the one of the `n_steps` equal steps that the path was in
    * (`done`, the fraction of the stage completed), not the count of
-   * converged cut steps; `held` says it is a step of the held loads.
+   * converged cut steps; `held` says it is a step of the held loads;
+   * `cuts` the cuts it had: Maximum step cuts, or fewer where the step size
+   * reached its floor, which the line then names.
    */
   std::string
   unconverged_step_message(const std::string        &entry,
                            const double              done,
                            const unsigned int        n_steps,
                            const bool                held,
+                           const unsigned int        cuts,
                            const unsigned int        converged_steps,
                            const LoadPathParameters &settings);
 
