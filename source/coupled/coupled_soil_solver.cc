@@ -1,21 +1,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <deal.II/base/quadrature_lib.h>
-#include <deal.II/fe/fe_values.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/coupled_soil_solver.h>
 #include <fourier_ssi/coupled/load_path.h>
 #include <fourier_ssi/coupled/load_pattern.h>
 #include <fourier_ssi/coupled/safeguarded_newton.h>
-#include <fourier_ssi/fourier/harmonic_pair_integral.h>
-#include <fourier_ssi/harmonic/stress_postprocessor.h>
-#include <fourier_ssi/linear_algebra/thread_ranges.h>
-#include <fstream>
-#include <iomanip>
-#include <iterator>
-#include <mutex>
-#include <sstream>
 
 namespace FourierSSI
 {
@@ -48,33 +38,6 @@ namespace FourierSSI
              settings.acceleration == Acceleration::anderson ?
                "initial stiffness, Anderson" :
                "initial stiffness";
-    }
-
-    /** Strain components 0..3 carry the in-plane factor, 4, 5 the other. */
-    ThetaFactor
-    factor_of(const unsigned int k)
-    {
-      return k < 4 ? ThetaFactor::in_plane : ThetaFactor::circumferential;
-    }
-
-    /**
-     * B-bar on a cell's strain field: the dilatation replaced by its
-     * projection (with_dilatation). Applied to a stress field it is also
-     * the transpose: sum_q dV Bbar^T s = sum_q dV B^T bar(s), since the
-     * r-weighted projection is self-adjoint (doc/soil-plasticity.md 3).
-     */
-    void
-    apply_bbar(const LinearProjection    *projection,
-               std::vector<StrainVector> &field)
-    {
-      if (projection == nullptr || !projection->valid)
-        return;
-      std::vector<double> trace(field.size());
-      for (unsigned int q = 0; q < field.size(); ++q)
-        trace[q] = field[q][0] + field[q][1] + field[q][2];
-      const auto c = projection->project(trace);
-      for (unsigned int q = 0; q < field.size(); ++q)
-        field[q] = with_dilatation(field[q], projection->value_at(c, q));
     }
 
     /**
@@ -155,22 +118,14 @@ namespace FourierSSI
                          holds_gaps_by_multipliers(set, parameters) ?
                            minimum_theta_samples(highest_harmonic(harmonics)) :
                            sampling.n_samples())
+    , soil(set, parameters, sampling)
   {
-    for (const Harmonic &h : harmonics)
-      operators.emplace_back(h);
     check_homogeneous_constraints(entry, "plastic soil");
-    make_points();
-    check_initial_stress();
     if (parameters.interfaces.any_nonlinear())
       // Coulomb laws above the soil cap (soil_iteration_stiffness) through
       // the multipliers (on interface_sampling).
       interface =
         std::make_unique<NonlinearInterfacePoints>(set, parameters, true);
-    if (set.n_owning_ranks() > 1)
-      {
-        point_stride = set.n_owning_ranks();
-        point_rank   = Utilities::MPI::this_mpi_process(set.get_ranks());
-      }
     // A swipe's mu and K^-1 e_V are solved on the owner of harmonic 0 and
     // read there; not written for distributed harmonics yet.
     AssertThrow(!parameters.rigid_foundation.swipes() ||
@@ -181,7 +136,7 @@ namespace FourierSSI
     solve_load_pattern();
     solve_held_loads();
     start_at_rest();
-    committed.plastic.assign(points.size() * sampling.n_samples(),
+    committed.plastic.assign(soil.size() * sampling.n_samples(),
                              {{0., 0., 0., 0., 0., 0.}});
     if (interface)
       {
@@ -194,119 +149,10 @@ namespace FourierSSI
   }
 
   void
-  CoupledSoilSolver::check_initial_stress() const
-  {
-    // The geostatic state must be admissible: K0 between the active and
-    // passive ratios of Mohr-Coulomb soil, (1 - K0) sigma'_v <= 2 s_u for
-    // Tresca. Tolerance: round-off of the stress.
-    for (const SoilPoint &point : points)
-      {
-        double size = 0.;
-        for (const double s : point.initial_stress)
-          size = std::max(size, std::abs(s));
-        const double f =
-          laws[point.law].yield_function(point.initial_stress, point.depth);
-        if (f <= 1e-12 * std::max(size, 1.))
-          continue;
-        const auto law =
-          std::next(parameters.soil_plasticity.laws.begin(), point.law);
-        std::ostringstream message;
-        message << std::setprecision(4)
-                << "Initial stress/K0: the geostatic stress at depth "
-                << point.depth << " m violates the yield condition of "
-                << "material " << static_cast<unsigned int>(law->first)
-                << " (Soil plasticity/Laws; f = " << f << " kPa > 0): K0 = "
-                << parameters.initial_stress.earth_pressure_coefficient
-                << " must lie between the active and passive ratios "
-                   "(Mohr-Coulomb), (1 - K0) sigma'_v within 2 s_u (Tresca)";
-        AssertThrow(false, ExcMessage(message.str()));
-      }
-  }
-
-  void
-  CoupledSoilSolver::make_points()
-  {
-    std::map<types::material_id, unsigned int> law_index;
-    for (const auto &[id, law] : parameters.soil_plasticity.laws)
-      {
-        law_index[id] = laws.size();
-        laws.push_back(law);
-      }
-    const DoFHandler<2> &dofs0 = set.problem(0).get_dof_handler();
-    const auto          &fe    = dofs0.get_fe();
-    // The stiffness's own quadrature (HarmonicProblem), so that a field
-    // with eps_p = eps gives back exactly the soil part of K u.
-    FEValues<2> fe_values(fe,
-                          QGauss<2>(fe.degree + 2),
-                          update_values | update_gradients |
-                            update_quadrature_points | update_JxW_values);
-    const bool  bbar =
-      parameters.discretization.volumetric == VolumetricStrain::bbar &&
-      fe.degree == 2;
-    const unsigned int n_dofs = fe.n_dofs_per_cell();
-    for (unsigned int i = 0; i < n_dofs; ++i)
-      component.push_back(fe.system_to_component_index(i).first);
-    std::vector<typename DoFHandler<2>::active_cell_iterator> iterators;
-    for (unsigned int h = 0; h < set.size(); ++h)
-      iterators.push_back(set.problem(h).get_dof_handler().begin_active());
-    for (; iterators[0] != dofs0.end();)
-      {
-        const auto law = law_index.find(iterators[0]->material_id());
-        if (law != law_index.end())
-          {
-            fe_values.reinit(iterators[0]);
-            SoilCell cell;
-            cell.first_point = points.size();
-            cell.centre      = iterators[0]->center();
-            for (unsigned int h = 0; h < set.size(); ++h)
-              {
-                std::vector<types::global_dof_index> indices(n_dofs);
-                iterators[h]->get_dof_indices(indices);
-                cell.dof_indices.push_back(indices);
-              }
-            if (bbar)
-              cell.projection = std::make_shared<LinearProjection>(fe_values);
-            const ElasticMaterial &material =
-              parameters.materials.get(iterators[0]->material_id());
-            for (const unsigned int q : fe_values.quadrature_point_indices())
-              {
-                const Point<2> &x = fe_values.quadrature_point(q);
-                cell.radius.push_back(x[0]);
-                cell.shape_value.emplace_back(n_dofs);
-                cell.shape_grad.emplace_back(n_dofs);
-                for (unsigned int i = 0; i < n_dofs; ++i)
-                  {
-                    cell.shape_value[q][i] = fe_values.shape_value(i, q);
-                    cell.shape_grad[q][i]  = fe_values.shape_grad(i, q);
-                  }
-                SoilPoint point;
-                point.cell          = cells.size();
-                point.q             = q;
-                point.r             = x[0];
-                point.dV            = x[0] * fe_values.JxW(q);
-                point.depth         = parameters.materials.depth(x[1]);
-                point.shear_modulus = material.shear_modulus(point.depth);
-                point.lambda        = material.lambda(point.depth);
-                point.law           = law->second;
-                point.initial_stress =
-                  parameters.initial_stress.soil_stress(point.depth);
-                points.push_back(point);
-              }
-            cells.push_back(std::move(cell));
-          }
-        for (auto &it : iterators)
-          ++it;
-      }
-    AssertThrow(!points.empty(),
-                ExcMessage(entry + "/Laws: no cell of the mesh has a "
-                                   "material id with a plastic law"));
-  }
-
-  void
   CoupledSoilSolver::solve_load_pattern()
   {
     loads          = LoadPattern(set);
-    pattern_strain = strain_amplitudes(loads.solution);
+    pattern_strain = soil.strain_amplitudes(loads.solution);
     if (interface)
       pattern_relative =
         interface->relative_displacements(loads.solution, interface_sampling);
@@ -317,14 +163,14 @@ namespace FourierSSI
   {
     if (!loads.holds_loads())
       return;
-    held_strain = strain_amplitudes(loads.held_solution);
+    held_strain = soil.strain_amplitudes(loads.held_solution);
     if (interface)
       held_relative = interface->relative_displacements(loads.held_solution,
                                                         interface_sampling);
     if (parameters.rigid_foundation.swipes())
       {
         loads.add_swipe_pattern(set);
-        swipe_strain = strain_amplitudes(loads.swipe_solution);
+        swipe_strain = soil.strain_amplitudes(loads.swipe_solution);
         if (interface)
           swipe_relative =
             interface->relative_displacements(loads.swipe_solution,
@@ -338,76 +184,6 @@ namespace FourierSSI
     return loads.applied_norm(state.load_factor, state.held_fraction);
   }
 
-  std::vector<std::vector<StrainVector>>
-  CoupledSoilSolver::strain_amplitudes(
-    const std::vector<Vector<double>> &fields) const
-  {
-    std::vector<std::vector<StrainVector>> result(
-      points.size(), std::vector<StrainVector>(set.size()));
-    // Harmonics concurrently: each writes its own column.
-    set.for_each([&](const unsigned int h) {
-      if (!set.owns(h))
-        return;
-      std::vector<StrainVector> cell_strain;
-      for (const SoilCell &cell : cells)
-        {
-          const unsigned int n_q = cell.radius.size();
-          cell_strain.resize(n_q);
-          for (unsigned int q = 0; q < n_q; ++q)
-            {
-              std::array<double, 3>       values = {{0., 0., 0.}};
-              std::array<Tensor<1, 2>, 3> gradients;
-              for (unsigned int i = 0; i < cell.shape_value[q].size(); ++i)
-                {
-                  const double u = fields[h](cell.dof_indices[h][i]);
-                  values[component[i]] += u * cell.shape_value[q][i];
-                  gradients[component[i]] += u * cell.shape_grad[q][i];
-                }
-              cell_strain[q] =
-                operators[h].strain(values, gradients, cell.radius[q]);
-            }
-          apply_bbar(cell.projection.get(), cell_strain);
-          for (unsigned int q = 0; q < n_q; ++q)
-            result[cell.first_point + q][h] = cell_strain[q];
-        }
-    });
-    // Every harmonic's amplitudes on every rank (the first sum of an
-    // iteration; load_of makes the second). Each entry is non-zero on its
-    // owner only, so the sum is exact and the same bits on every rank,
-    // whatever the reduction order.
-    if (set.n_owning_ranks() > 1)
-      {
-        const unsigned int  H = set.size();
-        std::vector<double> flat(points.size() * H * 6);
-        for (unsigned int p = 0; p < points.size(); ++p)
-          for (unsigned int h = 0; h < H; ++h)
-            std::copy(result[p][h].begin(),
-                      result[p][h].end(),
-                      flat.begin() + (p * H + h) * 6);
-        set.sum_over_ranks(flat);
-        for (unsigned int p = 0; p < points.size(); ++p)
-          for (unsigned int h = 0; h < H; ++h)
-            std::copy(flat.begin() + (p * H + h) * 6,
-                      flat.begin() + (p * H + h + 1) * 6,
-                      result[p][h].begin());
-      }
-    return result;
-  }
-
-  void
-  CoupledSoilSolver::count_over_ranks(SoilStepResult &result) const
-  {
-    if (point_stride == 1)
-      return;
-    std::vector<double> counts = {static_cast<double>(result.n_elastic),
-                                  static_cast<double>(result.n_plastic)};
-    set.sum_over_ranks(counts);
-    result.n_elastic = static_cast<unsigned int>(counts[0]);
-    result.n_plastic = static_cast<unsigned int>(counts[1]);
-    result.largest_yield_value =
-      Utilities::MPI::max(result.largest_yield_value, set.get_ranks());
-  }
-
   std::vector<StrainVector>
   CoupledSoilSolver::strain_samples(
     const std::vector<Vector<double>> &correction,
@@ -415,30 +191,11 @@ namespace FourierSSI
     const double                       held_fraction,
     const double                       swipe_force) const
   {
-    const unsigned int        N = sampling.n_samples(), H = set.size();
-    const auto                amplitude = strain_amplitudes(correction);
-    std::vector<StrainVector> samples(points.size() * N);
-    std::vector<double>       a(H), s;
-    for (unsigned int p = 0; p < points.size(); ++p)
-      {
-        if (!owns_point(p))
-          continue;
-        for (unsigned int k = 0; k < 6; ++k)
-          {
-            for (unsigned int h = 0; h < H; ++h)
-              a[h] =
-                amplitude[p][h][k] + load_factor * pattern_strain[p][h][k] +
-                (held_strain.empty() ? 0. :
-                                       held_fraction * held_strain[p][h][k]);
-            if (!swipe_strain.empty())
-              for (unsigned int h = 0; h < H; ++h)
-                a[h] += swipe_force * swipe_strain[p][h][k];
-            sampling.evaluate(a, factor_of(k), s);
-            for (unsigned int j = 0; j < N; ++j)
-              samples[p * N + j][k] = s[j];
-          }
-      }
-    return samples;
+    const StrainAmplitudes amplitude = soil.strain_amplitudes(correction);
+    return soil.strain_samples({{1., &amplitude},
+                                {load_factor, &pattern_strain},
+                                {held_fraction, &held_strain},
+                                {swipe_force, &swipe_strain}});
   }
 
   std::vector<LocalVector>
@@ -459,248 +216,21 @@ namespace FourierSSI
     return relative;
   }
 
-  void
-  CoupledSoilSolver::return_map(const std::vector<StrainVector> &strain,
-                                std::vector<StrainVector>       &plastic,
-                                SoilStepResult                  &result) const
-  {
-    const unsigned int N = sampling.n_samples();
-    plastic.resize(strain.size());
-    result.n_elastic           = 0;
-    result.n_plastic           = 0;
-    result.largest_yield_value = -std::numeric_limits<double>::max();
-    // The points on the harmonic set's threads (every (point, theta) is
-    // independent; the counts and the largest f do not depend on the order:
-    // the same bits on any number of threads).
-    std::mutex merge;
-    for_each_range(
-      points.size(),
-      16,
-      set.n_threads(),
-      [&](const unsigned int first, const unsigned int last) {
-        unsigned int n_elastic = 0, n_plastic = 0;
-        double       largest = -std::numeric_limits<double>::max();
-        for (unsigned int p = first; p < last; ++p)
-          {
-            if (!owns_point(p))
-              continue;
-            const SoilPoint &point = points[p];
-            for (unsigned int j = 0; j < N; ++j)
-              {
-                const unsigned int k = p * N + j;
-                // s_p = sigma_0 + D eps - sigma keeps the internal force
-                // int Bbar^T (sigma - sigma_0) = K u - c.
-                const StrainVector elastic = elastic_stress(point, strain[k]);
-                const SoilReturn   r = return_from_committed(point, k, elastic);
-                for (unsigned int c = 0; c < 6; ++c)
-                  plastic[k][c] = elastic[c] - r.stress[c];
-                if (r.state == SoilState::elastic)
-                  ++n_elastic;
-                else
-                  ++n_plastic;
-                largest = std::max(largest,
-                                   laws[point.law].yield_function(r.stress,
-                                                                  point.depth));
-              }
-          }
-        std::lock_guard<std::mutex> lock(merge);
-        result.n_elastic += n_elastic;
-        result.n_plastic += n_plastic;
-        result.largest_yield_value =
-          std::max(result.largest_yield_value, largest);
-      });
-  }
-
-  std::vector<Vector<double>>
-  CoupledSoilSolver::load_of(const std::vector<StrainVector> &samples,
-                             const bool                       condensed) const
-  {
-    const unsigned int          N = sampling.n_samples(), H = set.size();
-    std::vector<Vector<double>> load(H);
-    for (unsigned int h = 0; h < H; ++h)
-      load[h].reinit(set.problem(h).get_dof_handler().n_dofs());
-    // Theta integrals int factor_h s dtheta per point, component, harmonic.
-    std::vector<std::vector<StrainVector>> integral(
-      points.size(), std::vector<StrainVector>(H));
-    std::vector<char>   any(points.size(), 0);
-    std::vector<double> s(N), coefficient;
-    for (unsigned int p = 0; p < points.size(); ++p)
-      {
-        if (!owns_point(p))
-          continue;
-        for (unsigned int j = 0; j < N; ++j)
-          for (unsigned int k = 0; k < 6; ++k)
-            any[p] = any[p] || samples[p * N + j][k] != 0.;
-        if (!any[p])
-          continue; // an elastic point: no load, no work
-        for (unsigned int k = 0; k < 6; ++k)
-          {
-            for (unsigned int j = 0; j < N; ++j)
-              s[j] = samples[p * N + j][k];
-            sampling.integrate(s, factor_of(k), coefficient);
-            for (unsigned int h = 0; h < H; ++h)
-              integral[p][h][k] = coefficient[h];
-          }
-      }
-    // Every point's theta integrals on every rank (each non-zero on the
-    // rank that return-maps the point: an exact sum), then G_h of every
-    // harmonic redundantly, as the serial run assembles it.
-    if (point_stride > 1)
-      {
-        const unsigned int  size = H * 6 + 1;
-        std::vector<double> flat(points.size() * size, 0.);
-        for (unsigned int p = 0; p < points.size(); ++p)
-          if (owns_point(p) && any[p])
-            {
-              for (unsigned int h = 0; h < H; ++h)
-                std::copy(integral[p][h].begin(),
-                          integral[p][h].end(),
-                          flat.begin() + p * size + h * 6);
-              flat[p * size + H * 6] = 1.;
-            }
-        set.sum_over_ranks(flat);
-        for (unsigned int p = 0; p < points.size(); ++p)
-          {
-            any[p] = flat[p * size + H * 6] != 0.;
-            for (unsigned int h = 0; h < H; ++h)
-              std::copy(flat.begin() + p * size + h * 6,
-                        flat.begin() + p * size + (h + 1) * 6,
-                        integral[p][h].begin());
-          }
-      }
-    set.for_each([&](const unsigned int h) {
-      std::vector<StrainVector> field;
-      for (const SoilCell &cell : cells)
-        {
-          const unsigned int n_q    = cell.radius.size();
-          bool               active = false;
-          field.resize(n_q);
-          for (unsigned int q = 0; q < n_q; ++q)
-            {
-              field[q] = integral[cell.first_point + q][h];
-              active   = active || any[cell.first_point + q];
-            }
-          if (!active)
-            continue; // only the points that yield cost work
-          const Vector<double> local = cell_load(cell, h, field);
-          if (condensed)
-            set.problem(h)
-              .get_homogeneous_constraints()
-              .distribute_local_to_global(local, cell.dof_indices[h], load[h]);
-          else
-            for (unsigned int i = 0; i < local.size(); ++i)
-              load[h](cell.dof_indices[h][i]) += local(i);
-        }
-    });
-    return load;
-  }
-
-  Vector<double>
-  CoupledSoilSolver::cell_load(const SoilCell            &cell,
-                               const unsigned int         h,
-                               std::vector<StrainVector> &field) const
-  {
-    apply_bbar(cell.projection.get(), field);
-    const unsigned int n_dofs = component.size();
-    Vector<double>     local(n_dofs);
-    for (unsigned int q = 0; q < cell.radius.size(); ++q)
-      {
-        const double dV = points[cell.first_point + q].dV;
-        for (unsigned int i = 0; i < n_dofs; ++i)
-          {
-            const StrainVector b =
-              operators[h].strain_of_component(component[i],
-                                               cell.shape_value[q][i],
-                                               cell.shape_grad[q][i],
-                                               cell.radius[q]);
-            double sum = 0.;
-            for (unsigned int k = 0; k < 6; ++k)
-              sum += b[k] * field[q][k];
-            local(i) += sum * dV;
-          }
-      }
-    return local;
-  }
-
   std::vector<Vector<double>>
   CoupledSoilSolver::soil_nodal_force(
     const std::function<bool(const Point<2> &)> &selected) const
   {
-    AssertThrow(point_stride == 1,
-                ExcMessage("Output/Soil reaction depths: not yet under "
-                           "mpirun (the soil's stress lies on several ranks)"));
-    const unsigned int N = sampling.n_samples(), H = set.size();
-    const auto         strain = strain_samples(committed.correction_solution,
-                                       committed.load_factor,
-                                       committed.held_fraction);
-    std::vector<Vector<double>> force(H);
-    for (unsigned int h = 0; h < H; ++h)
-      force[h].reinit(set.problem(h).get_dof_handler().n_dofs());
-    std::vector<double>                    s(N), coefficient;
-    std::vector<std::vector<StrainVector>> field(H);
-    for (const SoilCell &cell : cells)
-      {
-        if (!selected(cell.centre))
-          continue;
-        const unsigned int n_q = cell.radius.size();
-        for (auto &f : field)
-          f.assign(n_q, StrainVector());
-        // The stress less the geostatic sigma_0 (balanced by self-weight):
-        // D eps - s_p, theta-integrated against each harmonic's factor.
-        for (unsigned int q = 0; q < n_q; ++q)
-          {
-            const unsigned int        p     = cell.first_point + q;
-            const SoilPoint          &point = points[p];
-            std::vector<StrainVector> stress(N);
-            for (unsigned int j = 0; j < N; ++j)
-              {
-                stress[j] = hooke_stress(strain[p * N + j],
-                                         point.lambda,
-                                         point.shear_modulus);
-                for (unsigned int k = 0; k < 6; ++k)
-                  stress[j][k] -= committed.plastic[p * N + j][k];
-              }
-            for (unsigned int k = 0; k < 6; ++k)
-              {
-                for (unsigned int j = 0; j < N; ++j)
-                  s[j] = stress[j][k];
-                sampling.integrate(s, factor_of(k), coefficient);
-                for (unsigned int h = 0; h < H; ++h)
-                  field[h][q][k] = coefficient[h];
-              }
-          }
-        for (unsigned int h = 0; h < H; ++h)
-          {
-            const Vector<double> local = cell_load(cell, h, field[h]);
-            for (unsigned int i = 0; i < local.size(); ++i)
-              force[h](cell.dof_indices[h][i]) += local(i);
-          }
-      }
-    return force;
+    return soil.nodal_force(strain_samples(committed.correction_solution,
+                                           committed.load_factor,
+                                           committed.held_fraction),
+                            committed.plastic,
+                            selected);
   }
 
   std::vector<Vector<double>>
   CoupledSoilSolver::soil_force(const std::vector<Vector<double>> &fields) const
   {
-    const unsigned int        N = sampling.n_samples();
-    std::vector<StrainVector> strain(points.size() * N);
-    const auto                amplitude = strain_amplitudes(fields);
-    std::vector<double>       a(set.size()), s;
-    for (unsigned int p = 0; p < points.size(); ++p)
-      for (unsigned int k = 0; k < 6; ++k)
-        {
-          for (unsigned int h = 0; h < set.size(); ++h)
-            a[h] = amplitude[p][h][k];
-          sampling.evaluate(a, factor_of(k), s);
-          for (unsigned int j = 0; j < N; ++j)
-            strain[p * N + j][k] = s[j];
-        }
-    for (unsigned int p = 0; p < points.size(); ++p)
-      for (unsigned int j = 0; j < N; ++j)
-        strain[p * N + j] = hooke_stress(strain[p * N + j],
-                                         points[p].lambda,
-                                         points[p].shear_modulus);
-    return load_of(strain);
+    return soil.elastic_force(fields);
   }
 
   std::vector<Vector<double>>
@@ -708,9 +238,8 @@ namespace FourierSSI
     const std::vector<Vector<double>> &fields)
   {
     std::vector<StrainVector> plastic;
-    SoilStepResult            result;
-    return_map(strain_samples(fields, 0., 0.), plastic, result);
-    std::vector<Vector<double>> load = load_of(plastic);
+    soil.return_map(strain_samples(fields, 0., 0.), committed.plastic, plastic);
+    std::vector<Vector<double>> load = soil.load_of(plastic);
     if (interface)
       {
         std::vector<LocalVector> interface_plastic;
@@ -850,224 +379,16 @@ namespace FourierSSI
     state.swipe_force = swipe_force;
   }
 
-  StrainVector
-  CoupledSoilSolver::elastic_stress(const SoilPoint    &point,
-                                    const StrainVector &eps) const
-  {
-    StrainVector stress = hooke_stress(eps, point.lambda, point.shear_modulus);
-    for (unsigned int c = 0; c < 6; ++c)
-      stress[c] += point.initial_stress[c];
-    return stress;
-  }
-
-  SoilReturn
-  CoupledSoilSolver::return_from_committed(const SoilPoint    &point,
-                                           const unsigned int  k,
-                                           const StrainVector &elastic) const
-  {
-    // Trial: sigma_0 + D (eps - eps_p,committed) = elastic - s_p,committed.
-    StrainVector trial = elastic;
-    for (unsigned int c = 0; c < 6; ++c)
-      trial[c] -= committed.plastic[k][c];
-    const double G = point.shear_modulus;
-    return laws[point.law].return_map(trial,
-                                      G,
-                                      point.lambda + 2. * G / 3.,
-                                      point.depth);
-  }
-
-  bool
-  CoupledSoilSolver::softening_at(const unsigned int      p,
-                                  const unsigned int      k,
-                                  const StrainVector     &strain,
-                                  std::array<double, 36> &softening) const
-  {
-    const SoilPoint &point = points[p];
-    const double     G = point.shear_modulus, lambda = point.lambda;
-    // Trial: sigma_0 + D (eps - eps_p,committed), as return_from_committed.
-    StrainVector trial = elastic_stress(point, strain);
-    for (unsigned int c = 0; c < 6; ++c)
-      trial[c] -= committed.plastic[k][c];
-    StressTangent    d_ep;
-    const SoilReturn at = laws[point.law].return_map_with_tangent(
-      trial, G, lambda + 2. * G / 3., point.depth, d_ep);
-    if (at.state == SoilState::elastic)
-      return false;
-    // D_e - D_ep, D_ep in closed form (SoilLaw::return_map_with_tangent).
-    for (unsigned int l = 0; l < 6; ++l)
-      {
-        StrainVector unit{};
-        unit[l]                    = 1.;
-        const StrainVector elastic = hooke_stress(unit, lambda, G);
-        for (unsigned int a = 0; a < 6; ++a)
-          softening[a * 6 + l] = elastic[a] - d_ep[a * 6 + l];
-      }
-    return true;
-  }
-
-  std::vector<std::vector<double>>
-  CoupledSoilSolver::softening_integrals(
-    const std::vector<StrainVector> &strain) const
-  {
-    const unsigned int               N = sampling.n_samples();
-    std::vector<std::vector<double>> softening(points.size());
-    for_each_range(
-      points.size(),
-      16,
-      set.n_threads(),
-      [&](const unsigned int first, const unsigned int last) {
-        std::array<double, 36> c;
-        HarmonicPairIntegral   integral(harmonics, sampling, 6, 4);
-        for (unsigned int p = first; p < last; ++p)
-          {
-            if (!owns_point(p))
-              continue; // its strain samples are on its own rank
-            bool yields = false;
-            for (unsigned int j = 0; j < N; ++j)
-              {
-                if (!softening_at(p, p * N + j, strain[p * N + j], c))
-                  continue;
-                if (!yields)
-                  {
-                    integral.clear();
-                    yields = true;
-                  }
-                integral.add_sample(j, c.data());
-              }
-            if (yields)
-              integral.integrals(softening[p]);
-          }
-      });
-    softening_over_ranks(softening);
-    return softening;
-  }
-
-  void
-  CoupledSoilSolver::softening_over_ranks(
-    std::vector<std::vector<double>> &softening) const
-  {
-    if (point_stride == 1)
-      return;
-    // 1. Which points yield: one flag per point, set by its rank.
-    std::vector<double> yields(points.size(), 0.);
-    for (unsigned int p = 0; p < points.size(); ++p)
-      yields[p] = softening[p].empty() ? 0. : 1.;
-    set.sum_over_ranks(yields);
-    // 2. Their integrals, packed in the points' order: each is non-zero on
-    //    one rank only, so the sum is exact (x + 0 = x), the serial bits.
-    const unsigned int  H = set.size(), size = 36 * H * H;
-    std::vector<double> packed;
-    for (unsigned int p = 0; p < points.size(); ++p)
-      if (yields[p] != 0.)
-        {
-          if (softening[p].empty())
-            packed.resize(packed.size() + size, 0.);
-          else
-            packed.insert(packed.end(),
-                          softening[p].begin(),
-                          softening[p].end());
-        }
-    set.sum_over_ranks(packed);
-    for (unsigned int p = 0, next = 0; p < points.size(); ++p)
-      if (yields[p] != 0.)
-        {
-          softening[p].assign(packed.begin() + next,
-                              packed.begin() + next + size);
-          next += size;
-        }
-  }
-
   void
   CoupledSoilSolver::make_tangent()
   {
-    std::vector<std::vector<std::vector<types::global_dof_index>>> dofs;
-    for (const SoilCell &cell : cells)
-      dofs.push_back(cell.dof_indices);
+    std::vector<std::vector<std::vector<types::global_dof_index>>> dofs =
+      soil.cell_dofs();
     // The coulomb interfaces' pairs couple the harmonics too.
     if (interface)
       for (auto &pair : interface->pair_dofs())
         dofs.push_back(std::move(pair));
     tangent = std::make_unique<CoupledTangent>(set, dofs);
-  }
-
-  std::vector<unsigned int>
-  CoupledSoilSolver::yielding_cells(
-    const std::vector<std::vector<double>> &softening) const
-  {
-    std::vector<unsigned int> yielding;
-    for (unsigned int c = 0; c < cells.size(); ++c)
-      for (unsigned int q = 0; q < cells[c].radius.size(); ++q)
-        if (!softening[cells[c].first_point + q].empty())
-          {
-            yielding.push_back(c);
-            break;
-          }
-    return yielding;
-  }
-
-  std::vector<std::vector<CoupledSoilSolver::ShapeStrains>>
-  CoupledSoilSolver::shape_strains(
-    const std::vector<unsigned int> &yielding) const
-  {
-    const unsigned int                     n_dofs = component.size();
-    std::vector<std::vector<ShapeStrains>> strains(
-      yielding.size(), std::vector<ShapeStrains>(set.size()));
-    set.for_each([&](const unsigned int h) {
-      for (unsigned int y = 0; y < yielding.size(); ++y)
-        {
-          const SoilCell    &cell = cells[yielding[y]];
-          const unsigned int n_q  = cell.radius.size();
-          ShapeStrains       b(n_dofs, std::vector<StrainVector>(n_q));
-          for (unsigned int i = 0; i < n_dofs; ++i)
-            {
-              for (unsigned int q = 0; q < n_q; ++q)
-                b[i][q] =
-                  operators[h].strain_of_component(component[i],
-                                                   cell.shape_value[q][i],
-                                                   cell.shape_grad[q][i],
-                                                   cell.radius[q]);
-              apply_bbar(cell.projection.get(), b[i]);
-            }
-          strains[y][h] = std::move(b);
-        }
-    });
-    return strains;
-  }
-
-  void
-  CoupledSoilSolver::add_cell_softening(
-    const SoilCell                         &cell,
-    const unsigned int                      h,
-    const unsigned int                      g,
-    const std::vector<std::vector<double>> &softening,
-    const ShapeStrains                     &row_strain,
-    const ShapeStrains                     &column_strain,
-    FullMatrix<double>                     &local) const
-  {
-    const unsigned int H = set.size(), HH = H * H, n_dofs = component.size();
-    local = 0.;
-    for (unsigned int q = 0; q < cell.radius.size(); ++q)
-      {
-        const unsigned int p = cell.first_point + q;
-        if (softening[p].empty())
-          continue;
-        const double *s  = &softening[p][h * H + g];
-        const double  dV = points[p].dV;
-        for (unsigned int j = 0; j < n_dofs; ++j)
-          {
-            StrainVector sb{};
-            for (unsigned int a = 0; a < 6; ++a)
-              for (unsigned int e = 0; e < 6; ++e)
-                sb[a] += s[(a * 6 + e) * HH] * column_strain[j][q][e];
-            for (unsigned int i = 0; i < n_dofs; ++i)
-              {
-                double sum = 0.;
-                for (unsigned int a = 0; a < 6; ++a)
-                  sum += row_strain[i][q][a] * sb[a];
-                local(i, j) -= dV * sum;
-              }
-          }
-      }
   }
 
   void
@@ -1078,39 +399,12 @@ namespace FourierSSI
     const bool                       displacement_control)
   {
     const unsigned int H = set.size();
-    // 1. S_hg = theta integral of factor_h (D_e - D_ep) factor_g per point,
-    //    over the samples that yield (harmonic_pair_integral.h); empty: a
-    //    point elastic at every theta. softening[p][(a * 6 + b) * H^2 + h *
-    //    H + g], the harmonic pair innermost (contiguous in the assembly).
-    const std::vector<std::vector<double>> softening =
-      softening_integrals(strain);
-    // 2. K_t = diag(K_h) - the softening of the yielding cells, block row h
-    //    by harmonic h's thread; the Bbar strains of the shape functions of
-    //    the yielding cells once per build (every block row h needs every
-    //    column harmonic g).
+    // K_t = diag(K_h) - the soil's softening at the points that yield -
+    // the interfaces' at the samples that slip or open.
     if (!tangent)
       make_tangent();
     tangent->reset_to_elastic();
-    const std::vector<unsigned int> yielding = yielding_cells(softening);
-    const std::vector<std::vector<ShapeStrains>> strains =
-      shape_strains(yielding);
-    // Block row h: K_t,hg -= int Bbar_h^T S_hg Bbar_g (on h's owner under
-    // MPI, coupled_tangent.h).
-    set.for_each([&](const unsigned int h) {
-      if (!set.owns(h))
-        return;
-      FullMatrix<double> local(component.size(), component.size());
-      for (unsigned int y = 0; y < yielding.size(); ++y)
-        for (unsigned int g = 0; g < H; ++g)
-          {
-            const SoilCell &cell = cells[yielding[y]];
-            add_cell_softening(
-              cell, h, g, softening, strains[y][h], strains[y][g], local);
-            tangent->add(h, g, local, cell.dof_indices[h], cell.dof_indices[g]);
-          }
-    });
-    // 3. The interfaces' part: -int B_h^T (D - D_t) B_g at the samples
-    //    that slip or open.
+    soil.add_softening(strain, committed.plastic, *tangent);
     if (interface)
       interface->add_softening(relative,
                                interface_origin,
@@ -1245,10 +539,11 @@ namespace FourierSSI
                               state.load_factor,
                               state.held_fraction,
                               state.swipe_force);
-    return_map(e.strain, e.plastic, result);
+    static_cast<SoilYieldCounts &>(result) =
+      soil.return_map(e.strain, committed.plastic, e.plastic);
     // 3-4: out-of-balance load and force residual R = G - c; the coulomb
     //    interfaces add theirs (one c for both sources).
-    e.residual = load_of(e.plastic);
+    e.residual = soil.load_of(e.plastic);
     const double interface_load_norm =
       interface ? add_interface_residual(state, e, result) : 0.;
     for (unsigned int h = 0; h < set.size(); ++h)
@@ -1293,7 +588,7 @@ namespace FourierSSI
                             StepState         &state,
                             SoilStepResult    &result) const
   {
-    count_over_ranks(result);
+    soil.count_over_ranks(result);
     state.plastic           = std::move(e.plastic);
     state.interface_plastic = std::move(e.interface_plastic);
     if (interface)
@@ -1484,7 +779,8 @@ namespace FourierSSI
   {
     if (parameters.rigid_foundation.reported_motions().empty())
       return {};
-    std::vector<Vector<double>> nonlinear_load = load_of(state.plastic, false);
+    std::vector<Vector<double>> nonlinear_load =
+      soil.load_of(state.plastic, false);
     if (interface)
       {
         const std::vector<Vector<double>> interface_load =
@@ -1527,7 +823,7 @@ namespace FourierSSI
   {
     const bool load_control =
       settings.control == LoadPathParameters::Control::load;
-    log << "plastic soil: " << points.size() << " quadrature points x "
+    log << "plastic soil: " << soil.size() << " quadrature points x "
         << sampling.n_samples() << " theta samples, " << set.size()
         << " harmonics"
         << (set.n_owning_ranks() > 1 ?
@@ -1537,7 +833,7 @@ namespace FourierSSI
         << ", " << (load_control ? "load" : "displacement") << " control, "
         << settings.load_steps << " steps, tolerance " << settings.tolerance
         << ", " << iteration_name(settings, parameters.soil_plasticity.tangent)
-        << (cells.front().projection ? ", B-bar" : "") << '\n';
+        << (soil.projects_dilatation() ? ", B-bar" : "") << '\n';
     if (interface)
       interface->describe(log,
                           interface_sampling.n_samples(),

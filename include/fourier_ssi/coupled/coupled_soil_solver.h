@@ -10,16 +10,22 @@
  *   K_h u_h = lambda F_h + c_h,   c_h = int Bbar_h^T [int factor_h s_p dtheta]
  *                                          r dr dz,
  * (the internal force int Bbar^T sigma = K u - c, sigma = D (eps - eps_p)).
- * One iteration:
+ * The solver drives two nonlinear sources: the soil's quadrature points
+ * (NonlinearSoilPoints) and, where the scene has them, the coulomb
+ * interfaces (NonlinearInterfacePoints). One evaluation of an iterate:
  *   1. strain amplitudes of every harmonic at every soil quadrature point
  *      (Bbar u_h: with B-bar the dilatation projected per cell), summed at N
  *      theta samples (ThetaSampling::evaluate);
  *   2. the return mapping at every (point, theta) from the last converged
  *      plastic stress -> s_p = D eps - sigma;
- *   3. G_h = int Bbar_h^T (theta-integrated s_p) for every harmonic;
- *   4. R = G - c; converged if |R| <= tolerance |lambda F| (2-norms over
- *      the harmonics); else c <- c + omega R, all harmonics re-solved with
- *      their kept factorizations, omega by Aitken's Delta^2 rule.
+ *   3. G_h = int Bbar_h^T (theta-integrated s_p) for every harmonic, plus
+ *      the interfaces' out-of-balance load;
+ *   4. R = G - c, converged if |R| <= tolerance times the force scale
+ *      (ForceScale). Otherwise c moves by Newton on the coupled tangent
+ *      K_t (Stiffness = tangent: each source adds its closed-form part,
+ *      the globalisation of safeguarded_newton.h), or by the accelerated
+ *      initial-stiffness update, all harmonics re-solved with their kept
+ *      factorizations.
  * Loading (load or displacement control of the rigid foundation), step
  * cutting and the settings are those of subsection "Load path".
  * A swipe test (Rigid foundation/Held motions = w with a Held vertical
@@ -27,9 +33,8 @@
  * rigid foundation: after the held stage mu is a second unknown beside
  * lambda, chosen with it so that w stays where the held stage left it
  * (swipe_multipliers); no constraint changes along the path.
- * Coulomb interfaces in the scene iterate with the soil: their
- * out-of-balance load (NonlinearInterfacePoints) joins G in step 3, and
- * their part of the tangent joins K_t (doc/soil-plasticity.md 6b).
+ * Coulomb interfaces in the scene iterate with the soil
+ * (doc/soil-plasticity.md 6b).
  *
  * Under mpirun the harmonics are distributed over the ranks
  * (HarmonicSet::distribute_over), as for the interfaces: each rank re-solves
@@ -54,9 +59,9 @@
 #include <fourier_ssi/coupled/coupled_tangent.h>
 #include <fourier_ssi/coupled/load_path_states.h>
 #include <fourier_ssi/coupled/nonlinear_interface_points.h>
+#include <fourier_ssi/coupled/nonlinear_soil_points.h>
 #include <fourier_ssi/coupled/soil_law.h>
 #include <fourier_ssi/fourier/theta_sampling.h>
-#include <fourier_ssi/harmonic/bbar_projection.h>
 #include <fourier_ssi/harmonic/harmonic_set.h>
 #include <fourier_ssi/input/load_path_parameters.h>
 #include <fourier_ssi/input/parameters.h>
@@ -71,13 +76,12 @@ namespace FourierSSI
 {
   using namespace dealii;
 
-  /** One converged load step of the plastic soil. */
-  struct SoilStepResult : LoadStep
+  /**
+   * One converged load step of the plastic soil: the soil's counts over
+   * every (point, theta) (SoilYieldCounts), and the interfaces'.
+   */
+  struct SoilStepResult : LoadStep, SoilYieldCounts
   {
-    /** (point, theta) samples elastic and plastic. */
-    unsigned int n_elastic = 0, n_plastic = 0;
-    /** Largest f(sigma) over every (point, theta) [kPa] (<= 0 admissible). */
-    double largest_yield_value = 0.;
     /**
      * Coulomb interfaces: (point, theta) samples sticking, slipping, open
      * (all zero without).
@@ -166,7 +170,7 @@ namespace FourierSSI
     unsigned int
     n_soil_points() const
     {
-      return points.size();
+      return soil.size();
     }
 
     unsigned int
@@ -218,39 +222,8 @@ namespace FourierSSI
     write_csv(const std::string &filename) const;
 
   private:
-    /** A soil quadrature point: its cell, weight and elastic constants. */
-    struct SoilPoint
-    {
-      unsigned int cell;
-      unsigned int q;
-      double       r, dV, depth, shear_modulus, lambda;
-      unsigned int law;
-      /** The geostatic stress sigma_0 (Initial stress; zero without). */
-      StrainVector initial_stress;
-    };
-
-    /** A cell of plastic soil: shape data at its quadrature points. */
-    struct SoilCell
-    {
-      /** Local DoF indices per harmonic. */
-      std::vector<std::vector<types::global_dof_index>> dof_indices;
-      /** shape_value[q][i], shape_grad[q][i]. */
-      std::vector<std::vector<double>>       shape_value;
-      std::vector<std::vector<Tensor<1, 2>>> shape_grad;
-      std::vector<double>                    radius;
-      /** B-bar projection of the cell (null: standard strains). */
-      std::shared_ptr<LinearProjection> projection;
-      unsigned int                      first_point;
-      Point<2>                          centre;
-    };
-
     using StepState = SoilStepState;
 
-    void
-    make_points();
-    /** One line if the geostatic stress lies outside a soil law. */
-    void
-    check_initial_stress() const;
     void
     solve_load_pattern();
     /**
@@ -299,14 +272,6 @@ namespace FourierSSI
                 StepState       &state) const override;
 
     /**
-     * Strain amplitudes [point][harmonic] of fields (one per harmonic): of
-     * the harmonics this rank owns, summed over the ranks (the one
-     * collective of an iteration).
-     */
-    std::vector<std::vector<StrainVector>>
-    strain_amplitudes(const std::vector<Vector<double>> &fields) const;
-
-    /**
      * Total strain samples [point * N + j] at lambda and rho, at the points
      * this rank owns (owns_point; zero at the others).
      */
@@ -340,24 +305,6 @@ namespace FourierSSI
                        std::vector<Vector<double>>    &load) const;
 
     /**
-     * Return mapping from the committed state at every (point, theta) of
-     * the points this rank owns; the counts of `result` are this rank's
-     * (count_over_ranks: all of them).
-     */
-    void
-    return_map(const std::vector<StrainVector> &strain,
-               std::vector<StrainVector>       &plastic,
-               SoilStepResult                  &result) const;
-
-    /**
-     * G_h = int Bbar_h^T (theta integral of samples), every harmonic: the
-     * theta integrals at the points this rank owns, summed over the ranks.
-     */
-    std::vector<Vector<double>>
-    load_of(const std::vector<StrainVector> &samples,
-            const bool                       condensed = true) const;
-
-    /**
      * The load that holds each held motion (Rigid foundation/Held motions)
      * in a converged state: the work of the internal force K u - G(u)
      * (G unconstrained: load_of(plastic, false)) minus the body force
@@ -369,15 +316,6 @@ namespace FourierSSI
     std::vector<std::pair<FoundationMotion, double>>
     held_reactions(const StepState         &state,
                    const InterfaceSnapshot &interface_state) const;
-
-    /**
-     * int Bbar_h^T field dV over one cell (its local vector): `field` is
-     * the theta integrals per quadrature point (B-bar applied in place).
-     */
-    Vector<double>
-    cell_load(const SoilCell            &cell,
-              const unsigned int         h,
-              std::vector<StrainVector> &field) const;
 
     /** lambda that puts the controlled motion of the state at target. */
     double
@@ -518,73 +456,9 @@ namespace FourierSSI
     Vector<double>
     held_load(const unsigned int h) const;
 
-    /**
-     * sigma_0 + D eps at a point: its stress if it had stayed elastic from
-     * the initial (geostatic) state.
-     */
-    StrainVector
-    elastic_stress(const SoilPoint &point, const StrainVector &eps) const;
-
-    /**
-     * The return mapping at sample k of a point from the committed state:
-     * trial = elastic - s_p,committed (elastic from elastic_stress()).
-     */
-    SoilReturn
-    return_from_committed(const SoilPoint    &point,
-                          const unsigned int  k,
-                          const StrainVector &elastic) const;
-
-    /**
-     * D_e - D_ep at sample k of point p (row-major 6 x 6, D_ep the
-     * closed-form algorithmic tangent of the return mapping from the
-     * committed state); false where the return is elastic (no softening).
-     */
-    bool
-    softening_at(const unsigned int      p,
-                 const unsigned int      k,
-                 const StrainVector     &strain,
-                 std::array<double, 36> &softening) const;
-
-    /**
-     * Per point, the theta integrals S_hg of factor_h (D_e - D_ep) factor_g
-     * over the samples that yield, [(a * 6 + b) * H^2 + h * H + g] (empty:
-     * elastic at every theta).
-     */
-    std::vector<std::vector<double>>
-    softening_integrals(const std::vector<StrainVector> &strain) const;
-
-    /**
-     * Under MPI: every point's softening integrals on every rank (each
-     * computed by the rank that return-maps the point), exactly; the
-     * yielding points only, so the sum stays small while few yield.
-     */
-    void
-    softening_over_ranks(std::vector<std::vector<double>> &softening) const;
-
     /** The coupled tangent's sparsity: the soil cells and interface pairs. */
     void
     make_tangent();
-
-    /** The cells with a point that yields. */
-    std::vector<unsigned int>
-    yielding_cells(const std::vector<std::vector<double>> &softening) const;
-
-    /** Bbar strains of a cell's shape functions [i][q]. */
-    using ShapeStrains = std::vector<std::vector<StrainVector>>;
-
-    /** [yielding cell][h]: the shape strains of every harmonic. */
-    std::vector<std::vector<ShapeStrains>>
-    shape_strains(const std::vector<unsigned int> &yielding) const;
-
-    /** local = -int Bbar_h^T S_hg Bbar_g over one yielding cell. */
-    void
-    add_cell_softening(const SoilCell                         &cell,
-                       const unsigned int                      h,
-                       const unsigned int                      g,
-                       const std::vector<std::vector<double>> &softening,
-                       const ShapeStrains                     &row_strain,
-                       const ShapeStrains                     &column_strain,
-                       FullMatrix<double>                     &local) const;
 
     /**
      * Stiffness = tangent: K_t,hg = delta_hg K_h - int Bbar_h^T
@@ -646,26 +520,11 @@ namespace FourierSSI
     double
     controlled_motion(const unsigned int h, const Vector<double> &v) const;
 
-    /**
-     * Several ranks: point p is return-mapped by rank p mod P only (the
-     * return mapping is most of an iteration, doc/soil-plasticity.md 3c).
-     */
-    bool
-    owns_point(const unsigned int p) const
-    {
-      return p % point_stride == point_rank;
-    }
-
-    /** The elastic and plastic counts and largest f over the ranks. */
-    void
-    count_over_ranks(SoilStepResult &result) const;
-
-    const HarmonicSet            &set;
-    const AllParameters          &parameters;
-    LoadPathParameters            settings;
-    std::vector<Harmonic>         harmonics;
-    std::vector<HarmonicOperator> operators;
-    ThetaSampling                 sampling;
+    const HarmonicSet    &set;
+    const AllParameters  &parameters;
+    LoadPathParameters    settings;
+    std::vector<Harmonic> harmonics;
+    ThetaSampling         sampling;
     /**
      * The nonlinear interfaces' samples: those of the soil, but with
      * `contact` or a stiff coulomb law that can open (through the
@@ -673,22 +532,20 @@ namespace FourierSSI
      * gap (minimum_theta_samples(); more make the multipliers drift,
      * constrained_theta_samples()), while Theta samples sets the soil's.
      */
-    ThetaSampling                          interface_sampling;
-    std::vector<SoilLaw>                   laws;
-    std::vector<SoilCell>                  cells;
-    std::vector<SoilPoint>                 points;
-    std::vector<unsigned int>              component;
-    std::vector<std::vector<StrainVector>> held_strain;
-    /** A swipe: the strain amplitudes of K^-1 e_V [point][harmonic]. */
-    std::vector<std::vector<StrainVector>> swipe_strain;
+    ThetaSampling interface_sampling;
+    /** The plastic soil's quadrature points and their laws. */
+    NonlinearSoilPoints soil;
+    StrainAmplitudes    held_strain;
+    /** A swipe: the strain amplitudes of K^-1 e_V. */
+    StrainAmplitudes swipe_strain;
     /** A swipe: w where the held stage left it [m], the value held. */
     double swipe_settlement = 0.;
     /** The step solved is a swipe's (not in its held stage): mu keeps w. */
     bool swiping = false;
     /** The trial is the retry after the last cut (retry_persistently). */
     bool persistent = false;
-    /** Strain amplitudes of the load pattern [point][harmonic]. */
-    std::vector<std::vector<StrainVector>> pattern_strain;
+    /** Strain amplitudes of the load pattern. */
+    StrainAmplitudes pattern_strain;
     /** The records of the step being solved. */
     SoilStepResult              trial_result;
     std::vector<SoilStepResult> steps;
@@ -704,8 +561,6 @@ namespace FourierSSI
     /** A swipe: the relative displacements of K^-1 e_V. */
     std::vector<LocalVector>                    swipe_relative;
     std::function<void(const SoilStepResult &)> step_observer;
-    /** owns_point(): the ranks and this rank (1, 0: every point). */
-    unsigned int point_stride = 1, point_rank = 0;
   };
 } // namespace FourierSSI
 

@@ -1,0 +1,302 @@
+/**
+ * The quadrature points of the plastic soil (Soil plasticity/Laws) of a set
+ * of harmonics and what a coupled iteration does there
+ * (doc/soil-plasticity.md section 3): the nonlinear source of the soil, as
+ * NonlinearInterfacePoints is that of the interfaces. At every
+ * (point, theta sample):
+ *   - the strain of fields given per harmonic (B-bar where the dilatation
+ *     is projected), summed at the theta samples;
+ *   - the return mapping from the committed plastic stress
+ *     s_p = D eps_p (soil_law.h);
+ * and over the soil cells:
+ *   - the out-of-balance load G_h = int Bbar_h^T [int factor_h s_p dtheta]
+ *     r dr dz;
+ *   - the tangent's soil part -int Bbar_h^T [int factor_h (D_e - D_ep)
+ *     factor_g dtheta] Bbar_g r dr dz (D_ep the closed-form algorithmic
+ *     tangent), added to a CoupledTangent.
+ * The plastic-soil solver (coupled_soil_solver.h) iterates on it.
+ *
+ * Under mpirun the harmonics are distributed over the ranks: strain
+ * amplitudes are computed by each harmonic's owner and summed over the
+ * ranks; point p is return-mapped by rank p mod P only (owns_point), and
+ * its theta integrals and softening reach every rank by a sum in which each
+ * entry is non-zero on one rank: exact, the serial run's bits
+ * (doc/soil-plasticity.md section 3c).
+ */
+#ifndef fourier_ssi_nonlinear_soil_points_h
+#define fourier_ssi_nonlinear_soil_points_h
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/lac/full_matrix.h>
+#include <deal.II/lac/vector.h>
+#include <fourier_ssi/coupled/coupled_tangent.h>
+#include <fourier_ssi/coupled/soil_law.h>
+#include <fourier_ssi/fourier/harmonic_operator.h>
+#include <fourier_ssi/fourier/theta_sampling.h>
+#include <fourier_ssi/harmonic/bbar_projection.h>
+#include <fourier_ssi/harmonic/harmonic_set.h>
+#include <fourier_ssi/input/parameters.h>
+#include <functional>
+#include <memory>
+#include <utility>
+#include <vector>
+
+namespace FourierSSI
+{
+  using namespace dealii;
+
+  /**
+   * Strain amplitudes of a field given per harmonic, [point][harmonic]:
+   * what every (point, theta) strain is sampled from.
+   */
+  using StrainAmplitudes = std::vector<std::vector<StrainVector>>;
+
+  /** The soil's state over its (point, theta) samples. */
+  struct SoilYieldCounts
+  {
+    /** Samples elastic and plastic. */
+    unsigned int n_elastic = 0, n_plastic = 0;
+    /** Largest f(sigma) [kPa] (<= 0 admissible). */
+    double largest_yield_value = 0.;
+  };
+
+  class NonlinearSoilPoints
+  {
+  public:
+    /**
+     * The points of every cell whose material id has a plastic law, with
+     * the stiffness's own quadrature; `sampling` the theta samples of the
+     * soil. One line if no cell has such a law, or if the geostatic stress
+     * (Initial stress) lies outside a law.
+     */
+    NonlinearSoilPoints(const HarmonicSet   &set,
+                        const AllParameters &parameters,
+                        const ThetaSampling &sampling);
+
+    unsigned int
+    size() const
+    {
+      return points.size();
+    }
+
+    /** The strains are B-bar's (the dilatation projected per cell). */
+    bool
+    projects_dilatation() const
+    {
+      return !cells.empty() && cells.front().projection != nullptr;
+    }
+
+    /**
+     * Strain amplitudes of fields (one per harmonic): of the harmonics this
+     * rank owns, summed over the ranks (a collective).
+     */
+    StrainAmplitudes
+    strain_amplitudes(const std::vector<Vector<double>> &fields) const;
+
+    /**
+     * Total strain [point * N + j] of sum_t factor_t amplitudes_t at the
+     * points this rank owns (owns_point; zero at the others): one affine
+     * combination, as the solver writes its iterate u = v + lambda u_F +
+     * rho u_held (+ mu u_V).
+     */
+    std::vector<StrainVector>
+    strain_samples(
+      const std::vector<std::pair<double, const StrainAmplitudes *>> &terms)
+      const;
+
+    /**
+     * The return mapping at every (point, theta) of the points this rank
+     * owns from the committed s_p: fills `plastic` (s_p = sigma_0 + D eps -
+     * sigma, so that int Bbar^T (sigma - sigma_0) = K u - c); the counts
+     * are this rank's (count_over_ranks: all of them).
+     */
+    SoilYieldCounts
+    return_map(const std::vector<StrainVector> &strain,
+               const std::vector<StrainVector> &committed_plastic,
+               std::vector<StrainVector>       &plastic) const;
+
+    /** The counts summed, and the largest f, over the ranks. */
+    void
+    count_over_ranks(SoilYieldCounts &counts) const;
+
+    /**
+     * G_h = int Bbar_h^T (theta integral of samples), every harmonic, the
+     * homogeneous constraints applied (or at the DoFs as they are,
+     * `condensed` false): the theta integrals at the points this rank owns,
+     * summed over the ranks. Points without samples cost nothing.
+     */
+    std::vector<Vector<double>>
+    load_of(const std::vector<StrainVector> &samples,
+            const bool                       condensed = true) const;
+
+    /**
+     * int Bbar_h^T D eps(fields) over the soil, theta by sampling: the soil
+     * part of K u, through the same projection as the out-of-balance loads.
+     */
+    std::vector<Vector<double>>
+    elastic_force(const std::vector<Vector<double>> &fields) const;
+
+    /**
+     * int Bbar_h^T (D eps - s_p) over the cells whose centre is `selected`,
+     * every harmonic, at the DoFs as they are (not condensed): the stress
+     * less the geostatic sigma_0 of the state given. Serial runs only.
+     */
+    std::vector<Vector<double>>
+    nodal_force(const std::vector<StrainVector>             &strain,
+                const std::vector<StrainVector>             &plastic,
+                const std::function<bool(const Point<2> &)> &selected) const;
+
+    /**
+     * The DoFs [cell][h] of every soil cell: the couplings between harmonics
+     * the tangent's soil part adds.
+     */
+    std::vector<std::vector<std::vector<types::global_dof_index>>>
+    cell_dofs() const;
+
+    /**
+     * Adds the soil part of the coupled tangent at the strains given
+     * (return mapping from committed_plastic) to the block rows of the
+     * harmonics this rank owns:
+     *   K_t,hg -= int Bbar_h^T S_hg Bbar_g,
+     * S_hg the theta integral of factor_h (D_e - D_ep) factor_g over the
+     * samples that yield (harmonic_pair_integral.h).
+     */
+    void
+    add_softening(const std::vector<StrainVector> &strain,
+                  const std::vector<StrainVector> &committed_plastic,
+                  CoupledTangent                  &tangent) const;
+
+  private:
+    /** A soil quadrature point: its cell, weight and elastic constants. */
+    struct SoilPoint
+    {
+      unsigned int cell;
+      unsigned int q;
+      double       r, dV, depth, shear_modulus, lambda;
+      unsigned int law;
+      /** The geostatic stress sigma_0 (Initial stress; zero without). */
+      StrainVector initial_stress;
+    };
+
+    /** A cell of plastic soil: shape data at its quadrature points. */
+    struct SoilCell
+    {
+      /** Local DoF indices per harmonic. */
+      std::vector<std::vector<types::global_dof_index>> dof_indices;
+      /** shape_value[q][i], shape_grad[q][i]. */
+      std::vector<std::vector<double>>       shape_value;
+      std::vector<std::vector<Tensor<1, 2>>> shape_grad;
+      std::vector<double>                    radius;
+      /** B-bar projection of the cell (null: standard strains). */
+      std::shared_ptr<LinearProjection> projection;
+      unsigned int                      first_point;
+      Point<2>                          centre;
+    };
+
+    void
+    make_points(const AllParameters &parameters);
+
+    /** One line if the geostatic stress lies outside a soil law. */
+    void
+    check_initial_stress(const AllParameters &parameters) const;
+
+    /**
+     * sigma_0 + D eps at a point: its stress if it had stayed elastic from
+     * the initial (geostatic) state.
+     */
+    StrainVector
+    elastic_stress(const SoilPoint &point, const StrainVector &eps) const;
+
+    /**
+     * The return mapping at a point from its committed s_p: trial =
+     * sigma_0 + D eps - s_p,committed; with the tangent D_ep if asked.
+     */
+    SoilReturn
+    return_from(const SoilPoint    &point,
+                const StrainVector &strain,
+                const StrainVector &committed_plastic,
+                StressTangent      *tangent = nullptr) const;
+
+    /**
+     * D_e - D_ep at one sample (row-major 6 x 6); false where the return
+     * is elastic (no softening).
+     */
+    bool
+    softening_at(const SoilPoint        &point,
+                 const StrainVector     &strain,
+                 const StrainVector     &committed_plastic,
+                 std::array<double, 36> &softening) const;
+
+    /**
+     * Per point, the theta integrals S_hg of factor_h (D_e - D_ep) factor_g
+     * over the samples that yield, [(a * 6 + b) * H^2 + h * H + g] (empty:
+     * elastic at every theta), on every rank (softening_over_ranks).
+     */
+    std::vector<std::vector<double>>
+    softening_integrals(const std::vector<StrainVector> &strain,
+                        const std::vector<StrainVector> &committed) const;
+
+    /**
+     * Under MPI: every point's softening integrals on every rank (each
+     * computed by the rank that return-maps the point), exactly; the
+     * yielding points only, so the sum stays small while few yield.
+     */
+    void
+    softening_over_ranks(std::vector<std::vector<double>> &softening) const;
+
+    /** The cells with a point that yields. */
+    std::vector<unsigned int>
+    yielding_cells(const std::vector<std::vector<double>> &softening) const;
+
+    /** Bbar strains of a cell's shape functions [i][q]. */
+    using ShapeStrains = std::vector<std::vector<StrainVector>>;
+
+    /** [yielding cell][h]: the shape strains of every harmonic. */
+    std::vector<std::vector<ShapeStrains>>
+    shape_strains(const std::vector<unsigned int> &yielding) const;
+
+    /** local = -int Bbar_h^T S_hg Bbar_g over one yielding cell. */
+    void
+    add_cell_softening(const SoilCell                         &cell,
+                       const unsigned int                      h,
+                       const unsigned int                      g,
+                       const std::vector<std::vector<double>> &softening,
+                       const ShapeStrains                     &row_strain,
+                       const ShapeStrains                     &column_strain,
+                       FullMatrix<double>                     &local) const;
+
+    /**
+     * int Bbar_h^T field dV over one cell (its local vector): `field` is
+     * the theta integrals per quadrature point (B-bar applied in place).
+     */
+    Vector<double>
+    cell_load(const SoilCell            &cell,
+              const unsigned int         h,
+              std::vector<StrainVector> &field) const;
+
+    /**
+     * Several ranks: point p is return-mapped by rank p mod P only (the
+     * return mapping is most of an iteration, doc/soil-plasticity.md 3c).
+     */
+    bool
+    owns_point(const unsigned int p) const
+    {
+      return p % point_stride == point_rank;
+    }
+
+    const HarmonicSet            &set;
+    std::vector<Harmonic>         harmonics;
+    std::vector<HarmonicOperator> operators;
+    ThetaSampling                 sampling;
+    std::vector<SoilLaw>          laws;
+    std::vector<SoilCell>         cells;
+    std::vector<SoilPoint>        points;
+    /** The vector component of each local DoF of a cell. */
+    std::vector<unsigned int> component;
+    /** owns_point(): the ranks and this rank (1, 0: every point). */
+    unsigned int point_stride = 1, point_rank = 0;
+  };
+} // namespace FourierSSI
+
+#endif
