@@ -2,6 +2,7 @@
 #include <chrono>
 #include <cmath>
 #include <deal.II/base/quadrature_lib.h>
+#include <fourier_ssi/coupled/balance_iteration.h>
 #include <fourier_ssi/coupled/coupled_interface_solver.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/safeguarded_newton.h>
@@ -473,52 +474,56 @@ namespace FourierSSI
     // beyond the tangent's foresight is put right by the next tangent),
     // then the line search from the best iterate halves down to 2^-16; its
     // iterations are cheap (condensed), so no step is given up early.
+    const auto evaluate_iterate = [&](StepState &iterate) {
+      return evaluate(target, iterate);
+    };
     using Newton = SafeguardedNewton<StepState, Evaluation, Vector<double>>;
     Newton newton(
       Newton::Settings{4,
                        1. / 65536.,
                        std::numeric_limits<unsigned int>::max()},
-      [&](StepState &iterate) { return evaluate(target, iterate); },
+      evaluate_iterate,
       [&](const Evaluation &at, const StepState &iterate) {
         return newton_direction(at, iterate);
       },
       [&](const double alpha, const Vector<double> &dc, StepState &iterate) {
         add_scaled_correction(alpha, dc, iterate);
       });
+    const auto balanced = [&](StepState &iterate, Evaluation &at) {
+      if (!at.scale.converged(at.residual_norm, settings.tolerance))
+        return false;
+      if (!settings.tangent_stiffness)
+        return true;
+      // Newton: the iterate from the full solve K^-1 c, checked again
+      // (iterative refinement of the flexibility blocks' round-off).
+      complete(iterate);
+      at = evaluate(target, iterate);
+      return at.scale.converged(at.residual_norm, settings.tolerance);
+    };
+    // 5: c <- c + dc and v <- v + K^-1 dc at the interface (section 5,
+    //    condensed: exact, without a re-solve). c and R live on the write
+    //    DoFs: the acceleration works there.
+    const auto initial_stiffness_update = [&](StepState        &iterate,
+                                              const Evaluation &at) {
+      add_correction(acceleration.increment(on_write_dofs(
+                                              iterate.correction_load),
+                                            on_write_dofs(at.residual)),
+                     iterate);
+    };
+    // Where no step along the Newton direction lowers |R| (a kink of the
+    // return mapping right at the iterate), one initial-stiffness update
+    // (exact and cheap, condensed) moves off it.
     e = evaluate(target, state);
-    for (const unsigned int last = iterations + settings.maximum_iterations;
-         iterations <= last;
-         ++iterations)
-      {
-        if (!std::isfinite(e.residual_norm))
-          return false;
-        if (e.scale.converged(e.residual_norm, settings.tolerance))
-          {
-            if (!settings.tangent_stiffness)
-              return true;
-            // Newton: the iterate from the full solve K^-1 c, checked again
-            // (iterative refinement of the flexibility blocks' round-off).
-            complete(state);
-            e = evaluate(target, state);
-            if (e.scale.converged(e.residual_norm, settings.tolerance))
-              return true;
-          }
-        // Newton on the interface DoFs (coupled_interface_newton.cc); where
-        // no step along the Newton direction lowers |R| (a kink of the
-        // return mapping right at the iterate), one initial-stiffness
-        // update (exact and cheap, condensed) moves off it.
-        if (settings.tangent_stiffness && newton.update(state, e))
-          continue;
-        // 5: c <- c + dc and v <- v + K^-1 dc at the interface (section 5,
-        //    condensed: exact, without a re-solve).
-        //    c and R live on the write DoFs: the acceleration works there.
-        add_correction(acceleration.increment(on_write_dofs(
-                                                state.correction_load),
-                                              on_write_dofs(e.residual)),
-                       state);
-        e = evaluate(target, state);
-      }
-    return false;
+    return iterate_to_balance(
+      settings.tangent_stiffness ? &newton : nullptr,
+      state,
+      e,
+      evaluate_iterate,
+      balanced,
+      initial_stiffness_update,
+      []() { return NoDescent::initial_stiffness_update; },
+      settings.maximum_iterations,
+      iterations);
   }
 
   bool

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <fourier_ssi/coupled/balance_iteration.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/coupled_soil_solver.h>
 #include <fourier_ssi/coupled/load_path.h>
@@ -737,39 +738,34 @@ namespace FourierSSI
       [&](const double alpha, const Correction &dc, StepState &iterate) {
         add_correction(alpha, dc, iterate);
       });
-    e                    = evaluate_iterate(state);
-    bool newton_fallback = false;
-    for (unsigned int iteration = 0; iteration <= settings.maximum_iterations;
-         ++iteration)
-      {
-        if (!std::isfinite(e.residual_norm))
-          return false;
-        if (e.scale.converged(e.residual_norm, settings.tolerance))
-          {
-            iterations += iteration;
-            return true;
-          }
-        if (tangent_stiffness)
-          {
-            // No decrease along the Newton direction: cut (soil_newton).
-            if (newton.update(state, e))
-              continue;
-            // No descent: the step is cut, unless this is its retry after
-            // the last cut (retry_persistently): then one initial-stiffness
-            // update, Newton going on from there, until |R| stalls.
-            if (!persistent || newton.stalled())
-              return false;
-            newton_fallback = true;
-          }
-        add_correction(1.,
-                       correction_of(acceleration.increment(
-                         state.correction_load, e.residual)),
-                       state);
-        e = evaluate_iterate(state);
-        if (newton_fallback)
-          newton.restart(), newton_fallback = false;
-      }
-    return false;
+    const auto balanced = [&](const StepState &, const Evaluation &at) {
+      return at.scale.converged(at.residual_norm, settings.tolerance);
+    };
+    const auto initial_stiffness_update = [&](StepState        &iterate,
+                                              const Evaluation &at) {
+      add_correction(1.,
+                     correction_of(acceleration.increment(
+                       iterate.correction_load, at.residual)),
+                     iterate);
+    };
+    // No descent: the step is cut, unless this is its retry after the last
+    // cut (retry_persistently): then one initial-stiffness update, Newton
+    // starting again from there, until |R| stalls.
+    const auto no_descent = [&]() {
+      return persistent && !newton.stalled() ?
+               NoDescent::initial_stiffness_update_and_restart :
+               NoDescent::cut;
+    };
+    e = evaluate_iterate(state);
+    return iterate_to_balance(tangent_stiffness ? &newton : nullptr,
+                              state,
+                              e,
+                              evaluate_iterate,
+                              balanced,
+                              initial_stiffness_update,
+                              no_descent,
+                              settings.maximum_iterations,
+                              iterations);
   }
 
   std::vector<std::pair<FoundationMotion, double>>
