@@ -272,8 +272,9 @@ namespace FourierSSI
                 StepState       &state) const override;
 
     /**
-     * Total strain samples [point * N + j] at lambda and rho, at the points
-     * this rank owns (owns_point; zero at the others).
+     * Total strain samples [point * N + j] at lambda, rho and a swipe's mu,
+     * at the points this rank owns (NonlinearSoilPoints::strain_samples;
+     * zero at the others).
      */
     std::vector<StrainVector>
     strain_samples(const std::vector<Vector<double>> &correction,
