@@ -416,12 +416,10 @@ namespace FourierSSI
     // 1-2: relative displacements at every (point, theta), the law.
     e.relative =
       interface.relative_displacements(state.interface_solution, sampling);
-    for (unsigned int k = 0; k < e.relative.size(); ++k)
-      for (unsigned int c = 0; c < 3; ++c)
-        e.relative[k][c] +=
-          state.load_factor * pattern_relative[k][c] +
-          (held_relative.empty() ? 0. :
-                                   state.held_fraction * held_relative[k][c]);
+    NonlinearInterfacePoints::add_scaled_samples(
+      e.relative,
+      {{state.load_factor, &pattern_relative},
+       {state.held_fraction, &held_relative}});
     e.counts = interface.return_map(
       e.relative, state.origin, e.plastic, e.traction, e.contact);
     // 3-4: out-of-balance load G = int B^T (D_K d - (t - t0)) (D_K the

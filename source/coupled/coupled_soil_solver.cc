@@ -208,12 +208,11 @@ namespace FourierSSI
   {
     std::vector<LocalVector> relative =
       interface->relative_displacements(correction, interface_sampling);
-    for (unsigned int k = 0; k < relative.size(); ++k)
-      for (unsigned int c = 0; c < 3; ++c)
-        relative[k][c] +=
-          load_factor * pattern_relative[k][c] +
-          (held_relative.empty() ? 0. : held_fraction * held_relative[k][c]) +
-          (swipe_relative.empty() ? 0. : swipe_force * swipe_relative[k][c]);
+    NonlinearInterfacePoints::add_scaled_samples(
+      relative,
+      {{load_factor, &pattern_relative},
+       {held_fraction, &held_relative},
+       {swipe_force, &swipe_relative}});
     return relative;
   }
 

@@ -251,6 +251,24 @@ namespace FourierSSI
         }
   }
 
+  void
+  NonlinearInterfacePoints::add_scaled_samples(
+    std::vector<LocalVector> &relative,
+    const std::vector<std::pair<double, const std::vector<LocalVector> *>>
+      &terms)
+  {
+    // The loads' part is summed first, then added to the correction's.
+    for (unsigned int k = 0; k < relative.size(); ++k)
+      for (unsigned int c = 0; c < 3; ++c)
+        {
+          double loads = 0.;
+          for (const auto &[factor, samples] : terms)
+            if (samples != nullptr && !samples->empty())
+              loads += factor * (*samples)[k][c];
+          relative[k][c] += loads;
+        }
+  }
+
   ContactCounts
   NonlinearInterfacePoints::return_map(
     const std::vector<LocalVector> &relative,

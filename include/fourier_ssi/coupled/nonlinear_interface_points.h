@@ -28,6 +28,7 @@
 #include <functional>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace FourierSSI
@@ -135,6 +136,18 @@ namespace FourierSSI
     std::vector<LocalVector>
     owned_relative_displacements(const std::vector<Vector<double>> &fields,
                                  const ThetaSampling &sampling) const;
+
+    /**
+     * relative += sum_t factor_t samples_t at every sample (samples_t of
+     * the same sampling; an empty one is left out): the iterate's relative
+     * displacement from the correction's and those of the loads, as the
+     * solver writes it, u = v + lambda u_F + rho u_held (+ mu u_V).
+     */
+    static void
+    add_scaled_samples(
+      std::vector<LocalVector> &relative,
+      const std::vector<std::pair<double, const std::vector<LocalVector> *>>
+        &terms);
 
     /**
      * The return mapping at every sample from the committed plastic
