@@ -124,7 +124,7 @@ namespace FourierSSI
      * G_h = int Bbar_h^T (theta integral of samples), every harmonic, the
      * homogeneous constraints applied (or at the DoFs as they are,
      * `condensed` false): the theta integrals at the points this rank owns,
-     * summed over the ranks. Points without samples cost nothing.
+     * summed over the ranks. Points whose samples are all zero cost nothing.
      */
     std::vector<Vector<double>>
     load_of(const std::vector<StrainVector> &samples,
