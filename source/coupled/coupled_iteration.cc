@@ -193,7 +193,9 @@ namespace FourierSSI
            std::to_string(n_steps) + (held ? " of the held loads" : "") +
            " (after " + std::to_string(cuts) + " cuts" +
            (cuts < settings.maximum_step_cuts ?
-              ", at the smallest step size, 2^-20 of a load step" :
+              ", at the smallest step size, 2^-" +
+                std::to_string(LoadPathParameters::most_step_cuts) +
+                " of a load step" :
               "") +
            ") did not converge in " +
            std::to_string(settings.maximum_iterations) + " iterations; the " +

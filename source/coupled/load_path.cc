@@ -89,6 +89,7 @@ namespace FourierSSI
   LoadPath::StepSize::cut()
   {
     increment /= 2.;
+    ++cuts;
     easy_steps = 0;
     if (just_grown)
       needed *= 2;
@@ -169,7 +170,7 @@ namespace FourierSSI
                 continue;
               }
             AssertThrow(
-              !last_cut && ++size.cuts <= settings.maximum_step_cuts,
+              !last_cut,
               ExcMessage(unconverged_step_message(entry,
                                                   done,
                                                   n_steps,

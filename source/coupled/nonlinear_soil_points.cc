@@ -152,9 +152,6 @@ namespace FourierSSI
                     cell.shape_grad[q][i]  = fe_values.shape_grad(i, q);
                   }
                 SoilPoint point;
-                point.cell          = cells.size();
-                point.q             = q;
-                point.r             = x[0];
                 point.dV            = x[0] * fe_values.JxW(q);
                 point.depth         = parameters.materials.depth(x[1]);
                 point.shear_modulus = material.shear_modulus(point.depth);

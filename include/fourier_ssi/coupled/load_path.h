@@ -220,6 +220,7 @@ namespace FourierSSI
        */
       bool
       can_cut() const;
+      /** Halves the size and counts the cut. */
       void
       cut();
       void

@@ -168,12 +168,10 @@ namespace FourierSSI
                   CoupledTangent                  &tangent) const;
 
   private:
-    /** A soil quadrature point: its cell, weight and elastic constants. */
+    /** A soil quadrature point: its weight and elastic constants. */
     struct SoilPoint
     {
-      unsigned int cell;
-      unsigned int q;
-      double       r, dV, depth, shear_modulus, lambda;
+      double       dV, depth, shear_modulus, lambda;
       unsigned int law;
       /** The geostatic stress sigma_0 (Initial stress; zero without). */
       StrainVector initial_stress;
