@@ -91,7 +91,8 @@ def run_once(exe, kappa, solver, work):
     wall = time.time() - start
     log = p.stdout + p.stderr
     steps = re.findall(r"step \d+: factor ([-0-9.e+]+),.*? u ([-0-9.e+]+) m"
-                       r".*?; (\d+) iterations; stick/slip/open (\d+/\d+/\d+)",
+                       r".*?; (\d+) iterations; (?:interface )?stick/slip/open "
+                       r"(\d+/\d+/\d+)",
                        log)
     solve = re.search(r"coupled solve: \d+ steps in ([0-9.e+-]+) s", log)
     if p.returncode != 0 or len(steps) != 4 or not solve:

@@ -110,7 +110,7 @@ namespace FourierSSI
   CoupledInterfaceSolver::CoupledInterfaceSolver(
     HarmonicSet         &set,
     const AllParameters &parameters)
-    : LoadPathStates(set, parameters, "kN m")
+    : LoadPathStates(set, parameters)
     , set(set)
     , parameters(parameters)
     , settings(parameters.load_path)
@@ -126,6 +126,7 @@ namespace FourierSSI
     , pattern_solution(loads.solution)
   {
     check_homogeneous_constraints(entry, "nonlinear interfaces");
+    sources.interfaces = &interface;
     solve_load_pattern();
     solve_held_loads();
     start_at_rest();
@@ -440,8 +441,7 @@ namespace FourierSSI
                                  const Evaluation  &e,
                                  const unsigned int iteration,
                                  StepState         &state,
-                                 LoadStepResult    &result,
-                                 InterfaceSnapshot &snapshot) const
+                                 LoadStepResult    &result) const
   {
     (void)target; // the load path checks that the motion reached it
     complete(state);
@@ -453,9 +453,14 @@ namespace FourierSSI
     state.origin      = state.plastic;
     result.iterations = iteration;
     result.residual   = e.scale.relative(e.residual_norm);
-    result.states     = e.counts;
-    result.resultant  = foundation_resultant(e.traction);
-    snapshot          = {e.relative, e.traction, e.contact};
+    result.contact    = e.counts;
+    result.largest_interface_yield_value =
+      interface.largest_yield_value(e.traction);
+    result.resultant =
+      interface.foundation_resultant(e.traction,
+                                     sampling,
+                                     parameters.rigid_foundation);
+    result.interface_state = {e.relative, e.traction, e.contact};
     return true;
   }
 
@@ -525,10 +530,9 @@ namespace FourierSSI
   }
 
   bool
-  CoupledInterfaceSolver::solve_step(const double       target,
-                                     StepState         &state,
-                                     LoadStepResult    &result,
-                                     InterfaceSnapshot &snapshot)
+  CoupledInterfaceSolver::solve_step(const double    target,
+                                     StepState      &state,
+                                     LoadStepResult &result)
   {
     Evaluation   e;
     unsigned int iterations = 0;
@@ -546,56 +550,7 @@ namespace FourierSSI
                                                      update);
       },
       result.multiplier_updates);
-    return converged && accept(target, e, iterations, state, result, snapshot);
-  }
-
-  std::array<double, 6>
-  CoupledInterfaceSolver::foundation_resultant(
-    const std::vector<LocalVector> &traction) const
-  {
-    std::array<double, 6> resultant = {{0., 0., 0., 0., 0., 0.}};
-    if (!parameters.rigid_foundation.enabled ||
-        parameters.rigid_foundation.tie != FoundationTie::material)
-      return resultant;
-    const std::vector<InterfacePair> &pairs =
-      interfaces_of(set.problem(0)).get_pairs();
-    const unsigned int N      = sampling.n_samples();
-    const double       weight = 2. * numbers::PI / N;
-    for (unsigned int i = 0; i < points.size(); ++i)
-      {
-        const InterfacePair &pair = pairs[points[i].pair];
-        // t = sigma n is the force per unit area that B exerts on A (n out
-        // of A): the foundation transmits +t to A if it is B, -t if it is A.
-        const double sign =
-          pair.material_b == parameters.rigid_foundation.id ? 1. :
-          pair.material_a == parameters.rigid_foundation.id ? -1. :
-                                                              0.;
-        if (sign == 0.)
-          continue;
-        const double r = points[i].position[0], z = points[i].position[1];
-        for (unsigned int j = 0; j < N; ++j)
-          {
-            LocalVector t = traction[i * N + j];
-            for (unsigned int c = 0; c < 3; ++c)
-              t[c] -= points[i].initial_traction[c];
-            const double da    = sign * weight * points[i].area_per_radian;
-            const double t_r   = t[0] * pair.tangent[0] + t[1] * pair.normal[0];
-            const double t_z   = t[0] * pair.tangent[1] + t[1] * pair.normal[1];
-            const double theta = sampling.angle(j);
-            const double c = std::cos(theta), s = std::sin(theta);
-            const double F[3] = {da * (t_r * c - t[2] * s),
-                                 da * (t_r * s + t[2] * c),
-                                 da * t_z};
-            const double x = r * c, y = r * s;
-            resultant[0] += F[0];
-            resultant[1] += F[1];
-            resultant[2] += F[2];
-            resultant[3] += y * F[2] - z * F[1];
-            resultant[4] += z * F[0] - x * F[2];
-            resultant[5] += x * F[1] - y * F[0];
-          }
-      }
-    return resultant;
+    return converged && accept(target, e, iterations, state, result);
   }
 
   std::vector<Harmonic>
@@ -701,17 +656,16 @@ namespace FourierSSI
   bool
   CoupledInterfaceSolver::solve_trial(const double target, const bool holding)
   {
-    holding_stage  = holding;
-    trial_result   = LoadStepResult();
-    trial_snapshot = InterfaceSnapshot();
-    return solve_step(target, trial, trial_result, trial_snapshot);
+    holding_stage = holding;
+    trial_result  = LoadStepResult();
+    return solve_step(target, trial, trial_result);
   }
 
   bool
   CoupledInterfaceSolver::grows(std::ostream &log)
   {
     const std::vector<Harmonic> added =
-      harmonics_called_for(trial_snapshot, log);
+      harmonics_called_for(trial_result.interface_state, log);
     if (added.empty())
       return false;
     grow(added);
@@ -731,28 +685,9 @@ namespace FourierSSI
     if (!parameters.rigid_foundation.reported_motions().empty())
       result.held_reactions = held_reactions_of(
         committed,
-        interface.load_of(interface.spring_plastic(trial_snapshot),
+        interface.load_of(interface.spring_plastic(result.interface_state),
                           sampling,
                           false));
-    steps.push_back(result);
-    snapshots.push_back(std::move(trial_snapshot));
-    const auto loads = applied_loads(result.load_factor, result.held_fraction);
-    log << "  step " << steps.size()
-        << (holding ? " (held loads): factor " : ": factor ")
-        << result.load_factor << ", V " << loads[2] << " kN, H " << loads[0]
-        << " kN, M "
-        << moment_about_reference(loads, parameters.rigid_foundation)
-        << " kN m, T " << loads[5] << " kN m; w "
-        << result.motion.vertical_displacement << " m, u "
-        << result.motion.horizontal_displacement << " m, rotation "
-        << result.motion.rotation << " rad, twist " << result.motion.twist
-        << " rad; " << result.iterations << " iterations; stick/slip/open "
-        << result.states[0] << '/' << result.states[1] << '/'
-        << result.states[2] << "; " << result.n_harmonics << " harmonics";
-    write_held_reactions(log, result);
-    interface.write_multiplier_updates(log,
-                                       result.multiplier_updates,
-                                       snapshots.back().relative);
-    log << '\n';
+    record_trial(holding, log);
   }
 } // namespace FourierSSI

@@ -107,7 +107,7 @@ namespace FourierSSI
 
   CoupledSoilSolver::CoupledSoilSolver(const HarmonicSet   &set,
                                        const AllParameters &parameters)
-    : LoadPathStates(set, parameters, "kNm")
+    : LoadPathStates(set, parameters)
     , set(set)
     , parameters(parameters)
     , settings(parameters.load_path)
@@ -127,6 +127,7 @@ namespace FourierSSI
       // the multipliers (on interface_sampling).
       interface =
         std::make_unique<NonlinearInterfacePoints>(set, parameters, true);
+    sources = {true, interface.get()};
     // A swipe's mu and K^-1 e_V are solved on the owner of harmonic 0 and
     // read there; not written for distributed harmonics yet.
     AssertThrow(!parameters.rigid_foundation.swipes() ||
@@ -531,7 +532,7 @@ namespace FourierSSI
 
   CoupledSoilSolver::Evaluation
   CoupledSoilSolver::evaluate(const StepState &state,
-                              SoilStepResult  &result) const
+                              LoadStepResult  &result) const
   {
     Evaluation e;
     // 1-2: strains at every (point, theta), the return mapping.
@@ -560,7 +561,7 @@ namespace FourierSSI
   double
   CoupledSoilSolver::add_interface_residual(const StepState &state,
                                             Evaluation      &e,
-                                            SoilStepResult  &result) const
+                                            LoadStepResult  &result) const
   {
     e.relative = relative_samples(state.correction_solution,
                                   state.load_factor,
@@ -586,7 +587,7 @@ namespace FourierSSI
   CoupledSoilSolver::accept(Evaluation        &e,
                             const unsigned int iteration,
                             StepState         &state,
-                            SoilStepResult    &result) const
+                            LoadStepResult    &result) const
   {
     soil.count_over_ranks(result);
     state.plastic           = std::move(e.plastic);
@@ -651,7 +652,7 @@ namespace FourierSSI
   CoupledSoilSolver::solve_step(const double    target,
                                 const bool      holding,
                                 StepState      &state,
-                                SoilStepResult &result)
+                                LoadStepResult &result)
   {
     // Holding: the held loads come on at a fixed load factor.
     if (holding)
@@ -689,7 +690,7 @@ namespace FourierSSI
   CoupledSoilSolver::evaluate_at(const double    target,
                                  const bool      holding,
                                  StepState      &state,
-                                 SoilStepResult &result)
+                                 LoadStepResult &result)
   {
     const bool displacement_control =
       !holding && settings.control == LoadPathParameters::Control::displacement;
@@ -705,7 +706,7 @@ namespace FourierSSI
   CoupledSoilSolver::iterate(const double    target,
                              const bool      holding,
                              StepState      &state,
-                             SoilStepResult &result,
+                             LoadStepResult &result,
                              Evaluation     &e,
                              unsigned int   &iterations)
   {
@@ -865,7 +866,7 @@ namespace FourierSSI
   bool
   CoupledSoilSolver::solve_trial(const double target, const bool holding)
   {
-    trial_result         = SoilStepResult();
+    trial_result         = LoadStepResult();
     const bool converged = solve_step(target, holding, trial, trial_result);
     persistent           = false;
     return converged;
@@ -887,54 +888,18 @@ namespace FourierSSI
                                   const bool      holding,
                                   std::ostream   &log)
   {
-    SoilStepResult &result = trial_result;
+    LoadStepResult &result = trial_result;
     commit(result, step);
     if (holding)
       swipe_settlement = result.motion.vertical_displacement;
     result.held_reactions = held_reactions(committed, result.interface_state);
-    steps.push_back(result);
-    if (step_observer)
-      step_observer(result);
-    log << "  step " << steps.size() << (holding ? " (held loads): " : ": ");
-    write_foundation_state(log, result);
-    log << "; " << result.iterations << " iterations; plastic samples "
-        << result.n_plastic << " of " << result.n_plastic + result.n_elastic
-        << "; max f " << result.largest_yield_value << " kPa";
+    result.n_harmonics    = set.size();
     if (interface)
-      {
-        log << "; interface stick/slip/open " << result.contact[0] << '/'
-            << result.contact[1] << '/' << result.contact[2];
-        interface->write_multiplier_updates(log,
-                                            result.multiplier_updates,
-                                            result.interface_state.relative);
-      }
-    log << "; " << result.time << " s" << std::endl;
-  }
-
-  void
-  CoupledSoilSolver::write_foundation_state(std::ostream         &log,
-                                            const SoilStepResult &result) const
-  {
-    // The loads the scene applies (as in load-displacement.csv: M about the
-    // reference point), each with the motion it works on.
-    const RigidFoundationParameters &f = parameters.rigid_foundation;
-    const auto loads = applied_loads(result.load_factor, result.held_fraction);
-    const RigidMotion &motion = result.motion;
-    const bool         moment = f.moment != 0. || f.held_moment != 0.;
-    const bool         torque = f.torque != 0. || f.held_torque != 0.;
-    log << "V " << vertical_force_of(loads, result.swipe_force) << " kN, H "
-        << loads[0] << " kN";
-    if (moment)
-      log << ", M " << moment_about_reference(loads, f) << " kNm";
-    if (torque)
-      log << ", T " << loads[5] << " kNm";
-    log << "; w " << motion.vertical_displacement << " m, u "
-        << motion.horizontal_displacement << " m";
-    if (moment)
-      log << ", rotation " << motion.rotation << " rad";
-    if (torque)
-      log << ", twist " << motion.twist << " rad";
-    write_held_reactions(log, result);
+      result.resultant =
+        interface->foundation_resultant(result.interface_state.traction,
+                                        interface_sampling,
+                                        parameters.rigid_foundation);
+    record_trial(holding, log, step_observer);
   }
 
   void
@@ -943,35 +908,8 @@ namespace FourierSSI
   {
     AssertThrow(interface != nullptr,
                 ExcMessage(entry + ": the scene has no nonlinear interface"));
-    std::vector<InterfaceSnapshot> snapshots;
-    for (const SoilStepResult &step : steps)
-      snapshots.push_back(step.interface_state);
-    interface->write_state_csv(filename, snapshots, interface_sampling);
-  }
-
-  void
-  CoupledSoilSolver::write_csv(const std::string &filename) const
-  {
-    // The loads that hold the held motions, or a direction probe's H and M,
-    // one column each: the H and M columns before them are the applied
-    // drive.
-    const std::string reaction_header =
-      steps.empty() ? std::string() :
-                      held_reaction_columns(parameters.rigid_foundation,
-                                            steps.back().held_reactions);
-    write_load_step_csv(filename,
-                        steps,
-                        parameters.rigid_foundation,
-                        "elastic,plastic,max_yield_kPa,time_s,held_fraction,"
-                        "stick,slip,open" +
-                          reaction_header,
-                        [](std::ostream &out, const SoilStepResult &r) {
-                          out << r.n_elastic << ',' << r.n_plastic << ','
-                              << r.largest_yield_value << ',' << r.time << ','
-                              << r.held_fraction << ',' << r.contact[0] << ','
-                              << r.contact[1] << ',' << r.contact[2];
-                          for (const auto &reaction : r.held_reactions)
-                            out << ',' << reaction.second;
-                        });
+    interface->write_state_csv(filename,
+                               interface_states(steps),
+                               interface_sampling);
   }
 } // namespace FourierSSI

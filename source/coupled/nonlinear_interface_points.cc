@@ -767,4 +767,52 @@ namespace FourierSSI
       }
     return n_softening;
   }
+
+  std::array<double, 6>
+  NonlinearInterfacePoints::foundation_resultant(
+    const std::vector<LocalVector>  &traction,
+    const ThetaSampling             &sampling,
+    const RigidFoundationParameters &foundation) const
+  {
+    std::array<double, 6> resultant = {{0., 0., 0., 0., 0., 0.}};
+    if (!foundation.enabled || foundation.tie != FoundationTie::material)
+      return resultant;
+    const std::vector<InterfacePair> &pairs  = pairs_of(set.problem(0));
+    const unsigned int                N      = sampling.n_samples();
+    const double                      weight = 2. * numbers::PI / N;
+    for (unsigned int i = 0; i < points.size(); ++i)
+      {
+        const InterfacePair &pair = pairs[points[i].pair];
+        // t = sigma n is the force per unit area that B exerts on A (n out
+        // of A): the foundation transmits +t to A if it is B, -t if it is A.
+        const double sign = pair.material_b == foundation.id ? 1. :
+                            pair.material_a == foundation.id ? -1. :
+                                                               0.;
+        if (sign == 0.)
+          continue;
+        const double r = points[i].position[0], z = points[i].position[1];
+        for (unsigned int j = 0; j < N; ++j)
+          {
+            LocalVector t = traction[i * N + j];
+            for (unsigned int c = 0; c < 3; ++c)
+              t[c] -= points[i].initial_traction[c];
+            const double da    = sign * weight * points[i].area_per_radian;
+            const double t_r   = t[0] * pair.tangent[0] + t[1] * pair.normal[0];
+            const double t_z   = t[0] * pair.tangent[1] + t[1] * pair.normal[1];
+            const double theta = sampling.angle(j);
+            const double c = std::cos(theta), s = std::sin(theta);
+            const double F[3] = {da * (t_r * c - t[2] * s),
+                                 da * (t_r * s + t[2] * c),
+                                 da * t_z};
+            const double x = r * c, y = r * s;
+            resultant[0] += F[0];
+            resultant[1] += F[1];
+            resultant[2] += F[2];
+            resultant[3] += y * F[2] - z * F[1];
+            resultant[4] += z * F[0] - x * F[2];
+            resultant[5] += x * F[1] - y * F[0];
+          }
+      }
+    return resultant;
+  }
 } // namespace FourierSSI

@@ -96,14 +96,14 @@ namespace FourierSSI
     };
 
     /** A load read at each converged step. */
-    using LoadAtStep = std::function<NamedLoad(const SoilStepResult &)>;
+    using LoadAtStep = std::function<NamedLoad(const LoadStepResult &)>;
 
     /** The applied load that works on the controlled motion. */
     LoadAtStep
     applied_load(const CoupledSoilSolver &solver,
                  const AllParameters     &parameters)
     {
-      return [&](const SoilStepResult &s) {
+      return [&](const LoadStepResult &s) {
         return conjugate_load(solver.applied_loads(s.load_factor,
                                                    s.held_fraction),
                               parameters.rigid_foundation,
@@ -118,7 +118,7 @@ namespace FourierSSI
     LoadAtStep
     probe_load(const FoundationMotion motion, const AllParameters &parameters)
     {
-      return [motion, &parameters](const SoilStepResult &s) {
+      return [motion, &parameters](const LoadStepResult &s) {
         NamedLoad load{parameters.rigid_foundation.reaction_row(motion),
                        load_unit_of(motion)};
         for (const auto &[held, value] : s.held_reactions)
@@ -153,18 +153,18 @@ namespace FourierSSI
     {
       const LoadPathParameters &settings  = parameters.load_path;
       const auto               &steps     = solver.get_steps();
-      const auto                motion_at = [&](const SoilStepResult &s) {
+      const auto                motion_at = [&](const LoadStepResult &s) {
         return controlled_component(s.motion, settings.motion);
       };
       // The controlled path starts where the held loads left it.
       double start = 0.;
-      for (const SoilStepResult &s : steps)
+      for (const LoadStepResult &s : steps)
         if (s.load_factor == 0.)
           start = motion_at(s);
       const double end     = motion_at(steps.back());
       Capacity     result  = {load_at(steps.back()), 0., 0.};
       double       earlier = 0.;
-      for (const SoilStepResult &s : steps)
+      for (const LoadStepResult &s : steps)
         if (std::abs(motion_at(s) - start) <=
             0.9 * std::abs(end - start) * (1. + 1e-12))
           earlier = load_at(s).value;
@@ -172,7 +172,7 @@ namespace FourierSSI
                       (result.load.value - earlier) / result.load.value :
                       0.;
       std::vector<double> motion, load;
-      for (const SoilStepResult &s : steps)
+      for (const LoadStepResult &s : steps)
         if (s.load_factor != 0.)
           {
             motion.push_back(motion_at(s) - start);
@@ -266,7 +266,7 @@ namespace FourierSSI
       harmonic_set->problem(h).get_dof_handler(), parameters);
     SoilReactionCurves &curves = *reaction_curves;
     solver.set_step_observer([&solver, &curves, h, this](
-                               const SoilStepResult &step) {
+                               const LoadStepResult &step) {
       const auto start = std::chrono::steady_clock::now();
       const auto shaft = solver.soil_nodal_force(
         [&](const Point<2> &c) { return curves.beside_shaft(c); });
@@ -391,9 +391,8 @@ namespace FourierSSI
                   ExcMessage("Discretization/Target accuracy: the curve "
                                    "has fewer than two steps (Load "
                                    "path/Load steps)"));
-      const Capacity c = capacity_of(*solver,
-                                     parameters,
-                                     goal_load(*solver, parameters));
+      const Capacity c =
+        capacity_of(*solver, parameters, goal_load(*solver, parameters));
       return CoupledGoal{
         c.load.name, c.load.unit, c.load.value, c.plateau_error, steps};
     };

@@ -121,10 +121,10 @@ namespace
           std::max(r.worst_equilibrium,
                    std::abs(s.resultant[0] - H) / std::abs(H));
         r.stiffness = H / s.motion.horizontal_displacement;
-        r.open_last = s.states[2];
+        r.open_last = s.contact[2];
       }
-    for (const InterfaceSnapshot &snapshot : solver.get_snapshots())
-      for (const LocalVector &d : snapshot.relative)
+    for (const LoadStepResult &step : solver.get_steps())
+      for (const LocalVector &d : step.interface_state.relative)
         r.lowest_gap = std::min(r.lowest_gap, d[1]);
     check::that("4 steps converged (" + law + ")",
                 solver.get_steps().size() == 4);

@@ -89,7 +89,7 @@ namespace
     r.steps = solver.get_steps();
     for (const LoadStepResult &s : r.steps)
       r.H.push_back(solver.applied_loads(s.load_factor)[0]);
-    r.last = solver.get_snapshots().back();
+    r.last = solver.get_steps().back().interface_state;
     check::that("2 steps converged (" + law + ", " + integration + ")",
                 r.steps.size() == 2);
     return r;

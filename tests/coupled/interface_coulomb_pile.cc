@@ -271,7 +271,7 @@ namespace
                     shaft,
                     shaft + release);
     check::that("kn = 1e5: the base is open at the plateau",
-                stiff.steps.back().states[2] >= 24);
+                stiff.steps.back().contact[2] >= 24);
     check_equilibrium("pull-out, kn = 1e5 kPa/m", stiff, 2);
   }
 } // namespace

@@ -48,7 +48,7 @@ namespace
       {
         const double H = solver.applied_loads(step.load_factor)[0];
         curve.stiffness.push_back(H / step.motion.horizontal_displacement);
-        curve.open.push_back(step.states[2]);
+        curve.open.push_back(step.contact[2]);
         curve.iterations.push_back(step.iterations);
         curve.worst_equilibrium =
           std::max(curve.worst_equilibrium,

@@ -36,7 +36,7 @@ main()
   solver.run(std::cout);
   const auto &last = solver.get_steps().back();
   check::in_range("samples slipping or open at the last step",
-                  last.states[1] + last.states[2],
+                  last.contact[1] + last.contact[2],
                   1u,
                   100000u);
   held_rotation::check("pile, coulomb shaft, elastic soil",

@@ -68,7 +68,7 @@ namespace
         check::in_range("Newton iterations in a step", s.iterations, 0, 300);
       }
     check::that("2 steps converged (" + law + ")", r.H.size() == 2);
-    for (const ContactState s : solver.get_snapshots().back().state)
+    for (const ContactState s : solver.get_steps().back().interface_state.state)
       ++r.states[static_cast<int>(s)];
     std::cout << "  H = " << std::setprecision(12) << r.H.back()
               << " kN, stick/slip/open " << r.states[0] << '/' << r.states[1]

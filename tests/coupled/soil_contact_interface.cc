@@ -70,7 +70,7 @@ namespace
                                   {"Stiffness", "tangent"}});
   }
 
-  std::vector<SoilStepResult>
+  std::vector<LoadStepResult>
   soil_curve(const std::string &text)
   {
     Run run(text);
@@ -80,8 +80,8 @@ namespace
 
   void
   check_same_steps(const std::string                 &name,
-                   const std::vector<SoilStepResult> &a,
-                   const std::vector<SoilStepResult> &b)
+                   const std::vector<LoadStepResult> &a,
+                   const std::vector<LoadStepResult> &b)
   {
     check::equal(name + ": converged steps", a.size(), b.size());
     for (unsigned int s = 0; s < a.size() && s < b.size(); ++s)
@@ -146,7 +146,7 @@ namespace
     double       most_tension = -1e300, largest_pressure = 0.;
     double       most_penetration = 0., largest_relative = 0.;
     unsigned int most_updates = 0, most_iterations = 0;
-    for (const SoilStepResult &s : steps)
+    for (const LoadStepResult &s : steps)
       {
         const InterfaceSnapshot &state = s.interface_state;
         for (unsigned int k = 0; k < state.traction.size(); ++k)

@@ -56,7 +56,7 @@ namespace
            more;
   }
 
-  std::vector<SoilStepResult>
+  std::vector<LoadStepResult>
   curve(const std::string &interface_law,
         const std::string &stiffness,
         const std::string &load_steps)
@@ -73,8 +73,8 @@ namespace
 
   void
   check_same_curve(const std::string                 &name,
-                   const std::vector<SoilStepResult> &a,
-                   const std::vector<SoilStepResult> &b,
+                   const std::vector<LoadStepResult> &a,
+                   const std::vector<LoadStepResult> &b,
                    const double                       tolerance)
   {
     check::equal(name + ": steps", a.size(), b.size());
@@ -87,7 +87,7 @@ namespace
 
   void
   check_admissible(const std::string                 &name,
-                   const std::vector<SoilStepResult> &steps,
+                   const std::vector<LoadStepResult> &steps,
                    const double                       c)
   {
     check_equilibrium_and_yield(name + ": ", steps, 10.);
@@ -135,7 +135,7 @@ main()
   const auto elastic = curve(adhesive, "elastic", "8");
   check_same_curve("c = 5 kPa", newton, elastic, 1e-7);
   unsigned int most = 0;
-  for (const SoilStepResult &s : newton)
+  for (const LoadStepResult &s : newton)
     most = std::max(most, s.iterations);
   check::in_range("Newton iterations per step (most)", most, 1, 25);
   check::in_range("c = 5 kPa: slipping samples at the last step",

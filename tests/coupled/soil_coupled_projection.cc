@@ -64,7 +64,7 @@ namespace
                    {"Vertical force", "-100"}}));
     run.solver->run(std::cout);
     unsigned int iterations = 0;
-    for (const SoilStepResult &s : run.solver->get_steps())
+    for (const LoadStepResult &s : run.solver->get_steps())
       iterations += s.iterations;
     check::equal("out-of-balance iterations", iterations, 0);
     std::vector<std::vector<Vector<double>>> b = {

@@ -50,7 +50,7 @@ namespace
                  1e-6);
   }
 
-  std::vector<SoilStepResult>
+  std::vector<LoadStepResult>
   pile_curve(const std::string &stiffness)
   {
     std::string text =

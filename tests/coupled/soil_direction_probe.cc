@@ -65,7 +65,7 @@ namespace
 
   /** The loads (H, M) of a step: held reactions, or the applied H, M. */
   std::pair<double, double>
-  loads_of(const Run &run, const SoilStepResult &step)
+  loads_of(const Run &run, const LoadStepResult &step)
   {
     const auto applied = run.solver->applied_loads(step.load_factor);
     double     H       = applied[0],

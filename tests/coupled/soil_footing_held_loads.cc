@@ -73,7 +73,7 @@ namespace
     run.solver->run(std::cout);
     const auto &steps = run.solver->get_steps();
     check_equilibrium_and_yield("", steps, 10.);
-    for (const SoilStepResult &s : steps)
+    for (const LoadStepResult &s : steps)
       if (s.held_fraction == 1.)
         check::relative("V held while H grows [kN]",
                         run.solver->applied_loads(s.load_factor, 1.)[2],

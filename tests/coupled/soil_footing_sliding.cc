@@ -58,7 +58,7 @@ namespace
                     1e-12);
     // The load at 0.9 of the path (last step 0.006 m, 12 equal steps).
     double at_nine_tenths = 0., largest_V = 0.;
-    for (const SoilStepResult &s : steps)
+    for (const LoadStepResult &s : steps)
       {
         const auto loads = run.solver->applied_loads(s.load_factor);
         largest_V        = std::max(largest_V, std::abs(loads[2]));

@@ -55,13 +55,13 @@ namespace
                                  {"Load steps", steps}}) +
       "subsection Load path\n  set Maximum step cuts = 0\nend\n");
     pile.solver->run(std::cout);
-    const std::vector<SoilStepResult> &result = pile.solver->get_steps();
+    const std::vector<LoadStepResult> &result = pile.solver->get_steps();
     check::equal(name + ": steps",
                  result.size(),
                  std::size_t(std::stoi(steps)));
     soil_test::check_equilibrium_and_yield(name, result, std::stod(su));
     Curve c;
-    for (const SoilStepResult &s : result)
+    for (const LoadStepResult &s : result)
       {
         c.H.push_back(pile.solver->applied_loads(s.load_factor)[0]);
         c.states.push_back(s.contact);
@@ -87,7 +87,7 @@ namespace
     for (unsigned int s = 0; s < r.steps.size(); ++s)
       {
         c.H.push_back(r.applied[s]);
-        c.states.push_back(r.steps[s].states);
+        c.states.push_back(r.steps[s].contact);
       }
     return c;
   }

@@ -53,7 +53,7 @@ namespace
     run.solver->run(std::cout);
     const auto         &steps = run.solver->get_steps();
     std::vector<double> motion, load;
-    for (const SoilStepResult &s : steps)
+    for (const LoadStepResult &s : steps)
       if (s.load_factor != 0.)
         {
           motion.push_back(s.motion.horizontal_displacement);
@@ -79,7 +79,7 @@ namespace
             "subsection Body force\n  set Axial = -18\nend\n";
     Run run(text);
     run.solver->run(std::cout);
-    const SoilStepResult &last    = run.solver->get_steps().back();
+    const LoadStepResult &last    = run.solver->get_steps().back();
     HarmonicProblem      &problem = run.set->problem(0);
     problem.set_solution(run.solver->solution(0));
     const Vector<double> reactions = problem.nodal_reactions();

@@ -71,7 +71,7 @@ namespace
     check::in_range(name + ": converged steps", steps.size(), 2u, 1000u);
     check_equilibrium_and_yield(name + ": ", steps, yield_scale);
     unsigned int most = 0;
-    for (const SoilStepResult &s : steps)
+    for (const LoadStepResult &s : steps)
       most = std::max(most, s.iterations);
     check::in_range(name + ": Newton iterations per step (most)", most, 1, 15);
     check_interface_admissible(name, steps, 1e-9);

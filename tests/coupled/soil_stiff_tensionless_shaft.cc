@@ -47,9 +47,9 @@ namespace
     std::cout << law << std::endl;
     Run pile(free_head_pile(law));
     pile.solver->run(std::cout);
-    const std::vector<SoilStepResult> &steps = pile.solver->get_steps();
+    const std::vector<LoadStepResult> &steps = pile.solver->get_steps();
     check::equal(law + ": steps", steps.size(), std::size_t(4));
-    for (const SoilStepResult &s : steps)
+    for (const LoadStepResult &s : steps)
       check::in_range(law + ": multiplier updates in a step",
                       s.multiplier_updates,
                       1,

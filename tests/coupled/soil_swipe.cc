@@ -109,11 +109,11 @@ namespace
   }
 
   /** The steps of the driven stage (the held stage keeps lambda = 0). */
-  std::vector<SoilStepResult>
+  std::vector<LoadStepResult>
   driven_steps(const Run &run)
   {
-    std::vector<SoilStepResult> driven;
-    for (const SoilStepResult &s : run.solver->get_steps())
+    std::vector<LoadStepResult> driven;
+    for (const LoadStepResult &s : run.solver->get_steps())
       if (s.load_factor != 0.)
         driven.push_back(s);
     return driven;
@@ -124,7 +124,7 @@ namespace
   preload_settlement(const Run &run)
   {
     double w = 0.;
-    for (const SoilStepResult &s : run.solver->get_steps())
+    for (const LoadStepResult &s : run.solver->get_steps())
       if (s.load_factor == 0.)
         w = s.motion.vertical_displacement;
     return w;
@@ -132,7 +132,7 @@ namespace
 
   /** The V the run reports at a step: held V + the swipe's change. */
   double
-  reported_vertical_force(const Run &run, const SoilStepResult &s)
+  reported_vertical_force(const Run &run, const LoadStepResult &s)
   {
     return run.solver->applied_loads(s.load_factor, s.held_fraction)[2] +
            s.swipe_force;
@@ -147,7 +147,7 @@ namespace
   double
   final_imbalance(const Run &run)
   {
-    const SoilStepResult       &last = run.solver->get_steps().back();
+    const LoadStepResult       &last = run.solver->get_steps().back();
     std::vector<Vector<double>> u;
     for (unsigned int h = 0; h < run.set->size(); ++h)
       u.push_back(run.solver->solution(h));
@@ -188,7 +188,7 @@ namespace
     const auto   driven = driven_steps(run);
     check::that(name + "every driven step converged", driven.size() >= n_steps);
     double worst_w = 0., worst_V = 0.;
-    for (const SoilStepResult &s : driven)
+    for (const LoadStepResult &s : driven)
       {
         worst_w         = std::max(worst_w,
                            std::abs(s.motion.vertical_displacement - w0) /
@@ -212,7 +212,7 @@ namespace
                         "G from the total u",
                  final_imbalance(run),
                  1e-7);
-    const SoilStepResult &last = driven.back();
+    const LoadStepResult &last = driven.back();
     return {reported_vertical_force(run, last),
             run.solver->applied_loads(last.load_factor, 1.)[0]};
   }
@@ -247,7 +247,7 @@ main(int argc, char **argv)
   check::that("swipe: V has fallen below the preload (|V| < V_ult / 2)",
               std::abs(V_end) < std::abs(preload));
   double highest_H = 0.;
-  for (const SoilStepResult &s : driven_steps(*swipe))
+  for (const LoadStepResult &s : driven_steps(*swipe))
     highest_H =
       std::max(highest_H, swipe->solver->applied_loads(s.load_factor, 1.)[0]);
   check::in_range("swipe: highest H over the path vs the envelope's H_max",
@@ -304,7 +304,7 @@ main(int argc, char **argv)
 
   // 4. Elastic soil: Delta V = 0 (K_VH = 0 across harmonics 0 and 1).
   const auto elastic = sideways(preload, true, 1e7, "2");
-  for (const SoilStepResult &s : driven_steps(*elastic))
+  for (const LoadStepResult &s : driven_steps(*elastic))
     check::small("elastic swipe: |Delta V| / |V_preload| at u = " +
                    std::to_string(s.motion.horizontal_displacement),
                  s.swipe_force / preload,

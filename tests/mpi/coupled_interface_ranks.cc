@@ -66,8 +66,8 @@ namespace
                                      k == 1 ? "slip" :
                                               "open") +
                          " samples, 2 ranks vs 1",
-                       d.states[k],
-                       r.states[k]);
+                       d.contact[k],
+                       r.contact[k]);
         std::cout << "  " << step << ": iterations " << d.iterations
                   << " on 2 ranks, " << r.iterations << " on 1" << std::endl;
         if (equilibrium)

@@ -113,8 +113,8 @@ namespace
                                  k == 1 ? "slip" :
                                           "open") +
                      " samples, 2 ranks vs 1",
-                   d.states[k],
-                   r.states[k]);
+                   d.contact[k],
+                   r.contact[k]);
     std::cout << "  " << step << ": H " << std::setprecision(15)
               << H_distributed << " vs " << H_serial << " kN (relative "
               << std::setprecision(3)

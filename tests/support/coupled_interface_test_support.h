@@ -170,9 +170,9 @@ namespace coupled_test
         s.u           = r.motion.horizontal_displacement;
         s.iterations  = r.iterations;
         s.n_harmonics = r.n_harmonics;
-        s.stick       = r.states[0];
-        s.slip        = r.states[1];
-        s.open        = r.states[2];
+        s.stick       = r.contact[0];
+        s.slip        = r.contact[1];
+        s.open        = r.contact[2];
         s.equilibrium = std::abs(r.resultant[0] - s.H) / std::abs(s.H);
         curve.steps.push_back(s);
       }

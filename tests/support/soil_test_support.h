@@ -104,11 +104,11 @@ namespace soil_test
    */
   inline void
   check_equilibrium_and_yield(const std::string                 &name,
-                              const std::vector<SoilStepResult> &steps,
+                              const std::vector<LoadStepResult> &steps,
                               const double                       su)
   {
     double worst_residual = 0., worst_f = -1e300;
-    for (const SoilStepResult &s : steps)
+    for (const LoadStepResult &s : steps)
       {
         worst_residual = std::max(worst_residual, s.residual);
         worst_f        = std::max(worst_f, s.largest_yield_value);
@@ -225,11 +225,11 @@ namespace soil_test
    */
   inline void
   check_interface_admissible(const std::string                 &name,
-                             const std::vector<SoilStepResult> &steps,
+                             const std::vector<LoadStepResult> &steps,
                              const double                       bound)
   {
     double worst = -1e300;
-    for (const SoilStepResult &s : steps)
+    for (const LoadStepResult &s : steps)
       worst = std::max(worst, s.largest_interface_yield_value);
     check::in_range(name + ": max f(t) over the interface [kPa]",
                     worst,

@@ -54,6 +54,7 @@
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/initial_stress.h>
 #include <fourier_ssi/coupled/load_path_states.h>
+#include <fourier_ssi/coupled/load_step_result.h>
 #include <fourier_ssi/coupled/nonlinear_interface_points.h>
 #include <fourier_ssi/fourier/theta_sampling.h>
 #include <fourier_ssi/harmonic/harmonic_set.h>
@@ -69,23 +70,6 @@
 namespace FourierSSI
 {
   using namespace dealii;
-
-  /** One converged load step of the interfaces. */
-  struct LoadStepResult : LoadStep
-  {
-    /** Interface (point, theta) samples sticking, slipping, open. */
-    std::array<unsigned int, 3> states = {{0, 0, 0}};
-    /**
-     * Resultant of the interface tractions (change from the initial state) on
-     * the rigid foundation's material: force (x, y, z) [kN] and moment about
-     * the origin (x, y, z) [kN m].
-     */
-    std::array<double, 6> resultant = {{0., 0., 0., 0., 0., 0.}};
-    /** Uzawa updates of the contact multipliers (0: no contact). */
-    unsigned int multiplier_updates = 0;
-    /** Harmonics solved in this step (grows with Maximum harmonic). */
-    unsigned int n_harmonics = 0;
-  };
 
   /** Iteration state of a load step of the interfaces. */
   struct InterfaceStepState : CorrectionState
@@ -125,18 +109,6 @@ namespace FourierSSI
     void
     run(std::ostream &log);
 
-    const std::vector<LoadStepResult> &
-    get_steps() const
-    {
-      return steps;
-    }
-
-    /** Interface state of every converged step (same order as steps). */
-    const std::vector<InterfaceSnapshot> &
-    get_snapshots() const
-    {
-      return snapshots;
-    }
 
     /**
      * CSV of the interface state at every (point, theta sample) of every
@@ -156,9 +128,14 @@ namespace FourierSSI
     void
     write_interface_state_vtu(const std::string &filename) const;
 
-    /** solution(i) and applied_loads() (load_path_states.h). */
+    /**
+     * solution(i), applied_loads(), the step records get_steps() and their
+     * load-displacement.csv write_csv() (load_path_states.h).
+     */
     using LoadPathStates::applied_loads;
+    using LoadPathStates::get_steps;
     using LoadPathStates::solution;
+    using LoadPathStates::write_csv;
 
     /** N, the theta samples of the iteration. */
     unsigned int
@@ -183,13 +160,6 @@ namespace FourierSSI
     {
       return points.size();
     }
-
-    /**
-     * CSV: step, load factor, applied V, H_x, M_y, T, the motion, iterations,
-     * residual, states, converged (1; a failed step is not a row).
-     */
-    void
-    write_csv(const std::string &filename) const;
 
   private:
     /**
@@ -232,11 +202,6 @@ namespace FourierSSI
     commit_trial(const LoadStep &step,
                  const bool      holding,
                  std::ostream   &log) override;
-    unsigned int
-    n_converged_steps() const override
-    {
-      return steps.size();
-    }
 
     /** Displacement control in the stage being solved (not the held one). */
     bool
@@ -309,14 +274,13 @@ namespace FourierSSI
     Evaluation
     evaluate(const double target, StepState &state) const;
 
-    /** A converged iterate: complete the state, fill the step records. */
+    /** A converged iterate: complete the state, fill the step record. */
     bool
     accept(const double       target,
            const Evaluation  &e,
            const unsigned int iteration,
            StepState         &state,
-           LoadStepResult    &result,
-           InterfaceSnapshot &snapshot) const;
+           LoadStepResult    &result) const;
 
     /** dc of (I - dG/dc) dc = R, the write DoFs of every harmonic in turn. */
     Vector<double>
@@ -349,13 +313,7 @@ namespace FourierSSI
      * iterate() until the contact conditions hold to round-off.
      */
     bool
-    solve_step(const double       target,
-               StepState         &state,
-               LoadStepResult    &result,
-               InterfaceSnapshot &snapshot);
-
-    std::array<double, 6>
-    foundation_resultant(const std::vector<LocalVector> &traction) const;
+    solve_step(const double target, StepState &state, LoadStepResult &result);
 
     /**
      * Harmonics n <= Maximum harmonic, not solved, whose amplitude in the
@@ -395,11 +353,6 @@ namespace FourierSSI
     /** True while the load path brings the held loads on. */
     bool                     holding_stage = false;
     std::vector<LocalVector> pattern_relative;
-    /** The records of the step being solved. */
-    LoadStepResult                 trial_result;
-    InterfaceSnapshot              trial_snapshot;
-    std::vector<LoadStepResult>    steps;
-    std::vector<InterfaceSnapshot> snapshots;
   };
 } // namespace FourierSSI
 

@@ -217,43 +217,6 @@ namespace FourierSSI
                           const double                     residual);
 
   /**
-   * load-displacement.csv of a coupled solver: per converged step the
-   * leading columns of load_step_csv_header, then the solver's own
-   * (`extra_header`; write_extra(out, step result) writes them), then
-   * converged = 1.
-   */
-  template <class StepResult, class ExtraColumns>
-  void
-  write_load_step_csv(const std::string               &filename,
-                      const std::vector<StepResult>   &steps,
-                      const RigidFoundationParameters &foundation,
-                      const std::string               &extra_header,
-                      const ExtraColumns              &write_extra)
-  {
-    AtomicFile    file(filename);
-    std::ostream &out = file.stream();
-    out << load_step_csv_header << ',' << extra_header << ",converged\n"
-        << std::setprecision(12);
-    for (unsigned int s = 0; s < steps.size(); ++s)
-      {
-        const StepResult &r = steps[s];
-        write_load_step_columns(out,
-                                s + 1,
-                                r.load_factor,
-                                r.held_fraction,
-                                r.swipe_force,
-                                foundation,
-                                r.motion,
-                                r.iterations,
-                                r.residual);
-        out << ',';
-        write_extra(out, r);
-        out << ",1\n";
-      }
-    file.commit();
-  }
-
-  /**
    * The rows of results.csv every coupled solver writes per converged load
    * step (cycle = step number): the applied loads [kN, kN.m], the
    * foundation motion [m, rad], iterations, residual and wall time. A step

@@ -58,6 +58,7 @@
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/coupled_tangent.h>
 #include <fourier_ssi/coupled/load_path_states.h>
+#include <fourier_ssi/coupled/load_step_result.h>
 #include <fourier_ssi/coupled/nonlinear_interface_points.h>
 #include <fourier_ssi/coupled/nonlinear_soil_points.h>
 #include <fourier_ssi/coupled/soil_law.h>
@@ -75,25 +76,6 @@
 namespace FourierSSI
 {
   using namespace dealii;
-
-  /**
-   * One converged load step of the plastic soil: the soil's counts over
-   * every (point, theta) (SoilYieldCounts), and the interfaces'.
-   */
-  struct SoilStepResult : LoadStep, SoilYieldCounts
-  {
-    /**
-     * Coulomb interfaces: (point, theta) samples sticking, slipping, open
-     * (all zero without).
-     */
-    ContactCounts contact = {{0, 0, 0}};
-    /** `contact` interfaces: Uzawa updates of the multipliers (0 without). */
-    unsigned int multiplier_updates = 0;
-    /** Largest f(t) of the coulomb interfaces [kPa] (<= 0 admissible). */
-    double largest_interface_yield_value = 0.;
-    /** The coulomb interfaces at every (point, theta) (empty without). */
-    InterfaceSnapshot interface_state;
-  };
 
   /** Iteration state of a load step of the plastic soil. */
   struct SoilStepState : CorrectionState
@@ -121,15 +103,14 @@ namespace FourierSSI
     void
     run(std::ostream &log);
 
-    const std::vector<SoilStepResult> &
-    get_steps() const
-    {
-      return steps;
-    }
-
-    /** solution(i) and applied_loads() (load_path_states.h). */
+    /**
+     * solution(i), applied_loads(), the step records get_steps() and their
+     * load-displacement.csv write_csv() (load_path_states.h).
+     */
     using LoadPathStates::applied_loads;
+    using LoadPathStates::get_steps;
     using LoadPathStates::solution;
+    using LoadPathStates::write_csv;
 
     /**
      * The work of the applied loads on the last converged displacement,
@@ -198,7 +179,7 @@ namespace FourierSSI
      * solution(), soil_nodal_force()), before the step's log line.
      */
     void
-    set_step_observer(std::function<void(const SoilStepResult &)> observer)
+    set_step_observer(std::function<void(const LoadStepResult &)> observer)
     {
       step_observer = std::move(observer);
     }
@@ -216,10 +197,6 @@ namespace FourierSSI
      */
     void
     write_interface_state_csv(const std::string &filename) const;
-
-    /** CSV: step, load factor, loads, motion, iterations, residual, ... */
-    void
-    write_csv(const std::string &filename) const;
 
   private:
     using StepState = SoilStepState;
@@ -252,11 +229,6 @@ namespace FourierSSI
     commit_trial(const LoadStep &step,
                  const bool      holding,
                  std::ostream   &log) override;
-    unsigned int
-    n_converged_steps() const override
-    {
-      return steps.size();
-    }
 
     /**
      * Secant predictor: state's correction (load and displacement) moved on
@@ -372,7 +344,7 @@ namespace FourierSSI
      * out-of-balance load and residual (the counts into `result`).
      */
     Evaluation
-    evaluate(const StepState &state, SoilStepResult &result) const;
+    evaluate(const StepState &state, LoadStepResult &result) const;
 
     /**
      * The coulomb interfaces' part of an evaluation: their relative
@@ -382,14 +354,14 @@ namespace FourierSSI
     double
     add_interface_residual(const StepState &state,
                            Evaluation      &e,
-                           SoilStepResult  &result) const;
+                           LoadStepResult  &result) const;
 
     /** A converged iterate: its plastic state and the step's records. */
     void
     accept(Evaluation        &e,
            const unsigned int iteration,
            StepState         &state,
-           SoilStepResult    &result) const;
+           LoadStepResult    &result) const;
 
     /** A change of c and the displacement K^-1 dc it makes (per harmonic). */
     struct Correction
@@ -405,7 +377,7 @@ namespace FourierSSI
     evaluate_at(const double    target,
                 const bool      holding,
                 StepState      &state,
-                SoilStepResult &result);
+                LoadStepResult &result);
 
     /**
      * Stiffness = tangent: the Newton correction at an iterate, the tangent
@@ -434,7 +406,7 @@ namespace FourierSSI
     solve_step(const double    target,
                const bool      holding,
                StepState      &state,
-               SoilStepResult &result);
+               LoadStepResult &result);
 
     /**
      * The iteration of solve_step() at fixed contact multipliers: Newton
@@ -446,7 +418,7 @@ namespace FourierSSI
     iterate(const double    target,
             const bool      holding,
             StepState      &state,
-            SoilStepResult &result,
+            LoadStepResult &result,
             Evaluation     &e,
             unsigned int   &iterations);
 
@@ -509,14 +481,6 @@ namespace FourierSSI
     tangent_correction(const std::vector<Vector<double>> &residual,
                        const bool displacement_control) const;
 
-    /**
-     * The log's account of a step: V, H and the moment and torque where
-     * the scene applies them, with the motion each works on.
-     */
-    void
-    write_foundation_state(std::ostream         &log,
-                           const SoilStepResult &result) const;
-
     /** The controlled motion component of harmonic h's field v. */
     double
     controlled_motion(const unsigned int h, const Vector<double> &v) const;
@@ -547,9 +511,6 @@ namespace FourierSSI
     bool persistent = false;
     /** Strain amplitudes of the load pattern. */
     StrainAmplitudes pattern_strain;
-    /** The records of the step being solved. */
-    SoilStepResult              trial_result;
-    std::vector<SoilStepResult> steps;
     /** Stiffness = tangent: the coupled tangent and K_t^-1 F. */
     std::unique_ptr<CoupledTangent> tangent;
     std::vector<Vector<double>>     tangent_pattern;
@@ -561,7 +522,7 @@ namespace FourierSSI
     std::vector<LocalVector>                  pattern_relative, held_relative;
     /** A swipe: the relative displacements of K^-1 e_V. */
     std::vector<LocalVector>                    swipe_relative;
-    std::function<void(const SoilStepResult &)> step_observer;
+    std::function<void(const LoadStepResult &)> step_observer;
   };
 } // namespace FourierSSI
 

@@ -3,7 +3,8 @@
  * last converged one, the one before it (the secant predictor's) and the
  * step being solved, with what both solvers read of a state: the total
  * displacement u = lambda K^-1 F + K^-1 c + rho K^-1 F_held (LoadPattern),
- * its rigid motion (rigid_motion_of) and the applied foundation loads. A
+ * its rigid motion (rigid_motion_of) and the applied foundation loads, and
+ * the records of the converged steps (load_step_result.h). A
  * State has load_factor, held_fraction and correction_solution (K^-1 c per
  * harmonic, CorrectionState); the solver gives the predictor (extrapolate) and
  * the iteration of a step (LoadPath::Iteration).
@@ -16,10 +17,13 @@
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/load_path.h>
 #include <fourier_ssi/coupled/load_pattern.h>
+#include <fourier_ssi/coupled/load_step_result.h>
 #include <fourier_ssi/harmonic/harmonic_set.h>
 #include <fourier_ssi/input/parameters.h>
+#include <functional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace FourierSSI
 {
@@ -68,17 +72,27 @@ namespace FourierSSI
                                       held_fraction);
     }
 
-  protected:
+    /** The record of every converged step, in order. */
+    const std::vector<LoadStepResult> &
+    get_steps() const
+    {
+      return steps;
+    }
+
     /**
-     * `moment_unit` is how the solver's log writes kN m (its step lines and
-     * the held loads' line).
+     * load-displacement.csv of the converged steps, with the columns of
+     * the run's nonlinear sources (write_load_path_csv).
      */
-    LoadPathStates(const HarmonicSet   &set,
-                   const AllParameters &parameters,
-                   const std::string   &moment_unit)
+    void
+    write_csv(const std::string &filename) const
+    {
+      write_load_path_csv(filename, steps, foundation_parameters, sources);
+    }
+
+  protected:
+    LoadPathStates(const HarmonicSet &set, const AllParameters &parameters)
       : harmonic_set(set)
       , foundation_parameters(parameters.rigid_foundation)
-      , moment_unit(moment_unit)
     {}
 
     /**
@@ -167,23 +181,14 @@ namespace FourierSSI
       return reactions;
     }
 
-    /** "; rotation held by M ... kN.m" per held reaction of a step. */
-    void
-    write_held_reactions(std::ostream &log, const LoadStep &step) const
-    {
-      for (const auto &[held, load] : step.held_reactions)
-        log << "; " << foundation_parameters.reaction_label(held) << " " << load
-            << " " << load_unit_of(held);
-    }
-
     /** The held loads (V, H, M about the reference point, T). */
     void
     write_held_loads(std::ostream &log) const override
     {
       const auto held = applied_loads(0., 1.);
       log << "V " << held[2] << " kN, H " << held[0] << " kN, M "
-          << moment_about_reference(held, foundation_parameters) << " "
-          << moment_unit << ", T " << held[5] << " " << moment_unit;
+          << moment_about_reference(held, foundation_parameters) << " kN m, T "
+          << held[5] << " kN m";
     }
 
     /**
@@ -234,6 +239,35 @@ namespace FourierSSI
       result.time          = step.time;
     }
 
+    /**
+     * The trial's record becomes a converged step's: stored, handed to
+     * `observer` (if any), and its log line written (write_step_line).
+     * Call after commit() and after the solver has filled its sources'
+     * parts of trial_result.
+     */
+    void
+    record_trial(
+      const bool                                         holding,
+      std::ostream                                      &log,
+      const std::function<void(const LoadStepResult &)> &observer = {})
+    {
+      steps.push_back(trial_result);
+      if (observer)
+        observer(steps.back());
+      write_step_line(log,
+                      steps.size(),
+                      holding,
+                      steps.back(),
+                      foundation_parameters,
+                      sources);
+    }
+
+    unsigned int
+    n_converged_steps() const override
+    {
+      return steps.size();
+    }
+
     void
     start_trial(const double ratio) override
     {
@@ -262,11 +296,15 @@ namespace FourierSSI
 
     const HarmonicSet               &harmonic_set;
     const RigidFoundationParameters &foundation_parameters;
-    const std::string                moment_unit;
     /** F, F_held and their elastic solutions. */
     LoadPattern loads;
     /** The last converged state, the one before it, the step solved. */
     State committed, before_last, trial;
+    /** The run's nonlinear sources: which parts the records show. */
+    RecordedSources sources;
+    /** The record of the step being solved, and of the converged ones. */
+    LoadStepResult              trial_result;
+    std::vector<LoadStepResult> steps;
   };
 } // namespace FourierSSI
 

@@ -345,6 +345,17 @@ namespace FourierSSI
             const bool                      condensed = true) const;
 
     /**
+     * The resultant of the traction change t - t0 on the rigid foundation's
+     * material (Rigid foundation/Tie = material): force (x, y, z) [kN] and
+     * moment about the origin (x, y, z) [kN m], the samples' theta weights
+     * integrating it around the axis; zeros without such a foundation.
+     */
+    std::array<double, 6>
+    foundation_resultant(const std::vector<LocalVector>  &traction,
+                         const ThetaSampling             &sampling,
+                         const RigidFoundationParameters &foundation) const;
+
+    /**
      * d - D_K^-1 (t - t0) at every sample of a converged state, D_K the
      * springs in K: K_i d minus load_of() of it is the nodal force of the
      * tractions t - t0 the interface carries, whatever the law (for
