@@ -677,17 +677,16 @@ namespace FourierSSI
                                        const bool      holding,
                                        std::ostream   &log)
   {
-    LoadStepResult &result = trial_result;
-    commit(result, step);
-    result.n_harmonics = set.size();
+    commit(step);
     // The interfaces are the only nonlinear source: their part of G is that
     // of the tractions they carry.
     if (!parameters.rigid_foundation.reported_motions().empty())
-      result.held_reactions = held_reactions_of(
-        committed,
-        interface.load_of(interface.spring_plastic(result.interface_state),
-                          sampling,
-                          false));
+      trial_result.held_reactions =
+        held_reactions_of(committed,
+                          interface.load_of(interface.spring_plastic(
+                                              trial_result.interface_state),
+                                            sampling,
+                                            false));
     record_trial(holding, log);
   }
 } // namespace FourierSSI

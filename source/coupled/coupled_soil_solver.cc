@@ -888,15 +888,14 @@ namespace FourierSSI
                                   const bool      holding,
                                   std::ostream   &log)
   {
-    LoadStepResult &result = trial_result;
-    commit(result, step);
+    commit(step);
     if (holding)
-      swipe_settlement = result.motion.vertical_displacement;
-    result.held_reactions = held_reactions(committed, result.interface_state);
-    result.n_harmonics    = set.size();
+      swipe_settlement = trial_result.motion.vertical_displacement;
+    trial_result.held_reactions =
+      held_reactions(committed, trial_result.interface_state);
     if (interface)
-      result.resultant =
-        interface->foundation_resultant(result.interface_state.traction,
+      trial_result.resultant =
+        interface->foundation_resultant(trial_result.interface_state.traction,
                                         interface_sampling,
                                         parameters.rigid_foundation);
     record_trial(holding, log, step_observer);

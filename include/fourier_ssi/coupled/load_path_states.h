@@ -224,19 +224,21 @@ namespace FourierSSI
     }
 
     /**
-     * The converged trial becomes the committed state; `result` gets its
-     * load factor and held fraction, and the motion and wall time of `step`.
+     * The converged trial becomes the committed state; its record
+     * (trial_result) gets the load factor, held fraction and swipe force,
+     * the motion and wall time of `step` and the harmonics solved.
      */
     void
-    commit(LoadStep &result, const LoadStep &step)
+    commit(const LoadStep &step)
     {
-      before_last          = std::move(committed);
-      committed            = trial;
-      result.load_factor   = committed.load_factor;
-      result.held_fraction = committed.held_fraction;
-      result.swipe_force   = committed.swipe_force;
-      result.motion        = step.motion;
-      result.time          = step.time;
+      before_last                = std::move(committed);
+      committed                  = trial;
+      trial_result.load_factor   = committed.load_factor;
+      trial_result.held_fraction = committed.held_fraction;
+      trial_result.swipe_force   = committed.swipe_force;
+      trial_result.motion        = step.motion;
+      trial_result.time          = step.time;
+      trial_result.n_harmonics   = harmonic_set.size();
     }
 
     /**
