@@ -127,7 +127,7 @@ namespace FourierSSI
       // the multipliers (on interface_sampling).
       interface =
         std::make_unique<NonlinearInterfacePoints>(set, parameters, true);
-    sources = {true, interface.get()};
+    sources = {soil.size() > 0, interface.get()};
     // A swipe's mu and K^-1 e_V are solved on the owner of harmonic 0 and
     // read there; not written for distributed harmonics yet.
     AssertThrow(!parameters.rigid_foundation.swipes() ||
@@ -819,9 +819,13 @@ namespace FourierSSI
   {
     const bool load_control =
       settings.control == LoadPathParameters::Control::load;
-    log << "plastic soil: " << soil.size() << " quadrature points x "
-        << sampling.n_samples() << " theta samples, " << set.size()
-        << " harmonics"
+    if (soil.size() > 0)
+      log << "plastic soil: " << soil.size() << " quadrature points x "
+          << sampling.n_samples() << " theta samples, ";
+    else
+      log << "nonlinear interfaces on elastic soil, on the coupled tangent "
+             "(a swipe; no soil points): ";
+    log << set.size() << " harmonics"
         << (set.n_owning_ranks() > 1 ?
               " distributed over " + std::to_string(set.n_owning_ranks()) +
                 " MPI ranks" :

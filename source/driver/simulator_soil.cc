@@ -32,13 +32,17 @@ namespace FourierSSI
       AssertThrow(settings.maximum_harmonic <=
                     highest_harmonic(parameters.discretization.harmonics),
                   ExcMessage("Load path/Maximum harmonic: not "
-                             "yet with plastic soil (the harmonics do not "
-                             "grow); list them in Discretization/Harmonics"));
-      check_coupled_path_supported(parameters, "plastic soil");
+                             "yet with plastic soil or a swipe (the "
+                             "harmonics do not grow); list them in "
+                             "Discretization/Harmonics"));
+      check_coupled_path_supported(parameters,
+                                   parameters.soil_plasticity.any() ?
+                                     "plastic soil" :
+                                     "a swipe through nonlinear interfaces");
       AssertThrow(parameters.output.lines.empty() &&
                     !parameters.output.write_3d_vtu,
                   ExcMessage(entry + ": not yet: Output/Lines 3D and Write "
-                                     "3d vtu with plastic soil"));
+                                     "3d vtu with plastic soil or a swipe"));
       AssertThrow(!parameters.output.soil_reaction_curves() ||
                     parameters.discretization.target_accuracy == 0.,
                   ExcMessage("Output/Soil reaction depths: not yet with "
@@ -57,13 +61,16 @@ namespace FourierSSI
       const auto    &steps = solver.get_steps();
       for (unsigned int s = 0; s < steps.size(); ++s)
         {
-          results.add(
-            "step_plastic_samples", any, s + 1, steps[s].n_plastic, "-");
-          results.add("step_largest_yield_value",
-                      any,
-                      s + 1,
-                      steps[s].largest_yield_value,
-                      "kPa");
+          if (solver.n_soil_points() > 0)
+            {
+              results.add(
+                "step_plastic_samples", any, s + 1, steps[s].n_plastic, "-");
+              results.add("step_largest_yield_value",
+                          any,
+                          s + 1,
+                          steps[s].largest_yield_value,
+                          "kPa");
+            }
           if (!parameters.interfaces.any_nonlinear())
             continue;
           const ContactCounts &contact = steps[s].contact;
@@ -362,8 +369,9 @@ namespace FourierSSI
             << " |H| L; " << reaction_curves->wall_time << " s for the curves"
             << std::endl;
       }
-    // The stress of plastic soil is not C eps(u): displacements only.
-    write_last_step_vtu(false, log);
+    // The stress of plastic soil is not C eps(u): displacements only (an
+    // elastic soil's stress is).
+    write_last_step_vtu(solver.n_soil_points() == 0, log);
     const std::string name = result_files.claim_results_file();
     results.write_csv(name);
     log << "results written to " << name << std::endl;

@@ -536,9 +536,9 @@ namespace FourierSSI
     // Newton (of either coupled solver) assembles coulomb springs no
     // stiffer than a cap times G / l; stiffer laws act through the augmented
     // Lagrangian's multipliers (interface_law.h).
-    if (soil_plasticity.any() && soil_plasticity.tangent)
+    if (runs_coupled_tangent_solver() && soil_plasticity.tangent)
       interfaces.iteration_stiffness_cap = soil_iteration_stiffness;
-    else if (!soil_plasticity.any() && load_path.tangent_stiffness)
+    else if (!runs_coupled_tangent_solver() && load_path.tangent_stiffness)
       interfaces.iteration_stiffness_cap = interface_iteration_stiffness;
     check_laws(*this);
     check_target_accuracy(*this);

@@ -72,8 +72,9 @@ namespace FourierSSI
 
     /**
      * A swipe (w held at the value a Held vertical force reached) is solved
-     * by the plastic soil's load multiplier mu on the vertical load; what
-     * is not written for it yet is refused rather than run with w free.
+     * by the coupled tangent solver's load multiplier mu on the vertical
+     * load (also for nonlinear interfaces on elastic soil); what is not
+     * written for it yet is refused rather than run with w free.
      */
     void
     check_swipe_path(const AllParameters &parameters)
@@ -83,12 +84,6 @@ namespace FourierSSI
       const std::string entry =
         "Rigid foundation/Held motions: 'w' with a Held vertical force (a "
         "swipe)";
-      AssertThrow(!parameters.interfaces.any_nonlinear() ||
-                    parameters.soil_plasticity.any(),
-                  ExcMessage(entry + ": not yet with nonlinear interfaces on "
-                                     "elastic soil (w is kept by the "
-                                     "plastic soil's solver; add Soil "
-                                     "plasticity/Laws)"));
       AssertThrow(parameters.discretization.target_accuracy == 0.,
                   ExcMessage(entry + ": not yet with Discretization/Target "
                                      "accuracy (the capacity with error bars "

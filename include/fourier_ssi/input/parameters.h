@@ -161,6 +161,20 @@ namespace FourierSSI
       return soil_plasticity.any() || interfaces.any_nonlinear();
     }
 
+    /**
+     * The load path runs on the coupled tangent of every harmonic
+     * (CoupledSoilSolver): with plastic soil, and for a swipe with nonlinear
+     * interfaces on elastic soil, a scene with no soil points (the
+     * interfaces' condensed iteration does not keep the swipe's w).
+     * Otherwise nonlinear interfaces run condensed (CoupledInterfaceSolver).
+     */
+    bool
+    runs_coupled_tangent_solver() const
+    {
+      return soil_plasticity.any() ||
+             (interfaces.any_nonlinear() && rigid_foundation.swipes());
+    }
+
     AllParameters();
 
     static void
