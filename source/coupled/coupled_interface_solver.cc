@@ -450,16 +450,10 @@ namespace FourierSSI
                                e.traction,
                                state.slip,
                                state.plastic);
-    state.origin      = state.plastic;
-    result.iterations = iteration;
-    result.residual   = e.scale.relative(e.residual_norm);
-    result.contact    = e.counts;
-    result.largest_interface_yield_value =
-      interface.largest_yield_value(e.traction);
-    result.resultant =
-      interface.foundation_resultant(e.traction,
-                                     sampling,
-                                     parameters.rigid_foundation);
+    state.origin           = state.plastic;
+    result.iterations      = iteration;
+    result.residual        = e.scale.relative(e.residual_norm);
+    result.contact         = e.counts;
     result.interface_state = {e.relative, e.traction, e.contact};
     return true;
   }
@@ -678,15 +672,19 @@ namespace FourierSSI
                                        std::ostream   &log)
   {
     commit(step);
+    const InterfaceSnapshot &state = trial_result.interface_state;
+    trial_result.largest_interface_yield_value =
+      interface.largest_yield_value(state.traction);
+    trial_result.resultant =
+      interface.foundation_resultant(state.traction,
+                                     sampling,
+                                     parameters.rigid_foundation);
     // The interfaces are the only nonlinear source: their part of G is that
     // of the tractions they carry.
     if (!parameters.rigid_foundation.reported_motions().empty())
-      trial_result.held_reactions =
-        held_reactions_of(committed,
-                          interface.load_of(interface.spring_plastic(
-                                              trial_result.interface_state),
-                                            sampling,
-                                            false));
+      trial_result.held_reactions = held_reactions_of(
+        committed,
+        interface.load_of(interface.spring_plastic(state), sampling, false));
     record_trial(holding, log);
   }
 } // namespace FourierSSI

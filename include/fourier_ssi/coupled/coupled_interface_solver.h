@@ -109,7 +109,6 @@ namespace FourierSSI
     void
     run(std::ostream &log);
 
-
     /**
      * CSV of the interface state at every (point, theta sample) of every
      * converged step: position, angle, stick/slip/open, traction and

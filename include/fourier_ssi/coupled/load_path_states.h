@@ -253,7 +253,8 @@ namespace FourierSSI
       std::ostream                                      &log,
       const std::function<void(const LoadStepResult &)> &observer = {})
     {
-      steps.push_back(trial_result);
+      // The next trial starts from a fresh record (solve_trial).
+      steps.push_back(std::move(trial_result));
       if (observer)
         observer(steps.back());
       write_step_line(log,
