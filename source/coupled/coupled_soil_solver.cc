@@ -128,13 +128,6 @@ namespace FourierSSI
       interface =
         std::make_unique<NonlinearInterfacePoints>(set, parameters, true);
     sources = {soil.size() > 0, interface.get()};
-    // A swipe's mu and K^-1 e_V are solved on the owner of harmonic 0 and
-    // read there; not written for distributed harmonics yet.
-    AssertThrow(!parameters.rigid_foundation.swipes() ||
-                  set.n_owning_ranks() == 1,
-                ExcMessage("Rigid foundation/Held motions: not yet: a swipe "
-                           "('w' with a Held vertical force) on several MPI "
-                           "ranks; run it on one rank"));
     solve_load_pattern();
     solve_held_loads();
     start_at_rest();
@@ -486,7 +479,9 @@ namespace FourierSSI
     std::vector<Vector<double>> swipe_pattern;
     if (swiping)
       {
+        // e_V is on the owner of harmonic 0 only; the solve takes all of it.
         swipe_pattern = loads.swipe_load;
+        sum_fields_over_ranks(set, swipe_pattern);
         tangent->solve(swipe_pattern);
         // The iterate holds both motions already: du must keep them.
         const std::array<double, 2> changes =

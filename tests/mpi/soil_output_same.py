@@ -32,12 +32,22 @@ Checks:
     broadcast, the load correction K_h du_h from h's owner: the same
     iteration counts (a column of load-displacement.csv) and the same
     digits, or the sum or the solve is not the serial one.
+With STIFFNESS = swipe, the scene is a swipe test (doc/offshore-
+foundations.md section 7) on prm/footing-capacity.prm (the rough footing on
+Tresca soil) cut to n = 0, 1: V = -90 kN (about V_ult / 2) held in 4
+steps, then u driven to 0.004 m in 4 Newton steps with w held where the
+preload left it (rank 0 owns n = 0, which carries w and the swipe's unit
+load e_V; rank 1 owns n = 1, which carries u). The swipe's multiplier mu
+comes from a 2x2 system on the summed rigid motions, and K_t^-1 e_V from
+the one factorizing rank: the same text again, or a rank read e_V or the
+motions apart from the others. The scene must yield and V must move (mu
+acts) for the comparison to see the swipe.
 With a sixth argument, the scene is prm/pile-adhesion.prm (plastic soil
 and a coulomb shaft, doc/soil-plasticity.md section 6b) with that interface
 law: the relative displacements are summed over the ranks too, and
 interface-state.csv must also be written once and be the same text.
 Usage: soil_output_same.py "MPIEXEC;-np;2;..." FOURIER_SSI_EXE SOURCE_DIR
-       WORK_DIR STIFFNESS [INTERFACE_LAW]
+       WORK_DIR STIFFNESS|swipe [INTERFACE_LAW]
 """
 import os
 import sys
@@ -54,6 +64,30 @@ subsection Load path
 end
 subsection Soil plasticity
   set Stiffness = %s
+end
+subsection Output
+  set Directory = out
+end
+"""
+
+SWIPE = """
+subsection Discretization
+  set Harmonics = 0, 1
+end
+subsection Rigid foundation
+  set Vertical force      = 0
+  set Horizontal force    = 1
+  set Held vertical force = -90
+  set Held motions        = w
+end
+subsection Soil plasticity
+  set Stiffness = tangent
+end
+subsection Load path
+  set Theta samples     = 8
+  set Controlled motion = horizontal
+  set Target            = 0.004
+  set Load steps        = 4
 end
 subsection Output
   set Directory = out
@@ -88,15 +122,20 @@ def main():
     scene, overrides, files = ("prm/pile-capacity.prm",
                                OVERRIDES % sys.argv[5],
                                {"load-displacement.csv", "results.csv"})
+    distribution = ("harmonics distributed over 2 MPI ranks: rank 0 "
+                    "n=0 symmetric n=2 symmetric; rank 1 n=1 symmetric")
+    swipe = sys.argv[5] == "swipe"
+    if swipe:
+        scene, overrides = "prm/footing-capacity.prm", SWIPE
+        distribution = ("harmonics distributed over 2 MPI ranks: rank 0 "
+                        "n=0 symmetric; rank 1 n=1 symmetric")
     if len(sys.argv) > 6:
         scene = "prm/pile-adhesion.prm"
         overrides += ("subsection Interfaces\n  set Interfaces = %s\nend\n"
                       % sys.argv[6])
         files.add("interface-state.csv")
-    outputs = rank_runs.on_one_and_two_ranks(
-        sys.argv[:5], scene, overrides,
-        ("harmonics distributed over 2 MPI ranks: rank 0 "
-         "n=0 symmetric n=2 symmetric; rank 1 n=1 symmetric"))
+    outputs = rank_runs.on_one_and_two_ranks(sys.argv[:5], scene, overrides,
+                                             distribution)
     failures = rank_runs.wrote_exactly(outputs, files)
     curve = {r: rank_runs.table(os.path.join(outputs[r], "load-displacement.csv"))
              for r in (1, 2)}
@@ -106,6 +145,14 @@ def main():
     print(f"  {'ok  ' if ok else 'FAIL'} the scene yields: {plastic} plastic "
           f"samples at the last step, iterations per step {iterations}")
     failures += not ok
+    if swipe:
+        V = [float(row["V_kN"]) for row in curve[1]
+             if float(row["load_factor"]) != 0.]
+        ok = len(V) == 4 and max(V) - min(V) > 1.
+        print(f"  {'ok  ' if ok else 'FAIL'} the swipe moves V: "
+              f"{V[0] if V else 0:.6g} to {V[-1] if V else 0:.6g} kN over "
+              f"{len(V)} driven steps")
+        failures += not ok
     failures += same_text("load-displacement.csv", curve[1], curve[2],
                           lambda row: False, {"time_s"})
     failures += same_text(
