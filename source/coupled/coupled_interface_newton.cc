@@ -56,7 +56,7 @@ namespace FourierSSI
     // The held stage prescribes rho: lambda does not follow c there.
     const bool                      displacement_control = controls_motion();
     const std::vector<LocalTangent> follow =
-      interface.plastic_tangents(e.relative, state.origin);
+      interface.plastic_tangents(e.relative, state.interfaces.origin);
     std::vector<unsigned int> offset(set.size() + 1, 0);
     for (unsigned int h = 0; h < set.size(); ++h)
       offset[h + 1] = offset[h] + condensed[h].write.size();

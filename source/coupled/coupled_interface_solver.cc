@@ -132,10 +132,7 @@ namespace FourierSSI
     start_at_rest();
     committed.interface_solution = committed.correction_solution;
     condense(0);
-    committed.plastic.assign(points.size() * sampling.n_samples(),
-                             {{0., 0., 0.}});
-    committed.origin = committed.plastic;
-    committed.slip   = committed.plastic;
+    committed.interfaces = interface.at_rest(sampling);
   }
 
   void
@@ -422,7 +419,7 @@ namespace FourierSSI
       {{state.load_factor, &pattern_relative},
        {state.held_fraction, &held_relative}});
     e.counts = interface.return_map(
-      e.relative, state.origin, e.plastic, e.traction, e.contact);
+      e.relative, state.interfaces.origin, e.plastic, e.traction, e.contact);
     // 3-4: out-of-balance load G = int B^T (D_K d - (t - t0)) (D_K the
     //      springs in K) and force residual R = G - c, measured against
     //      the internal force scale (coupled_iteration.h).
@@ -445,12 +442,10 @@ namespace FourierSSI
   {
     (void)target; // the load path checks that the motion reached it
     complete(state);
-    state.plastic = e.plastic;
-    interface.commit_augmented(e.relative,
-                               e.traction,
-                               state.slip,
-                               state.plastic);
-    state.origin           = state.plastic;
+    interface.commit(e.relative,
+                     e.traction,
+                     std::vector<LocalVector>(e.plastic),
+                     state.interfaces);
     result.iterations      = iteration;
     result.residual        = e.scale.relative(e.residual_norm);
     result.contact         = e.counts;
@@ -530,19 +525,14 @@ namespace FourierSSI
   {
     Evaluation   e;
     unsigned int iterations = 0;
-    state.origin            = committed.origin;
+    state.interfaces.origin = committed.interfaces.origin;
     // Augmented Lagrangian (section 5d) with contact interfaces.
     const bool converged = interface.iterate_with_multipliers(
       [&]() { return iterate(target, state, e, iterations); },
-      [&](const unsigned int update) {
-        return interface.update_and_test_multipliers(e.traction,
-                                                     state.slip,
-                                                     sampling,
-                                                     state.origin,
-                                                     settings.tolerance *
-                                                       e.scale.largest(),
-                                                     update);
-      },
+      e.traction,
+      sampling,
+      [&]() { return settings.tolerance * e.scale.largest(); },
+      state.interfaces,
       result.multiplier_updates);
     return converged && accept(target, e, iterations, state, result);
   }

@@ -134,13 +134,7 @@ namespace FourierSSI
     committed.plastic.assign(soil.size() * sampling.n_samples(),
                              {{0., 0., 0., 0., 0., 0.}});
     if (interface)
-      {
-        committed.interface_plastic.assign(interface->size() *
-                                             interface_sampling.n_samples(),
-                                           {{0., 0., 0.}});
-        committed.interface_origin = committed.interface_plastic;
-        committed.interface_slip   = committed.interface_plastic;
-      }
+      committed.interfaces = interface->at_rest(interface_sampling);
   }
 
   void
@@ -239,7 +233,7 @@ namespace FourierSSI
         std::vector<LocalVector> interface_plastic;
         InterfaceSnapshot        snapshot;
         add_interface_load(relative_samples(fields, 0., 0.),
-                           committed.interface_origin,
+                           committed.interfaces.origin,
                            interface_plastic,
                            snapshot,
                            load);
@@ -272,7 +266,7 @@ namespace FourierSSI
     update_tangent(strain_samples(fields, 0., 0.),
                    interface ? relative_samples(fields, 0., 0.) :
                                std::vector<LocalVector>(),
-                   committed.interface_origin);
+                   committed.interfaces.origin);
     std::vector<Vector<double>> y;
     tangent->vmult(y, x);
     return y;
@@ -566,7 +560,7 @@ namespace FourierSSI
     for (unsigned int h = 0; h < set.size(); ++h)
       interface_load[h].reinit(e.residual[h].size());
     result.contact    = add_interface_load(e.relative,
-                                        state.interface_origin,
+                                        state.interfaces.origin,
                                         e.interface_plastic,
                                         result.interface_state,
                                         interface_load);
@@ -585,18 +579,12 @@ namespace FourierSSI
                             LoadStepResult    &result) const
   {
     soil.count_over_ranks(result);
-    state.plastic           = std::move(e.plastic);
-    state.interface_plastic = std::move(e.interface_plastic);
+    state.plastic = std::move(e.plastic);
     if (interface)
-      {
-        // Exact contact keeps its slip apart; its origin carries lambda = t
-        // into the next step (NonlinearInterfacePoints::commit_augmented).
-        interface->commit_augmented(e.relative,
-                                    result.interface_state.traction,
-                                    state.interface_slip,
-                                    state.interface_plastic);
-        state.interface_origin = state.interface_plastic;
-      }
+      interface->commit(e.relative,
+                        result.interface_state.traction,
+                        std::move(e.interface_plastic),
+                        state.interfaces);
     result.iterations = iteration;
     result.residual   = e.scale.relative(e.residual_norm);
   }
@@ -610,7 +598,7 @@ namespace FourierSSI
     // Newton) was measured slower (doc/soil-plasticity.md 3b).
     update_tangent(e.strain,
                    e.relative,
-                   state.interface_origin,
+                   state.interfaces.origin,
                    displacement_control);
     return correction_of(tangent_correction(e.residual, displacement_control));
   }
@@ -659,23 +647,17 @@ namespace FourierSSI
     const auto   converge   = [&]() {
       return iterate(target, holding, state, result, e, iterations);
     };
-    // With contact interfaces the multipliers move between converged
+    // With augmented interfaces the multipliers move between converged
     // iterations (augmented Lagrangian).
-    const auto move_multipliers = [&](const unsigned int update) {
-      return interface->update_and_test_multipliers(
-        result.interface_state.traction,
-        state.interface_slip,
-        interface_sampling,
-        state.interface_origin,
-        settings.tolerance * e.scale.largest(),
-        update);
-    };
     const bool converged =
-      interface ?
-        interface->iterate_with_multipliers(converge,
-                                            move_multipliers,
-                                            result.multiplier_updates) :
-        converge();
+      interface ? interface->iterate_with_multipliers(
+                    converge,
+                    result.interface_state.traction,
+                    interface_sampling,
+                    [&]() { return settings.tolerance * e.scale.largest(); },
+                    state.interfaces,
+                    result.multiplier_updates) :
+                  converge();
     if (converged)
       accept(e, iterations, state, result);
     return converged;

@@ -466,14 +466,25 @@ namespace FourierSSI
                                                   MultiplierUpdate::again;
   }
 
-  void
-  NonlinearInterfacePoints::commit_augmented(
-    const std::vector<LocalVector> &relative,
-    const std::vector<LocalVector> &traction,
-    std::vector<LocalVector>       &slip,
-    std::vector<LocalVector>       &origin) const
+  InterfaceState
+  NonlinearInterfacePoints::at_rest(const ThetaSampling &sampling) const
   {
-    const unsigned int N = relative.size() / std::max<size_t>(size(), 1);
+    InterfaceState state;
+    state.plastic.assign(size() * sampling.n_samples(), {{0., 0., 0.}});
+    state.origin = state.plastic;
+    state.slip   = state.plastic;
+    return state;
+  }
+
+  void
+  NonlinearInterfacePoints::commit(const std::vector<LocalVector> &relative,
+                                   const std::vector<LocalVector> &traction,
+                                   std::vector<LocalVector>      &&plastic,
+                                   InterfaceState                 &state) const
+  {
+    state.plastic                  = std::move(plastic);
+    std::vector<LocalVector> &slip = state.slip, &origin = state.plastic;
+    const unsigned int        N = relative.size() / std::max<size_t>(size(), 1);
     for (unsigned int i = 0; i < points.size(); ++i)
       {
         const unsigned int law = points[i].law;
@@ -498,6 +509,7 @@ namespace FourierSSI
                 slip[k][c] - flexibility[law][c] * (traction[k][c] - t0[c]);
           }
       }
+    state.origin = state.plastic;
   }
 
   double

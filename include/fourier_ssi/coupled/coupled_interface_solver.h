@@ -78,16 +78,8 @@ namespace FourierSSI
     std::vector<Vector<double>> interface_solution;
     /** The controlled motion of K^-1 c [m or rad]. */
     double controlled_motion = 0.;
-    /** Plastic relative displacement per point and sample. */
-    std::vector<LocalVector> plastic;
-    /**
-     * What the return mapping starts from at every sample: the committed
-     * plastic part, at contact samples shifted by the multipliers
-     * (NonlinearInterfacePoints::update_multipliers).
-     */
-    std::vector<LocalVector> origin;
-    /** Committed slip p_c of the contact samples (zero elsewhere). */
-    std::vector<LocalVector> slip;
+    /** d_p, the return's origin and p_c per point and sample. */
+    InterfaceState interfaces;
   };
 
   class CoupledInterfaceSolver : private LoadPathStates<InterfaceStepState>

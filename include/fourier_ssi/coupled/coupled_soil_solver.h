@@ -82,15 +82,11 @@ namespace FourierSSI
   {
     /** s_p = D eps_p per (point, theta). */
     std::vector<StrainVector> plastic;
-    /** Coulomb interfaces: d_p per (interface point, theta). */
-    std::vector<LocalVector> interface_plastic;
     /**
-     * Nonlinear interfaces: the origin of the return per (interface point,
-     * theta), d_p of the last converged step; at `contact` samples it also
-     * carries the multipliers (NonlinearInterfacePoints::update_multipliers)
-     * and the slip p_c is kept apart.
+     * Nonlinear interfaces: d_p, the return's origin and p_c per
+     * (interface point, theta); empty without.
      */
-    std::vector<LocalVector> interface_origin, interface_slip;
+    InterfaceState interfaces;
   };
 
   class CoupledSoilSolver : private LoadPathStates<SoilStepState>

@@ -66,6 +66,23 @@ namespace FourierSSI
   /** Counts of (point, theta) samples sticking, slipping, open. */
   using ContactCounts = std::array<unsigned int, 3>;
 
+  /**
+   * What a coupled state keeps of the interfaces at every (point, theta
+   * sample), index i * N + j (NonlinearInterfacePoints::at_rest, commit).
+   */
+  struct InterfaceState
+  {
+    /** d_p: the plastic relative displacement (slip and gap) [m]. */
+    std::vector<LocalVector> plastic;
+    /**
+     * What the return mapping starts from: the committed d_p, at augmented
+     * samples shifted by the multipliers (update_multipliers) [m].
+     */
+    std::vector<LocalVector> origin;
+    /** Committed slip p_c of the augmented samples (zero elsewhere) [m]. */
+    std::vector<LocalVector> slip;
+  };
+
   class NonlinearInterfacePoints
   {
   public:
@@ -269,17 +286,22 @@ namespace FourierSSI
     /**
      * A load step of either coupled solver with the augmented Lagrangian
      * (doc/nonlinear-interfaces.md section 5d): iterate() converges the step
-     * at the current multipliers (false: cut the step); with an augmented
-     * interface (any_augmented()) update(u) then moves them
-     * (update_and_test_multipliers() after the u-th converged iteration), until
-     * their change no longer acts on the displacements. `updates` counts them.
-     * False: the step must be cut.
+     * at the current multipliers (false: cut the step), leaving the
+     * interface tractions of its converged iterate in `traction`; with an
+     * augmented interface (any_augmented()) the multipliers in
+     * state.origin then move (update_and_test_multipliers() after the u-th
+     * converged iteration, the force allowed by allowed_force() of that
+     * iteration), until their change no longer acts on the displacements.
+     * `updates` counts them. False: the step must be cut.
      */
-    template <class Iterate, class Update>
+    template <class Iterate, class AllowedForce>
     bool
-    iterate_with_multipliers(const Iterate &iterate,
-                             const Update  &update,
-                             unsigned int  &updates) const
+    iterate_with_multipliers(const Iterate                  &iterate,
+                             const std::vector<LocalVector> &traction,
+                             const ThetaSampling            &sampling,
+                             const AllowedForce             &allowed_force,
+                             InterfaceState                 &state,
+                             unsigned int                   &updates) const
     {
       for (unsigned int u = 0;; ++u)
         {
@@ -288,23 +310,29 @@ namespace FourierSSI
           if (!any_augmented())
             return true;
           updates                     = u + 1;
-          const MultiplierUpdate next = update(u);
+          const MultiplierUpdate next = update_and_test_multipliers(
+            traction, state.slip, sampling, state.origin, allowed_force(), u);
           if (next != MultiplierUpdate::again)
             return next == MultiplierUpdate::converged;
         }
     }
 
+    /** The state before the first step: every d_p, origin and p_c zero. */
+    InterfaceState
+    at_rest(const ThetaSampling &sampling) const;
+
     /**
-     * A converged step at the augmented samples: p_c <- (d_s, 0, d_theta)
-     * for contact (no elastic slip), d - (t - t0) / k for a stiff coulomb
-     * law (its own elastic part), and the origin of the next step from
-     * lambda = t.
+     * A converged step becomes `state`: its d_p (`plastic`, moved in); at
+     * the augmented samples p_c <- (d_s, 0, d_theta) for contact (no
+     * elastic slip), d - (t - t0) / k for a stiff coulomb law (its own
+     * elastic part), and d_p from lambda = t; the next step's return starts
+     * from there.
      */
     void
-    commit_augmented(const std::vector<LocalVector> &relative,
-                     const std::vector<LocalVector> &traction,
-                     std::vector<LocalVector>       &slip,
-                     std::vector<LocalVector>       &origin) const;
+    commit(const std::vector<LocalVector> &relative,
+           const std::vector<LocalVector> &traction,
+           std::vector<LocalVector>      &&plastic,
+           InterfaceState                 &state) const;
 
     /**
      * The largest f(t) = tau + t_n tan(phi) - c over the samples given
