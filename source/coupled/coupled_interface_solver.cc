@@ -143,9 +143,8 @@ namespace FourierSSI
       interface.relative_displacements(pattern_solution, sampling);
     if (settings.control == LoadPathParameters::Control::displacement)
       {
-        const unsigned int h = controlled_harmonic();
-        pattern_motion       = from_owner(
-          h, set.owns(h) ? controlled_motion_of(h, pattern_solution[h]) : 0.);
+        pattern_motion = controlled_motions(
+          {&pattern_solution[controlled_harmonic_index()]})[0];
         AssertThrow(pattern_motion != 0.,
                     ExcMessage(entry +
                                "/Controlled motion: the Rigid foundation "
@@ -165,9 +164,8 @@ namespace FourierSSI
     held_relative = interface.relative_displacements(held, sampling);
     if (settings.control == LoadPathParameters::Control::displacement)
       {
-        const unsigned int h = controlled_harmonic();
         held_motion =
-          from_owner(h, set.owns(h) ? controlled_motion_of(h, held[h]) : 0.);
+          controlled_motions({&held[controlled_harmonic_index()]})[0];
       }
   }
 
@@ -178,22 +176,6 @@ namespace FourierSSI
            !holding_stage;
   }
 
-  void
-  CoupledInterfaceSolver::from_owner(const unsigned int   h,
-                                     std::vector<double> &values) const
-  {
-    set.broadcast_from_owner(h, values.data(), values.size());
-  }
-
-  double
-  CoupledInterfaceSolver::from_owner(const unsigned int h,
-                                     const double       value) const
-  {
-    std::vector<double> values = {value};
-    from_owner(h, values);
-    return values[0];
-  }
-
   std::vector<Vector<double>>
   CoupledInterfaceSolver::interface_force(
     const std::vector<Vector<double>> &fields) const
@@ -202,42 +184,13 @@ namespace FourierSSI
                              sampling);
   }
 
-  unsigned int
-  CoupledInterfaceSolver::controlled_harmonic() const
-  {
-    const Harmonic wanted = FourierSSI::controlled_harmonic(settings.motion);
-    for (unsigned int h = 0; h < set.size(); ++h)
-      if (harmonics[h].n == wanted.n && harmonics[h].family == wanted.family)
-        {
-          AssertThrow(set.problem(h).get_foundation() != nullptr,
-                      ExcMessage(entry +
-                                 "/Control: displacement control needs a "
-                                 "Rigid foundation"));
-          return h;
-        }
-    AssertThrow(false,
-                ExcMessage(entry +
-                           "/Controlled motion: its harmonic is not solved "
-                           "(n = 0 for vertical and twist, n = 1 symmetric "
-                           "for horizontal and rotation)"));
-    return 0;
-  }
-
-  double
-  CoupledInterfaceSolver::controlled_motion_of(const unsigned int    h,
-                                               const Vector<double> &v) const
-  {
-    return controlled_component(set.problem(h).get_foundation()->motion(v),
-                                settings.motion);
-  }
-
   void
   CoupledInterfaceSolver::condense(const unsigned int first)
   {
     const bool displacement_control =
       settings.control == LoadPathParameters::Control::displacement;
-    const unsigned int controlled =
-      displacement_control ? controlled_harmonic() : set.size();
+    const unsigned int carrier =
+      displacement_control ? controlled_harmonic_index() : set.size();
     condensed.resize(set.size());
     // 1. Per harmonic, the DoFs c reaches (write) and the DoFs the relative
     //    displacements read, from the nonlinear pairs.
@@ -295,15 +248,15 @@ namespace FourierSSI
               Condensation &c = condensed[h];
               for (unsigned int i = 0; i < c.read.size(); ++i)
                 c.flexibility(i, start + k) = x[h][k](c.read[i]);
-              if (h == controlled)
-                c.controlled_motion[start + k] =
-                  controlled_motion_of(h, x[h][k]);
+              if (h == carrier)
+                c.controlled_motion[start + k] = controlled_motion_of(x[h][k]);
             }
       }
-    // 3. The controlled motion of every column on every rank: the iteration
-    //    updates the motion (and so lambda) redundantly.
-    if (controlled >= first && controlled < set.size())
-      from_owner(controlled, condensed[controlled].controlled_motion);
+    // 3. The controlled motion of every column on every rank (the owner's,
+    //    zeros elsewhere: an exact sum): the iteration updates the motion
+    //    (and so lambda) redundantly.
+    if (carrier >= first && carrier < set.size())
+      set.sum_over_ranks(condensed[carrier].controlled_motion);
   }
 
   std::vector<Vector<double>>
@@ -360,12 +313,8 @@ namespace FourierSSI
     state.interface_solution = state.correction_solution;
     if (settings.control == LoadPathParameters::Control::displacement)
       {
-        const unsigned int h = controlled_harmonic();
-        state.controlled_motion =
-          from_owner(h,
-                     set.owns(h) ?
-                       controlled_motion_of(h, state.correction_solution[h]) :
-                       0.);
+        state.controlled_motion = controlled_motions(
+          {&state.correction_solution[controlled_harmonic_index()]})[0];
       }
   }
 
@@ -374,23 +323,12 @@ namespace FourierSSI
                                       const double     ratio,
                                       StepState       &state) const
   {
-    const auto move_on = [ratio](Vector<double>       &v,
-                                 const Vector<double> &last,
-                                 const Vector<double> &before) {
-      v.add(ratio, last);
-      v.add(-ratio, before);
-    };
+    LoadPathStates::extrapolate(before_last, ratio, state);
     for (unsigned int h = 0; h < set.size(); ++h)
       {
-        move_on(state.correction_load[h],
-                committed.correction_load[h],
-                before_last.correction_load[h]);
-        move_on(state.correction_solution[h],
-                committed.correction_solution[h],
-                before_last.correction_solution[h]);
-        move_on(state.interface_solution[h],
-                committed.interface_solution[h],
-                before_last.interface_solution[h]);
+        state.interface_solution[h].add(ratio, committed.interface_solution[h]);
+        state.interface_solution[h].add(-ratio,
+                                        before_last.interface_solution[h]);
       }
     state.controlled_motion +=
       ratio * (committed.controlled_motion - before_last.controlled_motion);
@@ -662,13 +600,8 @@ namespace FourierSSI
                                        std::ostream   &log)
   {
     commit(step);
+    record_interfaces(interface, sampling);
     const InterfaceSnapshot &state = trial_result.interface_state;
-    trial_result.largest_interface_yield_value =
-      interface.largest_yield_value(state.traction);
-    trial_result.resultant =
-      interface.foundation_resultant(state.traction,
-                                     sampling,
-                                     parameters.rigid_foundation);
     // The interfaces are the only nonlinear source: their part of G is that
     // of the tractions they carry.
     if (!parameters.rigid_foundation.reported_motions().empty())

@@ -273,47 +273,25 @@ namespace FourierSSI
   }
 
   double
-  CoupledSoilSolver::controlled_motion(const unsigned int    h,
-                                       const Vector<double> &v) const
-  {
-    const RigidFoundation *foundation = set.problem(h).get_foundation();
-    AssertThrow(foundation != nullptr,
-                ExcMessage("Load path/Control: displacement "
-                           "control needs a Rigid foundation"));
-    return controlled_component(foundation->motion(v), settings.motion);
-  }
-
-  double
   CoupledSoilSolver::controlled_load_factor(const StepState &state,
                                             const double     target) const
   {
-    const Harmonic wanted = controlled_harmonic(settings.motion);
-    for (unsigned int h = 0; h < set.size(); ++h)
-      if (harmonics[h].n == wanted.n && harmonics[h].family == wanted.family)
-        {
-          // The motions by the pattern and now, from the owner of h (the
-          // others add zeros: exact).
-          std::vector<double> motion = {0., 0.};
-          if (set.owns(h))
-            {
-              motion[0] = controlled_motion(h, loads.solution[h]);
-              motion[1] = controlled_motion(h, state.correction_solution[h]);
-              if (!loads.held_solution.empty())
-                motion[1] += state.held_fraction *
-                             controlled_motion(h, loads.held_solution[h]);
-            }
-          set.sum_over_ranks(motion);
-          const double by_pattern = motion[0], now = motion[1];
-          AssertThrow(by_pattern != 0.,
-                      ExcMessage("Load path/Controlled motion: "
-                                 "the Rigid foundation loads do not drive "
-                                 "this motion (give the load that does)"));
-          return (target - now) / by_pattern;
-        }
-    AssertThrow(false,
-                ExcMessage("Load path/Controlled motion: its "
-                           "harmonic is not solved"));
-    return 0.;
+    // The motions by the pattern, of K^-1 c and of the held loads.
+    const unsigned int                  h      = controlled_harmonic_index();
+    std::vector<const Vector<double> *> fields = {
+      &loads.solution[h], &state.correction_solution[h]};
+    if (!loads.held_solution.empty())
+      fields.push_back(&loads.held_solution[h]);
+    const std::vector<double> motion     = controlled_motions(fields);
+    const double              by_pattern = motion[0],
+                 now =
+                   motion[1] +
+                   (fields.size() > 2 ? state.held_fraction * motion[2] : 0.);
+    AssertThrow(by_pattern != 0.,
+                ExcMessage("Load path/Controlled motion: "
+                           "the Rigid foundation loads do not drive "
+                           "this motion (give the load that does)"));
+    return (target - now) / by_pattern;
   }
 
   std::array<double, 2>
@@ -490,16 +468,11 @@ namespace FourierSSI
       }
     else if (displacement_control)
       {
-        const Harmonic wanted = controlled_harmonic(settings.motion);
-        for (unsigned int h = 0; h < set.size(); ++h)
-          if (harmonics[h].n == wanted.n &&
-              harmonics[h].family == wanted.family)
-            {
-              const double by_pattern =
-                controlled_motion(h, tangent_pattern[h]);
-              if (by_pattern != 0.)
-                load_change = -controlled_motion(h, du[h]) / by_pattern;
-            }
+        // K_t^-1 F and du are whole on every rank (the tangent's solve).
+        const unsigned int h    = controlled_harmonic_index();
+        const double by_pattern = controlled_motion_of(tangent_pattern[h]);
+        if (by_pattern != 0.)
+          load_change = -controlled_motion_of(du[h]) / by_pattern;
       }
     std::vector<Vector<double>> change(set.size());
     set.for_each([&](const unsigned int h) {
@@ -567,8 +540,6 @@ namespace FourierSSI
     const double norm = norm_over_harmonics(interface_load);
     for (unsigned int h = 0; h < set.size(); ++h)
       e.residual[h] += interface_load[h];
-    result.largest_interface_yield_value =
-      interface->largest_yield_value(result.interface_state.traction);
     return norm;
   }
 
@@ -828,22 +799,6 @@ namespace FourierSSI
           << " s in them on rank 0 (computing or waiting for the others)\n";
   }
 
-  void
-  CoupledSoilSolver::extrapolate(const StepState &before_last,
-                                 const double     ratio,
-                                 StepState       &state) const
-  {
-    for (unsigned int h = 0; h < set.size(); ++h)
-      {
-        state.correction_load[h].add(ratio, committed.correction_load[h]);
-        state.correction_load[h].add(-ratio, before_last.correction_load[h]);
-        state.correction_solution[h].add(ratio,
-                                         committed.correction_solution[h]);
-        state.correction_solution[h].add(-ratio,
-                                         before_last.correction_solution[h]);
-      }
-  }
-
   bool
   CoupledSoilSolver::solve_trial(const double target, const bool holding)
   {
@@ -875,10 +830,7 @@ namespace FourierSSI
     trial_result.held_reactions =
       held_reactions(committed, trial_result.interface_state);
     if (interface)
-      trial_result.resultant =
-        interface->foundation_resultant(trial_result.interface_state.traction,
-                                        interface_sampling,
-                                        parameters.rigid_foundation);
+      record_interfaces(*interface, interface_sampling);
     record_trial(holding, log, step_observer);
   }
 

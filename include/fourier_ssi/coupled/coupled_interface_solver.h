@@ -198,24 +198,9 @@ namespace FourierSSI
     bool
     controls_motion() const;
 
-    /** The owner's copy of values of harmonic h on every rank. */
-    void
-    from_owner(const unsigned int h, std::vector<double> &values) const;
-
-    double
-    from_owner(const unsigned int h, const double value) const;
-
     /** Condensation of the harmonics first, first + 1, ... */
     void
     condense(const unsigned int first);
-
-    /** The controlled motion of a (full) field of harmonic h. */
-    double
-    controlled_motion_of(const unsigned int h, const Vector<double> &v) const;
-
-    /** Index of the harmonic that carries the controlled motion. */
-    unsigned int
-    controlled_harmonic() const;
 
     /** The entries of (condensed) loads at the write DoFs, per harmonic. */
     std::vector<Vector<double>>
@@ -234,9 +219,9 @@ namespace FourierSSI
     complete(StepState &state) const;
 
     /**
-     * Secant predictor: state's correction moved on by ratio times the
-     * change over the last converged step (before_last to committed); every
-     * part of the state but the plastic slip is linear in c
+     * Secant predictor (LoadPathStates::extrapolate), the condensed view
+     * K^-1 c at the interface and its controlled motion moved on with c:
+     * every part of the state but the plastic slip is linear in c
      * (doc/nonlinear-interfaces.md section 5).
      */
     void

@@ -226,18 +226,6 @@ namespace FourierSSI
                  const bool      holding,
                  std::ostream   &log) override;
 
-    /**
-     * Secant predictor: state's correction (load and displacement) moved on
-     * by ratio times the change over the last converged step (from
-     * before_last to committed). At a plateau the plastic mechanism goes on
-     * as in the last step, so Newton starts next to the answer; the elastic
-     * predictor (the correction kept) would spread the increment as
-     * elastic strain and overshoot the capacity (doc/soil-plasticity.md 3b).
-     */
-    void
-    extrapolate(const StepState &before_last,
-                const double     ratio,
-                StepState       &state) const override;
 
     /**
      * Total strain samples [point * N + j] at lambda, rho and a swipe's mu,
@@ -476,10 +464,6 @@ namespace FourierSSI
     std::vector<Vector<double>>
     tangent_correction(const std::vector<Vector<double>> &residual,
                        const bool displacement_control) const;
-
-    /** The controlled motion component of harmonic h's field v. */
-    double
-    controlled_motion(const unsigned int h, const Vector<double> &v) const;
 
     const HarmonicSet    &set;
     const AllParameters  &parameters;

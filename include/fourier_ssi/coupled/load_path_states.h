@@ -93,7 +93,63 @@ namespace FourierSSI
     LoadPathStates(const HarmonicSet &set, const AllParameters &parameters)
       : harmonic_set(set)
       , foundation_parameters(parameters.rigid_foundation)
+      , controlled(parameters.load_path.motion)
     {}
+
+    /**
+     * Index of the harmonic that carries Load path/Controlled motion
+     * (controlled_harmonic); one line if the scene does not solve it or
+     * has no Rigid foundation in it.
+     */
+    unsigned int
+    controlled_harmonic_index() const
+    {
+      const Harmonic wanted = controlled_harmonic(controlled);
+      for (unsigned int h = 0; h < harmonic_set.size(); ++h)
+        if (harmonic_set.harmonic(h).n == wanted.n &&
+            harmonic_set.harmonic(h).family == wanted.family)
+          {
+            AssertThrow(harmonic_set.problem(h).get_foundation() != nullptr,
+                        ExcMessage("Load path/Control: displacement control "
+                                   "needs a Rigid foundation"));
+            return h;
+          }
+      AssertThrow(false,
+                  ExcMessage("Load path/Controlled motion: its harmonic is "
+                             "not solved (n = 0 for vertical and twist, n = 1 "
+                             "symmetric for horizontal and rotation)"));
+      return 0;
+    }
+
+    /**
+     * The controlled motion [m or rad] of a field v of the controlled
+     * harmonic (on its owner).
+     */
+    double
+    controlled_motion_of(const Vector<double> &v) const
+    {
+      return controlled_component(harmonic_set
+                                    .problem(controlled_harmonic_index())
+                                    .get_foundation()
+                                    ->motion(v),
+                                  controlled);
+    }
+
+    /**
+     * The controlled motions of fields of the controlled harmonic (read on
+     * its owner only) on every rank: the owner's values summed with the
+     * others' zeros, exact (a collective).
+     */
+    std::vector<double>
+    controlled_motions(const std::vector<const Vector<double> *> &fields) const
+    {
+      std::vector<double> motions(fields.size(), 0.);
+      if (harmonic_set.owns(controlled_harmonic_index()))
+        for (unsigned int i = 0; i < fields.size(); ++i)
+          motions[i] = controlled_motion_of(*fields[i]);
+      harmonic_set.sum_over_ranks(motions);
+      return motions;
+    }
 
     /**
      * One line if a harmonic has prescribed (non-zero) Dirichlet values:
@@ -192,13 +248,35 @@ namespace FourierSSI
     }
 
     /**
-     * Secant predictor: state's correction moved on by ratio times the
-     * change over the last converged step (before_last to committed).
+     * Secant predictor: state's correction c and K^-1 c moved on by ratio
+     * times their change over the last converged step (before_last to
+     * committed); a solver that keeps more of a state linear in c moves
+     * that on too. At a plateau the plastic mechanism goes on as in the
+     * last step, so Newton starts next to the answer, where the elastic
+     * predictor (c kept) would spread the increment as elastic strain and
+     * overshoot the capacity (doc/soil-plasticity.md 3b).
      */
     virtual void
     extrapolate(const State &before_last,
                 const double ratio,
-                State       &state) const = 0;
+                State       &state) const
+    {
+      const auto move_on = [ratio](Vector<double>       &v,
+                                   const Vector<double> &last,
+                                   const Vector<double> &before) {
+        v.add(ratio, last);
+        v.add(-ratio, before);
+      };
+      for (unsigned int h = 0; h < harmonic_set.size(); ++h)
+        {
+          move_on(state.correction_load[h],
+                  committed.correction_load[h],
+                  before_last.correction_load[h]);
+          move_on(state.correction_solution[h],
+                  committed.correction_solution[h],
+                  before_last.correction_solution[h]);
+        }
+    }
 
     /**
      * u_h = lambda u_F + K^-1 c + rho u_held (+ mu K^-1 e_V in a swipe) of
@@ -239,6 +317,25 @@ namespace FourierSSI
       trial_result.motion        = step.motion;
       trial_result.time          = step.time;
       trial_result.n_harmonics   = harmonic_set.size();
+    }
+
+    /**
+     * The interfaces' part of the trial's record, once per converged step:
+     * their largest f and their resultant on the foundation, from the
+     * tractions of trial_result.interface_state (at `sampling`'s angles).
+     */
+    void
+    record_interfaces(const NonlinearInterfacePoints &interfaces,
+                      const ThetaSampling            &sampling)
+    {
+      const std::vector<LocalVector> &traction =
+        trial_result.interface_state.traction;
+      trial_result.largest_interface_yield_value =
+        interfaces.largest_yield_value(traction);
+      trial_result.resultant =
+        interfaces.foundation_resultant(traction,
+                                        sampling,
+                                        foundation_parameters);
     }
 
     /**
@@ -299,6 +396,8 @@ namespace FourierSSI
 
     const HarmonicSet               &harmonic_set;
     const RigidFoundationParameters &foundation_parameters;
+    /** Load path/Controlled motion (under displacement control). */
+    const LoadPathParameters::Motion controlled;
     /** F, F_held and their elastic solutions. */
     LoadPattern loads;
     /** The last converged state, the one before it, the step solved. */
