@@ -92,8 +92,7 @@ namespace FourierSSI
                   for (unsigned int b = 0; b < 3; ++b)
                     plastic_change[k][a] +=
                       follow[k][a * 3 + b] *
-                      (change[k][b] +
-                       load_factor_change * pattern_relative[k][b]);
+                      (change[k][b] + load_factor_change * cases.pattern[k][b]);
                 }
             const std::vector<Vector<double>> load_change =
               on_write_dofs(interface.load_of(plastic_change, sampling));

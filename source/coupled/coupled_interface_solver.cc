@@ -127,8 +127,7 @@ namespace FourierSSI
   {
     check_homogeneous_constraints(entry, "nonlinear interfaces");
     sources.interfaces = &interface;
-    solve_load_pattern();
-    solve_held_loads();
+    solve_loads();
     start_at_rest();
     committed.interface_solution = committed.correction_solution;
     condense(0);
@@ -136,37 +135,21 @@ namespace FourierSSI
   }
 
   void
-  CoupledInterfaceSolver::solve_load_pattern()
+  CoupledInterfaceSolver::solve_loads()
   {
-    loads = LoadPattern(set);
-    pattern_relative =
-      interface.relative_displacements(pattern_solution, sampling);
-    if (settings.control == LoadPathParameters::Control::displacement)
-      {
-        pattern_motion = controlled_motions(
-          {&pattern_solution[controlled_harmonic_index()]})[0];
-        AssertThrow(pattern_motion != 0.,
-                    ExcMessage(entry +
-                               "/Controlled motion: the Rigid foundation "
-                               "loads do not drive this motion (give the "
-                               "load that does, e.g. V for vertical)"));
-      }
-  }
-
-  void
-  CoupledInterfaceSolver::solve_held_loads()
-  {
-    held_relative.clear();
+    loads       = LoadPattern(set);
+    cases       = interface.load_cases(loads, sampling);
     held_motion = 0.;
-    if (!loads.holds_loads())
+    if (settings.control != LoadPathParameters::Control::displacement)
       return;
-    const std::vector<Vector<double>> &held = loads.held_solution;
-    held_relative = interface.relative_displacements(held, sampling);
-    if (settings.control == LoadPathParameters::Control::displacement)
-      {
-        held_motion =
-          controlled_motions({&held[controlled_harmonic_index()]})[0];
-      }
+    const unsigned int h = controlled_harmonic_index();
+    pattern_motion       = controlled_motions({&pattern_solution[h]})[0];
+    AssertThrow(pattern_motion != 0.,
+                ExcMessage(entry + "/Controlled motion: the Rigid foundation "
+                                   "loads do not drive this motion (give the "
+                                   "load that does, e.g. V for vertical)"));
+    if (loads.holds_loads())
+      held_motion = controlled_motions({&loads.held_solution[h]})[0];
   }
 
   bool
@@ -350,13 +333,12 @@ namespace FourierSSI
                             target;
     Evaluation e;
     // 1-2: relative displacements at every (point, theta), the law.
-    e.relative =
-      interface.relative_displacements(state.interface_solution, sampling);
-    NonlinearInterfacePoints::add_scaled_samples(
-      e.relative,
-      {{state.load_factor, &pattern_relative},
-       {state.held_fraction, &held_relative}});
-    e.counts = interface.return_map(
+    e.relative = interface.iterate_relative(state.interface_solution,
+                                            sampling,
+                                            cases,
+                                            state.load_factor,
+                                            state.held_fraction);
+    e.counts   = interface.return_map(
       e.relative, state.interfaces.origin, e.plastic, e.traction, e.contact);
     // 3-4: out-of-balance load G = int B^T (D_K d - (t - t0)) (D_K the
     //      springs in K) and force residual R = G - c, measured against
@@ -532,8 +514,7 @@ namespace FourierSSI
     set.add(added);
     harmonics = set.get_harmonics();
     sampling  = ThetaSampling(harmonics, sampling.n_samples());
-    solve_load_pattern();
-    solve_held_loads();
+    solve_loads();
     const unsigned int first = committed.correction_solution.size();
     for (unsigned int h = first; h < set.size(); ++h)
       {

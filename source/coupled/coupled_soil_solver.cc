@@ -128,8 +128,7 @@ namespace FourierSSI
       interface =
         std::make_unique<NonlinearInterfacePoints>(set, parameters, true);
     sources = {soil.size() > 0, interface.get()};
-    solve_load_pattern();
-    solve_held_loads();
+    solve_loads();
     start_at_rest();
     committed.plastic.assign(soil.size() * sampling.n_samples(),
                              {{0., 0., 0., 0., 0., 0.}});
@@ -138,33 +137,18 @@ namespace FourierSSI
   }
 
   void
-  CoupledSoilSolver::solve_load_pattern()
+  CoupledSoilSolver::solve_loads()
   {
-    loads          = LoadPattern(set);
+    loads = LoadPattern(set);
+    if (loads.holds_loads() && parameters.rigid_foundation.swipes())
+      loads.add_swipe_pattern(set);
     pattern_strain = soil.strain_amplitudes(loads.solution);
+    if (loads.holds_loads())
+      held_strain = soil.strain_amplitudes(loads.held_solution);
+    if (!loads.swipe_solution.empty())
+      swipe_strain = soil.strain_amplitudes(loads.swipe_solution);
     if (interface)
-      pattern_relative =
-        interface->relative_displacements(loads.solution, interface_sampling);
-  }
-
-  void
-  CoupledSoilSolver::solve_held_loads()
-  {
-    if (!loads.holds_loads())
-      return;
-    held_strain = soil.strain_amplitudes(loads.held_solution);
-    if (interface)
-      held_relative = interface->relative_displacements(loads.held_solution,
-                                                        interface_sampling);
-    if (parameters.rigid_foundation.swipes())
-      {
-        loads.add_swipe_pattern(set);
-        swipe_strain = soil.strain_amplitudes(loads.swipe_solution);
-        if (interface)
-          swipe_relative =
-            interface->relative_displacements(loads.swipe_solution,
-                                              interface_sampling);
-      }
+      interface_cases = interface->load_cases(loads, interface_sampling);
   }
 
   double
@@ -185,23 +169,6 @@ namespace FourierSSI
                                 {load_factor, &pattern_strain},
                                 {held_fraction, &held_strain},
                                 {swipe_force, &swipe_strain}});
-  }
-
-  std::vector<LocalVector>
-  CoupledSoilSolver::relative_samples(
-    const std::vector<Vector<double>> &correction,
-    const double                       load_factor,
-    const double                       held_fraction,
-    const double                       swipe_force) const
-  {
-    std::vector<LocalVector> relative =
-      interface->relative_displacements(correction, interface_sampling);
-    NonlinearInterfacePoints::add_scaled_samples(
-      relative,
-      {{load_factor, &pattern_relative},
-       {held_fraction, &held_relative},
-       {swipe_force, &swipe_relative}});
-    return relative;
   }
 
   std::vector<Vector<double>>
@@ -232,7 +199,11 @@ namespace FourierSSI
       {
         std::vector<LocalVector> interface_plastic;
         InterfaceSnapshot        snapshot;
-        add_interface_load(relative_samples(fields, 0., 0.),
+        add_interface_load(interface->iterate_relative(fields,
+                                                       interface_sampling,
+                                                       interface_cases,
+                                                       0.,
+                                                       0.),
                            committed.interfaces.origin,
                            interface_plastic,
                            snapshot,
@@ -264,8 +235,10 @@ namespace FourierSSI
                                      const std::vector<Vector<double>> &x)
   {
     update_tangent(strain_samples(fields, 0., 0.),
-                   interface ? relative_samples(fields, 0., 0.) :
-                               std::vector<LocalVector>(),
+                   interface ?
+                     interface->iterate_relative(
+                       fields, interface_sampling, interface_cases, 0., 0.) :
+                     std::vector<LocalVector>(),
                    committed.interfaces.origin);
     std::vector<Vector<double>> y;
     tangent->vmult(y, x);
@@ -525,10 +498,12 @@ namespace FourierSSI
                                             Evaluation      &e,
                                             LoadStepResult  &result) const
   {
-    e.relative = relative_samples(state.correction_solution,
-                                  state.load_factor,
-                                  state.held_fraction,
-                                  state.swipe_force);
+    e.relative = interface->iterate_relative(state.correction_solution,
+                                             interface_sampling,
+                                             interface_cases,
+                                             state.load_factor,
+                                             state.held_fraction,
+                                             state.swipe_force);
     std::vector<Vector<double>> interface_load(set.size());
     for (unsigned int h = 0; h < set.size(); ++h)
       interface_load[h].reinit(e.residual[h].size());

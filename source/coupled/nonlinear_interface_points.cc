@@ -251,22 +251,45 @@ namespace FourierSSI
         }
   }
 
-  void
-  NonlinearInterfacePoints::add_scaled_samples(
-    std::vector<LocalVector> &relative,
-    const std::vector<std::pair<double, const std::vector<LocalVector> *>>
-      &terms)
+  InterfaceLoadCases
+  NonlinearInterfacePoints::load_cases(const LoadPattern   &loads,
+                                       const ThetaSampling &sampling) const
   {
+    InterfaceLoadCases cases;
+    cases.pattern = relative_displacements(loads.solution, sampling);
+    if (!loads.held_solution.empty())
+      cases.held = relative_displacements(loads.held_solution, sampling);
+    if (!loads.swipe_solution.empty())
+      cases.swipe = relative_displacements(loads.swipe_solution, sampling);
+    return cases;
+  }
+
+  std::vector<LocalVector>
+  NonlinearInterfacePoints::iterate_relative(
+    const std::vector<Vector<double>> &correction,
+    const ThetaSampling               &sampling,
+    const InterfaceLoadCases          &cases,
+    const double                       load_factor,
+    const double                       held_fraction,
+    const double                       swipe_force) const
+  {
+    std::vector<LocalVector> relative =
+      relative_displacements(correction, sampling);
+    const std::array<std::pair<double, const std::vector<LocalVector> *>, 3>
+      terms = {{{load_factor, &cases.pattern},
+                {held_fraction, &cases.held},
+                {swipe_force, &cases.swipe}}};
     // The loads' part is summed first, then added to the correction's.
     for (unsigned int k = 0; k < relative.size(); ++k)
       for (unsigned int c = 0; c < 3; ++c)
         {
           double loads = 0.;
           for (const auto &[factor, samples] : terms)
-            if (samples != nullptr && !samples->empty())
+            if (!samples->empty())
               loads += factor * (*samples)[k][c];
           relative[k][c] += loads;
         }
+    return relative;
   }
 
   ContactCounts

@@ -174,15 +174,13 @@ namespace FourierSSI
 
     using StepState = InterfaceStepState;
 
-    void
-    solve_load_pattern();
-
     /**
-     * K^-1 F_held, its relative displacements and controlled motion
-     * (held_stage_load); left empty if the scene holds no load.
+     * F and F_held (held_stage_load), their elastic solutions (LoadPattern)
+     * and what the iteration reads of them: their relative displacements
+     * at the samples and their controlled motions (0 without held loads).
      */
     void
-    solve_held_loads();
+    solve_loads();
 
     /** LoadPath::Iteration: the trial step and its commit (load_path.h). */
     bool
@@ -318,17 +316,12 @@ namespace FourierSSI
     std::vector<Condensation>          condensed;
     /** K^-1 F, loads.solution (its name in coupled_interface_newton.cc). */
     const std::vector<Vector<double>> &pattern_solution;
-    /** Controlled motion of the pattern solution u_F (load factor 1). */
-    double pattern_motion = 0.;
-    /**
-     * Held loads: the relative displacements and controlled motion of
-     * K^-1 F_held (empty, 0: none).
-     */
-    std::vector<LocalVector> held_relative;
-    double                   held_motion = 0.;
+    /** The relative displacements of u_F and u_held at the samples. */
+    InterfaceLoadCases cases;
+    /** Controlled motions of u_F and u_held (0: no held loads). */
+    double pattern_motion = 0., held_motion = 0.;
     /** True while the load path brings the held loads on. */
-    bool                     holding_stage = false;
-    std::vector<LocalVector> pattern_relative;
+    bool holding_stage = false;
   };
 } // namespace FourierSSI
 

@@ -197,14 +197,14 @@ namespace FourierSSI
   private:
     using StepState = SoilStepState;
 
-    void
-    solve_load_pattern();
     /**
-     * K^-1 F_held and its strains (Rigid foundation/Held ...); in a swipe
-     * also K^-1 e_V and its strains.
+     * F, F_held (Rigid foundation/Held ...) and in a swipe e_V, their
+     * elastic solutions (LoadPattern) and what the sources read of them:
+     * their strains at the soil points and relative displacements at the
+     * interfaces' samples.
      */
     void
-    solve_held_loads();
+    solve_loads();
 
     /** |lambda F + rho F_held| (2-norm over the harmonics). */
     double
@@ -237,17 +237,6 @@ namespace FourierSSI
                    const double                       load_factor,
                    const double                       held_fraction,
                    const double                       swipe_force = 0.) const;
-
-    /**
-     * Nonlinear interfaces: the relative displacement at every (interface
-     * point, theta) at lambda, rho and a swipe's mu (correction + lambda u_F
-     * + rho u_held + mu K^-1 e_V).
-     */
-    std::vector<LocalVector>
-    relative_samples(const std::vector<Vector<double>> &correction,
-                     const double                       load_factor,
-                     const double                       held_fraction,
-                     const double                       swipe_force = 0.) const;
 
     /**
      * Nonlinear interfaces at the relative displacements given: the return
@@ -495,13 +484,11 @@ namespace FourierSSI
     std::unique_ptr<CoupledTangent> tangent;
     std::vector<Vector<double>>     tangent_pattern;
     /**
-     * Coulomb interfaces (null: none): their points, the relative
-     * displacements of the load pattern and of the held loads.
+     * Coulomb interfaces (null: none): their points, and the relative
+     * displacements of the loads' elastic solutions.
      */
-    std::unique_ptr<NonlinearInterfacePoints> interface;
-    std::vector<LocalVector>                  pattern_relative, held_relative;
-    /** A swipe: the relative displacements of K^-1 e_V. */
-    std::vector<LocalVector>                    swipe_relative;
+    std::unique_ptr<NonlinearInterfacePoints>   interface;
+    InterfaceLoadCases                          interface_cases;
     std::function<void(const LoadStepResult &)> step_observer;
   };
 } // namespace FourierSSI

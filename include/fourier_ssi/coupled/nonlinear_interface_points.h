@@ -20,6 +20,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/coupled/coupled_tangent.h>
+#include <fourier_ssi/coupled/load_pattern.h>
 #include <fourier_ssi/fourier/theta_sampling.h>
 #include <fourier_ssi/harmonic/harmonic_set.h>
 #include <fourier_ssi/input/parameters.h>
@@ -81,6 +82,17 @@ namespace FourierSSI
     std::vector<LocalVector> origin;
     /** Committed slip p_c of the augmented samples (zero elsewhere) [m]. */
     std::vector<LocalVector> slip;
+  };
+
+  /**
+   * The relative displacement at every sample of each elastic solution an
+   * iterate combines (LoadPattern): u_F of the load pattern, u_held of the
+   * held loads, u_V = K^-1 e_V of a swipe; empty where the scene has no
+   * such load (NonlinearInterfacePoints::load_cases).
+   */
+  struct InterfaceLoadCases
+  {
+    std::vector<LocalVector> pattern, held, swipe;
   };
 
   class NonlinearInterfacePoints
@@ -155,16 +167,25 @@ namespace FourierSSI
                                  const ThetaSampling &sampling) const;
 
     /**
-     * relative += sum_t factor_t samples_t at every sample (samples_t of
-     * the same sampling; an empty one is left out): the iterate's relative
-     * displacement from the correction's and those of the loads, as the
-     * solver writes it, u = v + lambda u_F + rho u_held (+ mu u_V).
+     * The relative displacements of the loads' elastic solutions (those
+     * `loads` has) at the angles of `sampling` (a collective).
      */
-    static void
-    add_scaled_samples(
-      std::vector<LocalVector> &relative,
-      const std::vector<std::pair<double, const std::vector<LocalVector> *>>
-        &terms);
+    InterfaceLoadCases
+    load_cases(const LoadPattern &loads, const ThetaSampling &sampling) const;
+
+    /**
+     * The relative displacement at every sample of an iterate u = v +
+     * lambda u_F + rho u_held + mu u_V (the coupled solvers' state): that
+     * of the fields v (K^-1 c, or the part of it an iteration keeps), plus
+     * the loads' part summed first from `cases` (a collective).
+     */
+    std::vector<LocalVector>
+    iterate_relative(const std::vector<Vector<double>> &correction,
+                     const ThetaSampling               &sampling,
+                     const InterfaceLoadCases          &cases,
+                     const double                       load_factor,
+                     const double                       held_fraction,
+                     const double                       swipe_force = 0.) const;
 
     /**
      * The return mapping at every sample from the committed plastic
