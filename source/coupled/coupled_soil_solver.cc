@@ -256,10 +256,10 @@ namespace FourierSSI
     if (!loads.held_solution.empty())
       fields.push_back(&loads.held_solution[h]);
     const std::vector<double> motion     = controlled_motions(fields);
-    const double              by_pattern = motion[0],
-                 now =
-                   motion[1] +
-                   (fields.size() > 2 ? state.held_fraction * motion[2] : 0.);
+    const double              by_pattern = motion[0];
+    const double              held_part =
+      fields.size() > 2 ? state.held_fraction * motion[2] : 0.;
+    const double now = motion[1] + held_part;
     AssertThrow(by_pattern != 0.,
                 ExcMessage("Load path/Controlled motion: "
                            "the Rigid foundation loads do not drive "

@@ -3,11 +3,13 @@
  * last converged one, the one before it (the secant predictor's) and the
  * step being solved, with what both solvers read of a state: the total
  * displacement u = lambda K^-1 F + K^-1 c + rho K^-1 F_held (LoadPattern),
- * its rigid motion (rigid_motion_of) and the applied foundation loads, and
- * the records of the converged steps (load_step_result.h). A
- * State has load_factor, held_fraction and correction_solution (K^-1 c per
- * harmonic, CorrectionState); the solver gives the predictor (extrapolate) and
- * the iteration of a step (LoadPath::Iteration).
+ * its rigid motion (rigid_motion_of), its controlled motion on every MPI
+ * rank and the applied foundation loads, the secant predictor of c and
+ * K^-1 c (extrapolate), and the records of the converged steps
+ * (load_step_result.h). A State has load_factor, held_fraction and
+ * correction_solution (K^-1 c per harmonic, CorrectionState); the solver
+ * gives the iteration of a step (LoadPath::Iteration) and what its state
+ * keeps beyond c.
  */
 #ifndef fourier_ssi_load_path_states_h
 #define fourier_ssi_load_path_states_h
