@@ -142,14 +142,18 @@ namespace FourierSSI
     held_motion = 0.;
     if (settings.control != LoadPathParameters::Control::displacement)
       return;
-    const unsigned int h = controlled_harmonic_index();
-    pattern_motion       = controlled_motions({&pattern_solution[h]})[0];
+    const unsigned int        h      = controlled_harmonic_index();
+    const std::vector<double> motion = controlled_motions(
+      loads.holds_loads() ?
+        std::vector<const Vector<double> *>{&pattern_solution[h],
+                                            &loads.held_solution[h]} :
+        std::vector<const Vector<double> *>{&pattern_solution[h]});
+    pattern_motion = motion[0];
+    held_motion    = loads.holds_loads() ? motion[1] : 0.;
     AssertThrow(pattern_motion != 0.,
                 ExcMessage(entry + "/Controlled motion: the Rigid foundation "
                                    "loads do not drive this motion (give the "
                                    "load that does, e.g. V for vertical)"));
-    if (loads.holds_loads())
-      held_motion = controlled_motions({&loads.held_solution[h]})[0];
   }
 
   bool
@@ -295,10 +299,8 @@ namespace FourierSSI
     // accumulation of round-off over the steps).
     state.interface_solution = state.correction_solution;
     if (settings.control == LoadPathParameters::Control::displacement)
-      {
-        state.controlled_motion = controlled_motions(
-          {&state.correction_solution[controlled_harmonic_index()]})[0];
-      }
+      state.controlled_motion = controlled_motions(
+        {&state.correction_solution[controlled_harmonic_index()]})[0];
   }
 
   void
@@ -353,24 +355,23 @@ namespace FourierSSI
     return e;
   }
 
-  bool
-  CoupledInterfaceSolver::accept(const double       target,
-                                 const Evaluation  &e,
+  void
+  CoupledInterfaceSolver::accept(Evaluation        &e,
                                  const unsigned int iteration,
                                  StepState         &state,
                                  LoadStepResult    &result) const
   {
-    (void)target; // the load path checks that the motion reached it
     complete(state);
     interface.commit(e.relative,
                      e.traction,
-                     std::vector<LocalVector>(e.plastic),
+                     std::move(e.plastic),
                      state.interfaces);
     result.iterations      = iteration;
     result.residual        = e.scale.relative(e.residual_norm);
     result.contact         = e.counts;
-    result.interface_state = {e.relative, e.traction, e.contact};
-    return true;
+    result.interface_state = {std::move(e.relative),
+                              std::move(e.traction),
+                              std::move(e.contact)};
   }
 
   bool
@@ -445,7 +446,6 @@ namespace FourierSSI
   {
     Evaluation   e;
     unsigned int iterations = 0;
-    state.interfaces.origin = committed.interfaces.origin;
     // Augmented Lagrangian (section 5d) with contact interfaces.
     const bool converged = interface.iterate_with_multipliers(
       [&]() { return iterate(target, state, e, iterations); },
@@ -454,7 +454,9 @@ namespace FourierSSI
       [&]() { return settings.tolerance * e.scale.largest(); },
       state.interfaces,
       result.multiplier_updates);
-    return converged && accept(target, e, iterations, state, result);
+    if (converged)
+      accept(e, iterations, state, result);
+    return converged;
   }
 
   std::vector<Harmonic>

@@ -505,9 +505,8 @@ namespace FourierSSI
                                    std::vector<LocalVector>      &&plastic,
                                    InterfaceState                 &state) const
   {
-    state.plastic                  = std::move(plastic);
-    std::vector<LocalVector> &slip = state.slip, &origin = state.plastic;
-    const unsigned int        N = relative.size() / std::max<size_t>(size(), 1);
+    state.plastic        = std::move(plastic);
+    const unsigned int N = relative.size() / std::max<size_t>(size(), 1);
     for (unsigned int i = 0; i < points.size(); ++i)
       {
         const unsigned int law = points[i].law;
@@ -520,16 +519,17 @@ namespace FourierSSI
             // part 0). A stiff coulomb law keeps its own elastic part,
             // p = d - (t - t0) / k, as its return mapping does. The next
             // step starts from lambda = t.
-            const unsigned int k  = i * N + j;
-            const LocalVector &t0 = points[i].initial_traction;
+            const unsigned int k    = i * N + j;
+            const LocalVector &t0   = points[i].initial_traction;
+            LocalVector       &slip = state.slip[k];
             for (unsigned int c = 0; c < 3; ++c)
-              slip[k][c] = contact[law] ?
-                             (c == 1 ? 0. : relative[k][c]) :
-                             relative[k][c] -
-                               (traction[k][c] - t0[c]) / law_springs[law][c];
+              slip[c] = contact[law] ?
+                          (c == 1 ? 0. : relative[k][c]) :
+                          relative[k][c] -
+                            (traction[k][c] - t0[c]) / law_springs[law][c];
             for (unsigned int c = 0; c < 3; ++c)
-              origin[k][c] =
-                slip[k][c] - flexibility[law][c] * (traction[k][c] - t0[c]);
+              state.plastic[k][c] =
+                slip[c] - flexibility[law][c] * (traction[k][c] - t0[c]);
           }
       }
     state.origin = state.plastic;

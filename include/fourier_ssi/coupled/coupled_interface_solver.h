@@ -248,10 +248,13 @@ namespace FourierSSI
     Evaluation
     evaluate(const double target, StepState &state) const;
 
-    /** A converged iterate: complete the state, fill the step record. */
-    bool
-    accept(const double       target,
-           const Evaluation  &e,
+    /**
+     * A converged iterate (its evaluation moved from): complete the state,
+     * fill the step record. The load path checks that the motion reached
+     * its target.
+     */
+    void
+    accept(Evaluation        &e,
            const unsigned int iteration,
            StepState         &state,
            LoadStepResult    &result) const;

@@ -226,7 +226,6 @@ namespace FourierSSI
                  const bool      holding,
                  std::ostream   &log) override;
 
-
     /**
      * Total strain samples [point * N + j] at lambda, rho and a swipe's mu,
      * at the points this rank owns (NonlinearSoilPoints::strain_samples;
