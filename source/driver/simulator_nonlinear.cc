@@ -1,10 +1,10 @@
 // The driver's path for scenes with nonlinear (coulomb) interfaces: the
 // harmonics are coupled through theta, so they are solved together by
-// CoupledInterfaceSolver on one HarmonicSet (doc/nonlinear-interfaces.md).
+// CoupledSolver on one HarmonicSet (doc/nonlinear-interfaces.md).
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/base/timer.h>
-#include <fourier_ssi/coupled/coupled_interface_solver.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
+#include <fourier_ssi/coupled/coupled_solver.h>
 #include <fourier_ssi/driver/simulator.h>
 #include <fourier_ssi/harmonic/distributed_linear_system.h>
 #include <fourier_ssi/input/problem_checks.h>
@@ -15,12 +15,12 @@ namespace FourierSSI
   Simulator::solve_nonlinear_interfaces(std::ostream &log)
   {
     check_coupled_path_supported(parameters, "a coulomb interface");
-    std::unique_ptr<CoupledInterfaceSolver> solver;
-    CoupledCurveRun                         run;
+    std::unique_ptr<CoupledSolver> solver;
+    CoupledCurveRun                run;
     run.goal_prefix = "end_load_";
     run.solve       = [&](std::ostream &out) {
       solver.reset();
-      solver = solve_coupled_curve<CoupledInterfaceSolver>(out, false);
+      solver            = solve_coupled_curve<CoupledSolver>(out, false);
       const auto &steps = solver->get_steps();
       AssertThrow(!steps.empty(),
                   ExcMessage("Discretization/Target accuracy: no converged "
@@ -46,13 +46,13 @@ namespace FourierSSI
         solve_coupled_to_target(log, run);
         return;
       }
-    solver = solve_coupled_curve<CoupledInterfaceSolver>(log, true);
+    solver = solve_coupled_curve<CoupledSolver>(log, true);
     run.add_rows(log);
     run.write_files(log);
   }
 
   void
-  Simulator::add_interface_rows(const CoupledInterfaceSolver &solver)
+  Simulator::add_interface_rows(const CoupledSolver &solver)
   {
     add_load_step_rows(solver, results);
     keep_last_step(solver);
@@ -60,8 +60,8 @@ namespace FourierSSI
   }
 
   void
-  Simulator::write_interface_files(const CoupledInterfaceSolver &solver,
-                                   std::ostream                 &log)
+  Simulator::write_interface_files(const CoupledSolver &solver,
+                                   std::ostream        &log)
   {
     if (!writes_csv())
       return;

@@ -1,11 +1,11 @@
 // The driver's path for scenes with plastic soil: the harmonics are coupled
 // through theta at the soil's quadrature points, so they are solved together
-// by CoupledSoilSolver on one HarmonicSet (doc/soil-plasticity.md).
+// by CoupledSolver on one HarmonicSet (doc/soil-plasticity.md).
 #include <chrono>
 #include <cmath>
 #include <deal.II/base/timer.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
-#include <fourier_ssi/coupled/coupled_soil_solver.h>
+#include <fourier_ssi/coupled/coupled_solver.h>
 #include <fourier_ssi/driver/simulator.h>
 #include <fourier_ssi/estimation/capacity_plateau.h>
 #include <fourier_ssi/input/problem_checks.h>
@@ -53,9 +53,9 @@ namespace FourierSSI
 
     /** The plastic state of every converged step, after the common rows. */
     void
-    add_plastic_state_rows(const CoupledSoilSolver &solver,
-                           const AllParameters     &parameters,
-                           ResultsTable            &results)
+    add_plastic_state_rows(const CoupledSolver &solver,
+                           const AllParameters &parameters,
+                           ResultsTable        &results)
     {
       const Harmonic any{0, Family::symmetric};
       const auto    &steps = solver.get_steps();
@@ -107,8 +107,7 @@ namespace FourierSSI
 
     /** The applied load that works on the controlled motion. */
     LoadAtStep
-    applied_load(const CoupledSoilSolver &solver,
-                 const AllParameters     &parameters)
+    applied_load(const CoupledSolver &solver, const AllParameters &parameters)
     {
       return [&](const LoadStepResult &s) {
         return conjugate_load(solver.applied_loads(s.load_factor,
@@ -141,7 +140,7 @@ namespace FourierSSI
      * load on it (probe_H when u is driven, probe_M when the rotation is).
      */
     LoadAtStep
-    goal_load(const CoupledSoilSolver &solver, const AllParameters &parameters)
+    goal_load(const CoupledSolver &solver, const AllParameters &parameters)
     {
       if (!parameters.rigid_foundation.probes_direction())
         return applied_load(solver, parameters);
@@ -154,9 +153,9 @@ namespace FourierSSI
 
     /** The capacity of a displacement-controlled curve of >= 2 steps. */
     Capacity
-    capacity_of(const CoupledSoilSolver &solver,
-                const AllParameters     &parameters,
-                const LoadAtStep        &load_at)
+    capacity_of(const CoupledSolver &solver,
+                const AllParameters &parameters,
+                const LoadAtStep    &load_at)
     {
       const LoadPathParameters &settings  = parameters.load_path;
       const auto               &steps     = solver.get_steps();
@@ -191,8 +190,7 @@ namespace FourierSSI
 
     /** A displacement-controlled curve of >= 2 steps: it has a capacity. */
     bool
-    has_capacity(const CoupledSoilSolver &solver,
-                 const AllParameters     &parameters)
+    has_capacity(const CoupledSolver &solver, const AllParameters &parameters)
     {
       return parameters.load_path.control ==
                LoadPathParameters::Control::displacement &&
@@ -201,10 +199,10 @@ namespace FourierSSI
 
     /** The capacity's rows and log line. */
     void
-    report_capacity(const Capacity          &c,
-                    const CoupledSoilSolver &solver,
-                    std::ostream            &log,
-                    ResultsTable            &results)
+    report_capacity(const Capacity      &c,
+                    const CoupledSolver &solver,
+                    std::ostream        &log,
+                    ResultsTable        &results)
     {
       const NamedLoad    last  = c.load;
       const double       rise  = c.rise;
@@ -246,15 +244,16 @@ namespace FourierSSI
         solve_plastic_soil_to_target(log);
         return;
       }
-    const std::unique_ptr<CoupledSoilSolver> solver =
-      solve_coupled_curve<CoupledSoilSolver>(
-        log, true, [&](CoupledSoilSolver &s) { record_soil_reactions(s); });
+    const std::unique_ptr<CoupledSolver> solver =
+      solve_coupled_curve<CoupledSolver>(log, true, [&](CoupledSolver &s) {
+        record_soil_reactions(s);
+      });
     add_plastic_rows(*solver, log);
     write_plastic_files(*solver, log);
   }
 
   void
-  Simulator::record_soil_reactions(CoupledSoilSolver &solver)
+  Simulator::record_soil_reactions(CoupledSolver &solver)
   {
     reaction_curves.reset();
     if (!parameters.output.soil_reaction_curves())
@@ -294,8 +293,7 @@ namespace FourierSSI
   }
 
   void
-  Simulator::add_plastic_rows(const CoupledSoilSolver &solver,
-                              std::ostream            &log)
+  Simulator::add_plastic_rows(const CoupledSolver &solver, std::ostream &log)
   {
     add_load_step_rows(solver, results);
     add_plastic_state_rows(solver, parameters, results);
@@ -343,8 +341,7 @@ namespace FourierSSI
   }
 
   void
-  Simulator::write_plastic_files(const CoupledSoilSolver &solver,
-                                 std::ostream            &log)
+  Simulator::write_plastic_files(const CoupledSolver &solver, std::ostream &log)
   {
     if (!writes_csv())
       return;
@@ -385,13 +382,13 @@ namespace FourierSSI
     // a load step that does not converge stops the run).
     const bool load_control =
       parameters.load_path.control == LoadPathParameters::Control::load;
-    std::unique_ptr<CoupledSoilSolver> solver;
-    CoupledCurveRun                    run;
+    std::unique_ptr<CoupledSolver> solver;
+    CoupledCurveRun                run;
     run.goal_prefix = load_control ? "end_" : "capacity_";
     run.plateau     = !load_control;
     run.solve       = [&](std::ostream &out) {
       solver.reset();
-      solver           = solve_coupled_curve<CoupledSoilSolver>(out, false);
+      solver           = solve_coupled_curve<CoupledSolver>(out, false);
       const auto steps = static_cast<unsigned int>(solver->get_steps().size());
       if (load_control)
         return CoupledGoal{"work", "kJ", solver->load_work(), 0., steps};

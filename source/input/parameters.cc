@@ -533,7 +533,7 @@ namespace FourierSSI
     choose_element(*this);
     initial_stress.parse_parameters(prm);
     load_path.parse_parameters(prm);
-    // Newton (of either coupled solver) assembles coulomb springs no
+    // Newton (either linearisation) assembles coulomb springs no
     // stiffer than a cap times G / l; stiffer laws act through the augmented
     // Lagrangian's multipliers (interface_law.h).
     if (runs_coupled_tangent_solver() && soil_plasticity.tangent)

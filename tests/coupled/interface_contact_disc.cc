@@ -108,7 +108,7 @@ namespace
   {
     std::cout << law << std::endl;
     test_support::FactorizedScene scene_(scene(law, samples));
-    CoupledInterfaceSolver        solver(scene_.set, scene_.parameters);
+    CoupledSolver                 solver(scene_.set, scene_.parameters);
     Run                           r;
     r.log = coupled_test::run_with_log(solver);
     r.kn =

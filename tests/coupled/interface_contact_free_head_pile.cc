@@ -83,8 +83,8 @@ namespace
     std::cout << law << ", " << integration << " integration" << std::endl;
     test_support::FactorizedScene scene_(
       coupled_test::free_head_pile(law, integration));
-    CoupledInterfaceSolver solver(scene_.set, scene_.parameters);
-    Run                    r;
+    CoupledSolver solver(scene_.set, scene_.parameters);
+    Run           r;
     r.log   = coupled_test::run_with_log(solver);
     r.steps = solver.get_steps();
     for (const LoadStepResult &s : r.steps)

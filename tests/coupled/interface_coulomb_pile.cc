@@ -1,7 +1,7 @@
 // A rigid pile (radius a = 0.5 m, length L = 5 m) with Mohr-Coulomb
 // interfaces on its shaft and base, n = 0 only, solved by the coupled
 // initial-stiffness iteration
-// (include/fourier_ssi/coupled/coupled_interface_solver.h,
+// (include/fourier_ssi/coupled/coupled_solver.h,
 // doc/nonlinear-interfaces.md section 7):
 //
 // (1) Limits. c = 1e9 kPa, no cut-off (never yields): one load step equals
@@ -34,7 +34,7 @@
 #include "factorized_scene.h"
 #include "rigid_pile_scene.h"
 
-#include <fourier_ssi/coupled/coupled_interface_solver.h>
+#include <fourier_ssi/coupled/coupled_solver.h>
 
 using namespace FourierSSI;
 
@@ -70,7 +70,7 @@ namespace
     test_support::FactorizedScene scene(text);
     const AllParameters          &parameters = scene.parameters;
     HarmonicSet                  &set        = scene.set;
-    CoupledInterfaceSolver        solver(set, parameters);
+    CoupledSolver                 solver(set, parameters);
     solver.run(std::cout);
     Run result;
     result.steps = solver.get_steps();
@@ -138,7 +138,7 @@ namespace
     test_support::FactorizedScene scene(text);
     const AllParameters          &parameters = scene.parameters;
     HarmonicSet                  &set        = scene.set;
-    const CoupledInterfaceSolver  solver(set, parameters);
+    const CoupledSolver           solver(set, parameters);
     std::vector<Vector<double>>   fields;
     for (unsigned int h = 0; h < set.size(); ++h)
       {

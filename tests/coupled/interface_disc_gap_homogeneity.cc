@@ -16,7 +16,7 @@
 #include "coupled_interface_test_support.h"
 #include "factorized_scene.h"
 
-#include <fourier_ssi/coupled/coupled_interface_solver.h>
+#include <fourier_ssi/coupled/coupled_solver.h>
 
 using namespace FourierSSI;
 
@@ -41,7 +41,7 @@ namespace
     test_support::FactorizedScene scene(text);
     const AllParameters          &parameters = scene.parameters;
     HarmonicSet                  &set        = scene.set;
-    CoupledInterfaceSolver        solver(set, parameters);
+    CoupledSolver                 solver(set, parameters);
     solver.run(std::cout);
     Curve curve;
     for (const LoadStepResult &step : solver.get_steps())

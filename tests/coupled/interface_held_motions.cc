@@ -32,7 +32,7 @@ main()
     test_support::entries("Rigid foundation", {{"Held motions", "rotation"}}) +
     test_support::entries("Load path", {{"Stiffness", "tangent"}});
   test_support::FactorizedScene scene(text);
-  CoupledInterfaceSolver        solver(scene.set, scene.parameters);
+  CoupledSolver                 solver(scene.set, scene.parameters);
   solver.run(std::cout);
   const auto &last = solver.get_steps().back();
   check::in_range("samples slipping or open at the last step",

@@ -2,7 +2,7 @@
 // with a Rigid foundation, a traction (Boundary conditions/Traction) is a
 // held load: applied in full by the held stage (Load path/Held
 // load steps), then constant while the load factor scales only the
-// foundation's load (CoupledInterfaceSolver::run_stage, held_stage_load).
+// foundation's load (LoadPath::run_stage, held_stage_load).
 //
 // The rigid pile of tests/coupled/interface_coulomb_pile.cc (a = 0.5 m,
 // L = 5 m, n = 0; c = 0, phi = 25 deg on shaft and base, geostatic
@@ -30,7 +30,7 @@
 #include "factorized_scene.h"
 #include "rigid_pile_scene.h"
 
-#include <fourier_ssi/coupled/coupled_interface_solver.h>
+#include <fourier_ssi/coupled/coupled_solver.h>
 
 using namespace FourierSSI;
 
@@ -108,7 +108,7 @@ namespace
                   {"Tolerance", "1e-10"}}) +
       test_support::entries("Discretization", {{"Harmonics", "0, 1"}});
     test_support::FactorizedScene scene(text);
-    CoupledInterfaceSolver        solver(scene.set, scene.parameters);
+    CoupledSolver                 solver(scene.set, scene.parameters);
     solver.run(std::cout);
     double vertical = 0., horizontal = 0., H = 0.;
     for (const LoadStepResult &s : solver.get_steps())
@@ -136,7 +136,7 @@ main()
   const unsigned int held_steps = 2;
 
   test_support::FactorizedScene scene(pull_scene(std::to_string(held_steps)));
-  CoupledInterfaceSolver        solver(scene.set, scene.parameters);
+  CoupledSolver                 solver(scene.set, scene.parameters);
   solver.run(std::cout);
   const auto &steps = solver.get_steps();
 

@@ -55,7 +55,7 @@ namespace
     std::cout << law << std::endl;
     test_support::FactorizedScene scene_(
       coupled_test::free_head_pile(law, "nodal"));
-    CoupledInterfaceSolver solver(scene_.set, scene_.parameters);
+    CoupledSolver solver(scene_.set, scene_.parameters);
     coupled_test::run_with_log(solver);
     Run r;
     for (const LoadStepResult &s : solver.get_steps())

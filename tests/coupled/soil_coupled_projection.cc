@@ -1,5 +1,5 @@
 // The out-of-balance loads of the plastic soil (include/fourier_ssi/
-// coupled_soil_solver.h, doc/soil-plasticity.md section 3) on the bundled
+// coupled_solver.h, doc/soil-plasticity.md section 3) on the bundled
 // scene prm/footing-capacity.prm (FE_Q(2) + B-bar, nu = 0.49):
 //  (0) projection: with s_p = D eps (the whole strain "plastic") the
 //      out-of-balance load is int Bbar^T D eps = K u, for random fields of

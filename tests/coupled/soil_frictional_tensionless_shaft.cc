@@ -13,7 +13,7 @@
 // does. Maximum step cuts = 0 here: the retry at once.
 //  (1) Soil that never yields (Tresca s_u = 1e6 kPa), 2 steps to 0.005 m:
 //      the coupled-tangent Newton against the condensed interface Newton
-//      (CoupledInterfaceSolver, Stiffness = tangent, the same 3 samples),
+//      (CoupledSolver, Stiffness = tangent, the same 3 samples),
 //      an independent linearisation and iteration of the same equations:
 //      H at each step to 1e-7 (both stop at |R| <= 1e-8 of their force
 //      scale; measured 1.2e-12), and the same stick/slip/open counts.

@@ -2,7 +2,7 @@
 // Rigid foundation, the Body force and the tractions are held loads, applied
 // in full by the held stage (Load path/Held load steps) and then
 // constant while the load factor scales only the foundation's loads or
-// motion (CoupledSoilSolver::solve_loads, run_stage; held_stage_load).
+// motion (CoupledSolver::solve_loads, run_stage; held_stage_load).
 // Checks, with their reasons:
 //  1. The lateral capacity of the rigid pile in the plane-strain Tresca slice
 //     (prm/pile-capacity.prm, N_p = H / (s_u d L)) with the soil's and the

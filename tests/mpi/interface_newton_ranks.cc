@@ -2,7 +2,7 @@
 // (Load path/Stiffness = tangent, doc/nonlinear-interfaces.md section 5b)
 // with the harmonics distributed over the ranks (each rank fills the
 // Jacobian columns of the harmonics it owns, one sum over the ranks, one
-// rank solves and broadcasts the step; coupled_interface_newton.cc)
+// rank solves and broadcasts the step; interface_condensation.cc)
 // reproduces the serial Newton curve, which every rank also runs on
 // MPI_COMM_SELF. The scene: the disc in a ring of prm/disc-gap.prm (rigid
 // disc r0 = 0.5 m pushed along x to ubar = 1e-3 m in 4 displacement steps,

@@ -1,5 +1,5 @@
 // Helpers shared by the tests of the coupled (nonlinear-interface) solve:
-// run a scene's load steps through CoupledInterfaceSolver on a HarmonicSet,
+// run a scene's load steps through CoupledSolver on a HarmonicSet,
 // and the linear stiffness of the same scene with a linear law.
 #ifndef fourier_ssi_tests_coupled_interface_test_support_h
 #define fourier_ssi_tests_coupled_interface_test_support_h
@@ -7,7 +7,7 @@
 #include "factorized_scene.h"
 #include "two_ranks.h"
 
-#include <fourier_ssi/coupled/coupled_interface_solver.h>
+#include <fourier_ssi/coupled/coupled_solver.h>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -94,7 +94,7 @@ namespace coupled_test
 
   /** The solver's load steps; their log echoed to std::cout and returned. */
   inline std::string
-  run_with_log(CoupledInterfaceSolver &solver)
+  run_with_log(CoupledSolver &solver)
   {
     std::ostringstream log;
     solver.run(log);
@@ -113,7 +113,7 @@ namespace coupled_test
   };
 
   /**
-   * The scene's load steps through CoupledInterfaceSolver, serial or with
+   * The scene's load steps through CoupledSolver, serial or with
    * the harmonics distributed over the ranks of MPI_COMM_WORLD.
    */
   inline StepResults
@@ -122,7 +122,7 @@ namespace coupled_test
               std::ostream      &log         = std::cout)
   {
     test_support::FactorizedScene scene(text, distributed);
-    CoupledInterfaceSolver        solver(scene.set, scene.parameters);
+    CoupledSolver                 solver(scene.set, scene.parameters);
     solver.run(log);
     StepResults results;
     results.steps = solver.get_steps();

@@ -1,5 +1,5 @@
 // Helpers of the plastic-soil tests: the bundled footing scene with entries
-// changed, set up on a HarmonicSet with its CoupledSoilSolver, and the
+// changed, set up on a HarmonicSet with its CoupledSolver, and the
 // bearing-capacity check (doc/soil-plasticity.md section 5).
 #ifndef fourier_ssi_tests_soil_test_support_h
 #define fourier_ssi_tests_soil_test_support_h
@@ -8,7 +8,7 @@
 #include "test_support.h"
 
 #include <deal.II/grid/tria.h>
-#include <fourier_ssi/coupled/coupled_soil_solver.h>
+#include <fourier_ssi/coupled/coupled_solver.h>
 #include <fourier_ssi/driver/scene_plan.h>
 #include <fourier_ssi/harmonic/harmonic_set.h>
 #include <random>
@@ -75,10 +75,10 @@ namespace soil_test
 
   struct Run
   {
-    AllParameters                      parameters;
-    Triangulation<2>                   triangulation;
-    std::unique_ptr<HarmonicSet>       set;
-    std::unique_ptr<CoupledSoilSolver> solver;
+    AllParameters                  parameters;
+    Triangulation<2>               triangulation;
+    std::unique_ptr<HarmonicSet>   set;
+    std::unique_ptr<CoupledSolver> solver;
 
     explicit Run(const std::string &text)
       : parameters(test_support::parameters_from(text))
@@ -93,7 +93,7 @@ namespace soil_test
                                           0);
       set->setup_and_assemble();
       set->factorize();
-      solver = std::make_unique<CoupledSoilSolver>(*set, parameters);
+      solver = std::make_unique<CoupledSolver>(*set, parameters);
     }
   };
 

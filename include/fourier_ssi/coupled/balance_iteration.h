@@ -1,7 +1,7 @@
 /**
- * The iteration of one load step at fixed contact multipliers, the same in
- * both coupled solvers (the interfaces' condensed one, the plastic soil's
- * coupled-tangent one; doc/nonlinear-interfaces.md section 5b,
+ * The iteration of one load step at fixed contact multipliers, the same
+ * for both linearisations of CoupledSolver (condensed onto the interfaces,
+ * the coupled tangent; doc/nonlinear-interfaces.md section 5b,
  * doc/soil-plasticity.md 3b): from an evaluated iterate, until the force
  * test passes (true) or the step must be cut (false, a non-finite |R| or
  * Load path/Maximum iterations reached):

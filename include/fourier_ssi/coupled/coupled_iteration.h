@@ -63,7 +63,7 @@ namespace FourierSSI
                      const double held_norm);
 
   /**
-   * One harmonic's total displacement in both coupled solvers:
+   * One harmonic's total displacement in the coupled load path:
    * u = lambda u_F + v + rho u_held (the pattern solution scaled by the load
    * factor, the correction solution, the held-stage solution scaled by the
    * held fraction; `held` null without a held stage).
@@ -80,7 +80,7 @@ namespace FourierSSI
   norm_over_harmonics(const std::vector<Vector<double>> &vectors);
 
   /**
-   * The convergence test of both coupled solvers: the out-of-balance force
+   * The convergence test of the coupled load path: the out-of-balance force
    * R = G - c is measured against the internal force scale, the largest of
    * |lambda F| (the applied loads, held ones included) and |G| (the load of
    * the plastic part that the nonlinear sources return: slip and gaps of
@@ -177,7 +177,7 @@ namespace FourierSSI
                  const RigidFoundationParameters &foundation,
                  const LoadPathParameters::Motion controlled);
 
-  /** The leading columns of every load-displacement.csv (both solvers). */
+  /** The leading columns of every load-displacement.csv. */
   constexpr const char *load_step_csv_header =
     "step,load_factor,V_kN,H_kN,M_kNm,T_kNm,vertical_m,horizontal_m,"
     "rotation_rad,twist_rad,iterations,residual";

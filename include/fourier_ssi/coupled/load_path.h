@@ -1,9 +1,8 @@
 /**
  * The load path of every coupled (nonlinear) run: one object steps the held
  * loads and then the loading from the committed state to the end of the
- * path, whatever iterates a step (the interfaces' condensed iteration,
- * CoupledInterfaceSolver; the plastic soil with or without coulomb
- * interfaces, CoupledSoilSolver). It owns
+ * path, whatever linearises a step (CoupledSolver: condensed onto the
+ * interfaces, or on the coupled tangent). It owns
  *   - the two stages, the held loads first (Load path/Held load steps, the
  *     load factor at 0), then the loading (Load steps) by load or
  *     displacement control from where the held loads left the motion;

@@ -1,7 +1,7 @@
 /**
  * The states a coupled solver keeps along the load path (LoadPath): the
  * last converged one, the one before it (the secant predictor's) and the
- * step being solved, with what both solvers read of a state: the total
+ * step being solved, with what the solver reads of a state: the total
  * displacement u = lambda K^-1 F + K^-1 c + rho K^-1 F_held (LoadPattern),
  * its rigid motion (rigid_motion_of), its controlled motion on every MPI
  * rank and the applied foundation loads, the secant predictor of c and

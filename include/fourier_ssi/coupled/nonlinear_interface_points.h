@@ -9,9 +9,8 @@
  * s by Gauss p + 1 points through the element's own shape functions); and
  * the tangent's interface part
  *   -int B_h^T [int factor_h (D - D_t) factor_g dtheta] B_g r ds
- * (D_t the tangent of the return mapping). The interface solver
- * (coupled_interface_solver.h) and the plastic-soil solver with coulomb
- * interfaces (coupled_soil_solver.h) both iterate on it.
+ * (D_t the tangent of the return mapping). The coupled load path
+ * (coupled_solver.h) iterates on it, condensed or on the coupled tangent.
  */
 #ifndef fourier_ssi_nonlinear_interface_points_h
 #define fourier_ssi_nonlinear_interface_points_h
@@ -160,7 +159,7 @@ namespace FourierSSI
      * relative_displacements() of the harmonics this rank owns only, not
      * summed over the ranks: local (not a collective), exact for fields
      * that are zero outside this rank's harmonics (a column of the Newton
-     * Jacobian, coupled_interface_newton.cc).
+     * Jacobian, interface_condensation.cc).
      */
     std::vector<LocalVector>
     owned_relative_displacements(const std::vector<Vector<double>> &fields,
@@ -305,7 +304,7 @@ namespace FourierSSI
                                 const unsigned int              update) const;
 
     /**
-     * A load step of either coupled solver with the augmented Lagrangian
+     * A load step of the coupled solver with the augmented Lagrangian
      * (doc/nonlinear-interfaces.md section 5d): iterate() converges the step
      * at the current multipliers (false: cut the step), leaving the
      * interface tractions of its converged iterate in `traction`; with an

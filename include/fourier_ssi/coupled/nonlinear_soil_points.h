@@ -14,7 +14,7 @@
  *   - the tangent's soil part -int Bbar_h^T [int factor_h (D_e - D_ep)
  *     factor_g dtheta] Bbar_g r dr dz (D_ep the closed-form algorithmic
  *     tangent), added to a CoupledTangent.
- * The plastic-soil solver (coupled_soil_solver.h) iterates on it.
+ * The coupled load path (coupled_solver.h) iterates on it.
  *
  * Under mpirun the harmonics are distributed over the ranks: strain
  * amplitudes are computed by each harmonic's owner and summed over the

@@ -1,8 +1,8 @@
 /**
  * The Newton update of every coupled iteration under Load path/Stiffness =
  * tangent, whatever linearises it (the interfaces' condensed Jacobian,
- * coupled_interface_newton.cc; the coupled tangent of the plastic soil,
- * coupled_soil_solver.cc): one globalisation for both
+ * interface_condensation.cc; the coupled tangent of the plastic soil,
+ * coupled_tangent.cc, both in coupled_solver.cc): one globalisation for both
  * (doc/nonlinear-interfaces.md section 5b, doc/soil-plasticity.md 3b).
  *
  * The unknown is the correction load c; an iterate is a solver's state, its

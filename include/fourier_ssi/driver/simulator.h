@@ -34,8 +34,7 @@
 
 namespace FourierSSI
 {
-  class CoupledInterfaceSolver;
-  class CoupledSoilSolver;
+  class CoupledSolver;
 
   class Simulator
   {
@@ -193,7 +192,7 @@ namespace FourierSSI
 
     /**
      * A scene with a nonlinear (coulomb) interface: every harmonic assembled
-     * and factorized once, the load steps of CoupledInterfaceSolver, the
+     * and factorized once, the load steps of CoupledSolver, the
      * load-displacement CSV and results.csv (simulator_nonlinear.cc).
      */
     void
@@ -268,14 +267,14 @@ namespace FourierSSI
 
     /**
      * A scene with plastic soil (Soil plasticity/Laws): the load steps of
-     * CoupledSoilSolver on one HarmonicSet (simulator_soil.cc).
+     * CoupledSolver on one HarmonicSet (simulator_soil.cc).
      */
     void
     solve_plastic_soil(std::ostream &log);
 
     /**
      * The HarmonicSet of plan.harmonics on the current mesh and the load
-     * path of a coupled Solver (CoupledSoilSolver, CoupledInterfaceSolver)
+     * path of the coupled Solver (CoupledSolver)
      * on it; with keep_incomplete, the converged steps of a path that fails
      * are written to load-displacement-incomplete.csv (marked by the name;
      * not claimed: a failed run removes its results, not this record).
@@ -311,15 +310,15 @@ namespace FourierSSI
      * solver after every converged step.
      */
     void
-    record_soil_reactions(CoupledSoilSolver &solver);
+    record_soil_reactions(CoupledSolver &solver);
 
     /** A plastic curve's rows (steps, plastic state, capacity). */
     void
-    add_plastic_rows(const CoupledSoilSolver &solver, std::ostream &log);
+    add_plastic_rows(const CoupledSolver &solver, std::ostream &log);
 
     /** Its CSV files and results.csv. */
     void
-    write_plastic_files(const CoupledSoilSolver &solver, std::ostream &log);
+    write_plastic_files(const CoupledSolver &solver, std::ostream &log);
 
     /**
      * Target accuracy with plastic soil: the capacity on the scene's mesh
@@ -462,12 +461,11 @@ namespace FourierSSI
 
     /** Its rows and the last step as every harmonic's solution. */
     void
-    add_interface_rows(const CoupledInterfaceSolver &solver);
+    add_interface_rows(const CoupledSolver &solver);
 
     /** Its CSV files, then write_output() (3D lines, VTU, results). */
     void
-    write_interface_files(const CoupledInterfaceSolver &solver,
-                          std::ostream                 &log);
+    write_interface_files(const CoupledSolver &solver, std::ostream &log);
 
     /** Set up, assemble, solve and post-process every harmonic. */
     void

@@ -10,7 +10,7 @@
  * `Linear solver/Distributed = always`) runs one harmonic at a time, since
  * collective calls must not interleave on one communicator.
  *
- * A solve that couples harmonics under mpirun (CoupledInterfaceSolver)
+ * A solve that couples harmonics under mpirun (CoupledSolver)
  * distributes them instead: distribute_over() gives each rank its own
  * harmonics (serial systems), which only it assembles, factorizes and
  * solves (doc/nonlinear-interfaces.md section 5, "Under MPI").
@@ -147,7 +147,7 @@ namespace FourierSSI
      * factorize() do for the first ones; the earlier harmonics and their
      * factorizations are kept. For a solve that finds during its iteration
      * that its solution contains harmonics the load does not (a slipping or
-     * opening interface, CoupledInterfaceSolver).
+     * opening interface, CoupledSolver).
      */
     void
     add(const std::vector<Harmonic> &new_harmonics);

@@ -1,6 +1,6 @@
 /**
  * Subsection "Load path": how the coupled iteration of
- * CoupledInterfaceSolver loads the scene and when it has converged
+ * CoupledSolver loads the scene and when it has converged
  * (doc/nonlinear-interfaces.md, section 5).
  */
 #ifndef fourier_ssi_load_path_parameters_h

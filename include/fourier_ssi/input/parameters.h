@@ -162,11 +162,11 @@ namespace FourierSSI
     }
 
     /**
-     * The load path runs on the coupled tangent of every harmonic
-     * (CoupledSoilSolver): with plastic soil, and for a swipe with nonlinear
+     * The one choice of CoupledSolver's linearisation: the coupled tangent
+     * of every harmonic with plastic soil, and for a swipe with nonlinear
      * interfaces on elastic soil, a scene with no soil points (the
      * interfaces' condensed iteration does not keep the swipe's w).
-     * Otherwise nonlinear interfaces run condensed (CoupledInterfaceSolver).
+     * Otherwise nonlinear interfaces run condensed (InterfaceCondensation).
      */
     bool
     runs_coupled_tangent_solver() const

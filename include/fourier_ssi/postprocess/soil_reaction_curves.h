@@ -7,7 +7,7 @@
  * each curve per converged load step (doc/soil-reaction-curves.md).
  *
  * The reactions come from the soil's nodal forces on the pile's nodes
- * (CoupledSoilSolver::soil_nodal_force, n = 1 symmetric: 3D virtual-work
+ * (CoupledSolver::soil_nodal_force, n = 1 symmetric: 3D virtual-work
  * coefficients). For a unit translation and rotation of the rigid pile
  * they give, node by node,
  *   P_i = f_U,i - f_W,i              (the work on u_x = 1),

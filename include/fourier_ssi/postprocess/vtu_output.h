@@ -4,7 +4,7 @@
  * fed with patches built here for the outputs that are not a finite-element
  * field on the 2D mesh: the mesh revolved about the axis
  * (FieldReconstruction) and the interface samples as 3D points
- * (CoupledInterfaceSolver). The file is written through AtomicFile.
+ * (CoupledSolver). The file is written through AtomicFile.
  */
 #ifndef fourier_ssi_vtu_output_h
 #define fourier_ssi_vtu_output_h

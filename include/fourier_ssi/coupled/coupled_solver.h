@@ -1,62 +1,73 @@
 /**
- * Perfectly plastic soil (Tresca, Mohr-Coulomb; soil_law.h) on a set of
- * Fourier harmonics coupled through theta (doc/soil-plasticity.md,
- * section 3): the interfaces' coupled iteration (coupled_interface_solver.h)
- * applied at the soil's quadrature points.
+ * The coupled load path of every nonlinear scene (doc/driver.md): plastic
+ * soil (Tresca, Mohr-Coulomb; soil_law.h, doc/soil-plasticity.md section 3)
+ * and nonlinear interfaces (coulomb, contact; doc/nonlinear-interfaces.md
+ * section 5) on a set of Fourier harmonics coupled through theta. Both are
+ * nonlinear sources of one iteration; a scene of interfaces on elastic soil
+ * is one with no soil points.
  *
  * Every harmonic keeps its elastic matrix K_h and factorization (HarmonicSet).
- * With s_p = D eps_p the "plastic stress" at every (quadrature point, theta
- * sample), the discrete equilibrium of harmonic h is
- *   K_h u_h = lambda F_h + c_h,   c_h = int Bbar_h^T [int factor_h s_p dtheta]
- *                                          r dr dz,
- * (the internal force int Bbar^T sigma = K u - c, sigma = D (eps - eps_p)).
- * The solver drives two nonlinear sources: the soil's quadrature points
- * (NonlinearSoilPoints) and, where the scene has them, the coulomb
- * interfaces (NonlinearInterfacePoints). One evaluation of an iterate:
- *   1. strain amplitudes of every harmonic at every soil quadrature point
- *      (Bbar u_h: with B-bar the dilatation projected per cell), summed at N
- *      theta samples (ThetaSampling::evaluate);
+ * With s_p = D eps_p the "plastic stress" at every (soil point, theta
+ * sample) and d_p the plastic relative displacement (slip and gap) at every
+ * (interface point, theta sample), the discrete equilibrium of harmonic h is
+ *   K_h u_h = lambda F_h + c_h,
+ *   c_h = int Bbar_h^T [int factor_h s_p dtheta] r dr dz
+ *       + int int B_h^T D d_p r ds dtheta
+ * (the internal force K u - c). One evaluation of an iterate:
+ *   1. strain amplitudes of every harmonic at every soil point (Bbar u_h,
+ *      the dilatation projected per cell) and relative displacements at
+ *      every interface point, summed at N theta samples
+ *      (ThetaSampling::evaluate);
  *   2. the return mapping at every (point, theta) from the last converged
- *      plastic stress -> s_p = D eps - sigma;
- *   3. G_h = int Bbar_h^T (theta-integrated s_p) for every harmonic, plus
- *      the interfaces' out-of-balance load;
+ *      state;
+ *   3. G_h, the theta-integrated plastic parts through the same B that
+ *      gives K;
  *   4. R = G - c, converged if |R| <= tolerance times the force scale
- *      (ForceScale). Otherwise c moves by Newton on the coupled tangent
- *      K_t (Stiffness = tangent: each source adds its closed-form part,
- *      the globalisation of safeguarded_newton.h), or by the accelerated
- *      initial-stiffness update, all harmonics re-solved with their kept
- *      factorizations.
- * Loading (load or displacement control of the rigid foundation), step
- * cutting and the settings are those of subsection "Load path".
+ *      (ForceScale: |lambda F| and the interfaces' |G|). Otherwise c moves
+ *      by Newton (closed-form tangents, the globalisation of
+ *      safeguarded_newton.h) or by the accelerated initial-stiffness
+ *      update.
+ * The linearisation is the one decision that differs between scenes
+ * (AllParameters::runs_coupled_tangent_solver):
+ *   - plastic soil (or a swipe): K^-1 dc re-solved for every harmonic with
+ *     the kept factorizations; Newton on the coupled tangent K_t of every
+ *     harmonic (Soil plasticity/Stiffness = tangent, coupled_tangent.h);
+ *   - interfaces only: condensed onto the interface DoFs
+ *     (InterfaceCondensation): K^-1 dc a dense product with the flexibility
+ *     blocks, Newton on the dense condensed Jacobian (Load path/Stiffness =
+ *     tangent), and harmonics added where the interface traction calls for
+ *     them (Load path/Maximum harmonic).
+ * Loading (load or displacement control of the rigid foundation), the held
+ * stage, the predictor and step cutting are the LoadPath's (load_path.h);
+ * contact and stiff coulomb laws iterate with their augmented Lagrangian's
+ * multipliers around the iteration (NonlinearInterfacePoints).
  * A swipe test (Rigid foundation/Held motions = w with a Held vertical
  * force) adds mu e_V to the loads, e_V the unit vertical force on the
  * rigid foundation: after the held stage mu is a second unknown beside
  * lambda, chosen with it so that w stays where the held stage left it
  * (swipe_multipliers); no constraint changes along the path.
- * Coulomb interfaces in the scene iterate with the soil
- * (doc/soil-plasticity.md 6b).
  *
  * Under mpirun the harmonics are distributed over the ranks
- * (HarmonicSet::distribute_over), as for the interfaces: each rank re-solves
- * its own harmonics and computes their strain amplitudes, and return-maps
- * every P-th soil point. Two sums over the ranks per iteration
- * (MPI_Allreduce: the strain amplitudes, then the theta integrals of s_p)
+ * (HarmonicSet::distribute_over): each rank re-solves its own harmonics and
+ * computes their strain amplitudes and interface amplitudes, and
+ * return-maps every P-th soil point. Sums over the ranks (MPI_Allreduce)
  * give every rank all of them; each entry is non-zero on one rank only, so
  * the sums are exact, and every rank assembles G, tests convergence and
  * updates c on the same bits as a serial run (doc/soil-plasticity.md
- * section 3c). Stiffness = tangent: each rank integrates the softening of
+ * section 3c). The coupled tangent: each rank integrates the softening of
  * its points, a sum gives every rank all of them, each rank assembles the
  * block rows of its harmonics, a sum completes the block matrix, and one
  * rank factorizes and solves it for every rank (coupled_tangent.h); all
  * exact, so Newton too takes the serial run's steps bit for bit.
  */
-#ifndef fourier_ssi_coupled_soil_solver_h
-#define fourier_ssi_coupled_soil_solver_h
+#ifndef fourier_ssi_coupled_solver_h
+#define fourier_ssi_coupled_solver_h
 
 #include <array>
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/coupled_tangent.h>
+#include <fourier_ssi/coupled/interface_condensation.h>
 #include <fourier_ssi/coupled/load_path_states.h>
 #include <fourier_ssi/coupled/load_step_result.h>
 #include <fourier_ssi/coupled/nonlinear_interface_points.h>
@@ -77,23 +88,34 @@ namespace FourierSSI
 {
   using namespace dealii;
 
-  /** Iteration state of a load step of the plastic soil. */
-  struct SoilStepState : CorrectionState
+  /**
+   * Iteration state of a load step. Condensed (interfaces only), K^-1 c in
+   * correction_solution is exact at the interface DoFs only while a step
+   * iterates, and whole once it converged (InterfaceCondensation).
+   */
+  struct CoupledStepState : CorrectionState
   {
-    /** s_p = D eps_p per (point, theta). */
+    /** Plastic soil: s_p = D eps_p per (point, theta); empty without. */
     std::vector<StrainVector> plastic;
     /**
      * Nonlinear interfaces: d_p, the return's origin and p_c per
      * (interface point, theta); empty without.
      */
     InterfaceState interfaces;
+    /** Condensed: the controlled motion of K^-1 c [m or rad]. */
+    double controlled_motion = 0.;
   };
 
-  class CoupledSoilSolver : private LoadPathStates<SoilStepState>
+  class CoupledSolver : private LoadPathStates<CoupledStepState>
   {
   public:
-    /** `set` must be assembled and factorized. */
-    CoupledSoilSolver(const HarmonicSet &set, const AllParameters &parameters);
+    /**
+     * `set` must be assembled and factorized; its harmonics' matrices hold
+     * the elastic interface stiffness kn, ks of every interface. Interfaces
+     * only, with `Load path/Maximum harmonic` above the highest harmonic of
+     * the set, harmonics the interface tractions call for are added to it.
+     */
+    CoupledSolver(HarmonicSet &set, const AllParameters &parameters);
 
     /** All load steps; throws one line if a step does not converge. */
     void
@@ -150,11 +172,29 @@ namespace FourierSSI
       return soil.size();
     }
 
+    /** The theta samples of the soil (of the interfaces without soil). */
     unsigned int
     n_theta_samples() const
     {
       return sampling.n_samples();
     }
+
+    /** Number of Gauss points of the nonlinear interfaces. */
+    unsigned int
+    n_interface_points() const
+    {
+      return interface ? interface->size() : 0;
+    }
+
+    /**
+     * int int B_h^T D d r ds dtheta of the relative displacement d of the
+     * given fields (one per harmonic), condensed: the elastic force of the
+     * nonlinear interfaces computed through the theta sampling and the Gauss
+     * points, which must equal the closed-form K_interface u (a check of the
+     * projection that builds the out-of-balance loads).
+     */
+    std::vector<Vector<double>>
+    interface_force(const std::vector<Vector<double>> &fields) const;
 
     /**
      * The soil's nodal forces int Bbar_h^T (sigma - sigma_0) r dr dz of the
@@ -180,7 +220,7 @@ namespace FourierSSI
       step_observer = std::move(observer);
     }
 
-    /** True if the scene has coulomb interfaces (iterated with the soil). */
+    /** True if the scene has nonlinear (coulomb, contact) interfaces. */
     bool
     has_coulomb_interfaces() const
     {
@@ -188,14 +228,25 @@ namespace FourierSSI
     }
 
     /**
-     * CSV of the coulomb interfaces' state at every (point, theta) of every
-     * converged step (NonlinearInterfacePoints::write_state_csv).
+     * CSV of the nonlinear interfaces' state at every (point, theta) of
+     * every converged step: position, angle, stick/slip/open, traction and
+     * relative displacement with their units in the header
+     * (NonlinearInterfacePoints::write_state_csv).
      */
     void
     write_interface_state_csv(const std::string &filename) const;
 
+    /**
+     * VTU (ParaView) of the last converged step's interface samples as
+     * points in 3D, (r cos theta, r sin theta, z): state (0 stick, 1 slip,
+     * 2 open), traction [kPa] and relative displacement [m] in the local
+     * (s, n, theta) components, next to the revolved soil field.
+     */
+    void
+    write_interface_state_vtu(const std::string &filename) const;
+
   private:
-    using StepState = SoilStepState;
+    using StepState = CoupledStepState;
 
     /**
      * F, F_held (Rigid foundation/Held ...) and in a swipe e_V, their
@@ -213,6 +264,8 @@ namespace FourierSSI
     /** LoadPath::Iteration: the trial step and its commit (load_path.h). */
     bool
     solve_trial(const double target, const bool holding) override;
+    bool
+    grows(std::ostream &log) override;
     /**
      * Newton's retry of a step that failed after the last cut: where it
      * finds no descent it takes one initial-stiffness update and goes on
@@ -238,16 +291,20 @@ namespace FourierSSI
                    const double                       swipe_force = 0.) const;
 
     /**
-     * Nonlinear interfaces at the relative displacements given: the return
-     * mapping from `origin` into `plastic` and `snapshot`, and
-     * their out-of-balance load added to `load`; the sample counts.
+     * Condensed: K^-1 c complete (InterfaceCondensation::complete), and the
+     * controlled motion from it.
      */
-    ContactCounts
-    add_interface_load(const std::vector<LocalVector> &relative,
-                       const std::vector<LocalVector> &origin,
-                       std::vector<LocalVector>       &plastic,
-                       InterfaceSnapshot              &snapshot,
-                       std::vector<Vector<double>>    &load) const;
+    void
+    complete(StepState &state) const;
+
+    /**
+     * Secant predictor (LoadPathStates::extrapolate); condensed, the
+     * controlled motion of K^-1 c moves on with c too.
+     */
+    void
+    extrapolate(const StepState &before_last,
+                const double     ratio,
+                StepState       &state) const override;
 
     /**
      * The load that holds each held motion (Rigid foundation/Held motions)
@@ -262,7 +319,11 @@ namespace FourierSSI
     held_reactions(const StepState         &state,
                    const InterfaceSnapshot &interface_state) const;
 
-    /** lambda that puts the controlled motion of the state at target. */
+    /**
+     * lambda that puts the controlled motion of the state at target: the
+     * motion of K^-1 c (the condensed one, or from the field) and of the
+     * held loads, and of the pattern (pattern_motion, held_motion).
+     */
     double
     controlled_load_factor(const StepState &state, const double target) const;
 
@@ -302,8 +363,13 @@ namespace FourierSSI
     {
       /** Total strain and s_p per (point, theta). */
       std::vector<StrainVector> strain, plastic;
-      /** Coulomb interfaces: relative displacement and d_p (empty without). */
-      std::vector<LocalVector> relative, interface_plastic;
+      /**
+       * Nonlinear interfaces (empty without): relative displacement, d_p,
+       * traction, stick/slip/open per (point, theta), and the counts.
+       */
+      std::vector<LocalVector>  relative, interface_plastic, traction;
+      std::vector<ContactState> contact;
+      ContactCounts             counts = {{0, 0, 0}};
       /** R = G - c per harmonic (condensed), and |R|. */
       std::vector<Vector<double>> residual;
       double                      residual_norm = 0.;
@@ -312,21 +378,20 @@ namespace FourierSSI
     };
 
     /**
-     * Steps 1-4 of an iteration at `state`: strains, return mapping,
-     * out-of-balance load and residual (the counts into `result`).
+     * Steps 1-4 of an iteration at `state`: strains and relative
+     * displacements, return mapping, out-of-balance load and residual (the
+     * soil's counts into `result`).
      */
     Evaluation
     evaluate(const StepState &state, LoadStepResult &result) const;
 
     /**
-     * The coulomb interfaces' part of an evaluation: their relative
+     * The nonlinear interfaces' part of an evaluation: their relative
      * displacements, return mapping and load added to the residual; returns
      * the norm of that load (part of the force scale).
      */
     double
-    add_interface_residual(const StepState &state,
-                           Evaluation      &e,
-                           LoadStepResult  &result) const;
+    add_interface_residual(const StepState &state, Evaluation &e) const;
 
     /** A converged iterate: its plastic state and the step's records. */
     void
@@ -335,7 +400,11 @@ namespace FourierSSI
            StepState         &state,
            LoadStepResult    &result) const;
 
-    /** A change of c and the displacement K^-1 dc it makes (per harmonic). */
+    /**
+     * A change of c and the displacement K^-1 dc it makes (per harmonic);
+     * condensed, dc at the write DoFs only and no displacement (the
+     * condensation gives it where it is read).
+     */
     struct Correction
     {
       std::vector<Vector<double>> load, solution;
@@ -353,18 +422,29 @@ namespace FourierSSI
 
     /**
      * Stiffness = tangent: the Newton correction at an iterate, the tangent
-     * rebuilt there (tangent_correction), with its K^-1 dc.
+     * rebuilt there (tangent_correction), with its K^-1 dc; condensed, the
+     * update of the condensed Jacobian (InterfaceCondensation).
      */
     Correction
     newton_correction(const Evaluation &e,
                       const StepState  &state,
                       const bool        displacement_control);
 
+    /**
+     * The initial-stiffness update of an iterate (Load path/Acceleration on
+     * c and R): dc and its K^-1 dc (one solve per harmonic), condensed at
+     * the write DoFs.
+     */
+    Correction
+    initial_stiffness_correction(FixedPointAcceleration &acceleration,
+                                 const StepState        &state,
+                                 const Evaluation       &e) const;
+
     /** dc and its K^-1 dc (one solve per harmonic). */
     Correction
     correction_of(std::vector<Vector<double>> load) const;
 
-    /** c <- c + alpha dc and v <- v + alpha K^-1 dc. */
+    /** c <- c + alpha dc and v <- v + alpha K^-1 dc (condensed: its view). */
     void
     add_correction(const double      alpha,
                    const Correction &correction,
@@ -393,6 +473,25 @@ namespace FourierSSI
             LoadStepResult &result,
             Evaluation     &e,
             unsigned int   &iterations);
+
+    /**
+     * Interfaces only, Maximum harmonic above the set's: harmonics n <=
+     * Maximum harmonic, not solved, whose amplitude in the traction change
+     * t - t0 of a converged state exceeds Harmonic tolerance times the
+     * largest amplitude; each logged with its amplitude
+     * (coupled_solver_growth.cc).
+     */
+    std::vector<Harmonic>
+    harmonics_called_for(const InterfaceSnapshot &snapshot,
+                         std::ostream            &log) const;
+
+    /** Add harmonics to the set and extend the committed state by zeros. */
+    void
+    grow(const std::vector<Harmonic> &added);
+
+    /** The log's first lines: the sources, the iteration and the loading. */
+    void
+    describe(std::ostream &log) const;
 
     /**
      * F_held,h: the held loads of harmonic h (held_stage_load: Rigid
@@ -453,11 +552,23 @@ namespace FourierSSI
     tangent_correction(const std::vector<Vector<double>> &residual,
                        const bool displacement_control) const;
 
-    const HarmonicSet    &set;
-    const AllParameters  &parameters;
-    LoadPathParameters    settings;
+    HarmonicSet         &set;
+    const AllParameters &parameters;
+    LoadPathParameters   settings;
+    /**
+     * Plastic soil or a swipe: the coupled tangent; otherwise condensed
+     * (AllParameters::runs_coupled_tangent_solver).
+     */
+    const bool condensed;
+    /** Newton (Stiffness = tangent) rather than initial stiffness. */
+    const bool newton;
+    /** The parameter section a step's one-line error names. */
+    const std::string     entry;
     std::vector<Harmonic> harmonics;
     ThetaSampling         sampling;
+    /** Every candidate harmonic n <= Maximum harmonic (growth only). */
+    std::vector<Harmonic> candidates;
+    ThetaSampling         spectrum;
     /**
      * The nonlinear interfaces' samples: those of the soil, but with
      * `contact` or a stiff coulomb law that can open (through the
@@ -479,15 +590,19 @@ namespace FourierSSI
     bool persistent = false;
     /** Strain amplitudes of the load pattern. */
     StrainAmplitudes pattern_strain;
+    /** Controlled motions of u_F and u_held (0: no held loads). */
+    double pattern_motion = 0., held_motion = 0.;
     /** Stiffness = tangent: the coupled tangent and K_t^-1 F. */
     std::unique_ptr<CoupledTangent> tangent;
     std::vector<Vector<double>>     tangent_pattern;
     /**
-     * Coulomb interfaces (null: none): their points, and the relative
+     * Nonlinear interfaces (null: none): their points, and the relative
      * displacements of the loads' elastic solutions.
      */
-    std::unique_ptr<NonlinearInterfacePoints>   interface;
-    InterfaceLoadCases                          interface_cases;
+    std::unique_ptr<NonlinearInterfacePoints> interface;
+    InterfaceLoadCases                        interface_cases;
+    /** Interfaces only: the condensed linearisation (null otherwise). */
+    std::unique_ptr<InterfaceCondensation>      condensation;
     std::function<void(const LoadStepResult &)> step_observer;
   };
 } // namespace FourierSSI

@@ -1,43 +1,40 @@
-// Output of CoupledInterfaceSolver: the interface state around the
-// circumference (doc/nonlinear-interfaces.md section 9). The solve itself is in
-// coupled_interface_solver.cc.
+// Output of CoupledSolver: the interface state around the circumference
+// (doc/nonlinear-interfaces.md section 9). The solve itself is in
+// coupled_solver.cc.
 #include <cmath>
-#include <fourier_ssi/coupled/coupled_interface_solver.h>
+#include <fourier_ssi/coupled/coupled_solver.h>
 #include <fourier_ssi/postprocess/vtu_output.h>
 #include <fstream>
 
 namespace FourierSSI
 {
-  namespace
-  {
-    const std::string entry_name = "Load path";
-
-  } // namespace
-
   void
-  CoupledInterfaceSolver::write_interface_state_csv(
-    const std::string &filename) const
+  CoupledSolver::write_interface_state_csv(const std::string &filename) const
   {
-    interface.write_state_csv(filename, interface_states(steps), sampling);
+    AssertThrow(interface != nullptr,
+                ExcMessage(entry + ": the scene has no nonlinear interface"));
+    interface->write_state_csv(filename,
+                               interface_states(steps),
+                               interface_sampling);
   }
 
   void
-  CoupledInterfaceSolver::write_interface_state_vtu(
-    const std::string &filename) const
+  CoupledSolver::write_interface_state_vtu(const std::string &filename) const
   {
-    AssertThrow(!steps.empty(),
-                ExcMessage(entry_name + ": no converged step to write"));
-    const InterfaceSnapshot &last = steps.back().interface_state;
-    const unsigned int       N    = sampling.n_samples();
+    AssertThrow(interface != nullptr && !steps.empty(),
+                ExcMessage(entry + ": no converged interface state to write"));
+    const InterfaceSnapshot           &last   = steps.back().interface_state;
+    const std::vector<InterfacePoint> &points = interface->get_points();
+    const unsigned int                 N      = interface_sampling.n_samples();
     // One point per (Gauss point, theta) sample, in the snapshot's order.
     std::vector<Point<3>>            positions;
     std::vector<std::vector<double>> values(3);
     for (unsigned int i = 0; i < points.size(); ++i)
       for (unsigned int j = 0; j < N; ++j)
         positions.emplace_back(points[i].position[0] *
-                                 std::cos(sampling.angle(j)),
+                                 std::cos(interface_sampling.angle(j)),
                                points[i].position[0] *
-                                 std::sin(sampling.angle(j)),
+                                 std::sin(interface_sampling.angle(j)),
                                points[i].position[1]);
     for (unsigned int k = 0; k < positions.size(); ++k)
       {
