@@ -20,7 +20,7 @@ namespace FourierSSI
     run.goal_prefix = "end_load_";
     run.solve       = [&](std::ostream &out) {
       solver.reset();
-      solver            = solve_coupled_curve<CoupledSolver>(out, false);
+      solver            = solve_coupled_curve(out, false);
       const auto &steps = solver->get_steps();
       AssertThrow(!steps.empty(),
                   ExcMessage("Discretization/Target accuracy: no converged "
@@ -46,7 +46,7 @@ namespace FourierSSI
         solve_coupled_to_target(log, run);
         return;
       }
-    solver = solve_coupled_curve<CoupledSolver>(log, true);
+    solver = solve_coupled_curve(log, true);
     run.add_rows(log);
     run.write_files(log);
   }
@@ -54,7 +54,7 @@ namespace FourierSSI
   void
   Simulator::add_interface_rows(const CoupledSolver &solver)
   {
-    add_load_step_rows(solver, results);
+    add_load_step_rows(solver);
     keep_last_step(solver);
     add_held_reaction_rows(solver);
   }

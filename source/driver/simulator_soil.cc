@@ -245,7 +245,7 @@ namespace FourierSSI
         return;
       }
     const std::unique_ptr<CoupledSolver> solver =
-      solve_coupled_curve<CoupledSolver>(log, true, [&](CoupledSolver &s) {
+      solve_coupled_curve(log, true, [&](CoupledSolver &s) {
         record_soil_reactions(s);
       });
     add_plastic_rows(*solver, log);
@@ -295,7 +295,7 @@ namespace FourierSSI
   void
   Simulator::add_plastic_rows(const CoupledSolver &solver, std::ostream &log)
   {
-    add_load_step_rows(solver, results);
+    add_load_step_rows(solver);
     add_plastic_state_rows(solver, parameters, results);
     if (reaction_curves)
       {
@@ -388,7 +388,7 @@ namespace FourierSSI
     run.plateau     = !load_control;
     run.solve       = [&](std::ostream &out) {
       solver.reset();
-      solver           = solve_coupled_curve<CoupledSolver>(out, false);
+      solver           = solve_coupled_curve(out, false);
       const auto steps = static_cast<unsigned int>(solver->get_steps().size());
       if (load_control)
         return CoupledGoal{"work", "kJ", solver->load_work(), 0., steps};

@@ -217,52 +217,6 @@ namespace FourierSSI
                           const double                     residual);
 
   /**
-   * The rows of results.csv every coupled solver writes per converged load
-   * step (cycle = step number): the applied loads [kN, kN.m], the
-   * foundation motion [m, rad], iterations, residual and wall time. A step
-   * result has load_factor, motion, iterations, residual and time; the
-   * solver has applied_loads(load_factor, held_fraction).
-   */
-  template <class Solver>
-  void
-  add_load_step_rows(const Solver &solver, ResultsTable &results)
-  {
-    const Harmonic any{0, Family::symmetric};
-    const auto    &steps = solver.get_steps();
-    for (unsigned int s = 0; s < steps.size(); ++s)
-      {
-        const auto &r    = steps[s];
-        const auto loads = solver.applied_loads(r.load_factor, r.held_fraction);
-        const RigidMotion &m    = r.motion;
-        const unsigned int step = s + 1;
-        results.add("step_load_factor", any, step, r.load_factor, "-");
-        results.add("step_vertical_force",
-                    any,
-                    step,
-                    vertical_force_of(loads, r.swipe_force),
-                    "kN");
-        results.add("step_horizontal_force", any, step, loads[0], "kN");
-        results.add("step_moment", any, step, loads[4], "kN.m");
-        results.add("step_torque", any, step, loads[5], "kN.m");
-        results.add("step_vertical_displacement",
-                    any,
-                    step,
-                    m.vertical_displacement,
-                    "m");
-        results.add("step_horizontal_displacement",
-                    any,
-                    step,
-                    m.horizontal_displacement,
-                    "m");
-        results.add("step_rotation", any, step, m.rotation, "rad");
-        results.add("step_twist", any, step, m.twist, "rad");
-        results.add("step_iterations", any, step, r.iterations, "-");
-        results.add("step_residual", any, step, r.residual, "-");
-        results.add("step_wall_time", any, step, r.time, "s");
-      }
-  }
-
-  /**
    * The one line of a load step that did not converge even after the
    * allowed step cuts (`entry` names the solver's parameter section). The
    * step is numbered as the user counts them, "load step 2 of 2 (after 4
@@ -280,29 +234,6 @@ namespace FourierSSI
                            const unsigned int        cuts,
                            const unsigned int        converged_steps,
                            const LoadPathParameters &settings);
-
-  /**
-   * Runs a coupled solver's load steps; if one fails, the converged steps
-   * are written to `incomplete_curve` (unless empty; the name marks them
-   * as such) before the error goes on.
-   */
-  template <class Solver>
-  void
-  run_keeping_converged_steps(Solver            &solver,
-                              std::ostream      &log,
-                              const std::string &incomplete_curve)
-  {
-    try
-      {
-        solver.run(log);
-      }
-    catch (const std::exception &)
-      {
-        if (!incomplete_curve.empty() && !solver.get_steps().empty())
-          solver.write_csv(incomplete_curve);
-        throw;
-      }
-  }
 
   /**
    * The update of the correction load c <- c + dc of one iteration from

@@ -197,53 +197,33 @@ namespace FourierSSI
      */
     void
     solve_nonlinear_interfaces(std::ostream &log);
-    /** load-displacement.csv of a coupled solver, and its log line. */
-    template <class Solver>
+    /** load-displacement.csv of the coupled solver, and its log line. */
     void
-    write_load_displacement_csv(const Solver &solver, std::ostream &log)
-    {
-      const std::string curve = result_files.claim("load-displacement.csv");
-      solver.write_csv(curve);
-      log << "load-displacement curve written to " << curve << std::endl;
-    }
+    write_load_displacement_csv(const CoupledSolver &solver, std::ostream &log);
+
+    /**
+     * The rows of results.csv per converged load step of the coupled
+     * solver (cycle = step number): the applied loads [kN, kN.m], the
+     * foundation motion [m, rad], iterations, residual and wall time.
+     */
+    void
+    add_load_step_rows(const CoupledSolver &solver);
 
     /**
      * The rows <reaction_row> of a coupled run's held reactions (the loads
      * that hold Rigid foundation/Held motions, a probe's H and M) at its
      * last converged step.
      */
-    template <class Solver>
     void
-    add_held_reaction_rows(const Solver &solver)
-    {
-      const Harmonic any{0, Family::symmetric};
-      for (const auto &[motion, load] :
-           solver.get_steps().back().held_reactions)
-        results.add(parameters.rigid_foundation.reaction_row(motion),
-                    any,
-                    solver.get_steps().size(),
-                    load,
-                    load_unit_of(motion));
-    }
+    add_held_reaction_rows(const CoupledSolver &solver);
 
     /**
-     * The last converged step of a coupled solver as every harmonic's
+     * The last converged step of the coupled solver as every harmonic's
      * solution (3D and per-harmonic output). Collective under mpirun: the
      * owner of each harmonic sends its field.
      */
-    template <class Solver>
     void
-    keep_last_step(const Solver &solver)
-    {
-      // The 3D reconstruction sums the harmonics' solutions: the converged
-      // total field of the last step, u_h = lambda u_F,h + K_h^-1 c_h.
-      reconstruction = FieldReconstruction();
-      for (unsigned int h = 0; h < harmonic_set->size(); ++h)
-        {
-          harmonic_set->problem(h).set_solution(solver.solution(h));
-          reconstruction.add(harmonic_set->shared_problem(h));
-        }
-    }
+    keep_last_step(const CoupledSolver &solver);
 
     /**
      * Output/Write vtu of a coupled run: each harmonic's amplitudes of the
@@ -274,36 +254,16 @@ namespace FourierSSI
 
     /**
      * The HarmonicSet of plan.harmonics on the current mesh and the load
-     * path of the coupled Solver (CoupledSolver)
-     * on it; with keep_incomplete, the converged steps of a path that fails
-     * are written to load-displacement-incomplete.csv (marked by the name;
-     * not claimed: a failed run removes its results, not this record).
+     * path of the CoupledSolver on it; with keep_incomplete, the converged
+     * steps of a path that fails are written to
+     * load-displacement-incomplete.csv (marked by the name; not claimed: a
+     * failed run removes its results, not this record).
      */
-    template <class Solver>
-    std::unique_ptr<Solver>
+    std::unique_ptr<CoupledSolver>
     solve_coupled_curve(
-      std::ostream                        &log,
-      const bool                           keep_incomplete,
-      const std::function<void(Solver &)> &before_run = nullptr)
-    {
-      Timer timer;
-      make_distributed_harmonic_set();
-      log << "assembled and factorized " << harmonic_set->size()
-          << " harmonics in " << timer.wall_time() << " s" << std::endl;
-      log_harmonic_distribution(log);
-      auto solver = std::make_unique<Solver>(*harmonic_set, parameters);
-      if (before_run)
-        before_run(*solver);
-      run_keeping_converged_steps(*solver,
-                                  log,
-                                  keep_incomplete && writes_csv() ?
-                                    result_files.path_of(
-                                      "load-displacement-incomplete.csv") :
-                                    "");
-      log << "coupled solve: " << solver->get_steps().size() << " steps in "
-          << timer.wall_time() << " s" << std::endl;
-      return solver;
-    }
+      std::ostream                               &log,
+      const bool                                  keep_incomplete,
+      const std::function<void(CoupledSolver &)> &before_run = nullptr);
 
     /**
      * Output/Soil reaction depths: the curves' recorder, fed by the
