@@ -589,8 +589,6 @@ namespace FourierSSI
         // 3: the soil's out-of-balance load.
         e.residual = soil.load_of(e.plastic);
       }
-    else
-      e.residual = zero_fields(set);
     // 1-3 of the nonlinear interfaces: theirs added (one c for both
     // sources); 4: the force residual R = G - c.
     const double interface_load_norm =
@@ -622,12 +620,17 @@ namespace FourierSSI
                                      e.traction,
                                      e.contact);
     // G = int B^T (D_K d - (t - t0)), D_K the springs in K.
-    const std::vector<Vector<double>> interface_load = interface->load_of(
+    std::vector<Vector<double>> interface_load = interface->load_of(
       interface->iteration_plastic(e.relative, e.traction, e.interface_plastic),
       interface_sampling);
-    for (unsigned int h = 0; h < set.size(); ++h)
-      e.residual[h] += interface_load[h];
-    return norm_over_harmonics(interface_load);
+    const double norm = norm_over_harmonics(interface_load);
+    // Without soil the interfaces' load is the whole G.
+    if (e.residual.empty())
+      e.residual = std::move(interface_load);
+    else
+      for (unsigned int h = 0; h < set.size(); ++h)
+        e.residual[h] += interface_load[h];
+    return norm;
   }
 
   void

@@ -346,7 +346,7 @@ namespace FourierSSI
     if (!writes_csv())
       return;
     write_load_displacement_csv(solver, log);
-    if (solver.has_coulomb_interfaces())
+    if (solver.has_nonlinear_interfaces())
       {
         const std::string state = result_files.claim("interface-state.csv");
         solver.write_interface_state_csv(state);

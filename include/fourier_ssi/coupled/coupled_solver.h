@@ -222,7 +222,7 @@ namespace FourierSSI
 
     /** True if the scene has nonlinear (coulomb, contact) interfaces. */
     bool
-    has_coulomb_interfaces() const
+    has_nonlinear_interfaces() const
     {
       return interface != nullptr;
     }
@@ -387,8 +387,9 @@ namespace FourierSSI
 
     /**
      * The nonlinear interfaces' part of an evaluation: their relative
-     * displacements, return mapping and load added to the residual; returns
-     * the norm of that load (part of the force scale).
+     * displacements, return mapping and load added to the residual (the
+     * residual, if empty: no soil); returns the norm of that load (part of
+     * the force scale).
      */
     double
     add_interface_residual(const StepState &state, Evaluation &e) const;
