@@ -200,9 +200,8 @@ namespace FourierSSI
     , set(set)
     , parameters(parameters)
     , settings(parameters.load_path)
-    , condensed(!parameters.runs_coupled_tangent_solver())
-    , newton(condensed ? settings.tangent_stiffness :
-                         parameters.soil_plasticity.tangent)
+    , condensed(!parameters.linearises_on_coupled_tangent())
+    , newton(parameters.newton_on_load_path())
     , entry(condensed ? "Load path" : "Soil plasticity")
     , harmonics(set.get_harmonics())
     , sampling(harmonics,

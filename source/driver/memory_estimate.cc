@@ -102,8 +102,8 @@ namespace FourierSSI
       coupled ? n_harmonics :
                 concurrent_factorizations(parameters, plan.harmonics.size());
     const double factorizations = held * n_dofs * factorization_bytes_per_dof;
-    const bool   tangent        = parameters.runs_coupled_tangent_solver() &&
-                         parameters.soil_plasticity.tangent;
+    const bool   tangent        = parameters.linearises_on_coupled_tangent() &&
+                         parameters.newton_on_load_path();
     const double coupled_tangent =
       tangent ?
         tangent_bytes_per_dof_and_pair * n_harmonics * n_harmonics * n_dofs :

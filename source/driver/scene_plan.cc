@@ -395,7 +395,7 @@ namespace FourierSSI
   RunMode
   run_mode_of(const AllParameters &parameters)
   {
-    if (parameters.runs_coupled_tangent_solver())
+    if (parameters.linearises_on_coupled_tangent())
       return RunMode::plastic_soil;
     if (parameters.interfaces.any_nonlinear())
       return RunMode::load_path;

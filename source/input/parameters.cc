@@ -536,10 +536,10 @@ namespace FourierSSI
     // Newton (either linearisation) assembles coulomb springs no
     // stiffer than a cap times G / l; stiffer laws act through the augmented
     // Lagrangian's multipliers (interface_law.h).
-    if (runs_coupled_tangent_solver() && soil_plasticity.tangent)
-      interfaces.iteration_stiffness_cap = soil_iteration_stiffness;
-    else if (!runs_coupled_tangent_solver() && load_path.tangent_stiffness)
-      interfaces.iteration_stiffness_cap = interface_iteration_stiffness;
+    if (newton_on_load_path())
+      interfaces.iteration_stiffness_cap = linearises_on_coupled_tangent() ?
+                                             soil_iteration_stiffness :
+                                             interface_iteration_stiffness;
     check_laws(*this);
     check_target_accuracy(*this);
     check_prescribed_displacements(*this);

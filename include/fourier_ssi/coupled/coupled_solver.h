@@ -28,7 +28,7 @@
  *      safeguarded_newton.h) or by the accelerated initial-stiffness
  *      update.
  * The linearisation is the one decision that differs between scenes
- * (AllParameters::runs_coupled_tangent_solver):
+ * (AllParameters::linearises_on_coupled_tangent):
  *   - plastic soil (or a swipe): K^-1 dc re-solved for every harmonic with
  *     the kept factorizations; Newton on the coupled tangent K_t of every
  *     harmonic (Soil plasticity/Stiffness = tangent, coupled_tangent.h);
@@ -88,25 +88,7 @@ namespace FourierSSI
 {
   using namespace dealii;
 
-  /**
-   * Iteration state of a load step. Condensed (interfaces only), K^-1 c in
-   * correction_solution is exact at the interface DoFs only while a step
-   * iterates, and whole once it converged (InterfaceCondensation).
-   */
-  struct CoupledStepState : CorrectionState
-  {
-    /** Plastic soil: s_p = D eps_p per (point, theta); empty without. */
-    std::vector<StrainVector> plastic;
-    /**
-     * Nonlinear interfaces: d_p, the return's origin and p_c per
-     * (interface point, theta); empty without.
-     */
-    InterfaceState interfaces;
-    /** Condensed: the controlled motion of K^-1 c [m or rad]. */
-    double controlled_motion = 0.;
-  };
-
-  class CoupledSolver : private LoadPathStates<CoupledStepState>
+  class CoupledSolver : private LoadPathStates
   {
   public:
     /**
@@ -558,7 +540,7 @@ namespace FourierSSI
     LoadPathParameters   settings;
     /**
      * Plastic soil or a swipe: the coupled tangent; otherwise condensed
-     * (AllParameters::runs_coupled_tangent_solver).
+     * (AllParameters::linearises_on_coupled_tangent).
      */
     const bool condensed;
     /** Newton (Stiffness = tangent) rather than initial stiffness. */

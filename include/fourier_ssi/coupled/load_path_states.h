@@ -6,10 +6,8 @@
  * its rigid motion (rigid_motion_of), its controlled motion on every MPI
  * rank and the applied foundation loads, the secant predictor of c and
  * K^-1 c (extrapolate), and the records of the converged steps
- * (load_step_result.h). A State has load_factor, held_fraction and
- * correction_solution (K^-1 c per harmonic, CorrectionState); the solver
- * gives the iteration of a step (LoadPath::Iteration) and what its state
- * keeps beyond c.
+ * (load_step_result.h). The solver (CoupledSolver) gives the iteration of
+ * a step (LoadPath::Iteration).
  */
 #ifndef fourier_ssi_load_path_states_h
 #define fourier_ssi_load_path_states_h
@@ -31,8 +29,13 @@ namespace FourierSSI
 {
   using namespace dealii;
 
-  /** What every coupled state holds: lambda, rho, c and K^-1 c. */
-  struct CorrectionState
+  /**
+   * The state of a coupled load step: lambda, rho, mu, c and K^-1 c, and
+   * what the nonlinear sources keep. Condensed (interfaces only,
+   * InterfaceCondensation), K^-1 c in correction_solution is exact at the
+   * interface DoFs only while a step iterates, and whole once it converged.
+   */
+  struct CoupledStepState
   {
     double load_factor = 0.;
     /** rho: the held loads' part rho F_held of the load. */
@@ -41,12 +44,22 @@ namespace FourierSSI
     double swipe_force = 0.;
     /** K^-1 c per harmonic, and c (condensed). */
     std::vector<Vector<double>> correction_solution, correction_load;
+    /** Plastic soil: s_p = D eps_p per (point, theta); empty without. */
+    std::vector<StrainVector> plastic;
+    /**
+     * Nonlinear interfaces: d_p, the return's origin and p_c per
+     * (interface point, theta); empty without.
+     */
+    InterfaceState interfaces;
+    /** Condensed: the controlled motion of K^-1 c [m or rad]. */
+    double controlled_motion = 0.;
   };
 
-  template <class State>
   class LoadPathStates : public LoadPath::Iteration
   {
   public:
+    using State = CoupledStepState;
+
     /**
      * Total displacement amplitudes of harmonic i (last converged state).
      * Collective when the harmonics are distributed over ranks: every rank

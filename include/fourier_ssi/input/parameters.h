@@ -169,10 +169,23 @@ namespace FourierSSI
      * Otherwise nonlinear interfaces run condensed (InterfaceCondensation).
      */
     bool
-    runs_coupled_tangent_solver() const
+    linearises_on_coupled_tangent() const
     {
       return soil_plasticity.any() ||
              (interfaces.any_nonlinear() && rigid_foundation.swipes());
+    }
+
+    /**
+     * Newton steps the load path (Stiffness = tangent): Soil
+     * plasticity/Stiffness on the coupled tangent, Load path/Stiffness where
+     * the interfaces run condensed; otherwise the initial-stiffness
+     * iteration.
+     */
+    bool
+    newton_on_load_path() const
+    {
+      return linearises_on_coupled_tangent() ? soil_plasticity.tangent :
+                                               load_path.tangent_stiffness;
     }
 
     AllParameters();
