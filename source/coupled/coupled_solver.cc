@@ -260,6 +260,13 @@ namespace FourierSSI
         if (!loads.swipe_solution.empty())
           swipe_strain = soil.strain_amplitudes(loads.swipe_solution);
       }
+    // A swipe's multipliers read the rigid motions of u_F and u_V at every
+    // iterate: constants of the run.
+    if (!loads.swipe_solution.empty())
+      {
+        pattern_rigid_motion = motion_of_fields(set, loads.solution);
+        swipe_rigid_motion   = motion_of_fields(set, loads.swipe_solution);
+      }
     if (interface)
       interface_cases = interface->load_cases(loads, interface_sampling);
     // The controlled motions of u_F and u_held: constants of the run.
@@ -417,8 +424,8 @@ namespace FourierSSI
     });
     const auto [load_factor, swipe_force] =
       swipe_multipliers(now,
-                        motion_of_fields(set, loads.solution),
-                        motion_of_fields(set, loads.swipe_solution),
+                        pattern_rigid_motion,
+                        swipe_rigid_motion,
                         target,
                         swipe_settlement,
                         displacement_control);
@@ -638,7 +645,8 @@ namespace FourierSSI
                         StepState         &state,
                         LoadStepResult    &result) const
   {
-    if (condensed)
+    // Condensed Newton's force test completed K^-1 c already (iterate()).
+    if (condensed && !newton)
       complete(state);
     if (soil.size() > 0)
       soil.count_over_ranks(result);

@@ -169,15 +169,6 @@ namespace FourierSSI
         correction_solution[h] = x[h][0];
   }
 
-  unsigned int
-  InterfaceCondensation::n_unknowns() const
-  {
-    unsigned int n = 0;
-    for (const Block &block : blocks)
-      n += block.write.size();
-    return n;
-  }
-
   FullMatrix<double>
   InterfaceCondensation::out_of_balance_jacobian(
     const std::vector<LocalVector> &relative,

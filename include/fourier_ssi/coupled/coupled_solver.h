@@ -565,6 +565,8 @@ namespace FourierSSI
     StrainAmplitudes    held_strain;
     /** A swipe: the strain amplitudes of K^-1 e_V. */
     StrainAmplitudes swipe_strain;
+    /** A swipe: the rigid motions of u_F and of u_V = K^-1 e_V. */
+    RigidMotion pattern_rigid_motion, swipe_rigid_motion;
     /** A swipe: w where the held stage left it [m], the value held. */
     double swipe_settlement = 0.;
     /** The step solved is a swipe's (not in its held stage): mu keeps w. */

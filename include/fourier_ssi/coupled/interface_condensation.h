@@ -84,10 +84,6 @@ namespace FourierSSI
     complete(const std::vector<Vector<double>> &correction_load,
              std::vector<Vector<double>>       &correction_solution) const;
 
-    /** The unknowns of a Newton update (the write DoFs of all harmonics). */
-    unsigned int
-    n_unknowns() const;
-
     /**
      * The Newton update dc of (I - dG/dc) dc = R at an iterate with
      * relative displacements `relative` (origin the return's), split per
