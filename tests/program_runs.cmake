@@ -142,11 +142,14 @@ fssi_expect_failure(cylinder_mohr_coulomb_above_limit
 
 # Step numbers in messages count the Load steps, not the cut steps: the
 # cylinder above its limit in two steps with four cuts fails in step 2 of 2
-# (after 20 converged cut steps ever closer to the limit, down to the
-# smallest step size: "load step 21" before).
+# after converged cut steps ever closer to the limit ("load step 21" before).
+# How many cuts the last attempt had, and whether the step size reached its
+# floor, depends on how close to the limit the rounding lets a cut step
+# converge (machines differ); the user sees the step, the failure and the
+# kept curve.
 fssi_expect_failure(step_number_counts_load_steps
   ${CMAKE_CURRENT_SOURCE_DIR}/prm/step_number_counts_load_steps.prm
-  "Soil plasticity: load step 2 of 2 \\(after 0 cuts, at the smallest step size, 2\\^-20 of a load step\\) did not converge in 3000 iterations; the [0-9]+ converged steps are kept"
+  "Soil plasticity: load step 2 of 2 \\(after [0-4] cuts[^)]*\\) did not converge in 3000 iterations; the [0-9]+ converged steps are kept"
   expect_incomplete_curve.cmake)
 
 # A misspelt option is an unknown option, not a parameter file that cannot

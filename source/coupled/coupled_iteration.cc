@@ -215,6 +215,8 @@ namespace FourierSSI
   {
     if (kind == Kind::anderson)
       return anderson.increment(load, residual);
+    if (kind == Kind::aitken)
+      restart_aitken_if_stalled(residual);
     if (kind == Kind::aitken && !previous_residual.empty())
       omega = aitken_factor(residual);
     previous_residual                  = residual;
@@ -222,6 +224,32 @@ namespace FourierSSI
     for (Vector<double> &block : result)
       block *= omega;
     return result;
+  }
+
+  void
+  FixedPointAcceleration::restart_aitken_if_stalled(
+    const std::vector<Vector<double>> &residual)
+  {
+    // Near a limit the Aitken factor can collapse towards zero, where the
+    // updates omega R no longer move the plastic state and each new factor
+    // is a ratio of round-off: |R| then freezes short of the tolerance
+    // (measured: a swipe at |R| / |F| = 3.6e-5 for 2900 iterations, omega
+    // 1e-6 ... 1e-3 of either sign, under one BLAS kernel and not another).
+    // Restarting from the plain initial-stiffness update (omega = 1) moves
+    // the state again.
+    const double norm = std::sqrt(dot_over_harmonics(residual, residual));
+    if (norm < best_residual_norm)
+      {
+        best_residual_norm      = norm;
+        updates_since_best_norm = 0;
+        return;
+      }
+    if (++updates_since_best_norm < stalled_aitken_updates)
+      return;
+    omega = 1.;
+    previous_residual.clear();
+    best_residual_norm      = norm;
+    updates_since_best_norm = 0;
   }
 
   double
@@ -232,10 +260,14 @@ namespace FourierSSI
     for (unsigned int h = 0; h < change.size(); ++h)
       change[h] -= previous_residual[h];
     const double change_sqr = dot_over_harmonics(change, change);
-    return change_sqr > 0. ?
-             -omega * dot_over_harmonics(previous_residual, change) /
-               change_sqr :
-             omega;
+    if (!(change_sqr > 0.))
+      return omega;
+    const double factor =
+      -omega * dot_over_harmonics(previous_residual, change) / change_sqr;
+    // A factor <= 0 reverses or freezes the update (R grew along itself):
+    // that is no relaxation, so take the plain update (measured on the
+    // stalled swipe step: 169 updates instead of 681).
+    return factor > 0. ? factor : 1.;
   }
 
   Vector<double>

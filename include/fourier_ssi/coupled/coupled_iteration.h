@@ -21,6 +21,7 @@
 #include <fourier_ssi/postprocess/results_table.h>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <ostream>
 #include <string>
 #include <vector>
@@ -239,8 +240,9 @@ namespace FourierSSI
    * The update of the correction load c <- c + dc of one iteration from
    * the force residual R = G(c) - c: dc = R (none), omega R with Aitken's
    * Delta^2 rule omega_k = -omega_{k-1} R_{k-1}^T (R_k - R_{k-1}) /
-   * |R_k - R_{k-1}|^2, or the Anderson update on the last m residuals
-   * (doc/nonlinear-interfaces.md section 5). One per load step.
+   * |R_k - R_{k-1}|^2 (restarted from omega = 1 where |R| stalls), or the
+   * Anderson update on the last m residuals (doc/nonlinear-interfaces.md
+   * section 5). One per load step.
    */
   class FixedPointAcceleration
   {
@@ -254,6 +256,15 @@ namespace FourierSSI
               const std::vector<Vector<double>> &residual);
 
   private:
+    /**
+     * Aitken restarts from omega = 1 after this many updates without a new
+     * smallest |R|: a stalled factor, not a slow contraction.
+     */
+    static constexpr unsigned int stalled_aitken_updates = 10;
+
+    void
+    restart_aitken_if_stalled(const std::vector<Vector<double>> &residual);
+
     double
     aitken_factor(const std::vector<Vector<double>> &residual) const;
 
@@ -261,6 +272,8 @@ namespace FourierSSI
     AndersonAcceleration        anderson;
     double                      omega = 1.;
     std::vector<Vector<double>> previous_residual;
+    double       best_residual_norm      = std::numeric_limits<double>::max();
+    unsigned int updates_since_best_norm = 0;
   };
 } // namespace FourierSSI
 
