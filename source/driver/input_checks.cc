@@ -16,6 +16,39 @@ namespace FourierSSI
 {
   namespace
   {
+    /**
+     * The results file is a plain .csv name in the output folder: a path
+     * would write outside it ("../escape.csv"), and a name the run writes
+     * itself, or its ".partial" stage, would be overwritten by (or
+     * overwrite) that file.
+     */
+    std::string
+    results_file_name_error(const std::string &name)
+    {
+      const std::string entry = "Output/Results file: '" + name + "' ";
+      if (name.find('/') != std::string::npos)
+        return entry + "is a path; give a file name (the file is written "
+                       "in Output/Directory)";
+      const std::string csv = ".csv";
+      if (name.front() == '.' || name.size() <= csv.size() ||
+          name.compare(name.size() - csv.size(), csv.size(), csv) != 0)
+        return entry + "is not a file name ending in .csv";
+      for (const char *own : {"batch.csv",
+                              "foundation-stiffness.csv",
+                              "interface-state.csv",
+                              "lines-3d.csv",
+                              "load-displacement.csv",
+                              "load-displacement-incomplete.csv",
+                              "soil-reaction-curves.csv"})
+        if (name == own)
+          return entry + "is the name of a file the run writes itself; "
+                         "choose another";
+      return "";
+    }
+  } // namespace
+
+  namespace
+  {
     std::string
     format(const double value)
     {
@@ -557,6 +590,6 @@ namespace FourierSSI
     if (std::filesystem::is_directory(results) || !name.has_filename() ||
         name.filename() == "." || name.filename() == "..")
       return "Output/Results file: '" + results + "' is a directory";
-    return "";
+    return results_file_name_error(Utilities::trim(output.results_file));
   }
 } // namespace FourierSSI

@@ -3,6 +3,7 @@
 #include <deal.II/base/utilities.h>
 #include <fourier_ssi/fourier/material.h>
 #include <fourier_ssi/input/prm_values.h>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -55,6 +56,18 @@ namespace FourierSSI
 
   namespace
   {
+    /** The moduli [kPa] a material may have. */
+    constexpr double smallest_modulus = 1e-3;
+    constexpr double largest_modulus  = 1e12;
+
+    std::string
+    number_text(const double value)
+    {
+      std::ostringstream out;
+      out << value;
+      return out.str();
+    }
+
     /** The one-line error of Materials/Materials, quoting the whole text. */
     void
     refuse_materials(const std::string &text, const std::string &what)
@@ -89,11 +102,11 @@ namespace FourierSSI
       return id;
     }
 
-    /** The moduli as given (-1: not given) and whether nu was. */
+    /** The moduli as given (empty: not given) and whether nu was. */
     struct GivenModuli
     {
-      double E = -1., G = -1.;
-      bool   has_nu = false;
+      std::optional<double> E, G;
+      bool                  has_nu = false;
     };
 
     /** The key=value pairs after the colon of one entry. */
@@ -113,18 +126,11 @@ namespace FourierSSI
             refuse_materials(text, "'" + pair + "' is not key=value");
           const std::string key = Utilities::trim(pair.substr(0, eq));
           record_key_once(keys_given, key, "Materials/Materials", entry);
-          double value;
-          try
-            {
-              value = Utilities::string_to_double(
-                Utilities::trim(pair.substr(eq + 1)));
-            }
-          catch (...)
-            {
-              refuse_materials(text, "value of '" + key + "' is not a number");
-            }
-          if (!std::isfinite(value))
-            refuse_materials(text, "value of '" + key + "' is not finite");
+          const double value =
+            number_in_entry(pair.substr(eq + 1),
+                            "Materials/Materials: material '" +
+                              Utilities::trim(entry.substr(0, colon)) +
+                              "': " + key);
           if (key == "E")
             given.E = value;
           else if (key == "G")
@@ -146,6 +152,27 @@ namespace FourierSSI
       return given;
     }
 
+    /** A modulus [kPa] named `what`: positive and within the bounds. */
+    void
+    check_modulus(const std::string &text,
+                  const std::string &what,
+                  const double       modulus)
+    {
+      if (!(modulus > 0.))
+        refuse_materials(text,
+                         what + " = " + number_text(modulus) +
+                           ": the modulus must be positive");
+      // Outside these bounds the stiffness and the penalty ties lose every
+      // digit (G = 1e-300 gave a negative K_V, 1e300 an inf): no soil or
+      // structure in kPa lies there.
+      if (modulus < smallest_modulus || modulus > largest_modulus)
+        refuse_materials(text,
+                         what + " = " + number_text(modulus) +
+                           " kPa is outside " + number_text(smallest_modulus) +
+                           " ... " + number_text(largest_modulus) +
+                           " kPa (units: kN, m, kPa)");
+    }
+
     /** Check the given data and set the shear modulus (from E or G). */
     void
     finish_material(ElasticMaterial   &material,
@@ -153,7 +180,6 @@ namespace FourierSSI
                     const std::string &where,
                     const std::string &text)
     {
-      const double E = given.E, G = given.G;
       if (!given.has_nu)
         refuse_materials(text, where + "nu is missing");
       if (!(material.poisson_ratio > -1. && material.poisson_ratio < 0.5))
@@ -164,17 +190,18 @@ namespace FourierSSI
                            where + "nu = " + nu.str() +
                              " must satisfy -1 < nu < 0.5");
         }
-      if ((E > 0.) == (G > 0.) && !(E == -1. && G == -1.))
-        {
-          if (E != -1. && G != -1.)
-            refuse_materials(text, where + "give E or G, not both");
-        }
-      if (E == -1. && G == -1.)
+      // Each modulus given is checked before the pair: a negative one is
+      // the mistake to name, not that both were given.
+      for (const auto &[name, value] :
+           {std::pair{"E", given.E}, std::pair{"G", given.G}})
+        if (value)
+          check_modulus(text, where + name, *value);
+      if (given.E && given.G)
+        refuse_materials(text, where + "give E or G, not both");
+      if (!given.E && !given.G)
         refuse_materials(text, where + "E or G is missing");
-      if ((E != -1. && !(E > 0.)) || (G != -1. && !(G > 0.)))
-        refuse_materials(text, where + "the modulus must be positive");
       material.shear_modulus_ref =
-        G > 0. ? G : E / (2. * (1. + material.poisson_ratio));
+        given.G ? *given.G : *given.E / (2. * (1. + material.poisson_ratio));
       if (!(material.alpha >= 0.))
         refuse_materials(text, where + "alpha must be >= 0");
       if (!(material.depth_ref > 0.))

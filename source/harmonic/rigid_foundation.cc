@@ -534,6 +534,10 @@ namespace FourierSSI
                            "frictionless contact with no horizontal stiffness; "
                            "a Horizontal force makes the system singular"));
     stiffness_matrix = prm.get_bool("Stiffness matrix");
+    AssertThrow(!stiffness_matrix || enabled,
+                ExcMessage("Rigid foundation/Stiffness matrix: the 6x6 is "
+                           "that of the rigid foundation, which is off; set "
+                           "Enabled = true"));
     // The matrix's H-M block is the unit H and unit M solves.
     stiffness_coefficients =
       prm.get_bool("Stiffness coefficients") || stiffness_matrix;

@@ -9,11 +9,18 @@ namespace FourierSSI
   double
   number_in_entry(const std::string &text, const std::string &entry)
   {
-    const std::string t   = dealii::Utilities::trim(text);
-    char             *end = nullptr;
-    const double      v   = std::strtod(t.c_str(), &end);
-    AssertThrow(!t.empty() && end == t.c_str() + t.size() && std::isfinite(v),
+    const std::string t = dealii::Utilities::trim(text);
+    // strtod also reads hexadecimal ("0x4E20" = 20000), "inf" and "nan":
+    // none of them is a number a .prm means.
+    const bool decimal =
+      !t.empty() && t.find_first_not_of("0123456789.eE+-") == std::string::npos;
+    char        *end = nullptr;
+    const double v   = decimal ? std::strtod(t.c_str(), &end) : 0.;
+    AssertThrow(decimal && end == t.c_str() + t.size(),
                 dealii::ExcMessage(entry + ": '" + t + "' is not a number"));
+    AssertThrow(std::isfinite(v),
+                dealii::ExcMessage(entry + ": '" + t +
+                                   "' is beyond the range of a double"));
     return v;
   }
 

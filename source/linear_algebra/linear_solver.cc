@@ -52,10 +52,17 @@ namespace FourierSSI
   {
     prm.enter_subsection("Linear solver");
     const std::string method_entry = prm.get("Method");
-    method             = method_entry == "direct-lu" ? SolverMethod::lu :
-                         method_entry == "cg-amg"    ? SolverMethod::cg_amg :
-                                                       SolverMethod::cholesky;
-    tolerance          = prm.get_double("Tolerance");
+    method    = method_entry == "direct-lu" ? SolverMethod::lu :
+                method_entry == "cg-amg"    ? SolverMethod::cg_amg :
+                                              SolverMethod::cholesky;
+    tolerance = prm.get_double("Tolerance");
+    // CG cannot reduce the residual below round-off: 0 would run to Max
+    // iterations and report "did not converge" at a residual of 0.
+    AssertThrow(method != SolverMethod::cg_amg ||
+                  (tolerance >= 1e-15 && tolerance < 1.),
+                ExcMessage("Linear solver/Tolerance: " + prm.get("Tolerance") +
+                           " with Method = cg-amg; give 1e-15 <= Tolerance < "
+                           "1 (a relative residual reduction)"));
     max_iterations     = prm.get_integer("Max iterations");
     residual_check     = prm.get_double("Residual check");
     distributed_always = prm.get("Distributed") == "always";

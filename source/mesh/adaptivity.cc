@@ -259,6 +259,11 @@ namespace FourierSSI
                       strategy_name == "goal"  ? RefinementStrategy::goal :
                                                  RefinementStrategy::global;
     refine_fraction = prm.get_double("Refine fraction");
+    AssertThrow(strategy == RefinementStrategy::global || refine_fraction > 0.,
+                ExcMessage("Adaptivity/Refine fraction: 0 refines no cell, so "
+                           "every cycle would solve the same mesh; give 0 < "
+                           "fraction <= 1 with Strategy = " +
+                           strategy_name));
     const std::string goal_name = prm.get("Goal");
     goal                        = goal_name == "K_H"  ? StiffnessGoal::K_H :
                                   goal_name == "K_M"  ? StiffnessGoal::K_M :

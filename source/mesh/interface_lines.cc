@@ -70,6 +70,16 @@ namespace FourierSSI
         AssertThrow(line.to > line.from,
                     ExcMessage(entry + ": empty range in '" + item + "'"));
         line.fixed_coordinate = value_coordinate;
+        // A segment given twice (or two that overlap) would split the same
+        // edges twice: the second copy has no faces of its own to pair.
+        for (const InterfaceLine &other : lines)
+          AssertThrow(other.fixed_coordinate != line.fixed_coordinate ||
+                        other.value != line.value || other.to <= line.from ||
+                        line.to <= other.from,
+                      ExcMessage(entry + ": '" + Utilities::trim(item) +
+                                 "' overlaps an earlier line on the same " +
+                                 (line.fixed_coordinate == 0 ? "r" : "z") +
+                                 " (each segment once)"));
         lines.push_back(line);
       }
     return lines;
