@@ -123,7 +123,8 @@ namespace FourierSSI
    * then one line "value label" per stiffness term, the 21 labels of the
    * upper triangle (Kxx, Kxy, Kyy, Kxz, ..., Ktztz; 't' a rotation) in
    * SubDyn's own order (column by column), SI units. All 21 are written: a
-   * missing one would be taken as infinitely stiff.
+   * missing one would be read as zero (SubDyn's reader; its documentation
+   * says infinitely stiff).
    */
   void
   write_subdyn_ssi(const FoundationStiffness &K, const std::string &filename);
