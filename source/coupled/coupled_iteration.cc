@@ -216,9 +216,11 @@ namespace FourierSSI
     if (kind == Kind::anderson)
       return anderson.increment(load, residual);
     if (kind == Kind::aitken)
-      restart_aitken_if_stalled(residual);
-    if (kind == Kind::aitken && !previous_residual.empty())
-      omega = aitken_factor(residual);
+      {
+        restart_aitken_if_stalled(residual);
+        if (!previous_residual.empty())
+          omega = aitken_factor(residual);
+      }
     previous_residual                  = residual;
     std::vector<Vector<double>> result = residual;
     for (Vector<double> &block : result)

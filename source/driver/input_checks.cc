@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -8,6 +9,7 @@
 #include <deal.II/lac/vector.h>
 #include <filesystem>
 #include <fourier_ssi/driver/input_checks.h>
+#include <fourier_ssi/driver/result_files.h>
 #include <set>
 #include <sstream>
 #include <unistd.h>
@@ -33,22 +35,16 @@ namespace FourierSSI
       if (name.front() == '.' || name.size() <= csv.size() ||
           name.compare(name.size() - csv.size(), csv.size(), csv) != 0)
         return entry + "is not a file name ending in .csv";
-      for (const char *own : {"batch.csv",
-                              "foundation-stiffness.csv",
-                              "interface-state.csv",
-                              "lines-3d.csv",
-                              "load-displacement.csv",
-                              "load-displacement-incomplete.csv",
-                              "soil-reaction-curves.csv"})
-        if (name == own)
-          return entry + "is the name of a file the run writes itself; "
-                         "choose another";
+      // results.csv is the catalogue's own name for this file.
+      const std::vector<std::string> &own = ResultFiles::catalogue();
+      if (name != "results.csv" &&
+          (name == "batch.csv" ||
+           std::find(own.begin(), own.end(), name) != own.end()))
+        return entry + "is the name of a file the run writes itself; "
+                       "choose another";
       return "";
     }
-  } // namespace
 
-  namespace
-  {
     std::string
     format(const double value)
     {

@@ -183,13 +183,9 @@ namespace FourierSSI
       if (!given.has_nu)
         refuse_materials(text, where + "nu is missing");
       if (!(material.poisson_ratio > -1. && material.poisson_ratio < 0.5))
-        {
-          std::ostringstream nu;
-          nu << material.poisson_ratio;
-          refuse_materials(text,
-                           where + "nu = " + nu.str() +
-                             " must satisfy -1 < nu < 0.5");
-        }
+        refuse_materials(text,
+                         where + "nu = " + number_text(material.poisson_ratio) +
+                           " must satisfy -1 < nu < 0.5");
       // Each modulus given is checked before the pair: a negative one is
       // the mistake to name, not that both were given.
       for (const auto &[name, value] :
