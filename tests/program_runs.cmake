@@ -65,6 +65,14 @@ add_test(NAME program_print_parameters COMMAND fourier-ssi --print-parameters)
 set_tests_properties(program_print_parameters PROPERTIES
   PASS_REGULAR_EXPRESSION "subsection Materials")
 
+# With a file it prints that file's values (it used to ignore the file and
+# print the defaults): disc-gap's tensionless coulomb law, not the default
+# interface list.
+add_test(NAME program_print_parameters_of_file
+  COMMAND fourier-ssi --print-parameters ${CMAKE_SOURCE_DIR}/prm/disc-gap.prm)
+set_tests_properties(program_print_parameters_of_file PROPERTIES
+  PASS_REGULAR_EXPRESSION "set Interfaces *= 5: coulomb, kn=1e6, ks=1e6, c=0, phi=0, sigma_t=0")
+
 # The --interface-matrix command of the front end: a straight vertical face at
 # r = 0.5 of length 1, p = 2, n = 1, kn = ks = 1e10. Its first diagonal entry
 # is pi r kn L 4/30 = 2.0943951024e9 (the theta weight pi of n = 1 times the

@@ -113,6 +113,32 @@ check_removed(linear.prm
   "results.csv;solution-n0-symmetric-cycle0.vtu;solution-n1-symmetric-cycle0.vtu;interface-5-n1-symmetric-cycle0.csv;lines-3d.csv;solution-3d.vtu"
   "linear_fails_solving.prm;linear_unknown_entry.prm;linear_negative_modulus.prm;linear_empty_results_file.prm;linear_renamed_fails.prm")
 
+# 1b. Files the parameter reader cannot parse at all: the output folder is
+#     found by a light scan of their lines, so the earlier results go too.
+set(rough "subsection Interfaces
+  set Interfaces = 5: rough
+end")
+write_prm(unparsable_missing_end "${linear}" "${output}
+subsection Interfaces
+  set Interfaces = 5: rough")
+write_prm(unparsable_extra_end "${linear}" "${output}\n${rough}\nend")
+write_prm(unparsable_set_without_equals "${linear}" "${output}
+subsection Interfaces
+  set Interfaces 5: rough
+end")
+# A line continued by a trailing backslash swallows the end after it.
+write_prm(unparsable_trailing_backslash "${linear}" "${output}
+subsection Interfaces
+  set Interfaces = 5: rough \\
+end")
+# A NUL byte inside, and the whole file in UTF-16 (cmake writes neither).
+execute_process(COMMAND /usr/bin/python3 -c
+  "import sys; t = open(sys.argv[1]).read(); open(sys.argv[2], 'w').write(t.replace('end', 'e\\0nd', 1)); open(sys.argv[3], 'w', encoding='utf-16').write(t)"
+  ${WORK_DIR}/linear.prm ${WORK_DIR}/unparsable_nul_byte.prm
+  ${WORK_DIR}/unparsable_utf16.prm)
+check_removed(linear.prm "results.csv;solution-3d.vtu"
+  "unparsable_missing_end.prm;unparsable_extra_end.prm;unparsable_set_without_equals.prm;unparsable_trailing_backslash.prm;unparsable_nul_byte.prm;unparsable_utf16.prm")
+
 # 2. A renamed Results file of the earlier run.
 write_prm(linear_renamed "${linear}" "${output}
 subsection Interfaces

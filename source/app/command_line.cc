@@ -122,7 +122,8 @@ namespace FourierSSI
     print_usage(std::ostream &out)
     {
       out << "usage: fourier-ssi [PARAMS.prm]\n"
-             "       fourier-ssi --print-parameters\n"
+             "       fourier-ssi --print-parameters [PARAMS.prm]   (every "
+             "entry at its default, or at the file's value)\n"
              "       mpirun -np N fourier-ssi PARAMS.prm   (distributed "
              "solve)\n"
              "       mpirun -np N fourier-ssi --batch [--csv FILE] "
@@ -211,6 +212,7 @@ namespace FourierSSI
     };
     use_serial_blas();
     keep_freed_memory();
+    remove_claimed_results_on_interrupt();
     const bool batch = argc > 1 && std::string(argv[1]) == "--batch";
     if (launched_by_mpi() || batch)
       start_mpi();
@@ -229,8 +231,19 @@ namespace FourierSSI
       {
         if (option == "--print-parameters")
           {
+            // With a file: every entry at that file's value (the file read
+            // and checked as a run reads it), else at its default.
+            AssertThrow(argc <= 3,
+                        ExcMessage("--print-parameters takes at most one "
+                                   ".prm file"));
             ParameterHandler prm;
             AllParameters::declare_parameters(prm);
+            if (argc == 3)
+              {
+                AllParameters parameters;
+                parameters.read_file(argv[2]);
+                prm.parse_input(argv[2]);
+              }
             prm.print_parameters(out, ParameterHandler::PRM);
             return 0;
           }

@@ -1,14 +1,55 @@
+#include <atomic>
+#include <csignal>
+#include <cstring>
 #include <deal.II/base/exceptions.h>
 #include <filesystem>
 #include <fourier_ssi/driver/result_files.h>
 #include <fourier_ssi/input/atomic_file.h>
 #include <map>
 #include <regex>
+#include <unistd.h>
 
 namespace FourierSSI
 {
   namespace
   {
+    /**
+     * What an interrupt signal removes: the paths the running ResultFiles
+     * has claimed, as C strings (the handler may not allocate), and which
+     * object published them. Each claim publishes a new array with one
+     * atomic store; earlier arrays and strings are never freed, since the
+     * handler may be reading one.
+     */
+    struct InterruptedRunFiles
+    {
+      const ResultFiles        *owner = nullptr;
+      std::vector<const char *> paths;
+    };
+    std::atomic<const InterruptedRunFiles *> interrupted_run_files{nullptr};
+
+    void
+    publish_claimed(const ResultFiles              *owner,
+                    const std::vector<std::string> &claimed)
+    {
+      auto *files  = new InterruptedRunFiles;
+      files->owner = owner;
+      for (const std::string &path : claimed)
+        files->paths.push_back(strdup(path.c_str()));
+      interrupted_run_files.store(files);
+    }
+
+    extern "C" void
+    remove_claimed_and_stop(const int signal_number)
+    {
+      // unlink() is async-signal-safe; the array is not written after it
+      // was published.
+      if (const InterruptedRunFiles *files = interrupted_run_files.load())
+        for (const char *path : files->paths)
+          unlink(path);
+      std::signal(signal_number, SIG_DFL);
+      std::raise(signal_number);
+    }
+
     /** The text of a field of the catalogue's templates. */
     const std::map<std::string, std::string> &
     field_patterns()
@@ -142,10 +183,20 @@ namespace FourierSSI
     return directory + "/" + file_name;
   }
 
+  ResultFiles::~ResultFiles()
+  {
+    // The run ended (it succeeded, or discard_results removed its files):
+    // an interrupt now finds nothing of it to remove.
+    const InterruptedRunFiles *files = interrupted_run_files.load();
+    if (files != nullptr && files->owner == this)
+      interrupted_run_files.store(nullptr);
+  }
+
   std::string
   ResultFiles::claim(const std::string &file_name)
   {
     claimed_paths.push_back(path_of(file_name));
+    publish_claimed(this, claimed_paths);
     return claimed_paths.back();
   }
 
@@ -188,6 +239,16 @@ namespace FourierSSI
     for (const std::string &path : claimed_paths)
       std::filesystem::remove(path, ignored);
     claimed_paths.clear();
+    const InterruptedRunFiles *files = interrupted_run_files.load();
+    if (files != nullptr && files->owner == this)
+      interrupted_run_files.store(nullptr);
+  }
+
+  void
+  remove_claimed_results_on_interrupt()
+  {
+    for (const int signal_number : {SIGTERM, SIGINT, SIGHUP})
+      std::signal(signal_number, remove_claimed_and_stop);
   }
 
   void

@@ -7,6 +7,7 @@
 #include <fourier_ssi/input/parameters.h>
 #include <fourier_ssi/input/problem_checks.h>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 
 namespace FourierSSI
@@ -28,7 +29,9 @@ namespace FourierSSI
                       "symmetric: u, v ~ cos n t, w ~ sin n t; "
                       "antisymmetric: u, v ~ sin n t, w ~ cos n t "
                       "(thesis eq. 3.2). For n = 0 symmetric is the "
-                      "axisymmetric (u, v) problem, antisymmetric is torsion.");
+                      "axisymmetric (u, v) problem, antisymmetric is torsion. "
+                      "both: every listed n in both families (symmetric "
+                      "first), e.g. n = 0 for V and T together.");
     prm.declare_entry("Polynomial degree",
                       "2",
                       Patterns::Selection("2|4"),
@@ -614,52 +617,83 @@ namespace FourierSSI
     }
 
     /**
-     * The lines of a parameter file that ParameterHandler's grammar knows
-     * (set, subsection, end); any other line is dropped, so that a line
-     * the full read refuses cannot hide the output folder.
+     * The text of a parameter file as a light scan reads it: NUL bytes
+     * dropped (a UTF-16 file is ASCII with a NUL after every character),
+     * byte-order marks and carriage returns dropped, lines ending in a
+     * backslash joined to the next, comments cut.
      */
-    std::string
-    structure_lines(const std::string &content)
+    std::vector<std::string>
+    scanned_lines(const std::string &prm_file)
     {
-      std::istringstream lines(content);
-      std::string        kept, line;
-      while (std::getline(lines, line))
+      std::ifstream in(prm_file, std::ios::binary);
+      std::string   raw((std::istreambuf_iterator<char>(in)),
+                      std::istreambuf_iterator<char>());
+      raw.erase(std::remove_if(raw.begin(),
+                               raw.end(),
+                               [](const char c) {
+                                 const auto b = static_cast<unsigned char>(c);
+                                 return b == 0 || b == '\r' || b == 0xFE ||
+                                        b == 0xFF;
+                               }),
+                raw.end());
+      std::vector<std::string> lines;
+      std::istringstream       text(raw);
+      std::string              line, joined;
+      while (std::getline(text, line))
         {
-          std::istringstream words(line);
-          std::string        word;
-          words >> word;
-          for (char &c : word)
-            c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-          if (word == "set" || word == "subsection" || word == "end")
-            kept += line + "\n";
+          line = line.substr(0, line.find('#'));
+          if (!line.empty() && line.back() == '\\')
+            {
+              joined += line.substr(0, line.size() - 1);
+              continue;
+            }
+          lines.push_back(joined + line);
+          joined.clear();
         }
-      return kept;
+      lines.push_back(joined);
+      return lines;
     }
   } // namespace
 
   std::optional<OutputParameters>
   OutputParameters::read_folder_of(const std::string &prm_file)
   {
-    try
+    std::error_code ignored;
+    if (!std::filesystem::is_regular_file(prm_file, ignored))
+      return std::nullopt;
+    // Not ParameterHandler: the folder must be found in the very files it
+    // refuses (a missing or extra end, a set without '=', a NUL byte, a
+    // UTF-16 file), so that their run removes the last run's results.
+    OutputParameters         output;
+    std::vector<std::string> subsections;
+    for (const std::string &line : scanned_lines(prm_file))
       {
-        ParameterHandler prm;
-        prm.enter_subsection("Output");
-        prm.declare_entry("Directory", "output", Patterns::Anything());
-        prm.declare_entry("Results file", "results.csv", Patterns::Anything());
-        prm.leave_subsection();
-        std::istringstream input(structure_lines(parameter_text(prm_file)));
-        prm.parse_input(input, prm_file, "", /*skip_undefined=*/true);
-        OutputParameters output;
-        prm.enter_subsection("Output");
-        output.directory    = prm.get("Directory");
-        output.results_file = prm.get("Results file");
-        prm.leave_subsection();
-        return output;
+        std::istringstream words(line);
+        std::string        word;
+        words >> word;
+        const std::streamoff position = words.tellg();
+        const std::size_t    after_word =
+          position < 0 ? line.size() : static_cast<std::size_t>(position);
+        std::transform(word.begin(), word.end(), word.begin(), [](char c) {
+          return static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+        });
+        if (word == "end" && !subsections.empty())
+          subsections.pop_back();
+        if (word == "subsection")
+          subsections.push_back(Utilities::trim(line.substr(after_word)));
+        const std::size_t equals = line.find('=');
+        if (word != "set" || equals == std::string::npos ||
+            subsections != std::vector<std::string>{"Output"})
+          continue;
+        const std::string key =
+          Utilities::trim(line.substr(after_word, equals - after_word));
+        const std::string value = Utilities::trim(line.substr(equals + 1));
+        if (key == "Directory")
+          output.directory = value;
+        else if (key == "Results file")
+          output.results_file = value;
       }
-    catch (...)
-      {
-        return std::nullopt;
-      }
+    return output;
   }
 
   void

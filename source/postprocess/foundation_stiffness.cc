@@ -146,9 +146,14 @@ namespace FourierSSI
     out << "term,value,unit,error_bar\n" << std::setprecision(10);
     for (unsigned int i = 0; i < 6; ++i)
       for (unsigned int j = i; j < 6; ++j)
-        out << "K_" << dof_name(i) << "_" << dof_name(j) << ","
-            << K.stiffness[i][j] << "," << stiffness_unit(i, j) << ","
-            << K.error_bar[i][j] << "\n";
+        {
+          out << "K_" << dof_name(i) << "_" << dof_name(j) << ","
+              << K.stiffness[i][j] << "," << stiffness_unit(i, j) << ",";
+          // Empty where no estimate exists (one mesh): no nan in a result.
+          if (std::isfinite(K.error_bar[i][j]))
+            out << K.error_bar[i][j];
+          out << "\n";
+        }
     file.commit();
   }
 
@@ -188,8 +193,7 @@ namespace FourierSSI
         for (unsigned int j = 0; j < 6; ++j)
           out << std::setw(14) << K.stiffness[i][j];
       }
-    out << "\n  error bars (absolute, same units; nan: not estimated, 0: "
-           "zero by axisymmetry):";
+    out << "\n  error bars (absolute, same units; 0: zero by axisymmetry):";
     out << std::setprecision(1);
     for (const auto &[i, j] :
          std::array<std::pair<unsigned int, unsigned int>, 5>{
@@ -198,8 +202,15 @@ namespace FourierSSI
             {dof_ry, dof_ry},
             {dof_x, dof_ry},
             {dof_rz, dof_rz}}})
-      out << " K_" << dof_name(i) << "_" << dof_name(j) << " \u00b1 "
-          << K.error_bar[i][j] << " " << stiffness_unit(i, j) << ";";
+      {
+        out << " K_" << dof_name(i) << "_" << dof_name(j);
+        if (std::isfinite(K.error_bar[i][j]))
+          out << " \u00b1 " << K.error_bar[i][j] << " " << stiffness_unit(i, j)
+              << ";";
+        else
+          out << " not estimated (one mesh: set Refinement cycles >= 2 or "
+                 "Target accuracy);";
+      }
     out.flags(flags);
     out << std::endl;
   }

@@ -30,6 +30,13 @@ namespace FourierSSI
     /** No folder: writes nothing, removes nothing. */
     ResultFiles() = default;
 
+    /** An interrupt after this no longer removes this run's files. */
+    ~ResultFiles();
+
+    ResultFiles(const ResultFiles &) = default;
+    ResultFiles &
+    operator=(const ResultFiles &) = default;
+
     /** The folder Output/Directory and the name Output/Results file. */
     explicit ResultFiles(const OutputParameters &output);
 
@@ -120,11 +127,22 @@ namespace FourierSSI
    * Remove the result files of the output folder of the parameter file
    * `prm_file` (ResultFiles::remove_stale), reading only Output/Directory
    * and Output/Results file: called before the file is checked, so that
-   * input refused later leaves no earlier results. A file too broken to
-   * name its folder removes nothing.
+   * input refused later leaves no earlier results. A file that cannot be
+   * read removes nothing.
    */
   void
   remove_stale_results_of(const std::string &prm_file);
+
+  /**
+   * SIGTERM, SIGINT and SIGHUP remove the files the running ResultFiles
+   * has claimed, then end the process by the same signal: an interrupted
+   * run leaves no set of complete-looking results without its results.csv
+   * (each file is whole by the temporary-name rule, but together they are
+   * a run that did not finish). Its `.partial` files are the next run's to
+   * remove.
+   */
+  void
+  remove_claimed_results_on_interrupt();
 } // namespace FourierSSI
 
 #endif

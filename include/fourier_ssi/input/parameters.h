@@ -140,10 +140,10 @@ namespace FourierSSI
 
     /**
      * Only Output/Directory and Output/Results file of a parameter file,
-     * read before (and whatever) the rest of the file is refused: every
-     * other entry, unknown ones included, is skipped and no value is
-     * checked. Empty if the file cannot be read or its subsection
-     * structure is broken (then its output folder is not known).
+     * read before (and whatever) the rest of the file is refused, by a
+     * light scan of its lines that also reads files the parser refuses
+     * (broken subsections, NUL bytes, UTF-16): every other entry is
+     * skipped and no value is checked. Empty if the file cannot be read.
      */
     static std::optional<OutputParameters>
     read_folder_of(const std::string &prm_file);
