@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <deal.II/fe/fe.h>
@@ -116,7 +117,15 @@ namespace FourierSSI
                                          FoundationMotion::twist,
                                          FoundationMotion::rotation})
           if (name == name_of(m))
-            motions.push_back(m);
+            {
+              // Held twice is one constraint given twice: the second has no
+              // DoF left to hold ("no free master DoF" deep in the tie).
+              AssertThrow(std::find(motions.begin(), motions.end(), m) ==
+                            motions.end(),
+                          ExcMessage("Rigid foundation/Held motions: '" + name +
+                                     "' given twice in '" + text + "'"));
+              motions.push_back(m);
+            }
       return motions;
     }
 

@@ -5,6 +5,30 @@ namespace FourierSSI
   namespace
   {
     /**
+     * A capacity needs a nonlinear source: without plastic soil or a
+     * coulomb or contact interface the load path is one linear solve, and a
+     * displacement-controlled path to a capacity (or its normalisation)
+     * would print an elastic answer as if it were one (exit 0).
+     */
+    void
+    check_capacity_needs_nonlinear_source(const AllParameters &parameters)
+    {
+      if (parameters.coupled())
+        return;
+      const std::string why =
+        ": the scene has no nonlinear source (Soil plasticity/Laws is empty "
+        "and no interface is coulomb or contact), so it is one linear solve "
+        "with no capacity; add a law";
+      AssertThrow(parameters.load_path.control !=
+                    LoadPathParameters::Control::displacement,
+                  ExcMessage("Load path/Control = displacement" + why +
+                             ", or leave Control at load"));
+      AssertThrow(parameters.rigid_foundation.capacity_name.empty(),
+                  ExcMessage("Rigid foundation/Capacity normalisation" + why +
+                             ", or leave the entry empty"));
+    }
+
+    /**
      * Displacement control drives the controlled motion from where the
      * held stage left it to Target: a Target of 0 is a path of zero length
      * (every step the unloaded state, reported as converged).
@@ -155,6 +179,7 @@ namespace FourierSSI
     check_controlled_motion_not_held(parameters);
     check_motion_direction_path(parameters);
     check_swipe_path(parameters);
+    check_capacity_needs_nonlinear_source(parameters);
     check_displacement_target(parameters);
     check_load_control_has_load(parameters);
     check_exact_solution_linear(parameters);
