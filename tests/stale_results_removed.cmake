@@ -136,8 +136,13 @@ execute_process(COMMAND /usr/bin/python3 -c
   "import sys; t = open(sys.argv[1]).read(); open(sys.argv[2], 'w').write(t.replace('end', 'e\\0nd', 1)); open(sys.argv[3], 'w', encoding='utf-16').write(t)"
   ${WORK_DIR}/linear.prm ${WORK_DIR}/unparsable_nul_byte.prm
   ${WORK_DIR}/unparsable_utf16.prm)
+# A UTF-8 byte-order mark before a refused file's first line, the one
+# that opens its Output subsection.
+execute_process(COMMAND /usr/bin/python3 -c
+  "import sys; open(sys.argv[1], 'w', encoding='utf-8-sig').write('subsection Output\\n  set Directory = out\\n  set Frobnicate = 1\\nend\\n')"
+  ${WORK_DIR}/refused_byte_order_mark.prm)
 check_removed(linear.prm "results.csv;solution-3d.vtu"
-  "unparsable_missing_end.prm;unparsable_extra_end.prm;unparsable_set_without_equals.prm;unparsable_trailing_backslash.prm;unparsable_nul_byte.prm;unparsable_utf16.prm")
+  "unparsable_missing_end.prm;unparsable_extra_end.prm;unparsable_set_without_equals.prm;unparsable_trailing_backslash.prm;unparsable_nul_byte.prm;unparsable_utf16.prm;refused_byte_order_mark.prm")
 
 # 2. A renamed Results file of the earlier run.
 write_prm(linear_renamed "${linear}" "${output}

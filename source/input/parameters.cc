@@ -636,6 +636,9 @@ namespace FourierSSI
                                         b == 0xFF;
                                }),
                 raw.end());
+      const std::string byte_order_mark = "\xEF\xBB\xBF"; // UTF-8's
+      if (raw.compare(0, byte_order_mark.size(), byte_order_mark) == 0)
+        raw.erase(0, byte_order_mark.size());
       std::vector<std::string> lines;
       std::istringstream       text(raw);
       std::string              line, joined;
