@@ -11,19 +11,22 @@ namespace FourierSSI
   void
   CoupledSolver::write_interface_state_csv(const std::string &filename) const
   {
+    const NonlinearInterfacePoints *interface = sources.interface_points();
     AssertThrow(interface != nullptr,
                 ExcMessage(entry + ": the scene has no nonlinear interface"));
     interface->write_state_csv(filename,
-                               interface_states(steps),
-                               interface_sampling);
+                               interface_states(states.steps),
+                               sources.interface_sampling());
   }
 
   void
   CoupledSolver::write_interface_state_vtu(const std::string &filename) const
   {
-    AssertThrow(interface != nullptr && !steps.empty(),
+    const NonlinearInterfacePoints *interface = sources.interface_points();
+    const ThetaSampling &interface_sampling   = sources.interface_sampling();
+    AssertThrow(interface != nullptr && !states.steps.empty(),
                 ExcMessage(entry + ": no converged interface state to write"));
-    const InterfaceSnapshot           &last   = steps.back().interface_state;
+    const InterfaceSnapshot &last = states.steps.back().interface_state;
     const std::vector<InterfacePoint> &points = interface->get_points();
     const unsigned int                 N      = interface_sampling.n_samples();
     // One point per (Gauss point, theta) sample, in the snapshot's order.

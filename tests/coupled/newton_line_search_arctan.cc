@@ -30,7 +30,6 @@ namespace
     double residual_norm = 0.;
   };
 
-  using Newton = SafeguardedNewton<double, Evaluation, double>;
 
   Evaluation
   evaluate(double &x)
@@ -50,6 +49,36 @@ namespace
     x += alpha * dx;
   }
 
+  /** R(x) = atan(x) for SafeguardedNewton; `sign` -1 turns the step uphill. */
+  struct ArctanSteps
+  {
+    using State      = double;
+    using Evaluation = ::Evaluation;
+    using Direction  = double;
+
+    double sign = 1.;
+
+    Evaluation
+    evaluate(double &x) const
+    {
+      return ::evaluate(x);
+    }
+
+    double
+    direction(const Evaluation &e, const double &x) const
+    {
+      return sign * newton_step(e, x);
+    }
+
+    void
+    move(const double alpha, const double &dx, double &x) const
+    {
+      ::move(alpha, dx, x);
+    }
+  };
+
+  using Newton = SafeguardedNewton<ArctanSteps>;
+
   /** Updates until |x| < 1e-12 (or `most`); the |R| after each. */
   std::vector<double>
   solve(const Newton::Settings &settings,
@@ -57,7 +86,8 @@ namespace
         double                 &x,
         bool                   &failed)
   {
-    Newton              newton(settings, evaluate, newton_step, move);
+    const ArctanSteps   steps;
+    Newton              newton(settings, steps);
     Evaluation          e = evaluate(x);
     std::vector<double> norms;
     failed = false;
@@ -125,11 +155,8 @@ main()
                   5);
 
   // (4)
-  Newton ascent(
-    {0, 1. / 16., 20},
-    evaluate,
-    [](const Evaluation &e, const double &at) { return -newton_step(e, at); },
-    move);
+  const ArctanSteps uphill{-1.};
+  Newton            ascent({0, 1. / 16., 20}, uphill);
   x                 = 3.;
   Evaluation e      = evaluate(x);
   const bool first  = ascent.update(x, e); // the full (ascent) step

@@ -4,8 +4,8 @@
 //  1. the held rotation is zero to the bit at every step (its master DoF is
 //     constrained) while u reaches the target;
 //  2. the moment that holds the rotation, read on the foundation (virtual
-//     work of K u - G(u) on the unit rotation, LoadPathStates::
-//     held_reactions_of), balances the moment of the support reactions read
+//     work of K u - G(u) on the unit rotation, LoadControl::
+//     held_reactions), balances the moment of the support reactions read
 //     on the far boundaries 1 and 2 (K u there: no nonlinear source reaches
 //     a support, so G = 0 at their DoFs), two different sets of DoFs.
 //     Equilibrium holds to the iteration's tolerance (|R| <= 1e-8 of the

@@ -2,50 +2,23 @@
  * The coupled load path of every nonlinear scene (doc/driver.md): plastic
  * soil (Tresca, Mohr-Coulomb; soil_law.h, doc/soil-plasticity.md section 3)
  * and nonlinear interfaces (coulomb, contact; doc/nonlinear-interfaces.md
- * section 5) on a set of Fourier harmonics coupled through theta. Both are
- * nonlinear sources of one iteration; a scene of interfaces on elastic soil
- * is one with no soil points.
+ * section 5) on a set of Fourier harmonics coupled through theta.
  *
  * Every harmonic keeps its elastic matrix K_h and factorization (HarmonicSet).
- * With s_p = D eps_p the "plastic stress" at every (soil point, theta
- * sample) and d_p the plastic relative displacement (slip and gap) at every
- * (interface point, theta sample), the discrete equilibrium of harmonic h is
+ * The discrete equilibrium of harmonic h is
  *   K_h u_h = lambda F_h + c_h,
- *   c_h = int Bbar_h^T [int factor_h s_p dtheta] r dr dz
- *       + int int B_h^T D d_p r ds dtheta
- * (the internal force K u - c). One evaluation of an iterate:
- *   1. strain amplitudes of every harmonic at every soil point (Bbar u_h,
- *      the dilatation projected per cell) and relative displacements at
- *      every interface point, summed at N theta samples
- *      (ThetaSampling::evaluate);
- *   2. the return mapping at every (point, theta) from the last converged
- *      state;
- *   3. G_h, the theta-integrated plastic parts through the same B that
- *      gives K;
- *   4. R = G - c, converged if |R| <= tolerance times the force scale
- *      (ForceScale: |lambda F| and the interfaces' |G|). Otherwise c moves
- *      by Newton (closed-form tangents, the globalisation of
- *      safeguarded_newton.h) or by the accelerated initial-stiffness
- *      update.
- * The linearisation is the one decision that differs between scenes
- * (AllParameters::linearises_on_coupled_tangent):
- *   - plastic soil (or a swipe): K^-1 dc re-solved for every harmonic with
- *     the kept factorizations; Newton on the coupled tangent K_t of every
- *     harmonic (Soil plasticity/Stiffness = tangent, coupled_tangent.h);
- *   - interfaces only: condensed onto the interface DoFs
- *     (InterfaceCondensation): K^-1 dc a dense product with the flexibility
- *     blocks, Newton on the dense condensed Jacobian (Load path/Stiffness =
- *     tangent), and harmonics added where the interface traction calls for
- *     them (Load path/Maximum harmonic).
- * Loading (load or displacement control of the rigid foundation), the held
- * stage, the predictor and step cutting are the LoadPath's (load_path.h);
- * contact and stiff coulomb laws iterate with their augmented Lagrangian's
- * multipliers around the iteration (NonlinearInterfacePoints).
- * A swipe test (Rigid foundation/Held motions = w with a Held vertical
- * force) adds mu e_V to the loads, e_V the unit vertical force on the
- * rigid foundation: after the held stage mu is a second unknown beside
- * lambda, chosen with it so that w stays where the held stage left it
- * (swipe_multipliers); no constraint changes along the path.
+ * c the correction load that balances the out-of-balance load G of the
+ * nonlinear sources (R = G - c = 0). This class is the wiring of the
+ * objects that solve it, each with one job:
+ *   - LoadPath: the stages, step sizes, cuts and the secant predictor;
+ *   - LoadPathStates: the committed, previous and trial states and the
+ *     records of the converged steps;
+ *   - NonlinearSources: the soil points and interface points, evaluating
+ *     G and R at an iterate;
+ *   - LoadControl: lambda, a swipe's mu and the held reactions;
+ *   - Linearisation: how c moves (TangentLinearisation with plastic soil
+ *     or a swipe, CondensedInterfaces with interfaces only);
+ *   - StepIteration: one load step, top to bottom.
  *
  * Under mpirun the harmonics are distributed over the ranks
  * (HarmonicSet::distribute_over): each rank re-solves its own harmonics and
@@ -65,20 +38,16 @@
 
 #include <array>
 #include <deal.II/lac/vector.h>
-#include <fourier_ssi/coupled/coupled_iteration.h>
-#include <fourier_ssi/coupled/coupled_tangent.h>
-#include <fourier_ssi/coupled/interface_condensation.h>
+#include <fourier_ssi/coupled/linearisation.h>
+#include <fourier_ssi/coupled/load_control.h>
+#include <fourier_ssi/coupled/load_path.h>
 #include <fourier_ssi/coupled/load_path_states.h>
 #include <fourier_ssi/coupled/load_step_result.h>
-#include <fourier_ssi/coupled/nonlinear_interface_points.h>
-#include <fourier_ssi/coupled/nonlinear_soil_points.h>
-#include <fourier_ssi/coupled/soil_law.h>
-#include <fourier_ssi/fourier/theta_sampling.h>
+#include <fourier_ssi/coupled/nonlinear_sources.h>
+#include <fourier_ssi/coupled/step_iteration.h>
 #include <fourier_ssi/harmonic/harmonic_set.h>
-#include <fourier_ssi/input/load_path_parameters.h>
 #include <fourier_ssi/input/parameters.h>
 #include <functional>
-#include <limits>
 #include <memory>
 #include <ostream>
 #include <string>
@@ -88,7 +57,7 @@ namespace FourierSSI
 {
   using namespace dealii;
 
-  class CoupledSolver : private LoadPathStates
+  class CoupledSolver : private LoadPath::Iteration
   {
   public:
     /**
@@ -99,18 +68,43 @@ namespace FourierSSI
      */
     CoupledSolver(HarmonicSet &set, const AllParameters &parameters);
 
+    ~CoupledSolver() override;
+
     /** All load steps; throws one line if a step does not converge. */
     void
     run(std::ostream &log);
 
     /**
-     * solution(i), applied_loads(), the step records get_steps() and their
-     * load-displacement.csv write_csv() (load_path_states.h).
+     * Total displacement amplitudes of harmonic i (last converged state;
+     * a collective under MPI, LoadPathStates::solution).
      */
-    using LoadPathStates::applied_loads;
-    using LoadPathStates::get_steps;
-    using LoadPathStates::solution;
-    using LoadPathStates::write_csv;
+    Vector<double>
+    solution(const unsigned int i) const
+    {
+      return states.solution(i);
+    }
+
+    /** The applied rigid-foundation loads (LoadPathStates::applied_loads). */
+    std::array<double, 6>
+    applied_loads(const double load_factor,
+                  const double held_fraction = 0.) const
+    {
+      return states.applied_loads(load_factor, held_fraction);
+    }
+
+    /** The record of every converged step, in order. */
+    const std::vector<LoadStepResult> &
+    get_steps() const
+    {
+      return states.get_steps();
+    }
+
+    /** load-displacement.csv of the converged steps. */
+    void
+    write_csv(const std::string &filename) const
+    {
+      states.write_csv(filename);
+    }
 
     /**
      * The work of the applied loads on the last converged displacement,
@@ -136,13 +130,14 @@ namespace FourierSSI
      * the committed state: what the iteration balances.
      */
     std::vector<Vector<double>>
-    out_of_balance_load(const std::vector<Vector<double>> &fields);
+    out_of_balance_load(const std::vector<Vector<double>> &fields) const;
 
     /**
      * K_t(u) x: the coupled tangent (Stiffness = tangent) built at the
      * fields u and applied to x; K u - G(u) is the internal force, so
      * K_t x = K x - dG/du x (checked against differences of
      * out_of_balance_load in tests/coupled/soil_coupled_tangent.cc).
+     * Scenes on the coupled tangent only.
      */
     std::vector<Vector<double>>
     tangent_product(const std::vector<Vector<double>> &fields,
@@ -151,21 +146,7 @@ namespace FourierSSI
     unsigned int
     n_soil_points() const
     {
-      return soil.size();
-    }
-
-    /** The theta samples of the soil (of the interfaces without soil). */
-    unsigned int
-    n_theta_samples() const
-    {
-      return sampling.n_samples();
-    }
-
-    /** Number of Gauss points of the nonlinear interfaces. */
-    unsigned int
-    n_interface_points() const
-    {
-      return interface ? interface->size() : 0;
+      return sources.soil_points().size();
     }
 
     /**
@@ -206,7 +187,7 @@ namespace FourierSSI
     bool
     has_nonlinear_interfaces() const
     {
-      return interface != nullptr;
+      return sources.interface_points() != nullptr;
     }
 
     /**
@@ -228,24 +209,13 @@ namespace FourierSSI
     write_interface_state_vtu(const std::string &filename) const;
 
   private:
-    using StepState = CoupledStepState;
-
-    /**
-     * F, F_held (Rigid foundation/Held ...) and in a swipe e_V, their
-     * elastic solutions (LoadPattern) and what the sources read of them:
-     * their strains at the soil points and relative displacements at the
-     * interfaces' samples.
-     */
+    /** LoadPath::Iteration (load_path.h), on the states and the step. */
     void
-    solve_loads();
-
-    /** |lambda F + rho F_held| (2-norm over the harmonics). */
-    double
-    applied_load_norm(const StepState &state) const;
-
-    /** LoadPath::Iteration: the trial step and its commit (load_path.h). */
+    start_trial(const double ratio) override;
     bool
     solve_trial(const double target, const bool holding) override;
+    RigidMotion
+    trial_motion() const override;
     bool
     grows(std::ostream &log) override;
     /**
@@ -260,213 +230,22 @@ namespace FourierSSI
     commit_trial(const LoadStep &step,
                  const bool      holding,
                  std::ostream   &log) override;
-
-    /**
-     * Total strain samples [point * N + j] at lambda, rho and a swipe's mu,
-     * at the points this rank owns (NonlinearSoilPoints::strain_samples;
-     * zero at the others).
-     */
-    std::vector<StrainVector>
-    strain_samples(const std::vector<Vector<double>> &correction,
-                   const double                       load_factor,
-                   const double                       held_fraction,
-                   const double                       swipe_force = 0.) const;
-
-    /**
-     * Condensed: K^-1 c complete (InterfaceCondensation::complete), and the
-     * controlled motion from it.
-     */
-    void
-    complete(StepState &state) const;
-
-    /**
-     * Secant predictor (LoadPathStates::extrapolate); condensed, the
-     * controlled motion of K^-1 c moves on with c too.
-     */
-    void
-    extrapolate(const StepState &before_last,
-                const double     ratio,
-                StepState       &state) const override;
-
-    /**
-     * The load that holds each held motion (Rigid foundation/Held motions)
-     * in a converged state: the work of the internal force K u - G(u)
-     * (G unconstrained: load_of(plastic, false)) minus the body force
-     * lambda f on the unit held motion (RigidFoundation::held_reactions).
-     * The nonlinear interfaces' part of G is that of their tractions in
-     * `interface_state` (NonlinearInterfacePoints::spring_plastic). Empty
-     * without held motions.
-     */
-    std::vector<std::pair<FoundationMotion, double>>
-    held_reactions(const StepState         &state,
-                   const InterfaceSnapshot &interface_state) const;
-
-    /**
-     * lambda that puts the controlled motion of the state at target: the
-     * motion of K^-1 c (the condensed one, or from the field) and of the
-     * held loads, and of the pattern (pattern_motion, held_motion).
-     */
-    double
-    controlled_load_factor(const StepState &state, const double target) const;
-
-    /**
-     * A swipe (RigidFoundationParameters::swipes()): the multipliers
-     * (lambda, mu) of the load pattern F and of the unit vertical load e_V
-     * that move the foundation from the motion `now` to the controlled
-     * motion `target` (load control: lambda = target) and to w =
-     * `settlement`, where F moves it by `by_pattern` and e_V by `by_swipe`:
-     *   [m(by_pattern)  m(by_swipe)] [lambda]   [target - m(now)]
-     *   [w(by_pattern)  w(by_swipe)] [mu    ] = [settlement - w(now)],
-     * the first row [1 0 | target] under load control. The motions are
-     * linear in the fields, so this holds them exactly: the swipe's
-     * counterpart of controlled_load_factor, with the elastic patterns for
-     * an iterate and the tangent ones for a Newton update.
-     */
-    std::array<double, 2>
-    swipe_multipliers(const RigidMotion &now,
-                      const RigidMotion &by_pattern,
-                      const RigidMotion &by_swipe,
-                      const double       target,
-                      const double       settlement,
-                      const bool         displacement_control) const;
-
-    /**
-     * The state's lambda and mu from its correction (swipe_multipliers with
-     * K^-1 F and K^-1 e_V): the controlled motion at target and w where the
-     * held stage left it.
-     */
-    void
-    set_swipe_multipliers(StepState   &state,
-                          const double target,
-                          const bool   displacement_control) const;
-
-    /** The residual and the state of the soil and interfaces at an iterate. */
-    struct Evaluation
-    {
-      /** Total strain and s_p per (point, theta). */
-      std::vector<StrainVector> strain, plastic;
-      /**
-       * Nonlinear interfaces (empty without): relative displacement, d_p,
-       * traction, stick/slip/open per (point, theta), and the counts.
-       */
-      std::vector<LocalVector>  relative, interface_plastic, traction;
-      std::vector<ContactState> contact;
-      ContactCounts             counts = {{0, 0, 0}};
-      /** R = G - c per harmonic (condensed), and |R|. */
-      std::vector<Vector<double>> residual;
-      double                      residual_norm = 0.;
-      /** |lambda F| and the interfaces' |G|: what |R| is measured against. */
-      ForceScale scale;
-    };
-
-    /**
-     * Steps 1-4 of an iteration at `state`: strains and relative
-     * displacements, return mapping, out-of-balance load and residual (the
-     * soil's counts into `result`).
-     */
-    Evaluation
-    evaluate(const StepState &state, LoadStepResult &result) const;
-
-    /**
-     * The nonlinear interfaces' part of an evaluation: their relative
-     * displacements, return mapping and load added to the residual (the
-     * residual, if empty: no soil); returns the norm of that load (part of
-     * the force scale).
-     */
-    double
-    add_interface_residual(const StepState &state, Evaluation &e) const;
-
-    /** A converged iterate: its plastic state and the step's records. */
-    void
-    accept(Evaluation        &e,
-           const unsigned int iteration,
-           StepState         &state,
-           LoadStepResult    &result) const;
-
-    /**
-     * A change of c and the displacement K^-1 dc it makes (per harmonic);
-     * condensed, dc at the write DoFs only and no displacement (the
-     * condensation gives it where it is read).
-     */
-    struct Correction
-    {
-      std::vector<Vector<double>> load, solution;
-    };
-
-    /**
-     * Steps 1-4 at `state` after its load factor (or a swipe's multipliers)
-     * is set from `target` for the control (evaluate()).
-     */
-    Evaluation
-    evaluate_at(const double    target,
-                const bool      holding,
-                StepState      &state,
-                LoadStepResult &result);
-
-    /**
-     * Stiffness = tangent: the Newton correction at an iterate, the tangent
-     * rebuilt there (tangent_correction), with its K^-1 dc; condensed, the
-     * update of the condensed Jacobian (InterfaceCondensation).
-     */
-    Correction
-    newton_correction(const Evaluation &e,
-                      const StepState  &state,
-                      const bool        displacement_control);
-
-    /**
-     * The initial-stiffness update of an iterate (Load path/Acceleration on
-     * c and R): dc and its K^-1 dc (one solve per harmonic), condensed at
-     * the write DoFs.
-     */
-    Correction
-    initial_stiffness_correction(FixedPointAcceleration &acceleration,
-                                 const StepState        &state,
-                                 const Evaluation       &e) const;
-
-    /** dc and its K^-1 dc (one solve per harmonic). */
-    Correction
-    correction_of(std::vector<Vector<double>> load) const;
-
-    /** c <- c + alpha dc and v <- v + alpha K^-1 dc (condensed: its view). */
-    void
-    add_correction(const double      alpha,
-                   const Correction &correction,
-                   StepState        &state) const;
-
-    /**
-     * Solve one step to `target`: the held fraction (holding), else the
-     * load factor (load control) or the controlled motion.
-     */
+    RigidMotion
+    committed_motion() const override;
+    unsigned int
+    n_converged_steps() const override;
     bool
-    solve_step(const double    target,
-               const bool      holding,
-               StepState      &state,
-               LoadStepResult &result);
+    holds_loads() const override;
+    void
+    write_held_loads(std::ostream &log) const override;
 
     /**
-     * The iteration of solve_step() at fixed contact multipliers: Newton
-     * (Stiffness = tangent) or the accelerated initial-stiffness iteration
-     * until the force test holds (true; `e` the converged evaluation,
-     * `iterations` raised by the iterations taken) or the step must be cut.
+     * F, F_held (Rigid foundation/Held ...) and in a swipe e_V, their
+     * elastic solutions (LoadPattern) and what the sources and the load
+     * control read of them.
      */
-    bool
-    iterate(const double    target,
-            const bool      holding,
-            StepState      &state,
-            LoadStepResult &result,
-            Evaluation     &e,
-            unsigned int   &iterations);
-
-    /**
-     * Interfaces only, Maximum harmonic above the set's: harmonics n <=
-     * Maximum harmonic, not solved, whose amplitude in the traction change
-     * t - t0 of a converged state exceeds Harmonic tolerance times the
-     * largest amplitude; each logged with its amplitude
-     * (coupled_solver_growth.cc).
-     */
-    std::vector<Harmonic>
-    harmonics_called_for(const InterfaceSnapshot &snapshot,
-                         std::ostream            &log) const;
+    void
+    solve_loads();
 
     /** Add harmonics to the set and extend the committed state by zeros. */
     void
@@ -476,118 +255,18 @@ namespace FourierSSI
     void
     describe(std::ostream &log) const;
 
-    /**
-     * F_held,h: the held loads of harmonic h (held_stage_load: Rigid
-     * foundation/Held ..., body force and tractions; zero without).
-     */
-    Vector<double>
-    held_load(const unsigned int h) const;
-
-    /** The coupled tangent's sparsity: the soil cells and interface pairs. */
-    void
-    make_tangent();
-
-    /**
-     * Stiffness = tangent: K_t,hg = delta_hg K_h - int Bbar_h^T
-     * [theta integral of factor_h (D_e - D_ep) factor_g] Bbar_g
-     * (coupled_tangent.h) at the strain samples given; factorized, with
-     * K_t^-1 F.
-     */
-    void
-    update_tangent(const std::vector<StrainVector> &strain,
-                   const std::vector<LocalVector>  &relative,
-                   const std::vector<LocalVector>  &interface_origin,
-                   const bool displacement_control = false);
-
-    /**
-     * Displacement control: add alpha c c^T to K_t, c the controlled motion
-     * as a functional of the controlled harmonic's master DoFs (m(u) =
-     * c^T u), and in a swipe the same for w (kept by mu). The update du keeps
-     * m(du) = 0, so alpha c c^T du = 0 and no update changes; but at a limit
-     * load the collapse mechanism, which moves the foundation, is a null vector
-     * of K_t, and K_t^-1 R and K_t^-1 F lose their digits there while K_t +
-     * alpha c c^T stays regular (the bordered system of Riks-type control,
-     * solved with one factorization).
-     */
-    void
-    add_control_stiffening();
-
-    /**
-     * alpha c c^T on the master DoFs of the harmonic `wanted`, c_k =
-     * component(motion of a unit master DoF k), alpha scaling it to the
-     * masters' own stiffness (add_control_stiffening).
-     */
-    void
-    stiffen_motion(const Harmonic                                   &wanted,
-                   const std::function<double(const RigidMotion &)> &component);
-
-    /**
-     * The out-of-balance load correction of one tangent (Newton) step:
-     * du = K_t^-1 (R + dlambda F), dlambda keeping the controlled motion
-     * (displacement control; 0 under load control); returns
-     * dc = K du - dlambda F, the change of the correction load that moves
-     * the total displacement by du. In a swipe du = K_t^-1 (R + dlambda F +
-     * dmu e_V), (dlambda, dmu) keeping the controlled motion and w
-     * (swipe_multipliers with K_t^-1 F and K_t^-1 e_V), and dc = K du -
-     * dlambda F - dmu e_V.
-     */
-    std::vector<Vector<double>>
-    tangent_correction(const std::vector<Vector<double>> &residual,
-                       const bool displacement_control) const;
-
     HarmonicSet         &set;
     const AllParameters &parameters;
-    LoadPathParameters   settings;
-    /**
-     * Plastic soil or a swipe: the coupled tangent; otherwise condensed
-     * (AllParameters::linearises_on_coupled_tangent).
-     */
-    const bool condensed;
-    /** Newton (Stiffness = tangent) rather than initial stiffness. */
-    const bool newton;
     /** The parameter section a step's one-line error names. */
-    const std::string     entry;
-    std::vector<Harmonic> harmonics;
-    ThetaSampling         sampling;
-    /** Every candidate harmonic n <= Maximum harmonic (growth only). */
-    std::vector<Harmonic> candidates;
-    ThetaSampling         spectrum;
-    /**
-     * The nonlinear interfaces' samples: those of the soil, but with
-     * `contact` or a stiff coulomb law that can open (through the
-     * multipliers) always 2 n_max + 1, one per value of the band-limited
-     * gap (minimum_theta_samples(); more make the multipliers drift,
-     * constrained_theta_samples()), while Theta samples sets the soil's.
-     */
-    ThetaSampling interface_sampling;
-    /** The plastic soil's quadrature points and their laws. */
-    NonlinearSoilPoints soil;
-    StrainAmplitudes    held_strain;
-    /** A swipe: the strain amplitudes of K^-1 e_V. */
-    StrainAmplitudes swipe_strain;
-    /** A swipe: the rigid motions of u_F and of u_V = K^-1 e_V. */
-    RigidMotion pattern_rigid_motion, swipe_rigid_motion;
-    /** A swipe: w where the held stage left it [m], the value held. */
-    double swipe_settlement = 0.;
-    /** The step solved is a swipe's (not in its held stage): mu keeps w. */
-    bool swiping = false;
+    const std::string entry;
+    LoadPathStates    states;
+    NonlinearSources  sources;
+    LoadControl       control;
+    /** Plastic soil or a swipe: the coupled tangent; otherwise condensed. */
+    std::unique_ptr<Linearisation> linearisation;
+    StepIteration                  step_iteration;
     /** The trial is the retry after the last cut (retry_persistently). */
-    bool persistent = false;
-    /** Strain amplitudes of the load pattern. */
-    StrainAmplitudes pattern_strain;
-    /** Controlled motions of u_F and u_held (0: no held loads). */
-    double pattern_motion = 0., held_motion = 0.;
-    /** Stiffness = tangent: the coupled tangent and K_t^-1 F. */
-    std::unique_ptr<CoupledTangent> tangent;
-    std::vector<Vector<double>>     tangent_pattern;
-    /**
-     * Nonlinear interfaces (null: none): their points, and the relative
-     * displacements of the loads' elastic solutions.
-     */
-    std::unique_ptr<NonlinearInterfacePoints> interface;
-    InterfaceLoadCases                        interface_cases;
-    /** Interfaces only: the condensed linearisation (null otherwise). */
-    std::unique_ptr<InterfaceCondensation>      condensation;
+    bool                                        persistent = false;
     std::function<void(const LoadStepResult &)> step_observer;
   };
 } // namespace FourierSSI

@@ -71,8 +71,8 @@ namespace FourierSSI
     double time = 0.;
     /**
      * The load that holds each of Rigid foundation/Held motions, or a
-     * direction probe's H and M [kN or kN m] (LoadPathStates::
-     * held_reactions_of(); empty without).
+     * direction probe's H and M [kN or kN m] (LoadControl::
+     * held_reactions(); empty without).
      */
     std::vector<std::pair<FoundationMotion, double>> held_reactions;
   };

@@ -303,40 +303,6 @@ namespace FourierSSI
                                 const double                    allowed_force,
                                 const unsigned int              update) const;
 
-    /**
-     * A load step of the coupled solver with the augmented Lagrangian
-     * (doc/nonlinear-interfaces.md section 5d): iterate() converges the step
-     * at the current multipliers (false: cut the step), leaving the
-     * interface tractions of its converged iterate in `traction`; with an
-     * augmented interface (any_augmented()) the multipliers in
-     * state.origin then move (update_and_test_multipliers() after the u-th
-     * converged iteration, the force allowed by allowed_force() of that
-     * iteration), until their change no longer acts on the displacements.
-     * `updates` counts them. False: the step must be cut.
-     */
-    template <class Iterate, class AllowedForce>
-    bool
-    iterate_with_multipliers(const Iterate                  &iterate,
-                             const std::vector<LocalVector> &traction,
-                             const ThetaSampling            &sampling,
-                             const AllowedForce             &allowed_force,
-                             InterfaceState                 &state,
-                             unsigned int                   &updates) const
-    {
-      for (unsigned int u = 0;; ++u)
-        {
-          if (!iterate())
-            return false;
-          if (!any_augmented())
-            return true;
-          updates                     = u + 1;
-          const MultiplierUpdate next = update_and_test_multipliers(
-            traction, state.slip, sampling, state.origin, allowed_force(), u);
-          if (next != MultiplierUpdate::again)
-            return next == MultiplierUpdate::converged;
-        }
-    }
-
     /** The state before the first step: every d_p, origin and p_c zero. */
     InterfaceState
     at_rest(const ThetaSampling &sampling) const;

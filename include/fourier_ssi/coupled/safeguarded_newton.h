@@ -28,46 +28,46 @@
 #define fourier_ssi_safeguarded_newton_h
 
 #include <cmath>
-#include <functional>
 #include <limits>
 #include <utility>
 
 namespace FourierSSI
 {
+  /** The globalisation's settings (each linearisation names its own). */
+  struct NewtonSettings
+  {
+    /** Full steps without a new best |R| before the line search. */
+    unsigned int nonmonotone_steps = 0;
+    /** The shortest fraction of a Newton step the line search tries. */
+    double shortest_step = 1. / 16.;
+    /** Updates without a new smallest |R| before the step is cut. */
+    unsigned int patience = 20;
+  };
+
   /**
-   * State: a solver's iterate (copyable). Evaluation: what it evaluates at
-   * an iterate, with a member residual_norm (|R|). Direction: a Newton
-   * direction, added to a state with a step length.
+   * Steps: what Newton updates, with the types State (a solver's iterate,
+   * copyable), Evaluation (what it evaluates at an iterate, with a member
+   * residual_norm, |R|) and Direction (a Newton direction), and the
+   * members
+   *   Evaluation evaluate(State &) const: the evaluation at an iterate
+   *     (it may set the iterate's load factor);
+   *   Direction direction(const Evaluation &, const State &) const: the
+   *     Newton direction at an iterate and its evaluation;
+   *   void move(double alpha, const Direction &, State &) const:
+   *     state += alpha direction.
    */
-  template <class State, class Evaluation, class Direction>
+  template <class Steps>
   class SafeguardedNewton
   {
   public:
-    struct Settings
-    {
-      /** Full steps without a new best |R| before the line search. */
-      unsigned int nonmonotone_steps = 0;
-      /** The shortest fraction of a Newton step the line search tries. */
-      double shortest_step = 1. / 16.;
-      /** Updates without a new smallest |R| before the step is cut. */
-      unsigned int patience = 20;
-    };
+    using Settings   = NewtonSettings;
+    using State      = typename Steps::State;
+    using Evaluation = typename Steps::Evaluation;
+    using Direction  = typename Steps::Direction;
 
-    /** The evaluation at an iterate (may set its load factor). */
-    using Evaluate = std::function<Evaluation(State &)>;
-    /** The Newton direction at an iterate and its evaluation. */
-    using Solve = std::function<Direction(const Evaluation &, const State &)>;
-    /** state += alpha direction. */
-    using Move = std::function<void(double, const Direction &, State &)>;
-
-    SafeguardedNewton(const Settings &settings,
-                      Evaluate        evaluate,
-                      Solve           solve,
-                      Move            move)
+    SafeguardedNewton(const Settings &settings, const Steps &steps)
       : settings(settings)
-      , evaluate(std::move(evaluate))
-      , solve(std::move(solve))
-      , move(std::move(move))
+      , steps(steps)
     {}
 
     /**
@@ -82,15 +82,15 @@ namespace FourierSSI
       const bool from_best = e.residual_norm <= best_norm;
       if (!from_best && ++since_best > settings.nonmonotone_steps)
         return search_from_best(state, e);
-      Direction direction = solve(e, state);
+      Direction direction = steps.direction(e, state);
       if (from_best)
         {
           // e is evaluated anew below: the best keeps it without a copy.
           keep_as_best(state, std::move(e));
           best_direction = direction;
         }
-      move(1., direction, state);
-      e = evaluate(state);
+      steps.move(1., direction, state);
+      e = steps.evaluate(state);
       return std::isfinite(e.residual_norm);
     }
 
@@ -148,8 +148,8 @@ namespace FourierSSI
       for (double alpha = 0.5; alpha >= settings.shortest_step; alpha /= 2.)
         {
           state = best_state;
-          move(alpha, best_direction, state);
-          e = evaluate(state);
+          steps.move(alpha, best_direction, state);
+          e = steps.evaluate(state);
           if (!std::isfinite(e.residual_norm))
             continue;
           if (e.residual_norm <= (1. - armijo_fraction * alpha) * best_norm)
@@ -163,15 +163,13 @@ namespace FourierSSI
           e = best_evaluation;
           return false;
         }
-      move(best_alpha, best_direction, state);
-      e = evaluate(state);
+      steps.move(best_alpha, best_direction, state);
+      e = steps.evaluate(state);
       return true; // the next update() keeps it as the best
     }
 
     const Settings settings;
-    Evaluate       evaluate;
-    Solve          solve;
-    Move           move;
+    const Steps   &steps;
 
     State        best_state;
     Evaluation   best_evaluation;

@@ -135,7 +135,7 @@ namespace FourierSSI
      * Held motions together with a Held vertical force holds w at the value
      * the preload reached, not at zero. w is then not constrained: the
      * coupled soil solver keeps its increment at zero through a multiplier
-     * mu on the unit vertical load (CoupledSolver::swipe_multipliers),
+     * mu on the unit vertical load (LoadControl::swipe_multipliers),
      * and the V that does it is reported as the load that holds w.
      */
     bool

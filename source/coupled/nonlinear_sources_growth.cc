@@ -1,10 +1,10 @@
-// Harmonics added along the load path of a scene whose only nonlinear source
-// is the interfaces (Load path/Maximum harmonic, doc/nonlinear-interfaces.md
-// section 5): where the interface traction of a converged step calls for
-// them, the set grows and the step is solved again.
+// The harmonics a converged step of a scene whose only nonlinear source is
+// the interfaces calls for (Load path/Maximum harmonic,
+// doc/nonlinear-interfaces.md section 5): the set grows where the interface
+// traction has them, and the step is solved again (CoupledSolver::grows).
 #include <algorithm>
 #include <cmath>
-#include <fourier_ssi/coupled/coupled_solver.h>
+#include <fourier_ssi/coupled/nonlinear_sources.h>
 #include <iomanip>
 #include <sstream>
 
@@ -21,20 +21,9 @@ namespace FourierSSI
     }
   } // namespace
 
-  bool
-  CoupledSolver::grows(std::ostream &log)
-  {
-    const std::vector<Harmonic> added =
-      harmonics_called_for(trial_result.interface_state, log);
-    if (added.empty())
-      return false;
-    grow(added);
-    return true;
-  }
-
   std::vector<Harmonic>
-  CoupledSolver::harmonics_called_for(const InterfaceSnapshot &snapshot,
-                                      std::ostream            &log) const
+  NonlinearSources::harmonics_called_for(const InterfaceSnapshot &snapshot,
+                                         std::ostream            &log) const
   {
     std::vector<Harmonic> added;
     if (candidates.empty())
@@ -43,7 +32,7 @@ namespace FourierSSI
     //    the three components at every point, squared and weighted by the
     //    point's area (an L2 norm over the interface of that harmonic).
     const std::vector<InterfacePoint> &points = interface->get_points();
-    const unsigned int                 N      = interface_sampling.n_samples();
+    const unsigned int                 N      = interface_samples.n_samples();
     std::vector<double> norm_sqr(candidates.size(), 0.), samples(N), amplitude;
     for (unsigned int i = 0; i < points.size(); ++i)
       for (unsigned int c = 0; c < 3; ++c)
@@ -83,22 +72,4 @@ namespace FourierSSI
     return added;
   }
 
-  void
-  CoupledSolver::grow(const std::vector<Harmonic> &added)
-  {
-    set.add(added);
-    harmonics = set.get_harmonics();
-    // The samples stay (chosen for Maximum harmonic); their factors gain
-    // the added harmonics. Without soil, the interfaces' are the soil's.
-    sampling           = ThetaSampling(harmonics, sampling.n_samples());
-    interface_sampling = sampling;
-    solve_loads();
-    const unsigned int first = committed.correction_solution.size();
-    for (unsigned int h = first; h < set.size(); ++h)
-      {
-        committed.correction_solution.emplace_back(loads.solution[h].size());
-        committed.correction_load.emplace_back(loads.solution[h].size());
-      }
-    condensation->condense(first);
-  }
 } // namespace FourierSSI
