@@ -58,8 +58,6 @@ namespace FourierSSI
     previous_f.clear();
     dx.clear();
     df.clear();
-    columns_used = 0;
-    restarts     = 0;
   }
 
   std::vector<double>
@@ -105,7 +103,6 @@ namespace FourierSSI
       }
     for (unsigned int i = 0; i < k; ++i)
       gamma[kept[i]] = gamma_kept[i];
-    columns_used = k;
     return gamma;
   }
 
@@ -121,7 +118,6 @@ namespace FourierSSI
         dx.clear();
         df.clear();
         previous_x.clear();
-        ++restarts;
       }
     smallest_norm =
       dx.empty() && previous_x.empty() ? norm : std::min(smallest_norm, norm);

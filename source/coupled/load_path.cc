@@ -19,26 +19,31 @@ namespace FourierSSI
     return sum;
   }
 
-  RigidMotion
-  rigid_motion_of(
-    const HarmonicSet                                       &set,
-    const std::function<Vector<double>(const unsigned int)> &displacement)
+  bool
+  carries_rigid_motion(const HarmonicSet &set, const unsigned int h)
   {
-    // Per harmonic [h * 4 + c], on its owner; summed in the harmonics' order.
-    std::vector<double> parts(4 * set.size(), 0.);
-    for (unsigned int h = 0; h < set.size(); ++h)
-      {
-        const RigidFoundation *foundation = set.problem(h).get_foundation();
-        const Harmonic        &harmonic   = set.harmonic(h);
-        if (!set.owns(h) || foundation == nullptr || harmonic.n > 1 ||
-            (harmonic.n == 1 && harmonic.family != Family::symmetric))
-          continue;
-        const RigidMotion m = foundation->motion(displacement(h));
-        parts[4 * h]        = m.vertical_displacement;
-        parts[4 * h + 1]    = m.twist;
-        parts[4 * h + 2]    = m.horizontal_displacement;
-        parts[4 * h + 3]    = m.rotation;
-      }
+    const Harmonic &harmonic = set.harmonic(h);
+    return set.owns(h) && set.problem(h).get_foundation() != nullptr &&
+           (harmonic.n == 0 ||
+            (harmonic.n == 1 && harmonic.family == Family::symmetric));
+  }
+
+  void
+  add_rigid_motion(const HarmonicSet    &set,
+                   const unsigned int    h,
+                   const Vector<double> &displacement,
+                   std::vector<double>  &parts)
+  {
+    const RigidMotion m = set.problem(h).get_foundation()->motion(displacement);
+    parts[4 * h]        = m.vertical_displacement;
+    parts[4 * h + 1]    = m.twist;
+    parts[4 * h + 2]    = m.horizontal_displacement;
+    parts[4 * h + 3]    = m.rotation;
+  }
+
+  RigidMotion
+  sum_rigid_motions(const HarmonicSet &set, std::vector<double> parts)
+  {
     const std::vector<double> sum = sum_over_harmonics(set, parts, 4);
     RigidMotion               total;
     total.vertical_displacement   = sum[0];

@@ -49,20 +49,6 @@ namespace FourierSSI
     Blocks
     increment(const Blocks &x, const Blocks &f);
 
-    /** Restarts of the history since reset() (safeguard). */
-    unsigned int
-    n_restarts() const
-    {
-      return restarts;
-    }
-
-    /** Columns used in the last update (<= depth). */
-    unsigned int
-    n_columns_used() const
-    {
-      return columns_used;
-    }
-
   private:
     /** gamma = argmin |f - dF gamma| over the kept columns. */
     std::vector<double>
@@ -72,10 +58,8 @@ namespace FourierSSI
     double             mixing;
     Blocks             previous_x, previous_f;
     std::deque<Blocks> dx, df;
-    unsigned int       columns_used = 0;
     /** Smallest |f| since the last restart. */
-    double       smallest_norm = 0.;
-    unsigned int restarts      = 0;
+    double smallest_norm = 0.;
     /**
      * |f| above this factor times the smallest since the last restart
      * clears the history (the iterate is kept).

@@ -38,6 +38,7 @@
 #include <functional>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace FourierSSI
@@ -93,10 +94,42 @@ namespace FourierSSI
    * families, n = 1 symmetric; zero without a foundation), summed over the
    * harmonics by sum_over_harmonics.
    */
+  /**
+   * True if harmonic h carries a rigid motion of the foundation on this
+   * rank: owned, with a foundation, and n = 0 (either family) or n = 1
+   * symmetric.
+   */
+  bool
+  carries_rigid_motion(const HarmonicSet &set, const unsigned int h);
+
+  /** parts[4 h + c] := the rigid motion of `displacement` of harmonic h. */
+  void
+  add_rigid_motion(const HarmonicSet    &set,
+                   const unsigned int    h,
+                   const Vector<double> &displacement,
+                   std::vector<double>  &parts);
+
+  /** The rigid motion of per-harmonic parts, by sum_over_harmonics. */
   RigidMotion
-  rigid_motion_of(
-    const HarmonicSet                                       &set,
-    const std::function<Vector<double>(const unsigned int)> &displacement);
+  sum_rigid_motions(const HarmonicSet &set, std::vector<double> parts);
+
+  /**
+   * The rigid motion of the foundation in the total displacement
+   * `displacement(h)` (a callable) of every harmonic h this rank owns (n =
+   * 0 both families, n = 1 symmetric; zero without a foundation), summed
+   * over the harmonics by sum_over_harmonics.
+   */
+  template <class Displacement>
+  RigidMotion
+  rigid_motion_of(const HarmonicSet &set, const Displacement &displacement)
+  {
+    // Per harmonic [h * 4 + c], on its owner; summed in the harmonics' order.
+    std::vector<double> parts(4 * set.size(), 0.);
+    for (unsigned int h = 0; h < set.size(); ++h)
+      if (carries_rigid_motion(set, h))
+        add_rigid_motion(set, h, displacement(h), parts);
+    return sum_rigid_motions(set, std::move(parts));
+  }
 
   class LoadPath
   {
