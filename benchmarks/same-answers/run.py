@@ -22,7 +22,8 @@ only these:
     wall time: time_<phase> (time_setup, time_solve, time_error_estimate,
     ...) and step_wall_time, all in s;
   * columns whose header names a wall time or a memory reading: time_s,
-    wall*, *_seconds, *[s], rss*, memory*, *_MiB.
+    wall_time, wall_s, *_seconds, *[s], peak_rss*, rss_*, memory_*, *_MiB
+    (of the bundled scenes' files only load-displacement.csv's time_s).
 Per scene: identical, differs (file, first differing line, both texts), or
 failed (which binary, exit code, its last line on stderr). A file that only
 one build writes is a difference. The VTU files are not compared.
@@ -55,8 +56,8 @@ COMPARED = ("*.csv", "*.txt")
 # A results.csv row (quantity,n,family,cycle,value,unit) that is a wall time.
 TIME_QUANTITY = re.compile(r"^(time_[a-z_]+|step_wall_time)$")
 # A column of a table that is a wall time or a memory reading.
-TIME_COLUMN = re.compile(r"^(time_s|wall.*|.*_seconds|.*\[s\]|rss.*|memory.*"
-                         r"|.*_MiB)$", re.I)
+TIME_COLUMN = re.compile(r"^(time_s|wall_time(_s)?|wall_s|.*_seconds|.*\[s\]"
+                         r"|peak_rss.*|rss_.*|memory_.*|.*_MiB)$", re.I)
 
 
 def uncommented(text):
@@ -119,11 +120,13 @@ def output_files(folder):
 
 def comparable_lines(path):
     """The file's lines with the wall-time rows and columns taken out, each
-    as (line number in the file, text); and what was taken out."""
+    as (line number in the file, text compared, the line as written); and
+    what was taken out."""
     text = open(path, newline="").read()
     lines = text.split("\n")
+    whole = [(i, line, line) for i, line in enumerate(lines, 1)]
     if not path.endswith(".csv") or not lines or "," not in lines[0]:
-        return list(enumerate(lines, 1)), []
+        return whole, []
     header = next(csv.reader([lines[0]]))
     names = [h.strip() for h in header]
     if names[:1] == ["quantity"] and "unit" in names:
@@ -133,16 +136,16 @@ def comparable_lines(path):
             if i > 1 and TIME_QUANTITY.match(quantity):
                 dropped.add(quantity)
             else:
-                kept.append((i, line))
+                kept.append((i, line, line))
         return kept, sorted(dropped)
     ignored = [k for k, h in enumerate(names) if TIME_COLUMN.match(h)]
     if not ignored:
-        return list(enumerate(lines, 1)), []
+        return whole, []
     kept = []
     for i, line in enumerate(lines, 1):
         fields = next(csv.reader([line])) if line else []
         kept.append((i, ",".join(f for k, f in enumerate(fields)
-                                 if k not in ignored)))
+                                 if k not in ignored), line))
     return kept, [names[k] for k in ignored]
 
 
@@ -159,10 +162,10 @@ def compare(new_folder, old_folder):
         new, ignored_new = comparable_lines(os.path.join(new_folder, name))
         old, ignored_old = comparable_lines(os.path.join(old_folder, name))
         ignored |= {"%s: %s" % (name, f) for f in ignored_new + ignored_old}
-        for (i, a), (j, b) in zip(new, old):
+        for (i, a, a_line), (j, b, b_line) in zip(new, old):
             if a != b:
                 return ("%s line %d: new `%s`, old `%s`" %
-                        (name, i, a[:200], b[:200]), ignored)
+                        (name, i, a_line[:200], b_line[:200]), ignored)
         if len(new) != len(old):
             return ("%s: %d lines new, %d old" % (name, len(new), len(old)),
                     ignored)
