@@ -245,8 +245,8 @@ def main():
                     difference, ignored = compare(runs["new"]["output"],
                                                   runs["old"]["output"])
                     verdict = "differs" if difference else "identical"
-                    detail = difference or "%d files" % len(
-                        output_files(runs["new"]["output"]))
+                    detail = difference or ", ".join(
+                        sorted(output_files(runs["new"]["output"])))
                 rows.append({"scene": scene, "verdict": verdict,
                              "detail": detail, "ignored": ignored,
                              "old_s": runs["old"]["wall"],
@@ -294,7 +294,8 @@ def write_table(rows, skipped, exes, args, started, total, summary,
               "`step_wall_time`) and the wall-time columns of the tables "
               "(`time_s` of load-displacement.csv). Ignored in this run: %s."
               "\n\n" % (", ".join("`%s`" % i for i in ignored) or "nothing"))
-    out.write("| scene | result | detail | old [s] | new [s] |\n")
+    out.write("| scene | result | files compared, or the first difference "
+              "| old [s] | new [s] |\n")
     out.write("|---|---|---|---|---|\n")
     for r in rows:
         out.write("| %s | %s | %s | %.1f | %.1f |\n" % (
