@@ -751,7 +751,6 @@ namespace FourierSSI
                 if (weight != 0.)
                   constraints.add_entry(dofs[c], masters[k], weight);
               }
-            ++n_tied;
           }
       }
   }
@@ -773,10 +772,7 @@ namespace FourierSSI
       unmoved = {master_U};
     for (const types::global_dof_index dof : unmoved)
       if (dof != numbers::invalid_dof_index && !constraints.is_constrained(dof))
-        {
-          constraints.add_line(dof);
-          ++n_tied;
-        }
+        constraints.add_line(dof);
   }
 
   bool

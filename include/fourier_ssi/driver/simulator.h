@@ -87,13 +87,6 @@ namespace FourierSSI
       return target_not_reached;
     }
 
-    /** The scene plan (after run()): the one list of harmonics. */
-    const ScenePlan &
-    get_plan() const
-    {
-      return plan;
-    }
-
   private:
     /** What one harmonic produced in a cycle, merged in harmonic order. */
     struct HarmonicOutcome

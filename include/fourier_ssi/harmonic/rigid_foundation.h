@@ -333,12 +333,6 @@ namespace FourierSSI
     check_supported(const Vector<double>            &solution,
                     const AffineConstraints<double> &constraints) const;
 
-    unsigned int
-    n_tied_dofs() const
-    {
-      return n_tied;
-    }
-
     /** The master node's DoFs (the rigid motion's unknowns). */
     std::set<types::global_dof_index>
     master_dofs() const
@@ -434,7 +428,6 @@ namespace FourierSSI
     types::global_dof_index   master_U = numbers::invalid_dof_index;
     types::global_dof_index   master_V = numbers::invalid_dof_index;
     types::global_dof_index   master_W = numbers::invalid_dof_index;
-    unsigned int              n_tied   = 0;
   };
 } // namespace FourierSSI
 
