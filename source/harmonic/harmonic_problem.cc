@@ -17,6 +17,7 @@
 #include <fourier_ssi/harmonic/assembly_loop.h>
 #include <fourier_ssi/harmonic/axis_constraints.h>
 #include <fourier_ssi/harmonic/harmonic_problem.h>
+#include <fourier_ssi/harmonic/rigid_foundation.h>
 #include <fourier_ssi/harmonic/stress_postprocessor.h>
 #include <fourier_ssi/linear_algebra/sparse_direct.h>
 #include <fstream>
@@ -84,6 +85,8 @@ namespace FourierSSI
         std::make_unique<DistributedLinearSystem>(communicator,
                                                   parameters.solver);
   }
+
+  HarmonicProblem::~HarmonicProblem() = default;
 
   void
   HarmonicProblem::setup_system()

@@ -47,6 +47,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/numerics/vector_tools.h>
 #include <fourier_ssi/harmonic/harmonic_problem.h>
+#include <fourier_ssi/harmonic/rigid_foundation.h>
 #include <fourier_ssi/harmonic/stress_postprocessor.h>
 #include <fstream>
 

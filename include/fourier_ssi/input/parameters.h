@@ -12,8 +12,8 @@
 #include <fourier_ssi/fourier/harmonic.h>
 #include <fourier_ssi/fourier/load_decomposition.h>
 #include <fourier_ssi/fourier/material.h>
-#include <fourier_ssi/harmonic/rigid_foundation.h>
 #include <fourier_ssi/input/load_path_parameters.h>
+#include <fourier_ssi/input/rigid_foundation_parameters.h>
 #include <fourier_ssi/interfaces/interface_pairing.h>
 #include <fourier_ssi/linear_algebra/linear_solver.h>
 #include <fourier_ssi/mesh/adaptivity.h>
