@@ -3,6 +3,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/lac/full_matrix.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
+#include <fourier_ssi/coupled/initial_stress.h>
 #include <fourier_ssi/coupled/nonlinear_interface_points.h>
 #include <fourier_ssi/fourier/harmonic_pair_integral.h>
 #include <fourier_ssi/input/atomic_file.h>
@@ -122,10 +123,11 @@ namespace FourierSSI
             point.area_per_radian =
               rule.weight(q) * pairs[i].length * point.position[0];
             point.initial_traction =
-              parameters.initial_stress.interface_traction(
-                pairs[i].tangent,
-                pairs[i].normal,
-                parameters.materials.depth(point.position[1]));
+              initial_interface_traction(parameters.initial_stress,
+                                         pairs[i].tangent,
+                                         pairs[i].normal,
+                                         parameters.materials.depth(
+                                           point.position[1]));
             points.push_back(point);
           }
       }

@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
+#include <fourier_ssi/coupled/initial_stress.h>
 #include <fourier_ssi/coupled/nonlinear_soil_points.h>
 #include <fourier_ssi/fourier/harmonic_pair_integral.h>
 #include <fourier_ssi/harmonic/stress_postprocessor.h>
@@ -158,7 +159,7 @@ namespace FourierSSI
                 point.lambda        = material.lambda(point.depth);
                 point.law           = law->second;
                 point.initial_stress =
-                  parameters.initial_stress.soil_stress(point.depth);
+                  initial_soil_stress(parameters.initial_stress, point.depth);
                 points.push_back(point);
               }
             cells.push_back(std::move(cell));

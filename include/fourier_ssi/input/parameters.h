@@ -6,12 +6,12 @@
 #define fourier_ssi_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
-#include <fourier_ssi/coupled/initial_stress.h>
 #include <fourier_ssi/coupled/soil_law.h>
 #include <fourier_ssi/fourier/boundary_conditions.h>
 #include <fourier_ssi/fourier/harmonic.h>
 #include <fourier_ssi/fourier/load_decomposition.h>
 #include <fourier_ssi/fourier/material.h>
+#include <fourier_ssi/input/initial_stress_parameters.h>
 #include <fourier_ssi/input/load_path_parameters.h>
 #include <fourier_ssi/input/rigid_foundation_parameters.h>
 #include <fourier_ssi/interfaces/interface_pairing.h>
