@@ -12,9 +12,9 @@
 #include <fourier_ssi/fourier/load_decomposition.h>
 #include <fourier_ssi/fourier/material.h>
 #include <fourier_ssi/input/initial_stress_parameters.h>
+#include <fourier_ssi/input/interface_parameters.h>
 #include <fourier_ssi/input/load_path_parameters.h>
 #include <fourier_ssi/input/rigid_foundation_parameters.h>
-#include <fourier_ssi/interfaces/interface_pairing.h>
 #include <fourier_ssi/linear_algebra/linear_solver.h>
 #include <fourier_ssi/mesh/adaptivity.h>
 #include <fourier_ssi/mesh/mesh_builder.h>
