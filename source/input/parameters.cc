@@ -2,7 +2,7 @@
 #include <cmath>
 #include <deal.II/base/utilities.h>
 #include <filesystem>
-#include <fourier_ssi/fourier/material.h>
+#include <fourier_ssi/input/material.h>
 #include <fourier_ssi/input/messages.h>
 #include <fourier_ssi/input/parameters.h>
 #include <fourier_ssi/input/problem_checks.h>

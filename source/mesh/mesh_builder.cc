@@ -4,7 +4,7 @@
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
 #include <filesystem>
-#include <fourier_ssi/fourier/boundary_conditions.h>
+#include <fourier_ssi/input/boundary_conditions.h>
 #include <fourier_ssi/mesh/interface_lines.h>
 #include <fourier_ssi/mesh/mesh_builder.h>
 #include <fstream>

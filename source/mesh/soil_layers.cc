@@ -1,7 +1,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deal.II/base/utilities.h>
-#include <fourier_ssi/fourier/boundary_conditions.h>
+#include <fourier_ssi/input/boundary_conditions.h>
 #include <fourier_ssi/mesh/mesh_builder.h>
 #include <fourier_ssi/mesh/soil_layers.h>
 #include <sstream>

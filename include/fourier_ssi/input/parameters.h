@@ -7,13 +7,13 @@
 
 #include <deal.II/base/parameter_handler.h>
 #include <fourier_ssi/coupled/soil_law.h>
-#include <fourier_ssi/fourier/boundary_conditions.h>
 #include <fourier_ssi/fourier/harmonic.h>
-#include <fourier_ssi/fourier/load_decomposition.h>
-#include <fourier_ssi/fourier/material.h>
+#include <fourier_ssi/input/boundary_conditions.h>
 #include <fourier_ssi/input/initial_stress_parameters.h>
 #include <fourier_ssi/input/interface_parameters.h>
+#include <fourier_ssi/input/load_parameters.h>
 #include <fourier_ssi/input/load_path_parameters.h>
+#include <fourier_ssi/input/material.h>
 #include <fourier_ssi/input/rigid_foundation_parameters.h>
 #include <fourier_ssi/linear_algebra/linear_solver.h>
 #include <fourier_ssi/mesh/adaptivity.h>
