@@ -402,7 +402,7 @@ namespace FourierSSI
   AllParameters::declare_parameters(ParameterHandler &prm)
   {
     DiscretizationParameters::declare_parameters(prm);
-    MeshBuilder::declare_parameters(prm);
+    MeshParameters::declare_parameters(prm);
     MaterialLibrary::declare_parameters(prm);
     BoundaryConditions::declare_parameters(prm);
     LinearSolver::declare_parameters(prm);

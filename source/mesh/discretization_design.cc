@@ -3,6 +3,7 @@
 #include <cmath>
 #include <deal.II/grid/grid_tools.h>
 #include <fourier_ssi/mesh/discretization_design.h>
+#include <fourier_ssi/mesh/mesh_builder.h>
 
 namespace FourierSSI
 {
@@ -34,7 +35,7 @@ namespace FourierSSI
 
       /** Every candidate point: line ends, box corners, the patch edge. */
       std::vector<Point<2>>
-      candidate_points(const MeshBuilder &mesh)
+      candidate_points(const MeshParameters &mesh)
       {
         std::vector<Point<2>> points;
         for (const InterfaceLine &line : mesh.interface_lines)
@@ -62,7 +63,7 @@ namespace FourierSSI
     } // namespace
 
     std::vector<Point<2>>
-    singular_points(const MeshBuilder &mesh)
+    singular_points(const MeshParameters &mesh)
     {
       std::vector<Point<2>> points;
       if (mesh.type != MeshType::rectangle)
@@ -155,9 +156,9 @@ namespace FourierSSI
       // The design replaces Mesh/Global refinements: member k is the
       // coarse mesh refined k times (a scene refined for a one-mesh run
       // would make every member 4x dearer).
-      MeshBuilder mesh        = parameters.mesh;
+      MeshParameters mesh     = parameters.mesh;
       mesh.global_refinements = member;
-      mesh.build(triangulation);
+      build_mesh(mesh, triangulation);
       refine_a_priori(triangulation,
                       refinements(parameters, member),
                       interface_ids);
@@ -169,7 +170,7 @@ namespace FourierSSI
                          const std::set<types::boundary_id> &interface_ids,
                          Triangulation<2>                   &triangulation)
     {
-      MeshBuilder        mesh   = parameters.mesh;
+      MeshParameters     mesh   = parameters.mesh;
       const unsigned int split  = 1u << member;
       const auto         refine = [&](std::vector<unsigned int> &cells,
                               std::vector<double>       &growth) {
@@ -190,7 +191,7 @@ namespace FourierSSI
       else
         mesh.global_refinements += member;
       triangulation.clear();
-      mesh.build(triangulation);
+      build_mesh(mesh, triangulation);
       refine_a_priori(triangulation, parameters.adaptivity, interface_ids);
     }
 

@@ -14,10 +14,10 @@
 #include <fourier_ssi/input/load_parameters.h>
 #include <fourier_ssi/input/load_path_parameters.h>
 #include <fourier_ssi/input/material.h>
+#include <fourier_ssi/input/mesh_parameters.h>
 #include <fourier_ssi/input/rigid_foundation_parameters.h>
 #include <fourier_ssi/linear_algebra/linear_solver.h>
 #include <fourier_ssi/mesh/adaptivity.h>
-#include <fourier_ssi/mesh/mesh_builder.h>
 #include <optional>
 #include <string>
 #include <vector>
@@ -205,7 +205,7 @@ namespace FourierSSI
     read_string(const std::string &text);
 
     DiscretizationParameters  discretization;
-    MeshBuilder               mesh;
+    MeshParameters            mesh;
     MaterialLibrary           materials;
     BoundaryConditions        boundary_conditions;
     LinearSolver              solver;
