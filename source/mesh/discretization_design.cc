@@ -2,6 +2,7 @@
 #include <array>
 #include <cmath>
 #include <deal.II/grid/grid_tools.h>
+#include <fourier_ssi/mesh/adaptivity.h>
 #include <fourier_ssi/mesh/discretization_design.h>
 #include <fourier_ssi/mesh/mesh_builder.h>
 

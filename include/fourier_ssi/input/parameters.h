@@ -8,6 +8,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <fourier_ssi/coupled/soil_law.h>
 #include <fourier_ssi/fourier/harmonic.h>
+#include <fourier_ssi/input/adaptivity_parameters.h>
 #include <fourier_ssi/input/boundary_conditions.h>
 #include <fourier_ssi/input/initial_stress_parameters.h>
 #include <fourier_ssi/input/interface_parameters.h>
@@ -17,7 +18,6 @@
 #include <fourier_ssi/input/mesh_parameters.h>
 #include <fourier_ssi/input/rigid_foundation_parameters.h>
 #include <fourier_ssi/linear_algebra/linear_solver.h>
-#include <fourier_ssi/mesh/adaptivity.h>
 #include <optional>
 #include <string>
 #include <vector>
