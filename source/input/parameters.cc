@@ -405,7 +405,7 @@ namespace FourierSSI
     MeshParameters::declare_parameters(prm);
     MaterialLibrary::declare_parameters(prm);
     BoundaryConditions::declare_parameters(prm);
-    LinearSolver::declare_parameters(prm);
+    LinearSolverParameters::declare_parameters(prm);
     ExactSolutionParameters::declare_parameters(prm);
     OutputParameters::declare_parameters(prm);
     InterfaceParameters::declare_parameters(prm);

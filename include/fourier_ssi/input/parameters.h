@@ -12,12 +12,12 @@
 #include <fourier_ssi/input/boundary_conditions.h>
 #include <fourier_ssi/input/initial_stress_parameters.h>
 #include <fourier_ssi/input/interface_parameters.h>
+#include <fourier_ssi/input/linear_solver_parameters.h>
 #include <fourier_ssi/input/load_parameters.h>
 #include <fourier_ssi/input/load_path_parameters.h>
 #include <fourier_ssi/input/material.h>
 #include <fourier_ssi/input/mesh_parameters.h>
 #include <fourier_ssi/input/rigid_foundation_parameters.h>
-#include <fourier_ssi/linear_algebra/linear_solver.h>
 #include <optional>
 #include <string>
 #include <vector>
@@ -208,7 +208,7 @@ namespace FourierSSI
     MeshParameters            mesh;
     MaterialLibrary           materials;
     BoundaryConditions        boundary_conditions;
-    LinearSolver              solver;
+    LinearSolverParameters    solver;
     ExactSolutionParameters   exact_solution;
     OutputParameters          output;
     InterfaceParameters       interfaces;
