@@ -103,7 +103,7 @@ namespace FourierSSI
     for (const auto &[id, law] : parameters.soil_plasticity.laws)
       {
         law_index[id] = laws.size();
-        laws.push_back(law);
+        laws.emplace_back(law);
       }
     const DoFHandler<2> &dofs0 = set.problem(0).get_dof_handler();
     const auto          &fe    = dofs0.get_fe();
@@ -528,8 +528,8 @@ namespace FourierSSI
     StrainVector trial = elastic;
     for (unsigned int c = 0; c < 6; ++c)
       trial[c] -= committed_plastic[c];
-    const double   G = point.shear_modulus, K = point.lambda + 2. * G / 3.;
-    const SoilLaw &law = laws[point.law];
+    const double G = point.shear_modulus, K = point.lambda + 2. * G / 3.;
+    const SoilReturnMapping &law = laws[point.law];
     return tangent == nullptr ?
              law.return_map(trial, G, K, point.depth) :
              law.return_map_with_tangent(trial, G, K, point.depth, *tangent);
@@ -549,7 +549,8 @@ namespace FourierSSI
                                       &d_ep);
     if (at.state == SoilState::elastic)
       return false;
-    // D_e - D_ep, D_ep in closed form (SoilLaw::return_map_with_tangent).
+    // D_e - D_ep, D_ep in closed form
+    // (SoilReturnMapping::return_map_with_tangent).
     for (unsigned int l = 0; l < 6; ++l)
       {
         StrainVector unit{};

@@ -6,7 +6,6 @@
 #define fourier_ssi_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
-#include <fourier_ssi/coupled/soil_law.h>
 #include <fourier_ssi/fourier/harmonic.h>
 #include <fourier_ssi/input/adaptivity_parameters.h>
 #include <fourier_ssi/input/boundary_conditions.h>
@@ -18,6 +17,7 @@
 #include <fourier_ssi/input/material.h>
 #include <fourier_ssi/input/mesh_parameters.h>
 #include <fourier_ssi/input/rigid_foundation_parameters.h>
+#include <fourier_ssi/input/soil_plasticity_parameters.h>
 #include <optional>
 #include <string>
 #include <vector>
