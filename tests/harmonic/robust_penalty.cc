@@ -46,8 +46,8 @@
 
 #include <cmath>
 #include <deal.II/lac/sparse_direct.h>
-#include <fourier_ssi/fourier/harmonic.h>
 #include <fourier_ssi/harmonic/harmonic_problem.h>
+#include <fourier_ssi/input/harmonic.h>
 #include <fourier_ssi/mesh/mesh_builder.h>
 #include <random>
 #include <sstream>

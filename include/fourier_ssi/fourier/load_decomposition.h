@@ -19,8 +19,8 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
-#include <fourier_ssi/fourier/harmonic.h>
 #include <fourier_ssi/input/boundary_conditions.h>
+#include <fourier_ssi/input/harmonic.h>
 #include <map>
 #include <memory>
 #include <mutex>

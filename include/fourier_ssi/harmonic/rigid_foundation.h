@@ -25,8 +25,8 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/vector.h>
-#include <fourier_ssi/fourier/harmonic.h>
 #include <fourier_ssi/harmonic/rigid_motion.h>
+#include <fourier_ssi/input/harmonic.h>
 #include <fourier_ssi/input/rigid_foundation_parameters.h>
 #include <map>
 #include <set>

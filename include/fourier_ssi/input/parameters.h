@@ -6,9 +6,9 @@
 #define fourier_ssi_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
-#include <fourier_ssi/fourier/harmonic.h>
 #include <fourier_ssi/input/adaptivity_parameters.h>
 #include <fourier_ssi/input/boundary_conditions.h>
+#include <fourier_ssi/input/harmonic.h>
 #include <fourier_ssi/input/initial_stress_parameters.h>
 #include <fourier_ssi/input/interface_parameters.h>
 #include <fourier_ssi/input/linear_solver_parameters.h>

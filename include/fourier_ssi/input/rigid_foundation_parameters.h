@@ -9,7 +9,7 @@
 
 #include <algorithm>
 #include <deal.II/base/parameter_handler.h>
-#include <fourier_ssi/fourier/harmonic.h>
+#include <fourier_ssi/input/harmonic.h>
 #include <string>
 #include <vector>
 

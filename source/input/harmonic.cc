@@ -1,6 +1,6 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/numbers.h>
-#include <fourier_ssi/fourier/harmonic.h>
+#include <fourier_ssi/input/harmonic.h>
 
 namespace FourierSSI
 {
