@@ -97,10 +97,11 @@ namespace FourierSSI
                           augmented ? in_K.normal : spring.normal,
                           augmented ? in_K.shear : spring.shear);
         stiffness.push_back(K_k);
-        contact.push_back(law.contact);
+        const bool is_contact = law.kind == InterfaceLaw::Kind::contact;
+        contact.push_back(is_contact);
         law_springs.push_back(law_k);
         flexibility.push_back(augmented ?
-                                augmented_flexibility(K_k, law_k, law.contact) :
+                                augmented_flexibility(K_k, law_k, is_contact) :
                                 LocalVector{{0., 0., 0.}});
         soil_scale.push_back(integrator.get_soil_scale()[i]);
         if (law.cohesion == 0. && !parameters.initial_stress.enabled())
@@ -141,8 +142,9 @@ namespace FourierSSI
                                      const InterfaceStiffness &in_K,
                                      const bool augment_stiff_laws)
   {
-    return law.contact || (augment_stiff_laws && (own.normal != in_K.normal ||
-                                                  own.shear != in_K.shear));
+    return law.kind == InterfaceLaw::Kind::contact ||
+           (augment_stiff_laws &&
+            (own.normal != in_K.normal || own.shear != in_K.shear));
   }
 
   const InterfacePair &

@@ -167,20 +167,21 @@ namespace FourierSSI
                   ExcMessage(entry + ": two laws for boundary id " +
                              std::to_string(id)));
       given.preset = true;
+      using Kind   = InterfaceLaw::Kind;
       if (token == "rough")
         law.normal = law.shear = 1e10;
       else if (token == "smooth")
         law.normal = 1e10, law.shear = 0.;
       else if (token == "vermeer")
-        law.vermeer = true;
+        law.kind = Kind::vermeer;
       else if (token == "tied")
-        law.tied = true;
+        law.kind = Kind::tied;
       else if (token == "tied-normal")
-        law.tied_normal = true;
+        law.kind = Kind::tied_normal;
       else if (token == "coulomb")
-        law.coulomb = true;
+        law.kind = Kind::coulomb;
       else if (token == "contact")
-        law.contact = true;
+        law.kind = Kind::contact;
       else
         AssertThrow(false,
                     ExcMessage(entry + ": unknown law '" + token +
@@ -260,10 +261,10 @@ namespace FourierSSI
                              ": kn=auto, ks=auto belong to the "
                              "coulomb law" +
                              where));
-      if (law.contact)
+      if (law.kind == InterfaceLaw::Kind::contact)
         check_contact(
           law, given.has_kn || given.has_ks, given.keys_given, entry, where);
-      else if (law.coulomb)
+      else if (law.kind == InterfaceLaw::Kind::coulomb)
         {
           AssertThrow(!given.has_mu && !given.has_material,
                       ExcMessage(entry +
@@ -275,7 +276,7 @@ namespace FourierSSI
                         entry + ":",
                         where);
         }
-      else if (law.vermeer)
+      else if (law.kind == InterfaceLaw::Kind::vermeer)
         {
           AssertThrow(
             given.has_mu && law.mu > 0. && !given.has_kn && !given.has_ks,
@@ -350,7 +351,7 @@ namespace FourierSSI
   InterfaceParameters::any_contact() const
   {
     return std::any_of(laws.begin(), laws.end(), [](const auto &entry) {
-      return entry.second.contact;
+      return entry.second.kind == InterfaceLaw::Kind::contact;
     });
   }
 } // namespace FourierSSI

@@ -58,8 +58,8 @@ namespace FourierSSI
       bool
       slides_freely(const InterfaceLaw &law)
       {
-        return law.tied_normal || (!law.tied && !law.vermeer &&
-                                   !law.is_nonlinear() && law.shear == 0.);
+        return law.kind == InterfaceLaw::Kind::tied_normal ||
+               (law.kind == InterfaceLaw::Kind::springs && law.shear == 0.);
       }
     } // namespace
 

@@ -28,21 +28,41 @@ namespace FourierSSI
    */
   struct InterfaceLaw
   {
-    bool   vermeer = false;
-    double normal  = 0.; // kn [kPa/m] (not vermeer)
-    double shear   = 0.; // ks [kPa/m] (not vermeer)
-    double mu      = 0.; // Van Langen & Vermeer factor (vermeer)
+    /**
+     * Which law it is (the word of its list item):
+     * - springs: penalty springs kn, ks, given or the presets rough and
+     *   smooth;
+     * - vermeer: Van Langen & Vermeer's springs from G / l and mu;
+     * - tied, tied_normal: exact limits instead of penalty springs (no
+     *   stiffness assembled): tied = kn = ks = infinity (the twins move
+     *   together), tied_normal = kn = infinity, ks = 0 (only the normal
+     *   displacement is continuous);
+     * - coulomb: Mohr-Coulomb slip and tension cut-off on elastic springs
+     *   kn, ks > 0 (the strength entries below apply);
+     * - contact: exact non-penetration with Coulomb friction (`contact,
+     *   phi=.., c=..`): the coulomb law without kn, ks, tensionless, no
+     *   dilation, enforced by an augmented Lagrangian at the theta samples
+     *   (doc/nonlinear-interfaces.md section 5d); its springs are the
+     *   augmentation, interface_iteration_stiffness G / l.
+     */
+    enum class Kind
+    {
+      springs,
+      vermeer,
+      tied,
+      tied_normal,
+      coulomb,
+      contact
+    };
+    Kind kind = Kind::springs;
+
+    double normal = 0.; // kn [kPa/m] (not vermeer)
+    double shear  = 0.; // ks [kPa/m] (not vermeer)
+    double mu     = 0.; // Van Langen & Vermeer factor (vermeer)
     /** Material id of the soil side (vermeer); -1: the side of lower G. */
     int material = -1;
-    /**
-     * Exact limits instead of penalty springs (no stiffness assembled):
-     * tied = kn = ks = infinity (the twins move together), tied_normal =
-     * kn = infinity, ks = 0 (only the normal displacement is continuous).
-     */
-    bool tied = false, tied_normal = false;
 
-    /** Mohr-Coulomb slip and tension cut-off (the entries below apply). */
-    bool   coulomb        = false;
+    /** The strength of coulomb and contact. */
     double cohesion       = 0.; // c [kPa]
     double friction_angle = 0.; // phi [degrees], 0 <= phi < 90
     double dilation_angle = 0.; // psi [degrees], 0 <= psi <= phi
@@ -50,32 +70,33 @@ namespace FourierSSI
     double tension_cutoff = 0.;
 
     /**
-     * Exact non-penetration with Coulomb friction (`contact, phi=..,
-     * c=..`): the coulomb law without kn, ks, tensionless, no dilation,
-     * enforced by an augmented Lagrangian at the theta samples
-     * (doc/nonlinear-interfaces.md section 5d); its springs are the
-     * augmentation, interface_iteration_stiffness G / l.
-     */
-    bool contact = false;
-
-    /**
      * kn=auto, ks=auto (coulomb): automatic_interface_stiffness G / l,
      * resolved per face by InterfaceIntegrator (G of the softer side at the
-     * face, l the interface's mean face length).
+     * face, l the interface's mean face length). How a spring's value is
+     * given, not which law: one flag per spring.
      */
     bool automatic_normal = false, automatic_shear = false;
 
+    /** coulomb or contact: the law has a return mapping. */
     bool
     is_nonlinear() const
     {
-      return coulomb || contact;
+      return kind == Kind::coulomb || kind == Kind::contact;
+    }
+
+    /** tied or tied_normal: constraints, not springs. */
+    bool
+    is_exact_limit() const
+    {
+      return kind == Kind::tied || kind == Kind::tied_normal;
     }
 
     /** The faces can separate: contact, or coulomb with a tension cut-off. */
     bool
     can_open() const
     {
-      return contact || (coulomb && std::isfinite(tension_cutoff));
+      return kind == Kind::contact ||
+             (kind == Kind::coulomb && std::isfinite(tension_cutoff));
     }
   };
 
