@@ -1,9 +1,33 @@
 #include <deal.II/base/utilities.h>
 #include <fourier_ssi/input/adaptivity_parameters.h>
+#include <fourier_ssi/input/choice.h>
 #include <fourier_ssi/input/mesh_parameters.h>
 
 namespace FourierSSI
 {
+  namespace
+  {
+    const Choices<RefinementStrategy> &
+    strategies()
+    {
+      static const Choices<RefinementStrategy> choices{
+        {"global", RefinementStrategy::global},
+        {"kelly", RefinementStrategy::kelly},
+        {"goal", RefinementStrategy::goal}};
+      return choices;
+    }
+
+    const Choices<StiffnessGoal> &
+    goals()
+    {
+      static const Choices<StiffnessGoal> choices{{"K_H", StiffnessGoal::K_H},
+                                                  {"K_M", StiffnessGoal::K_M},
+                                                  {"K_MH", StiffnessGoal::K_MH},
+                                                  {"all", StiffnessGoal::all}};
+      return choices;
+    }
+  } // namespace
+
   namespace
   {
     /** Strategy, its refine fraction and the stiffness goal. */
@@ -12,7 +36,7 @@ namespace FourierSSI
     {
       prm.declare_entry("Strategy",
                         "global",
-                        Patterns::Selection("global|kelly|goal"),
+                        Patterns::Selection(strategies().selection()),
                         "Refinement between cycles: global (uniform), kelly "
                         "(Kelly indicators summed over the harmonics) or goal "
                         "(dual-weighted residual for the rigid-foundation "
@@ -31,7 +55,7 @@ namespace FourierSSI
                         "a larger fraction, e.g. 0.8, suits them).");
       prm.declare_entry("Goal",
                         "all",
-                        Patterns::Selection("K_H|K_M|K_MH|all"),
+                        Patterns::Selection(goals().selection()),
                         "goal: the stiffness coefficient whose error steers "
                         "the mesh and stops the cycles (all: the largest "
                         "relative error of K_H, K_M, K_MH).");
@@ -121,18 +145,7 @@ namespace FourierSSI
   std::string
   name_of(const StiffnessGoal goal)
   {
-    switch (goal)
-      {
-        case StiffnessGoal::K_H:
-          return "K_H";
-        case StiffnessGoal::K_M:
-          return "K_M";
-        case StiffnessGoal::K_MH:
-          return "K_MH";
-        case StiffnessGoal::all:
-          break;
-      }
-    return "all";
+    return goals().name_of(goal);
   }
 
   namespace
@@ -249,23 +262,17 @@ namespace FourierSSI
   {
     prm.enter_subsection("Adaptivity");
     const std::string strategy_name = prm.get("Strategy");
-    strategy        = strategy_name == "kelly" ? RefinementStrategy::kelly :
-                      strategy_name == "goal"  ? RefinementStrategy::goal :
-                                                 RefinementStrategy::global;
+    strategy = strategies().value_of(strategy_name, "Adaptivity/Strategy");
     refine_fraction = prm.get_double("Refine fraction");
     AssertThrow(strategy == RefinementStrategy::global || refine_fraction > 0.,
                 ExcMessage("Adaptivity/Refine fraction: 0 refines no cell, so "
                            "every cycle would solve the same mesh; give 0 < "
                            "fraction <= 1 with Strategy = " +
                            strategy_name));
-    const std::string goal_name = prm.get("Goal");
-    goal                        = goal_name == "K_H"  ? StiffnessGoal::K_H :
-                                  goal_name == "K_M"  ? StiffnessGoal::K_M :
-                                  goal_name == "K_MH" ? StiffnessGoal::K_MH :
-                                                        StiffnessGoal::all;
-    goal_tolerance              = prm.get_double("Goal tolerance");
-    maximum_dofs                = prm.get_double("Maximum DoFs");
-    allow_unconverged           = prm.get_bool("Allow unconverged");
+    goal              = goals().value_of(prm.get("Goal"), "Adaptivity/Goal");
+    goal_tolerance    = prm.get_double("Goal tolerance");
+    maximum_dofs      = prm.get_double("Maximum DoFs");
+    allow_unconverged = prm.get_bool("Allow unconverged");
     point_refinements.clear();
     for (const std::string &item :
          Utilities::split_string_list(prm.get("Point refinement"), ';'))

@@ -1,8 +1,35 @@
 #include <deal.II/base/utilities.h>
+#include <fourier_ssi/input/choice.h>
 #include <fourier_ssi/input/discretization_parameters.h>
+#include <optional>
 
 namespace FourierSSI
 {
+  namespace
+  {
+    /** Discretization/Family: the families each listed n is solved in. */
+    const Choices<std::vector<Family>> &
+    family_choices()
+    {
+      static const Choices<std::vector<Family>> choices{
+        {"symmetric", {Family::symmetric}},
+        {"antisymmetric", {Family::antisymmetric}},
+        {"both", {Family::symmetric, Family::antisymmetric}}};
+      return choices;
+    }
+
+    /** Discretization/Volumetric strain; auto: chosen with the materials. */
+    const Choices<std::optional<VolumetricStrain>> &
+    volumetric_choices()
+    {
+      static const Choices<std::optional<VolumetricStrain>> choices{
+        {"auto", std::nullopt},
+        {"standard", VolumetricStrain::standard},
+        {"bbar", VolumetricStrain::bbar}};
+      return choices;
+    }
+  } // namespace
+
   void
   DiscretizationParameters::declare_parameters(ParameterHandler &prm)
   {
@@ -16,7 +43,7 @@ namespace FourierSSI
                       "'0, 1, 3' (with Family).");
     prm.declare_entry("Family",
                       "symmetric",
-                      Patterns::Selection("symmetric|antisymmetric|both"),
+                      Patterns::Selection(family_choices().selection()),
                       "symmetric: u, v ~ cos n t, w ~ sin n t; "
                       "antisymmetric: u, v ~ sin n t, w ~ cos n t "
                       "(thesis eq. 3.2). For n = 0 symmetric is the "
@@ -31,7 +58,7 @@ namespace FourierSSI
                       "pairs with the 10-node interface element).");
     prm.declare_entry("Volumetric strain",
                       "auto",
-                      Patterns::Selection("auto|standard|bbar"),
+                      Patterns::Selection(volumetric_choices().selection()),
                       "standard: full integration of the dilatation; bbar: "
                       "the dilatation projected onto linear polynomials per "
                       "cell (B-bar, the Q2-P1disc volumetric space), free "
@@ -91,7 +118,8 @@ namespace FourierSSI
   DiscretizationParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Discretization");
-    const std::string family = prm.get("Family");
+    const std::vector<Family> families =
+      family_choices().value_of(prm.get("Family"), "Discretization/Family");
     harmonics.clear();
     const std::string list = Utilities::trim(prm.get("Harmonics"));
     automatic              = list == "auto";
@@ -113,21 +141,18 @@ namespace FourierSSI
           AssertThrow(h.n != static_cast<unsigned int>(n),
                       ExcMessage("Discretization/Harmonics: n = " + s +
                                  " is listed twice"));
-        if (family != "antisymmetric")
-          harmonics.push_back(
-            {static_cast<unsigned int>(n), Family::symmetric});
-        if (family != "symmetric")
-          harmonics.push_back(
-            {static_cast<unsigned int>(n), Family::antisymmetric});
+        for (const Family family : families)
+          harmonics.push_back({static_cast<unsigned int>(n), family});
       }
     AssertThrow(automatic || !harmonics.empty(),
                 ExcMessage("Discretization/Harmonics: empty; write 'auto' or "
                            "a list such as '0, 1'"));
-    degree                             = prm.get_integer("Polynomial degree");
-    const std::string volumetric_entry = prm.get("Volumetric strain");
-    volumetric_automatic               = volumetric_entry == "auto";
-    volumetric = volumetric_entry == "bbar" ? VolumetricStrain::bbar :
-                                              VolumetricStrain::standard;
+    degree = prm.get_integer("Polynomial degree");
+    const std::optional<VolumetricStrain> chosen =
+      volumetric_choices().value_of(prm.get("Volumetric strain"),
+                                    "Discretization/Volumetric strain");
+    volumetric_automatic = !chosen.has_value();
+    volumetric           = chosen.value_or(VolumetricStrain::standard);
     AssertThrow(volumetric != VolumetricStrain::bbar || degree == 2,
                 ExcMessage("Discretization/Volumetric strain = bbar needs "
                            "Polynomial degree = 2"));

@@ -3,10 +3,13 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/numbers.h>
 #include <deal.II/base/utilities.h>
+#include <fourier_ssi/input/choice.h>
 #include <fourier_ssi/input/interface_parameters.h>
 #include <fourier_ssi/input/prm_values.h>
 #include <limits>
+#include <optional>
 #include <set>
+#include <utility>
 
 namespace FourierSSI
 {
@@ -85,6 +88,17 @@ namespace FourierSSI
     }
   } // namespace
 
+  namespace
+  {
+    /** Interfaces/Nonlinear integration: nodal (true) or Gauss points. */
+    const Choices<bool> &
+    integration_choices()
+    {
+      static const Choices<bool> choices{{"gauss", false}, {"nodal", true}};
+      return choices;
+    }
+  } // namespace
+
   void
   InterfaceParameters::declare_parameters(ParameterHandler &prm)
   {
@@ -115,7 +129,7 @@ namespace FourierSSI
     prm.declare_entry(
       "Nonlinear integration",
       "gauss",
-      Patterns::Selection("gauss|nodal"),
+      Patterns::Selection(integration_choices().selection()),
       "Where the coulomb and contact interfaces are sampled along each face "
       "(and their matrices integrated): gauss (p + 1 Gauss points, the "
       "exact closed-form matrix) or nodal (Gauss-Lobatto at the p + 1 "
@@ -139,13 +153,38 @@ namespace FourierSSI
     prm.enter_subsection("Interfaces");
     laws              = parse_list(prm.get("Interfaces"));
     pairing_tolerance = prm.get_double("Pairing tolerance");
-    nodal_integration = prm.get("Nonlinear integration") == "nodal";
+    nodal_integration =
+      integration_choices().value_of(prm.get("Nonlinear integration"),
+                                     "Interfaces/Nonlinear integration");
     prm.leave_subsection();
   }
 
   namespace
   {
     const std::string interfaces_entry = "Interfaces/Interfaces";
+
+    /** A law named by a word: its kind and, for a preset, its kn, ks. */
+    struct NamedLaw
+    {
+      InterfaceLaw::Kind                       kind;
+      std::optional<std::pair<double, double>> springs;
+    };
+
+    /** The words of the law names, in the order the messages list them. */
+    const Choices<NamedLaw> &
+    named_laws()
+    {
+      using Kind = InterfaceLaw::Kind;
+      static const Choices<NamedLaw> choices{
+        {"rough", {Kind::springs, std::pair{1e10, 1e10}}},
+        {"smooth", {Kind::springs, std::pair{1e10, 0.}}},
+        {"tied", {Kind::tied, std::nullopt}},
+        {"tied-normal", {Kind::tied_normal, std::nullopt}},
+        {"vermeer", {Kind::vermeer, std::nullopt}},
+        {"coulomb", {Kind::coulomb, std::nullopt}},
+        {"contact", {Kind::contact, std::nullopt}}};
+      return choices;
+    }
 
     /** Which parts of a law an item of the list gave. */
     struct GivenParts
@@ -166,28 +205,15 @@ namespace FourierSSI
       AssertThrow(!given.preset,
                   ExcMessage(entry + ": two laws for boundary id " +
                              std::to_string(id)));
-      given.preset = true;
-      using Kind   = InterfaceLaw::Kind;
-      if (token == "rough")
-        law.normal = law.shear = 1e10;
-      else if (token == "smooth")
-        law.normal = 1e10, law.shear = 0.;
-      else if (token == "vermeer")
-        law.kind = Kind::vermeer;
-      else if (token == "tied")
-        law.kind = Kind::tied;
-      else if (token == "tied-normal")
-        law.kind = Kind::tied_normal;
-      else if (token == "coulomb")
-        law.kind = Kind::coulomb;
-      else if (token == "contact")
-        law.kind = Kind::contact;
-      else
-        AssertThrow(false,
-                    ExcMessage(entry + ": unknown law '" + token +
-                               "' (expected rough, smooth, tied, "
-                               "tied-normal, vermeer, coulomb, "
-                               "contact or kn=..., ks=...)"));
+      given.preset                        = true;
+      const std::optional<NamedLaw> named = named_laws().find(token);
+      AssertThrow(named.has_value(),
+                  ExcMessage(
+                    entry + ": " +
+                    named_laws().unknown("law", token, {"kn=..., ks=..."})));
+      law.kind = named->kind;
+      if (named->springs)
+        std::tie(law.normal, law.shear) = *named->springs;
     }
 
     /** A token 'key=value' of item. */

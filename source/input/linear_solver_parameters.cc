@@ -1,14 +1,36 @@
+#include <fourier_ssi/input/choice.h>
 #include <fourier_ssi/input/linear_solver_parameters.h>
 
 namespace FourierSSI
 {
+  namespace
+  {
+    const Choices<SolverMethod> &
+    methods()
+    {
+      static const Choices<SolverMethod> choices{
+        {"direct", SolverMethod::cholesky},
+        {"direct-lu", SolverMethod::lu},
+        {"cg-amg", SolverMethod::cg_amg}};
+      return choices;
+    }
+
+    /** Linear solver/Distributed: always (true) or only on several ranks. */
+    const Choices<bool> &
+    distributed_choices()
+    {
+      static const Choices<bool> choices{{"auto", false}, {"always", true}};
+      return choices;
+    }
+  } // namespace
+
   void
   LinearSolverParameters::declare_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
     prm.declare_entry("Method",
                       "direct",
-                      Patterns::Selection("direct|direct-lu|cg-amg"),
+                      Patterns::Selection(methods().selection()),
                       "direct: CHOLMOD sparse Cholesky (the systems are "
                       "symmetric positive definite); direct-lu: UMFPACK "
                       "sparse LU (the reference path); cg-amg: conjugate "
@@ -30,7 +52,7 @@ namespace FourierSSI
                       "systems, e.g. a missing support).");
     prm.declare_entry("Distributed",
                       "auto",
-                      Patterns::Selection("auto|always"),
+                      Patterns::Selection(distributed_choices().selection()),
                       "auto: the Trilinos path (MUMPS for direct, CG + ML "
                       "for cg-amg, doc/scaling.md) when run on more than "
                       "one MPI rank, the serial solvers otherwise; always: "
@@ -43,10 +65,7 @@ namespace FourierSSI
   LinearSolverParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
-    const std::string method_entry = prm.get("Method");
-    method    = method_entry == "direct-lu" ? SolverMethod::lu :
-                method_entry == "cg-amg"    ? SolverMethod::cg_amg :
-                                              SolverMethod::cholesky;
+    method    = methods().value_of(prm.get("Method"), "Linear solver/Method");
     tolerance = prm.get_double("Tolerance");
     // CG cannot reduce the residual below round-off: 0 would run to Max
     // iterations and report "did not converge" at a residual of 0.
@@ -55,17 +74,17 @@ namespace FourierSSI
                 ExcMessage("Linear solver/Tolerance: " + prm.get("Tolerance") +
                            " with Method = cg-amg; give 1e-15 <= Tolerance < "
                            "1 (a relative residual reduction)"));
-    max_iterations     = prm.get_integer("Max iterations");
-    residual_check     = prm.get_double("Residual check");
-    distributed_always = prm.get("Distributed") == "always";
+    max_iterations = prm.get_integer("Max iterations");
+    residual_check = prm.get_double("Residual check");
+    distributed_always =
+      distributed_choices().value_of(prm.get("Distributed"),
+                                     "Linear solver/Distributed");
     prm.leave_subsection();
   }
 
   std::string
   LinearSolverParameters::method_name() const
   {
-    return method == SolverMethod::lu     ? "direct-lu" :
-           method == SolverMethod::cg_amg ? "cg-amg" :
-                                            "direct";
+    return methods().name_of(method);
   }
 } // namespace FourierSSI

@@ -1,10 +1,22 @@
 #include <deal.II/base/utilities.h>
 #include <fourier_ssi/input/boundary_conditions.h>
+#include <fourier_ssi/input/choice.h>
 #include <fourier_ssi/input/mesh_parameters.h>
 #include <fourier_ssi/input/prm_values.h>
 
 namespace FourierSSI
 {
+  namespace
+  {
+    const Choices<MeshType> &
+    mesh_types()
+    {
+      static const Choices<MeshType> choices{{"rectangle", MeshType::rectangle},
+                                             {"gmsh", MeshType::gmsh}};
+      return choices;
+    }
+  } // namespace
+
   namespace
   {
     /** Type, Mesh file and the DoF limit every mesh obeys. */
@@ -13,7 +25,7 @@ namespace FourierSSI
     {
       prm.declare_entry("Type",
                         "rectangle",
-                        Patterns::Selection("rectangle|gmsh"),
+                        Patterns::Selection(mesh_types().selection()),
                         "rectangle: built-in graded (r, z) rectangle with the "
                         "boundary ids 0 = r_min side (the axis when r_min = "
                         "0), 1 = r_max side (far side), 2 = bottom (z_min), "
@@ -154,7 +166,7 @@ namespace FourierSSI
   MeshParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Mesh");
-    type = prm.get("Type") == "gmsh" ? MeshType::gmsh : MeshType::rectangle;
+    type                 = mesh_types().value_of(prm.get("Type"), "Mesh/Type");
     mesh_file            = prm.get("Mesh file");
     r_breakpoints        = to_list<double>(prm.get("R breakpoints"));
     r_cells              = to_list<unsigned int>(prm.get("R cells"));

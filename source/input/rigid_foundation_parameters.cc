@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deal.II/base/utilities.h>
+#include <fourier_ssi/input/choice.h>
 #include <fourier_ssi/input/rigid_foundation_parameters.h>
 #include <set>
 
@@ -41,29 +42,59 @@ namespace FourierSSI
                              "' is not a positive number"));
       return {capacity_name, capacity_reference};
     }
+
+    const Choices<FoundationTie> &
+    ties()
+    {
+      static const Choices<FoundationTie> choices{
+        {"material", FoundationTie::material},
+        {"boundary", FoundationTie::boundary}};
+      return choices;
+    }
+
+    /** Rigid foundation/Tied components: normal only (true) or all. */
+    const Choices<bool> &
+    tied_components()
+    {
+      static const Choices<bool> choices{{"all", false}, {"normal", true}};
+      return choices;
+    }
+
+    /** The motions as Held motions names them. */
+    const Choices<FoundationMotion> &
+    motion_names()
+    {
+      static const Choices<FoundationMotion> choices{
+        {"u", FoundationMotion::u},
+        {"w", FoundationMotion::w},
+        {"twist", FoundationMotion::twist},
+        {"rotation", FoundationMotion::rotation}};
+      return choices;
+    }
+
+    /** The load that works on each motion. */
+    const Choices<FoundationMotion> &
+    motion_loads()
+    {
+      static const Choices<FoundationMotion> choices{
+        {"H", FoundationMotion::u},
+        {"V", FoundationMotion::w},
+        {"T", FoundationMotion::twist},
+        {"M", FoundationMotion::rotation}};
+      return choices;
+    }
   } // namespace
 
   std::string
   name_of(const FoundationTie tie)
   {
-    return tie == FoundationTie::material ? "material" : "boundary";
+    return ties().name_of(tie);
   }
 
   std::string
   name_of(const FoundationMotion motion)
   {
-    switch (motion)
-      {
-        case FoundationMotion::u:
-          return "u";
-        case FoundationMotion::w:
-          return "w";
-        case FoundationMotion::twist:
-          return "twist";
-        case FoundationMotion::rotation:
-          return "rotation";
-      }
-    return "";
+    return motion_names().name_of(motion);
   }
 
   Harmonic
@@ -79,18 +110,7 @@ namespace FourierSSI
   std::string
   load_name_of(const FoundationMotion motion)
   {
-    switch (motion)
-      {
-        case FoundationMotion::u:
-          return "H";
-        case FoundationMotion::w:
-          return "V";
-        case FoundationMotion::twist:
-          return "T";
-        case FoundationMotion::rotation:
-          return "M";
-      }
-    return "";
+    return motion_loads().name_of(motion);
   }
 
   std::string
@@ -109,20 +129,17 @@ namespace FourierSSI
     {
       std::vector<FoundationMotion> motions;
       for (const std::string &name : Utilities::split_string_list(text))
-        for (const FoundationMotion m : {FoundationMotion::u,
-                                         FoundationMotion::w,
-                                         FoundationMotion::twist,
-                                         FoundationMotion::rotation})
-          if (name == name_of(m))
-            {
-              // Held twice is one constraint given twice: the second has no
-              // DoF left to hold ("no free master DoF" deep in the tie).
-              AssertThrow(std::find(motions.begin(), motions.end(), m) ==
-                            motions.end(),
-                          ExcMessage("Rigid foundation/Held motions: '" + name +
-                                     "' given twice in '" + text + "'"));
-              motions.push_back(m);
-            }
+        {
+          const FoundationMotion m =
+            motion_names().value_of(name, "Rigid foundation/Held motions");
+          // Held twice is one constraint given twice: the second has no
+          // DoF left to hold ("no free master DoF" deep in the tie).
+          AssertThrow(std::find(motions.begin(), motions.end(), m) ==
+                        motions.end(),
+                      ExcMessage("Rigid foundation/Held motions: '" + name +
+                                 "' given twice in '" + text + "'"));
+          motions.push_back(m);
+        }
       return motions;
     }
 
@@ -296,14 +313,14 @@ namespace FourierSSI
                         "Tie DoFs to an exact rigid-body motion.");
       prm.declare_entry("Tie",
                         "material",
-                        Patterns::Selection("material|boundary"),
+                        Patterns::Selection(ties().selection()),
                         "material: all DoFs of cells with material id 'Id' (a "
                         "rigid footing or pile body); boundary: the DoFs on "
                         "boundary id 'Id' (a rigid plate in contact).");
       prm.declare_entry("Id", "1", Patterns::Integer(0, 254), "See 'Tie'.");
       prm.declare_entry("Tied components",
                         "all",
-                        Patterns::Selection("all|normal"),
+                        Patterns::Selection(tied_components().selection()),
                         "all: u, v, w follow the rigid motion; normal: only "
                         "the axial component v (frictionless horizontal "
                         "contact).");
@@ -376,7 +393,7 @@ namespace FourierSSI
       prm.declare_entry(
         "Held motions",
         "",
-        Patterns::List(Patterns::Selection("u|w|twist|rotation"), 0, 4),
+        Patterns::List(Patterns::Selection(motion_names().selection()), 0, 4),
         "Rigid motions held at zero (their master DoF constrained), for "
         "the probes of the foundation literature: u (translation along x) "
         "held for pure M, rotation (about y, through the reference point) "
@@ -512,11 +529,12 @@ namespace FourierSSI
   RigidFoundationParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Rigid foundation");
-    enabled     = prm.get_bool("Enabled");
-    tie         = prm.get("Tie") == "material" ? FoundationTie::material :
-                                                 FoundationTie::boundary;
-    id          = prm.get_integer("Id");
-    normal_only = prm.get("Tied components") == "normal";
+    enabled = prm.get_bool("Enabled");
+    tie     = ties().value_of(prm.get("Tie"), "Rigid foundation/Tie");
+    id      = prm.get_integer("Id");
+    normal_only =
+      tied_components().value_of(prm.get("Tied components"),
+                                 "Rigid foundation/Tied components");
     reference_elevation   = prm.get_double("Reference elevation");
     horizontal_force      = prm.get_double("Horizontal force");
     moment                = prm.get_double("Moment");

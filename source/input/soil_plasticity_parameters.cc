@@ -1,7 +1,9 @@
 #include <deal.II/base/numbers.h>
 #include <deal.II/base/utilities.h>
+#include <fourier_ssi/input/choice.h>
 #include <fourier_ssi/input/prm_values.h>
 #include <fourier_ssi/input/soil_plasticity_parameters.h>
+#include <optional>
 #include <set>
 #include <sstream>
 
@@ -10,6 +12,23 @@ namespace FourierSSI
   namespace
   {
     const std::string entry = "Soil plasticity/Laws";
+
+    const Choices<SoilLaw::Kind> &
+    law_kinds()
+    {
+      static const Choices<SoilLaw::Kind> choices{
+        {"tresca", SoilLaw::Kind::tresca},
+        {"mohr-coulomb", SoilLaw::Kind::mohr_coulomb}};
+      return choices;
+    }
+
+    /** Soil plasticity/Stiffness: Newton on the tangent (true) or elastic. */
+    const Choices<bool> &
+    stiffnesses()
+    {
+      static const Choices<bool> choices{{"elastic", false}, {"tangent", true}};
+      return choices;
+    }
   } // namespace
 
   void
@@ -29,7 +48,7 @@ namespace FourierSSI
     prm.declare_entry(
       "Stiffness",
       "tangent",
-      Patterns::Selection("elastic|tangent"),
+      Patterns::Selection(stiffnesses().selection()),
       "What the out-of-balance iteration solves with. elastic: the kept "
       "elastic factorization of every harmonic (initial stiffness, hundreds "
       "of iterations per step near the limit load); tangent: Newton on all "
@@ -47,7 +66,8 @@ namespace FourierSSI
   {
     prm.enter_subsection("Soil plasticity");
     parse_law_list(prm.get("Laws"));
-    tangent = prm.get("Stiffness") == "tangent";
+    tangent =
+      stiffnesses().value_of(prm.get("Stiffness"), "Soil plasticity/Stiffness");
     prm.leave_subsection();
   }
 
@@ -71,14 +91,11 @@ namespace FourierSSI
         const std::string where = "material " + std::to_string(id) + ": ";
         if (words.empty())
           fail(where + "no law");
+        const std::optional<SoilLaw::Kind> kind = law_kinds().find(words[0]);
+        if (!kind)
+          fail(where + law_kinds().unknown("law", words[0]));
         SoilLaw law;
-        if (words[0] == "tresca")
-          law.kind = SoilLaw::Kind::tresca;
-        else if (words[0] == "mohr-coulomb")
-          law.kind = SoilLaw::Kind::mohr_coulomb;
-        else
-          fail(where + "unknown law '" + words[0] +
-               "' (expected tresca or mohr-coulomb)");
+        law.kind                     = *kind;
         bool                  has_su = false, has_c = false, has_phi = false;
         std::set<std::string> keys_given;
         for (unsigned int w = 1; w < words.size(); ++w)
