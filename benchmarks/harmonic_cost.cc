@@ -8,22 +8,16 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/timer.h>
-
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/dofs/dof_tools.h>
-
 #include <deal.II/fe/fe_values.h>
-
 #include <deal.II/grid/grid_generator.h>
-
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/sparse_direct.h>
-
 #include <deal.II/numerics/vector_tools.h>
-
 #include <fourier_ssi/harmonic/harmonic_problem.h>
-
+#include <fourier_ssi/mesh/mesh_builder.h>
 #include <fstream>
 #include <iostream>
 #include <string>
@@ -78,14 +72,16 @@ main(int argc, char **argv)
   AllParameters parameters;
   parameters.read_string(prm(degree, n, cells));
   Triangulation<2> triangulation;
-  parameters.mesh.build(triangulation);
+  build_mesh(parameters.mesh, triangulation);
 
   double       t_setup = 0, t_assembly = 0, t_solve = 0;
   unsigned int n_dofs = 0;
   Timer        timer;
   if (kind == "harmonic")
     {
-      HarmonicProblem problem(parameters, {n, Family::symmetric}, triangulation);
+      HarmonicProblem problem(parameters,
+                              {n, Family::symmetric},
+                              triangulation);
       problem.setup_system();
       t_setup = timer.wall_time();
       timer.restart();
@@ -103,8 +99,10 @@ main(int argc, char **argv)
       DoFHandler<2> dof_handler(triangulation);
       dof_handler.distribute_dofs(*fe);
       AffineConstraints<double> constraints;
-      VectorTools::interpolate_boundary_values(
-        dof_handler, 2, Functions::ZeroFunction<2>(3), constraints);
+      VectorTools::interpolate_boundary_values(dof_handler,
+                                               2,
+                                               Functions::ZeroFunction<2>(3),
+                                               constraints);
       constraints.close();
       DynamicSparsityPattern dsp(dof_handler.n_dofs());
       DoFTools::make_sparsity_pattern(dof_handler, dsp, constraints, false);
@@ -115,10 +113,8 @@ main(int argc, char **argv)
       t_setup = timer.wall_time();
       timer.restart();
       const QGauss<2> quadrature(degree + 2);
-      FEValues<2>     fe_values(*fe,
-                            quadrature,
-                            update_values | update_gradients |
-                              update_JxW_values);
+      FEValues<2>     fe_values(
+        *fe, quadrature, update_values | update_gradients | update_JxW_values);
       const unsigned int dofs_per_cell = fe->n_dofs_per_cell();
       FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
       Vector<double>     cell_rhs(dofs_per_cell);

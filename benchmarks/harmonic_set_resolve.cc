@@ -8,8 +8,9 @@
 //   dofs_per_harmonic,harmonics,threads,factorize_s,resolve_median_s,ratio
 #include <algorithm>
 #include <deal.II/base/timer.h>
-#include <fourier_ssi/harmonic/harmonic_set.h>
 #include <fourier_ssi/driver/scene_plan.h>
+#include <fourier_ssi/harmonic/harmonic_set.h>
+#include <fourier_ssi/mesh/mesh_builder.h>
 #include <fstream>
 #include <iostream>
 #include <sstream>
@@ -33,7 +34,7 @@ main(int argc, char **argv)
   parameters.read_string(text.str());
 
   Triangulation<2> triangulation;
-  parameters.mesh.build(triangulation);
+  build_mesh(parameters.mesh, triangulation);
   const ScenePlan plan = plan_scene(parameters, triangulation);
   HarmonicSet     set(
     parameters, plan.harmonics, triangulation, plan.loads, MPI_COMM_SELF, 0);

@@ -1,12 +1,9 @@
 #!/usr/bin/env python3
 """Includes run downward only: a file of layer Y includes
-<fourier_ssi/X/...> only if X is Y or a layer below Y in LAYERS.
-
-input/ is read by all layers. Its parameters.h gathers the parameter structs
-that each layer declares next to its code (deal.II step-44's habit), so a file
-of input/ may include a header of a higher layer, provided that header reaches
-no file of input/ through its own includes: otherwise the includes would run
-in a loop.
+<fourier_ssi/X/...> only if X is Y or a layer below Y in LAYERS. No layer is
+exempt: input/, the lowest, holds every parameter struct (one header per
+subsection, gathered by parameters.h), so that each layer can read the
+parameters it needs without input/ including any model.
 
 Usage: include_layers.py SOURCE_DIR. Prints one line per violation
 (file:line: from-layer -> to-layer, the included header) and exits 1 if there
@@ -31,8 +28,6 @@ LAYERS = [
     "driver",
     "app",
 ]
-READ_BY_ALL = "input"
-
 INCLUDE = re.compile(r'^\s*#\s*include\s*<fourier_ssi/([^/>]+)/([^>]+)>')
 
 
@@ -54,29 +49,11 @@ def includes_of(path):
     return found
 
 
-def reaches_read_by_all(header, root, seen):
-    """Whether the header, through its includes, reaches a file of input/."""
-    if header in seen:
-        return False
-    seen.add(header)
-    path = root / "include" / header
-    if not path.exists():
-        return False
-    for _, layer, included in includes_of(path):
-        if layer == READ_BY_ALL or reaches_read_by_all(included, root, seen):
-            return True
-    return False
-
-
-def violation(from_layer, to_layer, header, root):
+def violation(from_layer, to_layer):
     """Why this include breaks the order, or None if it does not."""
     if to_layer not in LAYERS:
         return f"unknown layer {to_layer} (not in LAYERS)"
     if LAYERS.index(to_layer) <= LAYERS.index(from_layer):
-        return None
-    if from_layer == READ_BY_ALL:
-        if reaches_read_by_all(header, root, set()):
-            return "loop: the header reaches input/ again"
         return None
     return "climbs up"
 
@@ -95,7 +72,7 @@ def main():
             violations += 1
             continue
         for number, to_layer, header in includes_of(path):
-            why = violation(from_layer, to_layer, header, root)
+            why = violation(from_layer, to_layer)
             if why:
                 print(
                     f"{path.relative_to(root)}:{number}: {from_layer} -> "

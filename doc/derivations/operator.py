@@ -6,7 +6,7 @@ operator of the project, thesis Hernoune 2007 ch. 3, eqs 3.1-3.3.
 Run:   /usr/bin/python3 doc/derivations/operator.py
 Prints one PASS/FAIL line per check and exits non-zero if any check fails.
 
-Conventions (include/fourier_ssi/fourier/harmonic.h): cylindrical (r, theta, z), z up,
+Conventions (include/fourier_ssi/input/harmonic.h): cylindrical (r, theta, z), z up,
 theta counter-clockwise seen from +z, displacements (u, v, w) =
 (radial, axial, circumferential).
   symmetric family      u = U cos nt, v = V cos nt, w = W sin nt

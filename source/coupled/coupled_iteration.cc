@@ -2,6 +2,7 @@
 #include <cmath>
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/harmonic/harmonic_problem.h>
+#include <fourier_ssi/harmonic/rigid_foundation.h>
 
 namespace FourierSSI
 {

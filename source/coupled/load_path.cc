@@ -3,6 +3,7 @@
 #include <cmath>
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/load_path.h>
+#include <fourier_ssi/harmonic/rigid_foundation.h>
 
 namespace FourierSSI
 {

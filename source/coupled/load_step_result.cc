@@ -2,7 +2,7 @@
 // load-displacement.csv, each nonlinear source adding only its own part.
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/load_step_result.h>
-#include <fourier_ssi/harmonic/rigid_foundation.h>
+#include <fourier_ssi/harmonic/rigid_motion.h>
 #include <fourier_ssi/input/atomic_file.h>
 #include <iomanip>
 

@@ -3,6 +3,7 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/lac/full_matrix.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
+#include <fourier_ssi/coupled/initial_stress.h>
 #include <fourier_ssi/coupled/nonlinear_interface_points.h>
 #include <fourier_ssi/fourier/harmonic_pair_integral.h>
 #include <fourier_ssi/input/atomic_file.h>
@@ -96,10 +97,11 @@ namespace FourierSSI
                           augmented ? in_K.normal : spring.normal,
                           augmented ? in_K.shear : spring.shear);
         stiffness.push_back(K_k);
-        contact.push_back(law.contact);
+        const bool is_contact = law.kind == InterfaceLaw::Kind::contact;
+        contact.push_back(is_contact);
         law_springs.push_back(law_k);
         flexibility.push_back(augmented ?
-                                augmented_flexibility(K_k, law_k, law.contact) :
+                                augmented_flexibility(K_k, law_k, is_contact) :
                                 LocalVector{{0., 0., 0.}});
         soil_scale.push_back(integrator.get_soil_scale()[i]);
         if (law.cohesion == 0. && !parameters.initial_stress.enabled())
@@ -122,10 +124,11 @@ namespace FourierSSI
             point.area_per_radian =
               rule.weight(q) * pairs[i].length * point.position[0];
             point.initial_traction =
-              parameters.initial_stress.interface_traction(
-                pairs[i].tangent,
-                pairs[i].normal,
-                parameters.materials.depth(point.position[1]));
+              initial_interface_traction(parameters.initial_stress,
+                                         pairs[i].tangent,
+                                         pairs[i].normal,
+                                         parameters.materials.depth(
+                                           point.position[1]));
             points.push_back(point);
           }
       }
@@ -139,8 +142,9 @@ namespace FourierSSI
                                      const InterfaceStiffness &in_K,
                                      const bool augment_stiff_laws)
   {
-    return law.contact || (augment_stiff_laws && (own.normal != in_K.normal ||
-                                                  own.shear != in_K.shear));
+    return law.kind == InterfaceLaw::Kind::contact ||
+           (augment_stiff_laws &&
+            (own.normal != in_K.normal || own.shear != in_K.shear));
   }
 
   const InterfacePair &

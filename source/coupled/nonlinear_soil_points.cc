@@ -1,6 +1,7 @@
 #include <algorithm>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
+#include <fourier_ssi/coupled/initial_stress.h>
 #include <fourier_ssi/coupled/nonlinear_soil_points.h>
 #include <fourier_ssi/fourier/harmonic_pair_integral.h>
 #include <fourier_ssi/harmonic/stress_postprocessor.h>
@@ -102,7 +103,7 @@ namespace FourierSSI
     for (const auto &[id, law] : parameters.soil_plasticity.laws)
       {
         law_index[id] = laws.size();
-        laws.push_back(law);
+        laws.emplace_back(law);
       }
     const DoFHandler<2> &dofs0 = set.problem(0).get_dof_handler();
     const auto          &fe    = dofs0.get_fe();
@@ -158,7 +159,7 @@ namespace FourierSSI
                 point.lambda        = material.lambda(point.depth);
                 point.law           = law->second;
                 point.initial_stress =
-                  parameters.initial_stress.soil_stress(point.depth);
+                  initial_soil_stress(parameters.initial_stress, point.depth);
                 points.push_back(point);
               }
             cells.push_back(std::move(cell));
@@ -527,8 +528,8 @@ namespace FourierSSI
     StrainVector trial = elastic;
     for (unsigned int c = 0; c < 6; ++c)
       trial[c] -= committed_plastic[c];
-    const double   G = point.shear_modulus, K = point.lambda + 2. * G / 3.;
-    const SoilLaw &law = laws[point.law];
+    const double G = point.shear_modulus, K = point.lambda + 2. * G / 3.;
+    const SoilReturnMapping &law = laws[point.law];
     return tangent == nullptr ?
              law.return_map(trial, G, K, point.depth) :
              law.return_map_with_tangent(trial, G, K, point.depth, *tangent);
@@ -548,7 +549,8 @@ namespace FourierSSI
                                       &d_ep);
     if (at.state == SoilState::elastic)
       return false;
-    // D_e - D_ep, D_ep in closed form (SoilLaw::return_map_with_tangent).
+    // D_e - D_ep, D_ep in closed form
+    // (SoilReturnMapping::return_map_with_tangent).
     for (unsigned int l = 0; l < 6; ++l)
       {
         StrainVector unit{};

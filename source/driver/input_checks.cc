@@ -347,7 +347,7 @@ namespace FourierSSI
     }
 
     void
-    check_surface_patch(const MeshBuilder &mesh, const MeshExtent &extent)
+    check_surface_patch(const MeshParameters &mesh, const MeshExtent &extent)
     {
       if (mesh.type == MeshType::rectangle)
         AssertThrow(mesh.surface_patch_radius <=

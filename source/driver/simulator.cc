@@ -188,7 +188,7 @@ namespace FourierSSI
                                          *triangulation);
     else
       {
-        parameters.mesh.build(*triangulation);
+        build_mesh(parameters.mesh, *triangulation);
         refine_a_priori(*triangulation, parameters.adaptivity, interface_ids);
       }
     for (const auto &cell : triangulation->active_cell_iterators())

@@ -1,7 +1,7 @@
 #include <cmath>
 #include <deal.II/base/exceptions.h>
 #include <fourier_ssi/estimation/sequence_error_estimate.h>
-#include <fourier_ssi/fourier/material.h>
+#include <fourier_ssi/input/material.h>
 
 namespace FourierSSI
 {

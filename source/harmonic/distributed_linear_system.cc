@@ -12,8 +12,8 @@
 namespace FourierSSI
 {
   DistributedLinearSystem::DistributedLinearSystem(
-    const MPI_Comm      communicator,
-    const LinearSolver &solver_parameters)
+    const MPI_Comm                communicator,
+    const LinearSolverParameters &solver_parameters)
     : communicator(communicator)
     , parameters(solver_parameters)
     , rank(Utilities::MPI::this_mpi_process(communicator))
@@ -146,8 +146,8 @@ namespace FourierSSI
     matrix.vmult(residual, x_owned);
     residual -= b_owned;
     report.relative_residual =
-      parameters.checked_relative_residual(residual.l2_norm(),
-                                           b_owned.l2_norm());
+      LinearSolver(parameters)
+        .checked_relative_residual(residual.l2_norm(), b_owned.l2_norm());
 
     // Replicate the solution: every rank runs the serial postprocessing.
     Vector<double> part(x.size());

@@ -17,6 +17,7 @@
 #include <fourier_ssi/harmonic/assembly_loop.h>
 #include <fourier_ssi/harmonic/axis_constraints.h>
 #include <fourier_ssi/harmonic/harmonic_problem.h>
+#include <fourier_ssi/harmonic/rigid_foundation.h>
 #include <fourier_ssi/harmonic/stress_postprocessor.h>
 #include <fourier_ssi/linear_algebra/sparse_direct.h>
 #include <fstream>
@@ -84,6 +85,8 @@ namespace FourierSSI
         std::make_unique<DistributedLinearSystem>(communicator,
                                                   parameters.solver);
   }
+
+  HarmonicProblem::~HarmonicProblem() = default;
 
   void
   HarmonicProblem::setup_system()
@@ -452,12 +455,10 @@ namespace FourierSSI
   SolverReport
   HarmonicProblem::solve()
   {
-    const SolverReport report = distributed ?
-                                  distributed->solve(solution, system_rhs) :
-                                  parameters.solver.solve(system_matrix,
-                                                          solution,
-                                                          system_rhs,
-                                                          dof_handler);
+    const SolverReport report =
+      distributed ? distributed->solve(solution, system_rhs) :
+                    LinearSolver(parameters.solver)
+                      .solve(system_matrix, solution, system_rhs, dof_handler);
     if (foundation)
       foundation->check_supported(solution, constraints);
     constraints.distribute(solution);
@@ -551,7 +552,8 @@ namespace FourierSSI
       for (Vector<double> &x : b_to_x)
         {
           const Vector<double> b(x);
-          parameters.solver.solve(system_matrix, x, b, dof_handler);
+          LinearSolver(parameters.solver)
+            .solve(system_matrix, x, b, dof_handler);
         }
     for (Vector<double> &x : b_to_x)
       homogeneous_constraints.distribute(x);
@@ -590,8 +592,8 @@ namespace FourierSSI
     system_matrix.vmult(residual, solution);
     residual -= system_rhs;
     report.relative_residual =
-      parameters.solver.checked_relative_residual(residual.l2_norm(),
-                                                  system_rhs.l2_norm());
+      LinearSolver(parameters.solver)
+        .checked_relative_residual(residual.l2_norm(), system_rhs.l2_norm());
     foundation->check_supported(solution, constraints);
     constraints.distribute(solution);
     project_solution_dilatation();

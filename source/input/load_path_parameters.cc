@@ -1,9 +1,51 @@
+#include <fourier_ssi/input/choice.h>
 #include <fourier_ssi/input/load_path_parameters.h>
 
 namespace FourierSSI
 {
   namespace
   {
+    using Control      = LoadPathParameters::Control;
+    using Motion       = LoadPathParameters::Motion;
+    using Acceleration = LoadPathParameters::Acceleration;
+
+    const Choices<Control> &
+    controls()
+    {
+      static const Choices<Control> choices{{"load", Control::load},
+                                            {"displacement",
+                                             Control::displacement}};
+      return choices;
+    }
+
+    const Choices<Motion> &
+    motions()
+    {
+      static const Choices<Motion> choices{{"vertical", Motion::vertical},
+                                           {"twist", Motion::twist},
+                                           {"horizontal", Motion::horizontal},
+                                           {"rotation", Motion::rotation}};
+      return choices;
+    }
+
+    const Choices<Acceleration> &
+    accelerations()
+    {
+      static const Choices<Acceleration> choices{
+        {"aitken", Acceleration::aitken},
+        {"anderson", Acceleration::anderson},
+        {"none", Acceleration::none}};
+      return choices;
+    }
+
+    /** Load path/Stiffness: Newton on the tangent (true) or initial. */
+    const Choices<bool> &
+    stiffnesses()
+    {
+      static const Choices<bool> choices{{"initial", false}, {"tangent", true}};
+      return choices;
+    }
+
     /** Theta samples and the load steps. */
     void
     declare_sampling_and_step_entries(ParameterHandler &prm)
@@ -48,7 +90,7 @@ namespace FourierSSI
       prm.declare_entry(
         "Control",
         "load",
-        Patterns::Selection("load|displacement"),
+        Patterns::Selection(controls().selection()),
         "load: the Rigid foundation loads (H, M, V, T) times step/steps "
         "(body force and tractions are held, see Held load steps; without a "
         "Rigid foundation they are the loads scaled). displacement: those "
@@ -57,8 +99,7 @@ namespace FourierSSI
         "loads, in equal steps from the motion they left.");
       prm.declare_entry("Controlled motion",
                         "vertical",
-                        Patterns::Selection(
-                          "vertical|twist|horizontal|rotation"),
+                        Patterns::Selection(motions().selection()),
                         "Displacement control: the rigid-foundation motion "
                         "prescribed (vertical [m], twist about z [rad], "
                         "horizontal along x [m], rotation about y [rad]).");
@@ -93,7 +134,7 @@ namespace FourierSSI
                         "most 100000.");
       prm.declare_entry("Acceleration",
                         "aitken",
-                        Patterns::Selection("aitken|anderson|none"),
+                        Patterns::Selection(accelerations().selection()),
                         "aitken: Aitken's Delta^2 relaxation of the "
                         "out-of-balance load (one previous residual); "
                         "anderson: Anderson (multisecant) update from the last "
@@ -103,7 +144,7 @@ namespace FourierSSI
                         "stiffness.");
       prm.declare_entry("Stiffness",
                         "initial",
-                        Patterns::Selection("initial|tangent"),
+                        Patterns::Selection(stiffnesses().selection()),
                         "Interface-only scenes: initial = the kept elastic "
                         "factorizations, accelerated as Acceleration says; "
                         "tangent = Newton on the interface DoFs with the "
@@ -177,30 +218,25 @@ namespace FourierSSI
     theta_samples   = prm.get_integer("Theta samples");
     load_steps      = prm.get_integer("Load steps");
     held_load_steps = prm.get_integer("Held load steps");
-    control =
-      prm.get("Control") == "load" ? Control::load : Control::displacement;
-    const std::string m = prm.get("Controlled motion");
-    motion              = m == "vertical"   ? Motion::vertical :
-                          m == "twist"      ? Motion::twist :
-                          m == "horizontal" ? Motion::horizontal :
-                                              Motion::rotation;
-    target              = prm.get_double("Target");
-    tolerance           = prm.get_double("Tolerance");
+    control   = controls().value_of(prm.get("Control"), "Load path/Control");
+    motion    = motions().value_of(prm.get("Controlled motion"),
+                                "Load path/Controlled motion");
+    target    = prm.get_double("Target");
+    tolerance = prm.get_double("Tolerance");
     AssertThrow(tolerance > 0. && tolerance < largest_tolerance,
                 ExcMessage("Load path/Tolerance: " + prm.get("Tolerance") +
                            " is outside 0 < Tolerance < 1e-2 (a step would "
                            "be accepted with that fraction of the load out "
                            "of balance, at 1 without iterating)"));
-    maximum_iterations  = prm.get_integer("Maximum iterations");
-    const std::string a = prm.get("Acceleration");
-    acceleration        = a == "anderson" ? Acceleration::anderson :
-                          a == "aitken"   ? Acceleration::aitken :
-                                            Acceleration::none;
-    tangent_stiffness   = prm.get("Stiffness") == "tangent";
-    anderson_depth      = prm.get_integer("Anderson depth");
-    maximum_step_cuts   = prm.get_integer("Maximum step cuts");
-    maximum_harmonic    = prm.get_integer("Maximum harmonic");
-    harmonic_tolerance  = prm.get_double("Harmonic tolerance");
+    maximum_iterations = prm.get_integer("Maximum iterations");
+    acceleration       = accelerations().value_of(prm.get("Acceleration"),
+                                            "Load path/Acceleration");
+    tangent_stiffness =
+      stiffnesses().value_of(prm.get("Stiffness"), "Load path/Stiffness");
+    anderson_depth     = prm.get_integer("Anderson depth");
+    maximum_step_cuts  = prm.get_integer("Maximum step cuts");
+    maximum_harmonic   = prm.get_integer("Maximum harmonic");
+    harmonic_tolerance = prm.get_double("Harmonic tolerance");
     prm.leave_subsection();
   }
 } // namespace FourierSSI

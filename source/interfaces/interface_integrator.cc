@@ -81,9 +81,9 @@ namespace FourierSSI
       {
         const InterfaceLaw &law = parameters.laws.at(pair.boundary_id);
         // Tied laws are constraints, not springs.
-        InterfaceStiffness k{law.tied || law.tied_normal ? 0. : law.normal,
-                             law.tied || law.tied_normal ? 0. : law.shear};
-        if (law.vermeer)
+        InterfaceStiffness k{law.is_exact_limit() ? 0. : law.normal,
+                             law.is_exact_limit() ? 0. : law.shear};
+        if (law.kind == InterfaceLaw::Kind::vermeer)
           {
             const ElasticMaterial &soil     = soil_of(pair, law);
             const double           G_over_l = soil_scale(pair, law, lengths);
@@ -99,10 +99,11 @@ namespace FourierSSI
           k.normal = automatic_interface_stiffness * G_over_l;
         if (law.automatic_shear)
           k.shear = automatic_interface_stiffness * G_over_l;
-        if (law.contact)
+        if (law.kind == InterfaceLaw::Kind::contact)
           k.normal = k.shear = interface_iteration_stiffness * G_over_l;
         law_stiffness.push_back(k);
-        if (law.coulomb && parameters.iteration_stiffness_cap > 0.)
+        if (law.kind == InterfaceLaw::Kind::coulomb &&
+            parameters.iteration_stiffness_cap > 0.)
           {
             // Newton: K with springs no stiffer than the cap (the law's
             // kn, ks act through the multipliers, section 5b); a law whose
@@ -234,7 +235,7 @@ namespace FourierSSI
     for (const InterfacePair &pair : pairs)
       {
         const InterfaceLaw &law = parameters.laws.at(pair.boundary_id);
-        if (!law.tied && !law.tied_normal)
+        if (!law.is_exact_limit())
           continue;
         const unsigned int n_nodes = pair.nodes.size();
         for (unsigned int k = 0; k < n_nodes; ++k)
@@ -248,7 +249,7 @@ namespace FourierSSI
             // Face ends belong to two pairs: tie each node pair once.
             if (!done.insert({a[0], b[0]}).second)
               continue;
-            if (law.tied)
+            if (law.kind == InterfaceLaw::Kind::tied)
               tie_all_components(writer, a, b);
             else
               tie_normal_component(writer, pair.normal, a, b);

@@ -3,8 +3,8 @@
 namespace FourierSSI
 {
   bool
-  uses_distributed_solve(const LinearSolver &solver,
-                         const MPI_Comm      communicator)
+  uses_distributed_solve(const LinearSolverParameters &solver,
+                         const MPI_Comm                communicator)
   {
     // (Library users and unit tests may not have initialized MPI.)
     return Utilities::MPI::job_supports_mpi() &&

@@ -10,72 +10,9 @@
 
 namespace FourierSSI
 {
-  void
-  LinearSolver::declare_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Linear solver");
-    prm.declare_entry("Method",
-                      "direct",
-                      Patterns::Selection("direct|direct-lu|cg-amg"),
-                      "direct: CHOLMOD sparse Cholesky (the systems are "
-                      "symmetric positive definite); direct-lu: UMFPACK "
-                      "sparse LU (the reference path); cg-amg: conjugate "
-                      "gradients with Trilinos ML algebraic multigrid. With "
-                      "MPI, both direct methods use MUMPS.");
-    prm.declare_entry("Tolerance",
-                      "1e-10",
-                      Patterns::Double(0.),
-                      "Relative residual reduction for cg-amg.");
-    prm.declare_entry("Max iterations",
-                      "2000",
-                      Patterns::Integer(1, 1000000),
-                      "Iteration limit for cg-amg; reaching it is an error.");
-    prm.declare_entry("Residual check",
-                      "1e-6",
-                      Patterns::Double(0.),
-                      "After any solve, ||b - A x|| / ||b|| above this value "
-                      "is reported as a solver failure (catches singular "
-                      "systems, e.g. a missing support).");
-    prm.declare_entry("Distributed",
-                      "auto",
-                      Patterns::Selection("auto|always"),
-                      "auto: the Trilinos path (MUMPS for direct, CG + ML "
-                      "for cg-amg, doc/scaling.md) when run on more than "
-                      "one MPI rank, the serial solvers otherwise; always: "
-                      "the Trilinos path on one rank too (a one-rank "
-                      "baseline for scaling measurements).");
-    prm.leave_subsection();
-  }
-
-  void
-  LinearSolver::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Linear solver");
-    const std::string method_entry = prm.get("Method");
-    method    = method_entry == "direct-lu" ? SolverMethod::lu :
-                method_entry == "cg-amg"    ? SolverMethod::cg_amg :
-                                              SolverMethod::cholesky;
-    tolerance = prm.get_double("Tolerance");
-    // CG cannot reduce the residual below round-off: 0 would run to Max
-    // iterations and report "did not converge" at a residual of 0.
-    AssertThrow(method != SolverMethod::cg_amg ||
-                  (tolerance >= 1e-15 && tolerance < 1.),
-                ExcMessage("Linear solver/Tolerance: " + prm.get("Tolerance") +
-                           " with Method = cg-amg; give 1e-15 <= Tolerance < "
-                           "1 (a relative residual reduction)"));
-    max_iterations     = prm.get_integer("Max iterations");
-    residual_check     = prm.get_double("Residual check");
-    distributed_always = prm.get("Distributed") == "always";
-    prm.leave_subsection();
-  }
-
-  std::string
-  LinearSolver::method_name() const
-  {
-    return method == SolverMethod::lu     ? "direct-lu" :
-           method == SolverMethod::cg_amg ? "cg-amg" :
-                                            "direct";
-  }
+  LinearSolver::LinearSolver(const LinearSolverParameters &parameters)
+    : parameters(parameters)
+  {}
 
   SolverReport
   LinearSolver::solve(const SparseMatrix<double> &A,
@@ -84,7 +21,7 @@ namespace FourierSSI
                       const DoFHandler<2>        &dof_handler) const
   {
     SolverReport report;
-    report.method = method_name();
+    report.method = parameters.method_name();
     // A zero load (e.g. a stiffness scene, whose unit-H/M cases are solved
     // separately) has the zero solution: skip the factorization.
     if (b.l2_norm() == 0.)
@@ -93,9 +30,9 @@ namespace FourierSSI
         report.method += " (zero load, skipped)";
         return report;
       }
-    if (is_direct())
+    if (parameters.is_direct())
       {
-        SparseDirect direct(direct_backend());
+        SparseDirect direct(parameters.direct_backend());
         direct.initialize(A, cell_interior_dofs(dof_handler));
         direct.vmult(x, b);
       }
@@ -114,7 +51,8 @@ namespace FourierSSI
                                          constant_modes);
         data.constant_modes = constant_modes;
         amg.initialize(A, data);
-        SolverControl control(max_iterations, tolerance * b.l2_norm());
+        SolverControl            control(parameters.max_iterations,
+                              parameters.tolerance * b.l2_norm());
         SolverCG<Vector<double>> cg(control);
         try
           {
@@ -141,11 +79,12 @@ namespace FourierSSI
   {
     const double relative =
       rhs_norm > 0. ? residual_norm / rhs_norm : residual_norm;
-    AssertThrow(std::isfinite(relative) && relative <= residual_check,
+    AssertThrow(std::isfinite(relative) &&
+                  relative <= parameters.residual_check,
                 ExcMessage("Linear solver: relative residual " +
                            std::to_string(relative) +
                            " exceeds 'Residual check' = " +
-                           std::to_string(residual_check) +
+                           std::to_string(parameters.residual_check) +
                            " (singular or ill-posed system: check supports "
                            "and interface stiffness)"));
     return relative;

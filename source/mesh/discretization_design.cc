@@ -2,7 +2,9 @@
 #include <array>
 #include <cmath>
 #include <deal.II/grid/grid_tools.h>
+#include <fourier_ssi/mesh/adaptivity.h>
 #include <fourier_ssi/mesh/discretization_design.h>
+#include <fourier_ssi/mesh/mesh_builder.h>
 
 namespace FourierSSI
 {
@@ -34,7 +36,7 @@ namespace FourierSSI
 
       /** Every candidate point: line ends, box corners, the patch edge. */
       std::vector<Point<2>>
-      candidate_points(const MeshBuilder &mesh)
+      candidate_points(const MeshParameters &mesh)
       {
         std::vector<Point<2>> points;
         for (const InterfaceLine &line : mesh.interface_lines)
@@ -56,13 +58,13 @@ namespace FourierSSI
       bool
       slides_freely(const InterfaceLaw &law)
       {
-        return law.tied_normal || (!law.tied && !law.vermeer &&
-                                   !law.is_nonlinear() && law.shear == 0.);
+        return law.kind == InterfaceLaw::Kind::tied_normal ||
+               (law.kind == InterfaceLaw::Kind::springs && law.shear == 0.);
       }
     } // namespace
 
     std::vector<Point<2>>
-    singular_points(const MeshBuilder &mesh)
+    singular_points(const MeshParameters &mesh)
     {
       std::vector<Point<2>> points;
       if (mesh.type != MeshType::rectangle)
@@ -155,9 +157,9 @@ namespace FourierSSI
       // The design replaces Mesh/Global refinements: member k is the
       // coarse mesh refined k times (a scene refined for a one-mesh run
       // would make every member 4x dearer).
-      MeshBuilder mesh        = parameters.mesh;
+      MeshParameters mesh     = parameters.mesh;
       mesh.global_refinements = member;
-      mesh.build(triangulation);
+      build_mesh(mesh, triangulation);
       refine_a_priori(triangulation,
                       refinements(parameters, member),
                       interface_ids);
@@ -169,7 +171,7 @@ namespace FourierSSI
                          const std::set<types::boundary_id> &interface_ids,
                          Triangulation<2>                   &triangulation)
     {
-      MeshBuilder        mesh   = parameters.mesh;
+      MeshParameters     mesh   = parameters.mesh;
       const unsigned int split  = 1u << member;
       const auto         refine = [&](std::vector<unsigned int> &cells,
                               std::vector<double>       &growth) {
@@ -190,7 +192,7 @@ namespace FourierSSI
       else
         mesh.global_refinements += member;
       triangulation.clear();
-      mesh.build(triangulation);
+      build_mesh(mesh, triangulation);
       refine_a_priori(triangulation, parameters.adaptivity, interface_ids);
     }
 

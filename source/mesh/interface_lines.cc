@@ -2,7 +2,6 @@
 #include <cmath>
 #include <deal.II/base/utilities.h>
 #include <deal.II/grid/tria_description.h>
-#include <fourier_ssi/input/prm_values.h>
 #include <fourier_ssi/mesh/interface_lines.h>
 #include <functional>
 #include <map>
@@ -12,79 +11,6 @@
 
 namespace FourierSSI
 {
-  std::vector<InterfaceLine>
-  parse_interface_lines(const std::string &text)
-  {
-    const std::string          entry = "Mesh/Interface lines";
-    std::vector<InterfaceLine> lines;
-    for (const std::string &item : Utilities::split_string_list(text, ';'))
-      {
-        const auto colon = item.find(':');
-        AssertThrow(colon != std::string::npos,
-                    ExcMessage(entry + ": '" + item + "' lacks 'id:'"));
-        InterfaceLine line;
-        line.boundary_id = boundary_id_in_entry(item.substr(0, colon), entry);
-        bool has_value = false, has_range = false;
-        int  value_coordinate = -1, range_coordinate = -1;
-        for (const std::string &token :
-             Utilities::split_string_list(item.substr(colon + 1), ','))
-          {
-            const auto eq = token.find('=');
-            AssertThrow(eq != std::string::npos,
-                        ExcMessage(entry + ": '" + token +
-                                   "' is not r=... "
-                                   "or z=..."));
-            const std::string key = Utilities::trim(token.substr(0, eq));
-            AssertThrow(key == "r" || key == "z",
-                        ExcMessage(entry + ": unknown coordinate '" + key +
-                                   "' in '" + item + "'"));
-            const int         c    = key == "r" ? 0 : 1;
-            const std::string rhs  = token.substr(eq + 1);
-            const auto        dots = rhs.find("..");
-            if (dots == std::string::npos)
-              {
-                AssertThrow(!has_value,
-                            ExcMessage(entry + ": two fixed coordinates in '" +
-                                       item + "'"));
-                line.value       = number_in_entry(rhs, entry);
-                value_coordinate = c;
-                has_value        = true;
-              }
-            else
-              {
-                AssertThrow(!has_range,
-                            ExcMessage(entry + ": two ranges in '" + item +
-                                       "'"));
-                line.from        = number_in_entry(rhs.substr(0, dots), entry);
-                line.to          = number_in_entry(rhs.substr(dots + 2), entry);
-                range_coordinate = c;
-                has_range        = true;
-              }
-          }
-        AssertThrow(has_value && has_range &&
-                      value_coordinate != range_coordinate,
-                    ExcMessage(entry + ": '" + item +
-                               "' must be 'r=a, z=b..c' or 'z=a, r=b..c'"));
-        if (line.from > line.to)
-          std::swap(line.from, line.to);
-        AssertThrow(line.to > line.from,
-                    ExcMessage(entry + ": empty range in '" + item + "'"));
-        line.fixed_coordinate = value_coordinate;
-        // A segment given twice (or two that overlap) would split the same
-        // edges twice: the second copy has no faces of its own to pair.
-        for (const InterfaceLine &other : lines)
-          AssertThrow(other.fixed_coordinate != line.fixed_coordinate ||
-                        other.value != line.value || other.to <= line.from ||
-                        line.to <= other.from,
-                      ExcMessage(entry + ": '" + Utilities::trim(item) +
-                                 "' overlaps an earlier line on the same " +
-                                 (line.fixed_coordinate == 0 ? "r" : "z") +
-                                 " (each segment once)"));
-        lines.push_back(line);
-      }
-    return lines;
-  }
-
   namespace
   {
     const std::string interface_lines_entry = "Mesh/Interface lines";

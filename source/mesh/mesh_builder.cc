@@ -1,10 +1,8 @@
 #include <cmath>
-#include <deal.II/base/utilities.h>
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
 #include <filesystem>
-#include <fourier_ssi/fourier/boundary_conditions.h>
 #include <fourier_ssi/mesh/interface_lines.h>
 #include <fourier_ssi/mesh/mesh_builder.h>
 #include <fstream>
@@ -62,225 +60,6 @@ namespace FourierSSI
 
   namespace
   {
-    /** Type, Mesh file and the DoF limit every mesh obeys. */
-    void
-    declare_mesh_source_entries(ParameterHandler &prm)
-    {
-      prm.declare_entry("Type",
-                        "rectangle",
-                        Patterns::Selection("rectangle|gmsh"),
-                        "rectangle: built-in graded (r, z) rectangle with the "
-                        "boundary ids 0 = r_min side (the axis when r_min = "
-                        "0), 1 = r_max side (far side), 2 = bottom (z_min), "
-                        "3 = top (z_max, ground surface), 4 = top faces with "
-                        "r < Surface patch radius (footing contact); faces "
-                        "left by Removed regions get 3 (sketch in "
-                        "doc/scenes.md). gmsh: read 'Mesh file' (.msh), "
-                        "physical curve tags are boundary ids, physical "
-                        "surface tags material ids.");
-      prm.declare_entry("Mesh file",
-                        "",
-                        Patterns::FileName(),
-                        "gmsh .msh file; a relative path is relative to the "
-                        "folder of the .prm file.");
-      prm.declare_entry("Maximum DoFs",
-                        "2e6",
-                        Patterns::Double(1.),
-                        "Refuse a run whose mesh would exceed this many DoFs "
-                        "per harmonic, estimated as 3 p^2 per cell before the "
-                        "cells are made (Global refinements, a priori and "
-                        "cycle refinements). 2e6 is about 8 GB with the direct "
-                        "solver (doc/scaling.md: 4 kB per DoF); raise it on a "
-                        "larger machine.");
-    }
-
-    /** The graded rectangle: segment ends, cells and growth in r and z. */
-    void
-    declare_rectangle_grading_entries(ParameterHandler &prm)
-    {
-      prm.declare_entry("R breakpoints",
-                        "0, 1",
-                        Patterns::List(Patterns::Double()),
-                        "Radial segment ends [m].");
-      prm.declare_entry("R cells",
-                        "4",
-                        Patterns::List(Patterns::Integer(1)),
-                        "Cells per radial segment. All radial cells times "
-                        "all Z cells times 3 p^2 must stay within Maximum "
-                        "DoFs (checked before the mesh is made).");
-      prm.declare_entry("R growth",
-                        "1",
-                        Patterns::List(Patterns::Double(0.)),
-                        "Per radial segment, size ratio of consecutive cells "
-                        "(1 uniform, <1 shrinking toward the segment end).");
-      prm.declare_entry("Z breakpoints",
-                        "0, 1",
-                        Patterns::List(Patterns::Double()),
-                        "Vertical segment ends [m], bottom to top.");
-      prm.declare_entry("Z cells",
-                        "4",
-                        Patterns::List(Patterns::Integer(1)),
-                        "Cells per vertical segment (bounded with R cells).");
-      prm.declare_entry(
-        "Z growth",
-        "1",
-        Patterns::List(Patterns::Double(0.)),
-        "Per vertical segment, size ratio of consecutive cells.");
-    }
-
-    /** Surface patch, distortion and global refinements. */
-    void
-    declare_mesh_modification_entries(ParameterHandler &prm)
-    {
-      prm.declare_entry("Surface patch radius",
-                        "0",
-                        Patterns::Double(0.),
-                        "If > 0, top faces (id 3) with centre r below it get "
-                        "boundary id 4; at most the outer radius.");
-      prm.declare_entry("Distortion",
-                        "0",
-                        Patterns::Double(0., 0.4),
-                        "Random interior vertex displacement as a fraction of "
-                        "the local edge length (tests on distorted meshes).");
-      prm.declare_entry("Global refinements",
-                        "0",
-                        Patterns::Integer(0, 12),
-                        "Uniform refinements of the coarse mesh.");
-    }
-
-    /**
-     * Material regions, soil layers, removed regions and interface lines of
-     * the rectangle.
-     */
-    void
-    declare_rectangle_region_entries(ParameterHandler &prm)
-    {
-      prm.declare_entry("Material regions",
-                        "",
-                        Patterns::Anything(),
-                        "Rectangle only: 'id: r0, r1, z0, z1; ...' gives the "
-                        "cells whose centre lies in each box that material id "
-                        "(later boxes win; default material 0).");
-      declare_soil_layers_entry(prm);
-      prm.declare_entry("Removed regions",
-                        "",
-                        Patterns::Anything(),
-                        "Rectangle only: 'r0, r1, z0, z1; ...' removes the "
-                        "cells whose centre lies in each box (e.g. the air "
-                        "beside a footing standing on the surface); the new "
-                        "boundary faces get id 3 (free surface).");
-      prm.declare_entry(
-        "Interface lines",
-        "",
-        Patterns::Anything(),
-        "Rectangle only: straight lines where the mesh is split "
-        "with double nodes, e.g. 'id: r=1, z=-2..0; id: z=-2, "
-        "r=0..1'; the faces on both sides get the boundary id "
-        "(declare its law in Interfaces/Interfaces). Lines and "
-        "their ends must be on the breakpoints.");
-    }
-  } // namespace
-
-  void
-  MeshBuilder::declare_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Mesh");
-    declare_mesh_source_entries(prm);
-    declare_rectangle_grading_entries(prm);
-    declare_mesh_modification_entries(prm);
-    declare_rectangle_region_entries(prm);
-    prm.leave_subsection();
-  }
-
-  namespace
-  {
-    template <typename T>
-    std::vector<T>
-    to_list(const std::string &text)
-    {
-      std::vector<T> values;
-      for (const std::string &s : Utilities::split_string_list(text))
-        values.push_back(static_cast<T>(Utilities::string_to_double(s)));
-      return values;
-    }
-  } // namespace
-
-  void
-  MeshBuilder::parse_parameters(ParameterHandler &prm)
-  {
-    prm.enter_subsection("Mesh");
-    type = prm.get("Type") == "gmsh" ? MeshType::gmsh : MeshType::rectangle;
-    mesh_file            = prm.get("Mesh file");
-    r_breakpoints        = to_list<double>(prm.get("R breakpoints"));
-    r_cells              = to_list<unsigned int>(prm.get("R cells"));
-    r_growth             = to_list<double>(prm.get("R growth"));
-    z_breakpoints        = to_list<double>(prm.get("Z breakpoints"));
-    z_cells              = to_list<unsigned int>(prm.get("Z cells"));
-    z_growth             = to_list<double>(prm.get("Z growth"));
-    surface_patch_radius = prm.get_double("Surface patch radius");
-    distortion           = prm.get_double("Distortion");
-    global_refinements   = prm.get_integer("Global refinements");
-    maximum_dofs         = prm.get_double("Maximum DoFs");
-    interface_lines      = parse_interface_lines(prm.get("Interface lines"));
-    material_regions.clear();
-    for (const std::string &item :
-         split_top_level(prm.get("Material regions"), ';'))
-      {
-        const auto colon = item.find(':');
-        AssertThrow(colon != std::string::npos,
-                    ExcMessage("Mesh/Material regions: '" + item +
-                               "' lacks 'id:'"));
-        int id = -1;
-        try
-          {
-            id =
-              Utilities::string_to_int(Utilities::trim(item.substr(0, colon)));
-          }
-        catch (...)
-          {}
-        AssertThrow(id >= 0 && id < 255,
-                    ExcMessage("Mesh/Material regions: bad material id in '" +
-                               item + "'"));
-        material_regions.emplace_back(id,
-                                      parse_box(item.substr(colon + 1),
-                                                "Mesh/Material regions"));
-      }
-    soil_layers = parse_soil_layers(prm.get("Soil layers"));
-    removed_regions.clear();
-    for (const std::string &item :
-         split_top_level(prm.get("Removed regions"), ';'))
-      removed_regions.push_back(parse_box(item, "Mesh/Removed regions"));
-    prm.leave_subsection();
-    AssertThrow(interface_lines.empty() || type == MeshType::rectangle,
-                ExcMessage("Mesh/Interface lines: only for Type = rectangle "
-                           "(duplicate the curve in gmsh instead)"));
-    if (type == MeshType::rectangle)
-      AssertThrow(r_breakpoints.front() >= 0.,
-                  ExcMessage("Mesh/R breakpoints: r must be >= 0"));
-  }
-
-  BoundingBox<2>
-  parse_box(const std::string &text, const std::string &entry)
-  {
-    std::vector<double> v;
-    try
-      {
-        for (const std::string &x : Utilities::split_string_list(text, ','))
-          v.push_back(Utilities::string_to_double(x));
-      }
-    catch (...)
-      {
-        v.clear();
-      }
-    AssertThrow(v.size() == 4 && v[0] < v[1] && v[2] < v[3],
-                ExcMessage(entry + ": '" + text +
-                           "' is not 'r0, r1, z0, z1' with r0 < r1, z0 < z1"));
-    return BoundingBox<2>(
-      std::make_pair(Point<2>(v[0], v[2]), Point<2>(v[1], v[3])));
-  }
-
-  namespace
-  {
     void
     read_gmsh_mesh(Triangulation<2>  &triangulation,
                    const std::string &mesh_file)
@@ -317,7 +96,7 @@ namespace FourierSSI
      * same estimate as for Global refinements (check_global_refinements).
      */
     void
-    check_rectangle_cells(const MeshBuilder &mesh)
+    check_rectangle_cells(const MeshParameters &mesh)
     {
       const double n_r =
         std::accumulate(mesh.r_cells.begin(), mesh.r_cells.end(), 0.);
@@ -339,8 +118,8 @@ namespace FourierSSI
      * material regions (cell centres inside a box).
      */
     void
-    paint_material_regions(Triangulation<2>  &triangulation,
-                           const MeshBuilder &mesh)
+    paint_material_regions(Triangulation<2>     &triangulation,
+                           const MeshParameters &mesh)
     {
       for (const auto &cell : triangulation.active_cell_iterators())
         {
@@ -353,7 +132,7 @@ namespace FourierSSI
 
     std::set<Triangulation<2>::active_cell_iterator>
     cells_in_removed_regions(const Triangulation<2> &triangulation,
-                             const MeshBuilder      &mesh)
+                             const MeshParameters   &mesh)
     {
       std::set<Triangulation<2>::active_cell_iterator> removed;
       for (const auto &cell : triangulation.active_cell_iterators())
@@ -364,7 +143,7 @@ namespace FourierSSI
     }
 
     void
-    remove_regions(Triangulation<2> &triangulation, const MeshBuilder &mesh)
+    remove_regions(Triangulation<2> &triangulation, const MeshParameters &mesh)
     {
       AssertThrow(cells_in_removed_regions(triangulation, mesh).size() <
                     triangulation.n_active_cells(),
@@ -403,7 +182,7 @@ namespace FourierSSI
     }
 
     void
-    build_rectangle(Triangulation<2> &triangulation, const MeshBuilder &mesh)
+    build_rectangle(Triangulation<2> &triangulation, const MeshParameters &mesh)
     {
       check_rectangle_cells(mesh);
       const std::vector<std::vector<double>> steps = {
@@ -491,22 +270,22 @@ namespace FourierSSI
   } // namespace
 
   void
-  MeshBuilder::build(Triangulation<2> &triangulation) const
+  build_mesh(const MeshParameters &mesh, Triangulation<2> &triangulation)
   {
     triangulation.clear();
-    if (type == MeshType::gmsh)
-      read_gmsh_mesh(triangulation, mesh_file);
+    if (mesh.type == MeshType::gmsh)
+      read_gmsh_mesh(triangulation, mesh.mesh_file);
     else
-      build_rectangle(triangulation, *this);
+      build_rectangle(triangulation, mesh);
     // Refuse a refinement that would exceed Maximum DoFs before it
     // allocates its cells: Global refinements here, the a priori and cycle
     // refinements through the triangulation's pre-refinement signal.
-    const double dofs_per_cell = 3. * degree * degree;
+    const double dofs_per_cell = 3. * mesh.degree * mesh.degree;
     check_global_refinements(triangulation,
-                             global_refinements,
+                             mesh.global_refinements,
                              dofs_per_cell,
-                             maximum_dofs);
-    guard_later_refinements(triangulation, dofs_per_cell, maximum_dofs);
-    triangulation.refine_global(global_refinements);
+                             mesh.maximum_dofs);
+    guard_later_refinements(triangulation, dofs_per_cell, mesh.maximum_dofs);
+    triangulation.refine_global(mesh.global_refinements);
   }
 } // namespace FourierSSI

@@ -1,4 +1,5 @@
 #include <cmath>
+#include <fourier_ssi/harmonic/rigid_foundation.h>
 #include <fourier_ssi/postprocess/harmonic_postprocessors.h>
 #include <fourier_ssi/postprocess/pile_head_formulas.h>
 #include <iomanip>

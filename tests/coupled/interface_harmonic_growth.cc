@@ -24,6 +24,7 @@
 #include "coupled_interface_test_support.h"
 
 #include <fourier_ssi/driver/simulator.h>
+#include <fourier_ssi/mesh/mesh_builder.h>
 
 using namespace FourierSSI;
 using test_support::with_entry;
@@ -40,7 +41,7 @@ namespace
       test_support::bundled_prm("prm/disc-smooth.prm") + growth + "12\nend\n";
     const AllParameters parameters = test_support::parameters_from(text);
     Triangulation<2>    triangulation;
-    parameters.mesh.build(triangulation);
+    build_mesh(parameters.mesh, triangulation);
     const unsigned int planned =
       plan_scene(parameters, triangulation).harmonics.size();
     Simulator simulator(parameters);

@@ -31,6 +31,7 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <fourier_ssi/harmonic/harmonic_problem.h>
+#include <fourier_ssi/mesh/mesh_builder.h>
 #include <fstream>
 
 using namespace FourierSSI;
@@ -64,7 +65,7 @@ namespace
         std::vector<InterfaceStiffness> *stiffness = nullptr)
   {
     Triangulation<2> triangulation;
-    parameters.mesh.build(triangulation);
+    build_mesh(parameters.mesh, triangulation);
     for (const auto &cell : triangulation.active_cell_iterators())
       cell->set_material_id(cell->center()[1] > 0.5 ? 1 : 0);
     HarmonicProblem problem(parameters, harmonic, triangulation);

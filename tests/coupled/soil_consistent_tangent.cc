@@ -1,5 +1,5 @@
 // The closed-form algorithmic tangent of the soil return mapping
-// (SoilLaw::return_map_with_tangent,
+// (SoilReturnMapping::return_map_with_tangent,
 // doc/derivations/soil_consistent_tangent.md) against central differences of
 // the return mapping itself, at random trial stresses with random principal
 // directions in every region of the surface: the plane, the right edge (s1 = s2
@@ -45,12 +45,12 @@ namespace
                                         "left edge (s2 = s3)",
                                         "apex"};
 
-  SoilLaw
+  SoilReturnMapping
   law_of(const std::string &text)
   {
     SoilPlasticityParameters p;
     p.parse_law_list("0: " + text);
-    return p.laws.at(0);
+    return SoilReturnMapping(p.laws.at(0));
   }
 
   /** Q diag(s) Q^T with Q a random rotation, as a stress vector. */
@@ -109,7 +109,7 @@ namespace
    * a negative number if a differenced return left the trial's region.
    */
   double
-  tangent_error(const SoilLaw &law, const StrainVector &trial)
+  tangent_error(const SoilReturnMapping &law, const StrainVector &trial)
   {
     StressTangent    d_ep;
     const SoilReturn at    = law.return_map_with_tangent(trial, G, K, 0., d_ep);
@@ -142,7 +142,9 @@ namespace
    * checks the largest error per region and that each region was reached.
    */
   void
-  check_law(const std::string &name, const SoilLaw &law, const bool has_apex)
+  check_law(const std::string       &name,
+            const SoilReturnMapping &law,
+            const bool               has_apex)
   {
     std::mt19937                           rng(11);
     std::uniform_real_distribution<double> uniform(-300., 300.);
@@ -187,8 +189,8 @@ namespace
 int
 main()
 {
-  const SoilLaw tresca = law_of("tresca, su=50");
-  const SoilLaw mc     = law_of("mohr-coulomb, c=10, phi=30, psi=10");
+  const SoilReturnMapping tresca = law_of("tresca, su=50");
+  const SoilReturnMapping mc     = law_of("mohr-coulomb, c=10, phi=30, psi=10");
   std::cout << "Tresca s_u = 50 kPa" << std::endl;
   check_law("Tresca", tresca, false);
   std::cout << "Mohr-Coulomb c' = 10 kPa, phi' = 30, psi = 10" << std::endl;

@@ -31,12 +31,12 @@ namespace
 {
   const double G = 1000., K = 2000.;
 
-  SoilLaw
+  SoilReturnMapping
   law_of(const std::string &text)
   {
     SoilPlasticityParameters p;
     p.parse_law_list("0: " + text);
-    return p.laws.at(0);
+    return SoilReturnMapping(p.laws.at(0));
   }
 
   void
@@ -88,7 +88,7 @@ int
 main()
 {
   std::cout << "Hand cases" << std::endl;
-  const SoilLaw tresca = law_of("tresca, su=50");
+  const SoilReturnMapping tresca = law_of("tresca, su=50");
   check_stress("Tresca plane",
                tresca.return_map({{100., -100., 0., 0., 0., 0.}}, G, K, 0.),
                {{50., -50., 0., 0., 0., 0.}},
@@ -110,7 +110,7 @@ main()
     left,
     {{-30. + 200. / 3., -30. - 100. / 3., -30. - 100. / 3., 0., 0., 0.}},
     1e-12);
-  const SoilLaw graded = law_of("tresca, su=10, k=4");
+  const SoilReturnMapping graded = law_of("tresca, su=10, k=4");
   check_stress("Tresca s_u = 10 + 4 depth at 10 m",
                graded.return_map({{100., -100., 0., 0., 0., 0.}}, G, K, 10.),
                {{50., -50., 0., 0., 0., 0.}},
@@ -125,7 +125,7 @@ main()
                tresca.return_map({{-20., -20., -20., 80., 0., 0.}}, G, K, 0.),
                {{-20., -20., -20., 50., 0., 0.}},
                1e-12);
-  const SoilLaw mc = law_of("mohr-coulomb, c=10, phi=30");
+  const SoilReturnMapping mc = law_of("mohr-coulomb, c=10, phi=30");
   check_stress("Mohr-Coulomb plane",
                mc.return_map({{0., -50., -200., 0., 0., 0.}}, G, K, 0.),
                {{-41.33974596, -50., -158.66025404, 0., 0., 0.}},
@@ -143,9 +143,10 @@ main()
   std::cout << "Random trials: on the surface, closest point" << std::endl;
   std::mt19937                           rng(7);
   std::uniform_real_distribution<double> u(-300., 300.);
-  const SoilLaw                          laws[3] = {tresca,
-                                                    law_of("mohr-coulomb, c=10, phi=30, psi=30"),
-                                                    law_of("mohr-coulomb, c=5, phi=25, psi=10")};
+  const SoilReturnMapping                laws[3] = {
+                   tresca,
+                   law_of("mohr-coulomb, c=10, phi=30, psi=30"),
+                   law_of("mohr-coulomb, c=5, phi=25, psi=10")};
   for (unsigned int l = 0; l < 3; ++l)
     {
       double       worst_f = 0., worst_pressure = 0.;

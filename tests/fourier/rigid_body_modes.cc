@@ -13,6 +13,7 @@
 #include <deal.II/grid/tria.h>
 #include <deal.II/numerics/vector_tools.h>
 #include <fourier_ssi/harmonic/harmonic_problem.h>
+#include <fourier_ssi/mesh/mesh_builder.h>
 
 using namespace FourierSSI;
 
@@ -61,7 +62,7 @@ main(int argc, char **argv)
         "subsection Discretization\n set Polynomial degree = " +
         std::to_string(degree) + "\nend\n");
       Triangulation<2> triangulation;
-      parameters.mesh.build(triangulation);
+      build_mesh(parameters.mesh, triangulation);
       const std::string p = " (p=" + std::to_string(degree) + ")";
 
       struct Mode

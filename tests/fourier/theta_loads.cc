@@ -25,6 +25,7 @@
 #include <cmath>
 #include <fourier_ssi/driver/scene_plan.h>
 #include <fourier_ssi/driver/simulator.h>
+#include <fourier_ssi/mesh/mesh_builder.h>
 #include <set>
 
 using namespace FourierSSI;
@@ -127,7 +128,7 @@ main(int argc, char **argv)
     const AllParameters parameters =
       test_support::parameters_from(scene("-max(cos(theta), 0)"));
     Triangulation<2> triangulation;
-    parameters.mesh.build(triangulation);
+    build_mesh(parameters.mesh, triangulation);
     const ScenePlan           plan     = plan_scene(parameters, triangulation);
     std::vector<unsigned int> expected = {0, 1};
     for (unsigned int n = 2; n <= 24; n += 2)

@@ -47,7 +47,9 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/numerics/vector_tools.h>
 #include <fourier_ssi/harmonic/harmonic_problem.h>
+#include <fourier_ssi/harmonic/rigid_foundation.h>
 #include <fourier_ssi/harmonic/stress_postprocessor.h>
+#include <fourier_ssi/mesh/mesh_builder.h>
 #include <fstream>
 
 using namespace FourierSSI;
@@ -174,7 +176,7 @@ namespace
     const AllParameters parameters =
       test_support::parameters_from(prm(law, degree));
     Triangulation<2> triangulation;
-    parameters.mesh.build(triangulation);
+    build_mesh(parameters.mesh, triangulation);
     HarmonicProblem problem(parameters, {1, Family::symmetric}, triangulation);
     problem.run();
     const RigidMotion motion =

@@ -15,8 +15,9 @@
 #include "test_support.h"
 
 #include <deal.II/base/mpi.h>
-#include <fourier_ssi/harmonic/harmonic_set.h>
 #include <fourier_ssi/driver/scene_plan.h>
+#include <fourier_ssi/harmonic/harmonic_set.h>
+#include <fourier_ssi/mesh/mesh_builder.h>
 #include <random>
 
 using namespace FourierSSI;
@@ -31,7 +32,7 @@ main()
                "-300*max(cos(theta), 0)\nend\n");
 
   Triangulation<2> triangulation;
-  parameters.mesh.build(triangulation);
+  build_mesh(parameters.mesh, triangulation);
   const ScenePlan plan         = plan_scene(parameters, triangulation);
   const ScenePlan tripled_plan = plan_scene(tripled, triangulation);
   check::equal("harmonics planned", plan.harmonics.size(), 14);

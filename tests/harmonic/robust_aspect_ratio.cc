@@ -1,8 +1,8 @@
 // Hard-case stability (doc/robustness.md): elements of aspect ratio 100 on
 // both sides of a zero-thickness interface. Pure bending of a solid circular
 // cylinder (r in [0, 1], z in [0, 2], n = 1, both families; the exact
-// solution of tests/fourier/exact_solutions.cc, quadratic amplitudes, exact for any
-// mesh) cut at z = 1 by a stiff interface (kn = ks = 1e14 kPa/m, id 5). The
+// solution of tests/fourier/exact_solutions.cc, quadratic amplitudes, exact for
+// any mesh) cut at z = 1 by a stiff interface (kn = ks = 1e14 kPa/m, id 5). The
 // layers 0.99 < z < 1 and 1 < z < 1.01 are split into 4 cells of 0.0025 m
 // height against a radial width of 0.25 m (aspect ratio 100), graded away
 // in z. The interface transmits sigma_zz = E kappa x exactly up to the
@@ -17,7 +17,7 @@
 #include "test_support.h"
 
 #include <cmath>
-#include <fourier_ssi/fourier/harmonic.h>
+#include <fourier_ssi/input/harmonic.h>
 
 using namespace FourierSSI;
 

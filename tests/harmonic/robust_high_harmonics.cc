@@ -13,7 +13,7 @@
 #include "mms_high_harmonics.h"
 #include "test_support.h"
 
-#include <fourier_ssi/fourier/harmonic.h>
+#include <fourier_ssi/input/harmonic.h>
 
 using namespace FourierSSI;
 

@@ -30,8 +30,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fourier_ssi/fourier/harmonic.h>
 #include <fourier_ssi/driver/simulator.h>
+#include <fourier_ssi/input/harmonic.h>
 #include <utility>
 #include <vector>
 

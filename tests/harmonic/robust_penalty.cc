@@ -46,8 +46,9 @@
 
 #include <cmath>
 #include <deal.II/lac/sparse_direct.h>
-#include <fourier_ssi/fourier/harmonic.h>
 #include <fourier_ssi/harmonic/harmonic_problem.h>
+#include <fourier_ssi/input/harmonic.h>
+#include <fourier_ssi/mesh/mesh_builder.h>
 #include <random>
 #include <sstream>
 
@@ -119,7 +120,7 @@ namespace
   {
     const AllParameters parameters = test_support::parameters_from(prm_text);
     Triangulation<2>    triangulation;
-    parameters.mesh.build(triangulation);
+    build_mesh(parameters.mesh, triangulation);
     HarmonicProblem problem(parameters,
                             Harmonic{1, Family::symmetric},
                             triangulation);

@@ -19,7 +19,7 @@
 #include "test_support.h"
 
 #include <cmath>
-#include <fourier_ssi/fourier/harmonic.h>
+#include <fourier_ssi/input/harmonic.h>
 #include <sstream>
 
 using namespace FourierSSI;

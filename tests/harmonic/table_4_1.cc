@@ -22,7 +22,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <fourier_ssi/fourier/harmonic.h>
+#include <fourier_ssi/input/harmonic.h>
 #include <sstream>
 #include <stdexcept>
 

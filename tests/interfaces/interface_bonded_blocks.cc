@@ -29,6 +29,7 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/mapping_q1.h>
 #include <fourier_ssi/harmonic/harmonic_problem.h>
+#include <fourier_ssi/mesh/mesh_builder.h>
 #include <map>
 #include <tuple>
 
@@ -72,7 +73,7 @@ namespace
   {
     const AllParameters parameters = test_support::parameters_from(text);
     Triangulation<2>    triangulation;
-    parameters.mesh.build(triangulation);
+    build_mesh(parameters.mesh, triangulation);
     HarmonicProblem problem(parameters, harmonic, triangulation);
     problem.run();
     const auto &dof_handler = problem.get_dof_handler();

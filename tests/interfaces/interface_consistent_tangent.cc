@@ -36,7 +36,7 @@ namespace
   {
     std::uniform_real_distribution<double> u(0., 1.);
     InterfaceLaw                           law;
-    law.coulomb        = true;
+    law.kind           = InterfaceLaw::Kind::coulomb;
     law.normal         = std::pow(10., 3. + 3. * u(random));
     law.shear          = std::pow(10., 3. + 3. * u(random));
     law.friction_angle = 1. + 44. * u(random);
@@ -180,7 +180,7 @@ namespace
   {
     std::cout << "hand case of the slip tangent" << std::endl;
     InterfaceLaw law;
-    law.coulomb        = true;
+    law.kind           = InterfaceLaw::Kind::coulomb;
     law.normal         = 1000.;
     law.shear          = 500.;
     law.cohesion       = 10.;

@@ -173,7 +173,7 @@ namespace
                                std::tan(std::max(phi, 1.) * M_PI / 180.) *
                                (1. + u(random)) / 2.;
         InterfaceLaw law;
-        law.coulomb        = true;
+        law.kind           = InterfaceLaw::Kind::coulomb;
         law.normal         = 2000.;
         law.shear          = 700.;
         law.cohesion       = c;
@@ -232,22 +232,28 @@ namespace
     check::that("rough", laws.at(1).normal == 1e10 && laws.at(1).shear == 1e10);
     check::that("smooth", laws.at(2).normal == 1e10 && laws.at(2).shear == 0.);
     check::that("kn, ks", laws.at(3).normal == 1e8 && laws.at(3).shear == 0.);
-    check::that("vermeer", laws.at(4).vermeer && laws.at(4).mu == 50.);
-    check::that("tied", laws.at(6).tied && laws.at(7).tied_normal);
+    check::that("vermeer",
+                laws.at(4).kind == InterfaceLaw::Kind::vermeer &&
+                  laws.at(4).mu == 50.);
+    check::that("tied",
+                laws.at(6).kind == InterfaceLaw::Kind::tied &&
+                  laws.at(7).kind == InterfaceLaw::Kind::tied_normal);
     check::that("linear laws are linear",
                 !laws.at(1).is_nonlinear() && !laws.at(3).is_nonlinear());
     const InterfaceLaw &c = laws.at(8);
     check::that("coulomb entries",
-                c.coulomb && c.normal == 1e6 && c.shear == 2e6 &&
-                  c.cohesion == 5. && c.friction_angle == 25. &&
-                  c.dilation_angle == 5. && c.tension_cutoff == 1.);
+                c.kind == InterfaceLaw::Kind::coulomb && c.normal == 1e6 &&
+                  c.shear == 2e6 && c.cohesion == 5. &&
+                  c.friction_angle == 25. && c.dilation_angle == 5. &&
+                  c.tension_cutoff == 1.);
     check::that("sigma_t default 0 (tensionless)",
                 law_of("coulomb, kn=1, ks=1, phi=20").tension_cutoff == 0.);
     check::that("sigma_t=none", std::isinf(laws.at(9).tension_cutoff));
     const InterfaceLaw contact = law_of("contact, c=2, phi=20");
     check::that("contact: tensionless, no dilation, no springs given",
-                contact.contact && contact.is_nonlinear() &&
-                  contact.cohesion == 2. && contact.friction_angle == 20. &&
+                contact.kind == InterfaceLaw::Kind::contact &&
+                  contact.is_nonlinear() && contact.cohesion == 2. &&
+                  contact.friction_angle == 20. &&
                   contact.tension_cutoff == 0. &&
                   contact.dilation_angle == 0. && contact.normal == 0.);
     const InterfaceLaw automatic = law_of("coulomb, kn=auto, ks=auto, phi=20");

@@ -8,7 +8,7 @@
 #include "check.h"
 #include "test_support.h"
 
-#include <fourier_ssi/fourier/harmonic.h>
+#include <fourier_ssi/input/harmonic.h>
 #include <tuple>
 
 using namespace FourierSSI;

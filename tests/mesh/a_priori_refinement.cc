@@ -16,6 +16,7 @@
 #include "test_support.h"
 
 #include <fourier_ssi/driver/simulator.h>
+#include <fourier_ssi/mesh/mesh_builder.h>
 
 using namespace FourierSSI;
 
@@ -91,7 +92,7 @@ main(int argc, char **argv)
     const AllParameters base_parameters = test_support::parameters_from(
       graded + "subsection Adaptivity\n set Point refinement = \nend\n");
     Triangulation<2> base;
-    base_parameters.mesh.build(base);
+    build_mesh(base_parameters.mesh, base);
     unsigned int in_box = 0;
     for (const auto &cell : base.active_cell_iterators())
       if (cell->center()[0] < 3. && cell->center()[1] > -3.)

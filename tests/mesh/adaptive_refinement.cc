@@ -12,7 +12,7 @@
 #include "test_support.h"
 
 #include <cmath>
-#include <fourier_ssi/fourier/harmonic.h>
+#include <fourier_ssi/input/harmonic.h>
 
 using namespace FourierSSI;
 

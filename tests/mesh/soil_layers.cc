@@ -1,4 +1,4 @@
-// Layered soil (Mesh/Soil layers, mesh/soil_layers.h) on the rigid surface
+// Layered soil (Mesh/Soil layers, input/soil_layers.h) on the rigid surface
 // disc of prm/surface-disc-stiffness.prm (a = 1 m, nu = 0.3), one mesh:
 //  - coverage: two strata of materials 1 and 2, both G = 1000 kPa, with no
 //    material 0 defined, give the homogeneous run's K_V, K_H, K_M, K_T to

@@ -17,6 +17,7 @@
 #include <check.h>
 #include <deal.II/grid/tria.h>
 #include <fourier_ssi/harmonic/harmonic_problem.h>
+#include <fourier_ssi/mesh/mesh_builder.h>
 #include <test_support.h>
 #include <two_ranks.h>
 
@@ -58,7 +59,7 @@ namespace
 
     // Interface pairs straddling the ranks: the case this test is about.
     Triangulation<2> triangulation;
-    parameters.mesh.build(triangulation);
+    build_mesh(parameters.mesh, triangulation);
     HarmonicProblem problem(parameters,
                             Harmonic{1, Family::symmetric},
                             triangulation,

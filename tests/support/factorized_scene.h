@@ -8,9 +8,10 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/vector.h>
+#include <fourier_ssi/driver/scene_plan.h>
 #include <fourier_ssi/harmonic/harmonic_set.h>
 #include <fourier_ssi/input/parameters.h>
-#include <fourier_ssi/driver/scene_plan.h>
+#include <fourier_ssi/mesh/mesh_builder.h>
 #include <string>
 #include <vector>
 
@@ -65,7 +66,7 @@ namespace test_support
     build_mesh_and_plan(const FourierSSI::AllParameters &parameters,
                         dealii::Triangulation<2>        &triangulation)
     {
-      parameters.mesh.build(triangulation);
+      build_mesh(parameters.mesh, triangulation);
       return FourierSSI::plan_scene(parameters, triangulation);
     }
   };

@@ -11,6 +11,7 @@
 #include <fourier_ssi/coupled/coupled_solver.h>
 #include <fourier_ssi/driver/scene_plan.h>
 #include <fourier_ssi/harmonic/harmonic_set.h>
+#include <fourier_ssi/mesh/mesh_builder.h>
 #include <random>
 #include <regex>
 
@@ -83,7 +84,7 @@ namespace soil_test
     explicit Run(const std::string &text)
       : parameters(test_support::parameters_from(text))
     {
-      parameters.mesh.build(triangulation);
+      build_mesh(parameters.mesh, triangulation);
       const ScenePlan plan = plan_scene(parameters, triangulation);
       set                  = std::make_unique<HarmonicSet>(parameters,
                                           plan.harmonics,

@@ -7,7 +7,7 @@
 
 #include <array>
 #include <cmath>
-#include <fourier_ssi/fourier/harmonic.h>
+#include <fourier_ssi/input/harmonic.h>
 #include <fourier_ssi/postprocess/results_table.h>
 #include <iostream>
 #include <string>

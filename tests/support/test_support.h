@@ -12,6 +12,7 @@
 #include <fourier_ssi/driver/simulator.h>
 #include <fourier_ssi/input/parameters.h>
 #include <fourier_ssi/mesh/adaptivity.h>
+#include <fourier_ssi/mesh/mesh_builder.h>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -320,7 +321,7 @@ namespace test_support
   build_refined_mesh(const FourierSSI::AllParameters &parameters,
                      dealii::Triangulation<2>        &triangulation)
   {
-    parameters.mesh.build(triangulation);
+    build_mesh(parameters.mesh, triangulation);
     std::set<dealii::types::boundary_id> interface_ids;
     for (const auto &[id, law] : parameters.interfaces.laws)
       interface_ids.insert(id);

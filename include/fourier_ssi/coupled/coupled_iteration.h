@@ -14,10 +14,11 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/coupled/anderson_acceleration.h>
-#include <fourier_ssi/fourier/harmonic.h>
-#include <fourier_ssi/harmonic/rigid_foundation.h>
+#include <fourier_ssi/harmonic/rigid_motion.h>
 #include <fourier_ssi/input/atomic_file.h>
+#include <fourier_ssi/input/harmonic.h>
 #include <fourier_ssi/input/load_path_parameters.h>
+#include <fourier_ssi/input/rigid_foundation_parameters.h>
 #include <fourier_ssi/postprocess/results_table.h>
 #include <fstream>
 #include <iomanip>

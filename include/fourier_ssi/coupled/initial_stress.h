@@ -19,63 +19,38 @@
 #ifndef fourier_ssi_initial_stress_h
 #define fourier_ssi_initial_stress_h
 
-#include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/tensor.h>
 #include <fourier_ssi/fourier/harmonic_operator.h>
+#include <fourier_ssi/input/initial_stress_parameters.h>
 #include <fourier_ssi/interfaces/interface_law.h>
 
 namespace FourierSSI
 {
   using namespace dealii;
 
-  /** Subsection "Initial stress" of the .prm file. */
-  struct InitialStressParameters
-  {
-    static void
-    declare_parameters(ParameterHandler &prm);
-    void
-    parse_parameters(ParameterHandler &prm);
+  /**
+   * The initial stress of the soil at a depth in the order and sign of
+   * soil_law.h (r, z, theta, rz, ztheta, rtheta; tension positive):
+   * (-sigma'_h, -sigma'_v, -sigma'_h, 0, 0, 0) [kPa].
+   */
+  StrainVector
+  initial_soil_stress(const InitialStressParameters &initial_stress,
+                      const double                   depth);
 
-    /** gamma' [kN/m^3]. */
-    double unit_weight = 0.;
-    /** q [kPa]: sigma'_v at the ground surface. */
-    double surcharge = 0.;
-    /** K0 [-]: sigma'_h / sigma'_v. */
-    double earth_pressure_coefficient = 0.5;
-
-    /** False (gamma' = q = 0): no initial stress. */
-    bool
-    enabled() const
-    {
-      return unit_weight > 0. || surcharge > 0.;
-    }
-
-    /** sigma'_v [kPa] (compression positive) at a depth; 0 above ground. */
-    double
-    vertical_stress(const double depth) const;
-
-    /**
-     * The initial stress of the soil at a depth in the order and sign of
-     * soil_law.h (r, z, theta, rz, ztheta, rtheta; tension positive):
-     * (-sigma'_h, -sigma'_v, -sigma'_h, 0, 0, 0) [kPa].
-     */
-    StrainVector
-    soil_stress(const double depth) const;
-
-    /**
-     * The initial traction (s, n, theta) [kPa] on an interface face with unit
-     * tangent s and normal n (r, z components) at the given depth, in the
-     * convention of interface_law.h (tension positive): t = -S n with
-     * S = diag(sigma'_h, sigma'_v) in (r, z), so t_n = -(n_r^2 sigma'_h +
-     * n_z^2 sigma'_v) and t_s = -(s_r n_r sigma'_h + s_z n_z sigma'_v)
-     * (zero on horizontal and vertical faces); t_theta = 0 (no initial
-     * circumferential shear in an axisymmetric geostatic state).
-     */
-    LocalVector
-    interface_traction(const Tensor<1, 2> &tangent,
-                       const Tensor<1, 2> &normal,
-                       const double        depth) const;
-  };
+  /**
+   * The initial traction (s, n, theta) [kPa] on an interface face with unit
+   * tangent s and normal n (r, z components) at the given depth, in the
+   * convention of interface_law.h (tension positive): t = -S n with
+   * S = diag(sigma'_h, sigma'_v) in (r, z), so t_n = -(n_r^2 sigma'_h +
+   * n_z^2 sigma'_v) and t_s = -(s_r n_r sigma'_h + s_z n_z sigma'_v)
+   * (zero on horizontal and vertical faces); t_theta = 0 (no initial
+   * circumferential shear in an axisymmetric geostatic state).
+   */
+  LocalVector
+  initial_interface_traction(const InitialStressParameters &initial_stress,
+                             const Tensor<1, 2>            &tangent,
+                             const Tensor<1, 2>            &normal,
+                             const double                   depth);
 } // namespace FourierSSI
 
 #endif

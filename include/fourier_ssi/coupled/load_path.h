@@ -33,7 +33,7 @@
 
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/harmonic/harmonic_set.h>
-#include <fourier_ssi/harmonic/rigid_foundation.h>
+#include <fourier_ssi/harmonic/rigid_motion.h>
 #include <fourier_ssi/input/load_path_parameters.h>
 #include <functional>
 #include <ostream>

@@ -17,6 +17,7 @@
 #include <fourier_ssi/coupled/load_pattern.h>
 #include <fourier_ssi/coupled/load_step_result.h>
 #include <fourier_ssi/harmonic/harmonic_set.h>
+#include <fourier_ssi/harmonic/rigid_foundation.h>
 #include <fourier_ssi/input/parameters.h>
 #include <functional>
 #include <ostream>

@@ -283,13 +283,13 @@ namespace FourierSSI
       return p % point_stride == point_rank;
     }
 
-    const HarmonicSet            &set;
-    std::vector<Harmonic>         harmonics;
-    std::vector<HarmonicOperator> operators;
-    ThetaSampling                 sampling;
-    std::vector<SoilLaw>          laws;
-    std::vector<SoilCell>         cells;
-    std::vector<SoilPoint>        points;
+    const HarmonicSet             &set;
+    std::vector<Harmonic>          harmonics;
+    std::vector<HarmonicOperator>  operators;
+    ThetaSampling                  sampling;
+    std::vector<SoilReturnMapping> laws;
+    std::vector<SoilCell>          cells;
+    std::vector<SoilPoint>         points;
     /** The vector component of each local DoF of a cell. */
     std::vector<unsigned int> component;
     /** owns_point(): the ranks and this rank (1, 0: every point). */

@@ -20,11 +20,8 @@
 #define fourier_ssi_soil_law_h
 
 #include <array>
-#include <deal.II/base/parameter_handler.h>
-#include <deal.II/base/types.h>
 #include <fourier_ssi/fourier/harmonic_operator.h>
-#include <map>
-#include <string>
+#include <fourier_ssi/input/soil_plasticity_parameters.h>
 
 namespace FourierSSI
 {
@@ -53,26 +50,15 @@ namespace FourierSSI
    */
   using StressTangent = std::array<double, 36>;
 
-  struct SoilLaw
+  /**
+   * The closed-form return mapping of one SoilLaw (the file comment): its
+   * yield function, the closest admissible stress and the consistent
+   * tangent.
+   */
+  class SoilReturnMapping
   {
-    enum class Kind
-    {
-      tresca,
-      mohr_coulomb
-    };
-    Kind kind = Kind::tresca;
-    /** Tresca: s_u = su0 + su_gradient depth [kPa, kPa/m]. */
-    double su0         = 0.;
-    double su_gradient = 0.;
-    /** Mohr-Coulomb: c' [kPa], phi', psi [rad]. */
-    double cohesion = 0., friction = 0., dilation = 0.;
-
-    /** Undrained strength s_u at a depth [kPa] (Tresca). */
-    double
-    undrained_strength(const double depth) const
-    {
-      return su0 + su_gradient * depth;
-    }
+  public:
+    explicit SoilReturnMapping(const SoilLaw &law);
 
     /** f(stress) [kPa]: <= 0 admissible. */
     double
@@ -104,40 +90,9 @@ namespace FourierSSI
                             const double        bulk_modulus,
                             const double        depth,
                             StressTangent      &tangent) const;
-  };
 
-  /**
-   * Subsection "Soil plasticity": the plastic laws per material id; a
-   * material without a law stays linear elastic.
-   */
-  struct SoilPlasticityParameters
-  {
-    static void
-    declare_parameters(ParameterHandler &prm);
-    void
-    parse_parameters(ParameterHandler &prm);
-
-    /**
-     * "id: tresca, su=..., k=...; id: mohr-coulomb, c=..., phi=...,
-     * psi=..."; throws one line naming the entry and the offending text.
-     */
-    void
-    parse_law_list(const std::string &text);
-
-    bool
-    any() const
-    {
-      return !laws.empty();
-    }
-
-    std::map<types::material_id, SoilLaw> laws;
-
-    /**
-     * What the coupled iteration re-solves with (doc/soil-plasticity.md
-     * section 3): the kept elastic factorizations only (initial stiffness),
-     * or the tangent of all harmonics coupled (Newton; coupled_tangent.h).
-     */
-    bool tangent = true;
+  private:
+    SoilLaw law;
   };
 } // namespace FourierSSI
 

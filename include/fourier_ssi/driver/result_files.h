@@ -17,7 +17,7 @@
 #define fourier_ssi_result_files_h
 
 #include <deal.II/base/types.h>
-#include <fourier_ssi/fourier/harmonic.h>
+#include <fourier_ssi/input/harmonic.h>
 #include <fourier_ssi/input/parameters.h>
 #include <string>
 #include <vector>

@@ -10,8 +10,8 @@
 #define fourier_ssi_scene_plan_h
 
 #include <deal.II/grid/tria.h>
-#include <fourier_ssi/fourier/harmonic.h>
 #include <fourier_ssi/fourier/load_decomposition.h>
+#include <fourier_ssi/input/harmonic.h>
 #include <fourier_ssi/input/parameters.h>
 #include <string>
 #include <vector>

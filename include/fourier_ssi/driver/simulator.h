@@ -22,6 +22,7 @@
 #include <fourier_ssi/harmonic/harmonic_set.h>
 #include <fourier_ssi/input/parameters.h>
 #include <fourier_ssi/mesh/adaptivity.h>
+#include <fourier_ssi/mesh/mesh_builder.h>
 #include <fourier_ssi/postprocess/field_reconstruction.h>
 #include <fourier_ssi/postprocess/harmonic_postprocessors.h>
 #include <fourier_ssi/postprocess/results_table.h>

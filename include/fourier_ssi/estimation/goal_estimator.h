@@ -28,7 +28,7 @@
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/harmonic/harmonic_problem.h>
-#include <fourier_ssi/harmonic/rigid_foundation.h>
+#include <fourier_ssi/harmonic/rigid_motion.h>
 #include <fourier_ssi/input/parameters.h>
 #include <string>
 #include <vector>

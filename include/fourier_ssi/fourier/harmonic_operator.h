@@ -14,7 +14,7 @@
 
 #include <array>
 #include <deal.II/base/tensor.h>
-#include <fourier_ssi/fourier/harmonic.h>
+#include <fourier_ssi/input/harmonic.h>
 
 namespace FourierSSI
 {

@@ -15,8 +15,8 @@
 #ifndef fourier_ssi_harmonic_pair_integral_h
 #define fourier_ssi_harmonic_pair_integral_h
 
-#include <fourier_ssi/fourier/harmonic.h>
 #include <fourier_ssi/fourier/theta_sampling.h>
+#include <fourier_ssi/input/harmonic.h>
 #include <vector>
 
 namespace FourierSSI

@@ -19,8 +19,8 @@
 #include <deal.II/base/function_parser.h>
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/point.h>
-#include <fourier_ssi/fourier/boundary_conditions.h>
-#include <fourier_ssi/fourier/harmonic.h>
+#include <fourier_ssi/input/boundary_conditions.h>
+#include <fourier_ssi/input/harmonic.h>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -30,35 +30,6 @@
 namespace FourierSSI
 {
   using namespace dealii;
-
-  /** The .prm subsection "Loads": loads as expressions of (r, z, theta). */
-  struct LoadParameters
-  {
-    static void
-    declare_parameters(ParameterHandler &prm);
-    void
-    parse_parameters(ParameterHandler &prm);
-
-    /** Surface tractions [kPa]: 'id: r=expr, z=expr, theta=expr; ...'. */
-    std::map<types::boundary_id, ComponentExpressions> traction;
-    /** Prescribed displacements [m]: 'id: u=expr, v=expr, w=expr; ...'. */
-    std::map<types::boundary_id, ComponentExpressions> displacement;
-    /** Relative amplitude below which a harmonic is not solved. */
-    double tolerance = 1e-6;
-    /** Largest harmonic considered. */
-    unsigned int max_harmonic = 32;
-
-    bool
-    any() const
-    {
-      return !traction.empty() || !displacement.empty();
-    }
-  };
-
-  /** A 3-component FunctionParser in the variables r, z, theta. */
-  std::shared_ptr<FunctionParser<3>>
-  make_theta_function(const ComponentExpressions &expressions,
-                      const std::string          &entry);
 
   /**
    * Fourier coefficients of a 3-component load at one (r, z) point for

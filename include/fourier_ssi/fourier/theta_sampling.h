@@ -19,7 +19,7 @@
 #ifndef fourier_ssi_theta_sampling_h
 #define fourier_ssi_theta_sampling_h
 
-#include <fourier_ssi/fourier/harmonic.h>
+#include <fourier_ssi/input/harmonic.h>
 #include <vector>
 
 namespace FourierSSI

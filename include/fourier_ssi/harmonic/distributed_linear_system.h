@@ -55,8 +55,8 @@ namespace FourierSSI
   class DistributedLinearSystem
   {
   public:
-    DistributedLinearSystem(const MPI_Comm      communicator,
-                            const LinearSolver &solver_parameters);
+    DistributedLinearSystem(const MPI_Comm                communicator,
+                            const LinearSolverParameters &solver_parameters);
 
     /**
      * Partition the cells, own the DoFs, count the interface pairs that
@@ -123,7 +123,7 @@ namespace FourierSSI
                  const TrilinosWrappers::MPI::Vector &b);
 
     const MPI_Comm                                     communicator;
-    const LinearSolver                                &parameters;
+    const LinearSolverParameters                      &parameters;
     const unsigned int                                 rank;
     const DoFHandler<2>                               *dof_handler = nullptr;
     const AffineConstraints<double>                   *constraints = nullptr;

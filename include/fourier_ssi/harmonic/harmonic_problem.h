@@ -23,7 +23,7 @@
 #include <fourier_ssi/fourier/load_decomposition.h>
 #include <fourier_ssi/harmonic/assembly_loop.h>
 #include <fourier_ssi/harmonic/distributed_linear_system.h>
-#include <fourier_ssi/harmonic/rigid_foundation.h>
+#include <fourier_ssi/harmonic/rigid_motion.h>
 #include <fourier_ssi/harmonic/stress_postprocessor.h>
 #include <fourier_ssi/input/parameters.h>
 #include <fourier_ssi/interfaces/interface_integrator.h>
@@ -68,6 +68,8 @@ namespace FourierSSI
   std::unique_ptr<FESystem<2>>
   make_displacement_element(const unsigned int degree);
 
+  class RigidFoundation;
+
   class HarmonicProblem
   {
   public:
@@ -83,6 +85,9 @@ namespace FourierSSI
                     const Triangulation<2>  &triangulation,
                     const LoadDecomposition *loads        = nullptr,
                     const MPI_Comm           communicator = MPI_COMM_SELF);
+
+    /** Out of line: the RigidFoundation it owns is only declared here. */
+    ~HarmonicProblem();
 
     /**
      * Threads for the cell loop of the assembly: the cores this harmonic

@@ -22,9 +22,9 @@
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/vector.h>
 #include <exception>
-#include <fourier_ssi/fourier/harmonic.h>
 #include <fourier_ssi/fourier/load_decomposition.h>
 #include <fourier_ssi/harmonic/harmonic_problem.h>
+#include <fourier_ssi/input/harmonic.h>
 #include <fourier_ssi/input/parameters.h>
 #include <functional>
 #include <memory>

@@ -11,9 +11,9 @@
 #include <cmath>
 #include <deal.II/base/point.h>
 #include <deal.II/numerics/data_postprocessor.h>
-#include <fourier_ssi/harmonic/bbar_projection.h>
 #include <fourier_ssi/fourier/harmonic_operator.h>
-#include <fourier_ssi/fourier/material.h>
+#include <fourier_ssi/harmonic/bbar_projection.h>
+#include <fourier_ssi/input/material.h>
 #include <vector>
 
 namespace FourierSSI

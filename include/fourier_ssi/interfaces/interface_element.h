@@ -48,7 +48,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/base/quadrature.h>
 #include <deal.II/lac/full_matrix.h>
-#include <fourier_ssi/fourier/harmonic.h>
+#include <fourier_ssi/input/harmonic.h>
 #include <ostream>
 #include <vector>
 

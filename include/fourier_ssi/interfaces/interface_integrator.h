@@ -15,8 +15,8 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
-#include <fourier_ssi/fourier/harmonic.h>
-#include <fourier_ssi/fourier/material.h>
+#include <fourier_ssi/input/harmonic.h>
+#include <fourier_ssi/input/material.h>
 #include <fourier_ssi/interfaces/interface_element.h>
 #include <fourier_ssi/interfaces/interface_pairing.h>
 #include <map>

@@ -7,7 +7,7 @@
 #define fourier_ssi_distributed_solve_h
 
 #include <deal.II/base/mpi.h>
-#include <fourier_ssi/linear_algebra/linear_solver.h>
+#include <fourier_ssi/input/linear_solver_parameters.h>
 
 namespace FourierSSI
 {
@@ -17,8 +17,8 @@ namespace FourierSSI
    * The solves, the thread count and the output all ask it.
    */
   bool
-  uses_distributed_solve(const LinearSolver &solver,
-                         const MPI_Comm      communicator);
+  uses_distributed_solve(const LinearSolverParameters &solver,
+                         const MPI_Comm                communicator);
 } // namespace FourierSSI
 
 #endif

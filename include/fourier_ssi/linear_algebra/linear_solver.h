@@ -7,11 +7,11 @@
 #ifndef fourier_ssi_linear_solver_h
 #define fourier_ssi_linear_solver_h
 
-#include <deal.II/base/parameter_handler.h>
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/sparse_matrix.h>
 #include <deal.II/lac/vector.h>
+#include <fourier_ssi/input/linear_solver_parameters.h>
 #include <string>
 
 namespace FourierSSI
@@ -25,22 +25,10 @@ namespace FourierSSI
     double       relative_residual = 0.; // ||b - A x|| / ||b||
   };
 
-  /** Linear solver/Method, parsed once. */
-  enum class SolverMethod
-  {
-    cholesky, // "direct": CHOLMOD supernodal Cholesky
-    lu,       // "direct-lu": UMFPACK LU
-    cg_amg    // "cg-amg": CG + Trilinos ML
-  };
-
   class LinearSolver
   {
   public:
-    static void
-    declare_parameters(ParameterHandler &prm);
-
-    void
-    parse_parameters(ParameterHandler &prm);
+    explicit LinearSolver(const LinearSolverParameters &parameters);
 
     /** Solve A x = b; x is the initial guess for iterative methods. */
     SolverReport
@@ -63,33 +51,8 @@ namespace FourierSSI
     [[noreturn]] static void
     fail_to_converge(const SolverControl::NoConvergence &e);
 
-    /** Method = direct or direct-lu. */
-    bool
-    is_direct() const
-    {
-      return method != SolverMethod::cg_amg;
-    }
-
-    /** The SparseDirect back end of a direct Method. */
-    std::string
-    direct_backend() const
-    {
-      return method == SolverMethod::lu ? "lu" : "cholesky";
-    }
-
-    /** The Method as written in the .prm (for the log). */
-    std::string
-    method_name() const;
-
-    SolverMethod method         = SolverMethod::cholesky;
-    double       tolerance      = 1e-10;
-    unsigned int max_iterations = 2000;
-    double       residual_check = 1e-6;
-    /**
-     * Distributed = always: the Trilinos path also on one rank (otherwise
-     * only on more than one; uses_distributed_solve() decides).
-     */
-    bool distributed_always = false;
+  private:
+    const LinearSolverParameters &parameters;
   };
 } // namespace FourierSSI
 

@@ -61,7 +61,7 @@ namespace FourierSSI
      * has none (its points are not known here).
      */
     std::vector<Point<2>>
-    singular_points(const MeshBuilder &mesh);
+    singular_points(const MeshParameters &mesh);
 
     /**
      * The singular points (singular_points()) that end an interface line

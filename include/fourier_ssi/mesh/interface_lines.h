@@ -9,33 +9,13 @@
 #ifndef fourier_ssi_interface_lines_h
 #define fourier_ssi_interface_lines_h
 
-#include <deal.II/base/types.h>
 #include <deal.II/grid/tria.h>
-#include <string>
+#include <fourier_ssi/input/mesh_parameters.h>
 #include <vector>
 
 namespace FourierSSI
 {
   using namespace dealii;
-
-  /**
-   * A straight interface line of the built-in rectangle, "id: r=1, z=-2..0"
-   * (vertical) or "id: z=-2, r=0..1" (horizontal): the mesh is split there
-   * with double nodes (see split_along_interface_lines()).
-   */
-  struct InterfaceLine
-  {
-    types::boundary_id boundary_id;
-    unsigned int       fixed_coordinate; // 0: r = value, 1: z = value
-    double             value, from, to;
-  };
-
-  /**
-   * Parse Mesh/Interface lines, "id: r=1, z=-2..0; id: z=-2, r=0..1" (empty:
-   * none). Throws a one-line message naming the entry.
-   */
-  std::vector<InterfaceLine>
-  parse_interface_lines(const std::string &text);
 
   /**
    * Double nodes for the built-in rectangle: duplicate the vertices along the

@@ -12,8 +12,9 @@
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/estimation/goal_estimator.h>
 #include <fourier_ssi/harmonic/harmonic_problem.h>
-#include <fourier_ssi/harmonic/rigid_foundation.h>
+#include <fourier_ssi/harmonic/rigid_motion.h>
 #include <fourier_ssi/input/parameters.h>
+#include <fourier_ssi/input/rigid_foundation_parameters.h>
 #include <fourier_ssi/linear_algebra/linear_solver.h>
 #include <fourier_ssi/postprocess/results_table.h>
 #include <sstream>

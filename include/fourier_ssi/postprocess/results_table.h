@@ -5,7 +5,7 @@
 #ifndef fourier_ssi_results_table_h
 #define fourier_ssi_results_table_h
 
-#include <fourier_ssi/fourier/harmonic.h>
+#include <fourier_ssi/input/harmonic.h>
 #include <string>
 #include <vector>
 

@@ -47,7 +47,7 @@
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
-#include <fourier_ssi/harmonic/rigid_foundation.h>
+#include <fourier_ssi/harmonic/rigid_motion.h>
 #include <fourier_ssi/input/parameters.h>
 #include <fourier_ssi/postprocess/results_table.h>
 #include <map>

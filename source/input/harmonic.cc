@@ -1,26 +1,36 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/numbers.h>
-#include <fourier_ssi/fourier/harmonic.h>
+#include <fourier_ssi/input/choice.h>
+#include <fourier_ssi/input/harmonic.h>
 
 namespace FourierSSI
 {
+  namespace
+  {
+    const Choices<Family> &
+    families()
+    {
+      static const Choices<Family> choices(
+        {{"symmetric", Family::symmetric},
+         {"antisymmetric", Family::antisymmetric}},
+        {{"sym", Family::symmetric}, {"anti", Family::antisymmetric}});
+      return choices;
+    }
+  } // namespace
+
   std::string
   to_string(const Family family)
   {
-    return family == Family::symmetric ? "symmetric" : "antisymmetric";
+    return families().name_of(family);
   }
 
   Family
   family_from_string(const std::string &name)
   {
-    if (name == "symmetric" || name == "sym")
-      return Family::symmetric;
-    if (name == "antisymmetric" || name == "anti")
-      return Family::antisymmetric;
-    AssertThrow(false,
-                dealii::ExcMessage("unknown Fourier family '" + name +
-                                   "' (expected symmetric or antisymmetric)"));
-    return Family::symmetric;
+    const std::optional<Family> family = families().find(name);
+    AssertThrow(family.has_value(),
+                dealii::ExcMessage(families().unknown("Fourier family", name)));
+    return *family;
   }
 
   double

@@ -66,6 +66,11 @@ namespace FourierSSI
                     const std::map<std::string, double> &constants,
                     const std::string                   &entry);
 
+  /** A 3-component FunctionParser in the variables r, z, theta. */
+  std::shared_ptr<FunctionParser<3>>
+  make_theta_function(const ComponentExpressions &expressions,
+                      const std::string          &entry);
+
   class BoundaryConditions
   {
   public:

@@ -1,6 +1,6 @@
 #include <deal.II/base/utilities.h>
 #include <deal.II/lac/vector.h>
-#include <fourier_ssi/fourier/boundary_conditions.h>
+#include <fourier_ssi/input/boundary_conditions.h>
 #include <fourier_ssi/input/prm_values.h>
 #include <iostream>
 #include <mutex>
@@ -223,6 +223,16 @@ namespace FourierSSI
                        const std::string &,
                        const std::map<std::string, double> &,
                        const std::string &);
+
+  std::shared_ptr<FunctionParser<3>>
+  make_theta_function(const ComponentExpressions &expressions,
+                      const std::string          &entry)
+  {
+    auto function = std::make_shared<FunctionParser<3>>(3);
+    initialize_parser(
+      *function, expressions, "r,z,theta", {{"pi", numbers::PI}}, entry);
+    return function;
+  }
 
   std::unique_ptr<FunctionParser<2>>
   BoundaryConditions::make_function(const ComponentExpressions &expressions,

@@ -1,7 +1,7 @@
 #include <algorithm>
 #include <cmath>
 #include <deal.II/base/utilities.h>
-#include <fourier_ssi/fourier/material.h>
+#include <fourier_ssi/input/material.h>
 #include <fourier_ssi/input/prm_values.h>
 #include <optional>
 #include <set>

@@ -25,7 +25,7 @@ namespace FourierSSI
 {
   using namespace dealii;
 
-  class MeshBuilder;
+  struct MeshParameters;
 
   /** One stratum: material id and its depth interval [m] below the surface. */
   struct SoilLayer
@@ -54,14 +54,15 @@ namespace FourierSSI
    * breakpoint, and any stratum with Mesh/Type = gmsh.
    */
   std::vector<std::pair<types::material_id, BoundingBox<2>>>
-  soil_layer_regions(const MeshBuilder &mesh, const double surface_elevation);
+  soil_layer_regions(const MeshParameters &mesh,
+                     const double          surface_elevation);
 
   /**
    * Put the strata in front of mesh.material_regions (later boxes win, so
    * the regions given by the user override the strata).
    */
   void
-  paint_soil_layers(MeshBuilder &mesh, const double surface_elevation);
+  paint_soil_layers(MeshParameters &mesh, const double surface_elevation);
 } // namespace FourierSSI
 
 #endif

@@ -1,9 +1,9 @@
 #include <algorithm>
 #include <cmath>
 #include <deal.II/base/utilities.h>
-#include <fourier_ssi/fourier/boundary_conditions.h>
-#include <fourier_ssi/mesh/mesh_builder.h>
-#include <fourier_ssi/mesh/soil_layers.h>
+#include <fourier_ssi/input/boundary_conditions.h>
+#include <fourier_ssi/input/mesh_parameters.h>
+#include <fourier_ssi/input/soil_layers.h>
 #include <sstream>
 
 namespace FourierSSI
@@ -122,7 +122,7 @@ namespace FourierSSI
   }
 
   std::vector<std::pair<types::material_id, BoundingBox<2>>>
-  soil_layer_regions(const MeshBuilder &mesh, const double surface_elevation)
+  soil_layer_regions(const MeshParameters &mesh, const double surface_elevation)
   {
     std::vector<std::pair<types::material_id, BoundingBox<2>>> regions;
     if (mesh.soil_layers.empty())
@@ -151,7 +151,7 @@ namespace FourierSSI
   }
 
   void
-  paint_soil_layers(MeshBuilder &mesh, const double surface_elevation)
+  paint_soil_layers(MeshParameters &mesh, const double surface_elevation)
   {
     auto strata = soil_layer_regions(mesh, surface_elevation);
     mesh.material_regions.insert(mesh.material_regions.begin(),

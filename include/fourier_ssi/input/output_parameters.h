@@ -1,0 +1,92 @@
+/**
+ * Subsection "Output" of the .prm file: where the results go, which files
+ * are written (VTU, interface tractions, 3D lines and the revolved mesh) and
+ * the soil-reaction curves.
+ */
+#ifndef fourier_ssi_output_parameters_h
+#define fourier_ssi_output_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/point.h>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace FourierSSI
+{
+  using namespace dealii;
+
+  /** A straight line in the (r, z) plane sampled at n_points points. */
+  struct OutputLine
+  {
+    Point<2>     start, end;
+    unsigned int n_points = 2;
+  };
+
+  struct OutputParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    std::string directory    = "output";
+    std::string results_file = "results.csv";
+    bool        write_vtu    = true;
+    /** Stress amplitudes in the per-harmonic VTU. */
+    bool write_stresses = true;
+    /** Relative displacement and traction per interface node pair (CSV). */
+    bool write_interface_tractions = true;
+    /** 3D reconstruction along lines at the angles theta_degrees. */
+    std::vector<OutputLine> lines;
+    /**
+     * Limit of Lines 3D points per line: a typo such as 1e8 points would
+     * otherwise write gigabytes of CSV (each point is a search in the mesh
+     * and one row per angle).
+     */
+    static constexpr unsigned int max_points_per_line = 100000;
+    std::vector<double>           theta_degrees;
+    /** The mesh revolved about the axis with the 3D displacement. */
+    bool         write_3d_vtu    = false;
+    unsigned int theta_divisions = 36;
+    /**
+     * Soil-reaction curves (Soil reaction depths): the depths [m below
+     * the pile's head], or, if soil_reaction_auto > 0, that many evenly
+     * spaced; none if both are empty (doc/soil-reaction-curves.md).
+     */
+    std::vector<double> soil_reaction_depths;
+    unsigned int        soil_reaction_auto = 0;
+
+    bool
+    soil_reaction_curves() const
+    {
+      return soil_reaction_auto > 0 || !soil_reaction_depths.empty();
+    }
+
+    /** Read the entry Soil reaction depths; one line if it is malformed. */
+    void
+    parse_soil_reaction_depths(const std::string &text);
+
+    /**
+     * Soil reaction pile: the pile's material id, or -1 (auto) for the
+     * Rigid foundation's tied material (doc/soil-reaction-curves.md 8).
+     */
+    int soil_reaction_pile = -1;
+
+    /** Read the entry Soil reaction pile; one line if it is malformed. */
+    void
+    parse_soil_reaction_pile(const std::string &text);
+
+    /**
+     * Only Output/Directory and Output/Results file of a parameter file,
+     * read before (and whatever) the rest of the file is refused, by a
+     * light scan of its lines that also reads files the parser refuses
+     * (broken subsections, NUL bytes, UTF-16): every other entry is
+     * skipped and no value is checked. Empty if the file cannot be read.
+     */
+    static std::optional<OutputParameters>
+    read_folder_of(const std::string &prm_file);
+  };
+} // namespace FourierSSI
+
+#endif

@@ -1,0 +1,77 @@
+/**
+ * Subsection "Soil plasticity" of the .prm file: the perfectly plastic law
+ * of each material id (Tresca with s_u(depth), or Mohr-Coulomb with c',
+ * phi', psi) and what the coupled iteration re-solves with. The return
+ * mapping of these laws is SoilReturnMapping (coupled/soil_law.h).
+ */
+#ifndef fourier_ssi_soil_plasticity_parameters_h
+#define fourier_ssi_soil_plasticity_parameters_h
+
+#include <deal.II/base/parameter_handler.h>
+#include <deal.II/base/types.h>
+#include <map>
+#include <string>
+
+namespace FourierSSI
+{
+  using namespace dealii;
+
+  /** The data of one plastic law, as Soil plasticity/Laws gives it. */
+  struct SoilLaw
+  {
+    enum class Kind
+    {
+      tresca,
+      mohr_coulomb
+    };
+    Kind kind = Kind::tresca;
+    /** Tresca: s_u = su0 + su_gradient depth [kPa, kPa/m]. */
+    double su0         = 0.;
+    double su_gradient = 0.;
+    /** Mohr-Coulomb: c' [kPa], phi', psi [rad]. */
+    double cohesion = 0., friction = 0., dilation = 0.;
+
+    /** Undrained strength s_u at a depth [kPa] (Tresca). */
+    double
+    undrained_strength(const double depth) const
+    {
+      return su0 + su_gradient * depth;
+    }
+  };
+
+  /**
+   * Subsection "Soil plasticity": the plastic laws per material id; a
+   * material without a law stays linear elastic.
+   */
+  struct SoilPlasticityParameters
+  {
+    static void
+    declare_parameters(ParameterHandler &prm);
+    void
+    parse_parameters(ParameterHandler &prm);
+
+    /**
+     * "id: tresca, su=..., k=...; id: mohr-coulomb, c=..., phi=...,
+     * psi=..."; throws one line naming the entry and the offending text.
+     */
+    void
+    parse_law_list(const std::string &text);
+
+    bool
+    any() const
+    {
+      return !laws.empty();
+    }
+
+    std::map<types::material_id, SoilLaw> laws;
+
+    /**
+     * What the coupled iteration re-solves with (doc/soil-plasticity.md
+     * section 3): the kept elastic factorizations only (initial stiffness),
+     * or the tangent of all harmonics coupled (Newton; coupled_tangent.h).
+     */
+    bool tangent = true;
+  };
+} // namespace FourierSSI
+
+#endif
