@@ -16,6 +16,16 @@ namespace FourierSSI
     return u;
   }
 
+  Vector<double>
+  LoadPathStates::last_step_increment(const unsigned int i) const
+  {
+    Vector<double> du = total_displacement(committed, i);
+    if (i < before_last.correction_solution.size())
+      du -= total_displacement(before_last, i);
+    harmonic_set.broadcast_from_owner(i, du.begin(), du.size());
+    return du;
+  }
+
   std::array<double, 6>
   LoadPathStates::applied_loads(const double load_factor,
                                 const double held_fraction) const

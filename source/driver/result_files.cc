@@ -137,6 +137,9 @@ namespace FourierSSI
       "load-displacement-incomplete.csv",
       "interface-state.csv",
       "interface-state-3d.vtu",
+      // Refinement cycles and Target accuracy of a coupled run: each mesh
+      // with the indicator that refined it.
+      "mesh-cycle{cycle}.vtu",
       // Output/Soil reaction depths: the PISA curves of a plastic run.
       "soil-reaction-curves.csv",
       // Rigid foundation/Stiffness matrix: the 6x6 matrix, as CSV and as

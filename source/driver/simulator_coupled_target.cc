@@ -83,6 +83,28 @@ namespace FourierSSI
       return values;
     }
 
+    /**
+     * How the harmonic part of a target's bar was found, or why it was
+     * not: the words of the error line.
+     */
+    std::string
+    harmonic_error_source(const std::vector<Harmonic> &harmonics,
+                          const bool                   estimated,
+                          const bool                   growth)
+    {
+      if (highest_harmonic(harmonics) == 0)
+        return "none (n = 0 only: an axisymmetric problem)";
+      if (estimated)
+        return "from n_max halved on the coarsest mesh";
+      if (growth)
+        return "NOT estimated (grown by the interface tractions)";
+      if (lateral_truncation_unseen(harmonics))
+        return "NOT estimated (n_max = 2: n <= 1 and n <= 2 both lack n = 3, "
+               "the first correction of a lateral response; list n <= 3 or "
+               "more)";
+      return "NOT estimated (n_max = 1 cannot be halved)";
+    }
+
     std::string
     number(const double value)
     {
@@ -273,10 +295,7 @@ namespace FourierSSI
     // together are what Maximum DoFs bounds here.
     const double     dofs = coupled_dofs();
     Triangulation<2> next;
-    DiscretizationDesign::build_plastic_member(parameters,
-                                               member,
-                                               interface_ids,
-                                               next);
+    next_coupled_mesh(run, member, next);
     const double more = cell_growth(next);
     if (more * dofs > parameters.adaptivity.maximum_dofs)
       {
@@ -312,14 +331,7 @@ namespace FourierSSI
                     more * dofs,
                     next_member_time(progress.member_times, more),
                     log);
-    run.release();
-    reconstruction = FieldReconstruction();
-    harmonic_set.reset();
-    outcomes.clear();
-    DiscretizationDesign::build_plastic_member(parameters,
-                                               member,
-                                               interface_ids,
-                                               *triangulation);
+    adopt_coupled_mesh(run, next);
     return true;
   }
 
@@ -397,6 +409,7 @@ namespace FourierSSI
     Timer                 run_timer;
     double                last_member_time = 0.;
     CoupledTargetProgress progress;
+    int                   last_solved = 0;
     for (int member = 0;; ++member)
       {
         if (member > 0 && !next_coupled_member(run, member, progress, log))
@@ -410,6 +423,7 @@ namespace FourierSSI
         if (member == 0 && !growth)
           solve_fewer_harmonics(run, progress.known, log);
         progress.goal = run.solve(log);
+        last_solved   = member;
         progress.mesh_values.push_back(progress.goal.value);
         last_member_time = member_timer.wall_time();
         progress.member_times.push_back(last_member_time);
@@ -435,6 +449,7 @@ namespace FourierSSI
           break;
       }
     estimate_wall_time = run_timer.wall_time() - last_member_time;
+    write_coupled_mesh(last_solved, Vector<float>());
     // Not estimated: NaN; n = 0 alone is axisymmetric, no truncation.
     const double harmonics =
       progress.known.size() >= 2            ? progress.harmonic_error :
@@ -445,7 +460,9 @@ namespace FourierSSI
                          progress.mesh_values.size(),
                          progress.mesh_error,
                          harmonics,
-                         growth,
+                         harmonic_error_source(plan.harmonics,
+                                               std::isfinite(harmonics),
+                                               growth),
                          log);
     run.write_files(log);
   }
@@ -456,7 +473,7 @@ namespace FourierSSI
                                   const unsigned int n_meshes,
                                   const double       mesh_error,
                                   const double       harmonic_error,
-                                  const bool         growth,
+                                  const std::string &harmonic_source,
                                   std::ostream      &log)
   {
     const double target = parameters.discretization.target_accuracy;
@@ -468,21 +485,11 @@ namespace FourierSSI
     const double total =
       n_meshes >= 2 ? (mesh_error + harmonics + goal.plateau_error) / scale :
                       nan;
-    const bool         reached = target_not_reached.empty() && total <= target;
-    const unsigned int n_max   = highest_harmonic(plan.harmonics);
+    const bool reached = target_not_reached.empty() && total <= target;
     run.add_rows(log);
     log << "error estimate of the " << label(run.goal_prefix, goal.name)
         << " (relative; the mesh from " << n_meshes
-        << " nested meshes, geometric tail; the harmonics "
-        << (n_max == 0 ? "none (n = 0 only: an axisymmetric problem)" :
-            std::isfinite(harmonic_error) ?
-                         "from n_max halved on the coarsest mesh" :
-            growth ? "NOT estimated (grown by the interface tractions)" :
-            lateral_truncation_unseen(plan.harmonics) ?
-                     "NOT estimated (n_max = 2: n <= 1 and n <= 2 both lack "
-                     "n = 3, the first correction of a lateral response; "
-                     "list n <= 3 or more)" :
-                     "NOT estimated (n_max = 1 cannot be halved)")
+        << " nested meshes, geometric tail; the harmonics " << harmonic_source
         << (run.plateau ? "; the plateau" : "") << "):\n    " << goal.name
         << " = " << std::setprecision(7) << goal.value << " " << goal.unit
         << " \u00b1 " << std::setprecision(2) << total << " (rel): mesh "
@@ -515,9 +522,13 @@ namespace FourierSSI
     if (run.plateau)
       results.add(
         name + "_error_plateau", any, row, goal.plateau_error / scale, "-");
-    results.add(name + "_converged", any, row, reached ? 1. : 0., "-");
-    results.add("target_accuracy", any, row, target, "-");
-    results.add("target_accuracy_reached", any, row, reached ? 1. : 0., "-");
+    if (target > 0.) // Refinement cycles have none
+      {
+        results.add(name + "_converged", any, row, reached ? 1. : 0., "-");
+        results.add("target_accuracy", any, row, target, "-");
+        results.add(
+          "target_accuracy_reached", any, row, reached ? 1. : 0., "-");
+      }
     results.add("time_error_estimate", any, row, estimate_wall_time, "s");
   }
 

@@ -41,9 +41,11 @@ namespace FourierSSI
     run.write_files = [&](std::ostream &out) {
       write_interface_files(*solver, out);
     };
-    if (parameters.discretization.target_accuracy > 0.)
+    run.last_solver = [&]() -> const CoupledSolver & { return *solver; };
+    if (parameters.discretization.target_accuracy > 0. ||
+        parameters.discretization.refinement_cycles > 1)
       {
-        solve_coupled_to_target(log, run);
+        solve_coupled_on_meshes(log, run);
         return;
       }
     solver = solve_coupled_curve(log, true);

@@ -21,6 +21,14 @@ namespace FourierSSI
   {
     const std::string entry = "Soil plasticity";
 
+    /** Target accuracy or Refinement cycles > 1: more than one mesh. */
+    bool
+    on_nested_meshes(const AllParameters &parameters)
+    {
+      return parameters.discretization.target_accuracy > 0. ||
+             parameters.discretization.refinement_cycles > 1;
+    }
+
     /** What the plastic-soil path does not do yet: one line each. */
     void
     check_supported(const AllParameters &parameters)
@@ -44,11 +52,11 @@ namespace FourierSSI
                   ExcMessage(entry + ": not yet: Output/Lines 3D and Write "
                                      "3d vtu with plastic soil or a swipe"));
       AssertThrow(!parameters.output.soil_reaction_curves() ||
-                    parameters.discretization.target_accuracy == 0.,
+                    !on_nested_meshes(parameters),
                   ExcMessage("Output/Soil reaction depths: not yet with "
-                             "Discretization/Target accuracy (the curves of "
-                             "one mesh); set Refinement cycles = 1 and no "
-                             "target"));
+                             "Discretization/Target accuracy or Refinement "
+                             "cycles > 1 (the curves of one mesh); set "
+                             "Refinement cycles = 1 and no target"));
     }
 
     /** The plastic state of every converged step, after the common rows. */
@@ -239,9 +247,9 @@ namespace FourierSSI
   Simulator::solve_plastic_soil(std::ostream &log)
   {
     check_supported(parameters);
-    if (parameters.discretization.target_accuracy > 0.)
+    if (on_nested_meshes(parameters))
       {
-        solve_plastic_soil_to_target(log);
+        solve_plastic_soil_on_meshes(log);
         return;
       }
     const std::unique_ptr<CoupledSolver> solver =
@@ -375,7 +383,7 @@ namespace FourierSSI
   }
 
   void
-  Simulator::solve_plastic_soil_to_target(std::ostream &log)
+  Simulator::solve_plastic_soil_on_meshes(std::ostream &log)
   {
     // Displacement control aims at the capacity; load control at the work
     // of the loads at the end of the path (the scene's loads are reached:
@@ -406,7 +414,8 @@ namespace FourierSSI
     run.write_files = [&](std::ostream &out) {
       write_plastic_files(*solver, out);
     };
-    solve_coupled_to_target(log, run);
+    run.last_solver = [&]() -> const CoupledSolver & { return *solver; };
+    solve_coupled_on_meshes(log, run);
   }
 
 } // namespace FourierSSI

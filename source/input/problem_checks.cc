@@ -190,11 +190,11 @@ namespace FourierSSI
                                const std::string   &with)
   {
     const std::string entry = "Load path";
-    AssertThrow(parameters.discretization.refinement_cycles == 1,
-                ExcMessage(entry +
-                           ": not yet: Discretization/Refinement "
-                           "cycles > 1 with " +
-                           with));
+    // The goal-oriented indicator's dual problem is the linear one.
+    AssertThrow(parameters.adaptivity.strategy != RefinementStrategy::goal,
+                ExcMessage("Adaptivity/Strategy = goal: not yet with " + with +
+                           " (its dual problem is linear); kelly refines "
+                           "where the mechanism is, global uniformly"));
     // Under mpirun the harmonics are distributed over the ranks (each
     // harmonic's system serial); one harmonic's system over several ranks
     // is the other kind of distribution.

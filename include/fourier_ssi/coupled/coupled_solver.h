@@ -84,6 +84,13 @@ namespace FourierSSI
       return states.solution(i);
     }
 
+    /** LoadPathStates::last_step_increment (a collective under MPI). */
+    Vector<double>
+    last_step_increment(const unsigned int i) const
+    {
+      return states.last_step_increment(i);
+    }
+
     /** The applied rigid-foundation loads (LoadPathStates::applied_loads). */
     std::array<double, 6>
     applied_loads(const double load_factor,

@@ -44,6 +44,15 @@ namespace FourierSSI
     solution(const unsigned int i) const;
 
     /**
+     * The last converged step's displacement increment of harmonic i, the
+     * last state less the one before it (the whole field where harmonic i
+     * was added by the last step): the mechanism at the end of the path.
+     * A collective under MPI, as solution().
+     */
+    Vector<double>
+    last_step_increment(const unsigned int i) const;
+
+    /**
      * The applied rigid-foundation loads (F_x, F_y, F_z, M_x, M_y, M_z) at
      * load factor lambda with the fraction held_fraction of the held loads,
      * M about the origin (H at the reference elevation).

@@ -275,13 +275,14 @@ namespace FourierSSI
     write_plastic_files(const CoupledSolver &solver, std::ostream &log);
 
     /**
-     * Target accuracy with plastic soil: the capacity on the scene's mesh
-     * refined globally until its estimated error (mesh + harmonic
-     * truncation + plateau) is below the target (doc/soil-plasticity.md
-     * section 8c).
+     * Plastic soil on a sequence of nested meshes: Target accuracy (the
+     * capacity on the scene's mesh refined until its estimated error, mesh
+     * + harmonic truncation + plateau, is below the target;
+     * doc/soil-plasticity.md section 8c) or Refinement cycles > 1 (a
+     * convergence study of the mesh).
      */
     void
-    solve_plastic_soil_to_target(std::ostream &log);
+    solve_plastic_soil_on_meshes(std::ostream &log);
 
     /** The goal value of a coupled load path on one mesh. */
     struct CoupledGoal
@@ -305,6 +306,8 @@ namespace FourierSSI
       std::function<CoupledGoal(std::ostream &)> solve;
       std::function<void()>                      release;
       std::function<void(std::ostream &)>        add_rows, write_files;
+      /** The solver of the last solve(): where the next mesh refines. */
+      std::function<const CoupledSolver &()> last_solver;
       /** Row name of the goal: "capacity_" or "end_load_". */
       std::string goal_prefix;
       /** The goal is a capacity: its plateau error counts. */
@@ -317,6 +320,47 @@ namespace FourierSSI
      */
     void
     solve_coupled_to_target(std::ostream &log, CoupledCurveRun &run);
+
+    /**
+     * Target accuracy if one is set (the Refinement cycles it replaces
+     * said so in the log), else the Refinement cycles.
+     */
+    void
+    solve_coupled_on_meshes(std::ostream &log, CoupledCurveRun &run);
+
+    /**
+     * Discretization/Refinement cycles > 1 on a coupled scene: the path on
+     * the scene's mesh, then on each refinement of it (next_coupled_mesh),
+     * the goal printed per cycle and its error from the cycles' geometric
+     * tail; the last cycle's rows and files.
+     */
+    void
+    solve_coupled_cycles(std::ostream &log, CoupledCurveRun &run);
+
+    /**
+     * The mesh after the current one, aside in `next`: with Adaptivity/
+     * Strategy = kelly the current mesh with the Refine fraction of the
+     * mechanism's indicator refined (mechanism_indicator.h), else the
+     * uniform member `member` of the scene's mesh (build_plastic_member).
+     * The current mesh is written (mesh-cycle<member - 1>.vtu) with the
+     * indicator that refined it.
+     */
+    void
+    next_coupled_mesh(const CoupledCurveRun &run,
+                      const unsigned int     member,
+                      Triangulation<2>      &next);
+
+    /** The solver and the set released, `next` the current mesh. */
+    void
+    adopt_coupled_mesh(CoupledCurveRun &run, const Triangulation<2> &next);
+
+    /**
+     * mesh-cycle<cycle>.vtu: the current mesh's cells with their material
+     * id, refinement level and the indicator given (empty: zero).
+     */
+    void
+    write_coupled_mesh(const unsigned int   cycle,
+                       const Vector<float> &indicator);
 
     /** What the coupled target loop knows after each member. */
     struct CoupledTargetProgress
@@ -403,14 +447,18 @@ namespace FourierSSI
                      const double     truncation,
                      std::ostream    &log);
 
-    /** The goal's error bar: log line and rows (NaN: not estimated). */
+    /**
+     * The goal's error bar: log line and rows (NaN: not estimated;
+     * `harmonic_source` says how the harmonic part was found, or why not).
+     * The target's rows only with a target.
+     */
     void
     report_coupled_error(CoupledCurveRun   &run,
                          const CoupledGoal &goal,
                          const unsigned int n_meshes,
                          const double       mesh_error,
                          const double       harmonic_error,
-                         const bool         growth,
+                         const std::string &harmonic_source,
                          std::ostream      &log);
 
     /** Its rows and the last step as every harmonic's solution. */

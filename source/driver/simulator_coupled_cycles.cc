@@ -1,0 +1,160 @@
+// Nested meshes for the coupled scenes (plastic soil, coulomb interfaces):
+// Discretization/Refinement cycles > 1 as a convergence study of the mesh,
+// and the next mesh of both the study and Discretization/Target accuracy,
+// refined where the last path's mechanism is (Adaptivity/Strategy = kelly)
+// or uniformly (doc/accuracy-vs-time.md, "Coupled scenes").
+#include <cmath>
+#include <deal.II/base/timer.h>
+#include <deal.II/numerics/data_out.h>
+#include <fourier_ssi/coupled/coupled_solver.h>
+#include <fourier_ssi/coupled/mechanism_indicator.h>
+#include <fourier_ssi/driver/simulator.h>
+#include <fourier_ssi/input/atomic_file.h>
+#include <fourier_ssi/mesh/discretization_design.h>
+#include <iomanip>
+#include <limits>
+
+namespace FourierSSI
+{
+  void
+  Simulator::next_coupled_mesh(const CoupledCurveRun &run,
+                               const unsigned int     member,
+                               Triangulation<2>      &next)
+  {
+    next.clear();
+    if (parameters.adaptivity.strategy != RefinementStrategy::kelly)
+      {
+        write_coupled_mesh(member - 1, Vector<float>());
+        DiscretizationDesign::build_plastic_member(parameters,
+                                                   member,
+                                                   interface_ids,
+                                                   next);
+        return;
+      }
+    const Vector<float> indicator =
+      mechanism_indicators(*harmonic_set, run.last_solver());
+    write_coupled_mesh(member - 1, indicator);
+    next.copy_triangulation(*triangulation);
+    RefinementIndicator refinement(next);
+    refinement.add(indicator);
+    refinement.refine(next,
+                      parameters.adaptivity.refine_fraction,
+                      interface_ids);
+  }
+
+  void
+  Simulator::adopt_coupled_mesh(CoupledCurveRun        &run,
+                                const Triangulation<2> &next)
+  {
+    // The fields on the current mesh go before it changes under their DoF
+    // handlers.
+    run.release();
+    reconstruction = FieldReconstruction();
+    harmonic_set.reset();
+    outcomes.clear();
+    triangulation->clear();
+    triangulation->copy_triangulation(next);
+  }
+
+  void
+  Simulator::write_coupled_mesh(const unsigned int   cycle,
+                                const Vector<float> &indicator)
+  {
+    if (!writes_csv() || !parameters.output.write_vtu)
+      return;
+    const unsigned int n_cells = triangulation->n_active_cells();
+    Vector<float>      material(n_cells), level(n_cells);
+    for (const auto &cell : triangulation->active_cell_iterators())
+      {
+        material(cell->active_cell_index()) = cell->material_id();
+        level(cell->active_cell_index())    = cell->level();
+      }
+    const Vector<float> refined_by =
+      indicator.size() == n_cells ? indicator : Vector<float>(n_cells);
+    DataOut<2> data_out;
+    data_out.attach_triangulation(*triangulation);
+    data_out.add_data_vector(material, "material_id");
+    data_out.add_data_vector(level, "refinement_level");
+    data_out.add_data_vector(refined_by, "mechanism_indicator");
+    data_out.build_patches();
+    const std::string name = result_files.claim(ResultFiles::fill(
+      "mesh-cycle{cycle}.vtu", {0, Family::symmetric}, cycle));
+    AtomicFile        file(name);
+    data_out.write_vtu(file.stream());
+    file.commit();
+  }
+
+  void
+  Simulator::solve_coupled_on_meshes(std::ostream &log, CoupledCurveRun &run)
+  {
+    const unsigned int n_cycles = parameters.discretization.refinement_cycles;
+    if (parameters.discretization.target_accuracy == 0.)
+      {
+        solve_coupled_cycles(log, run);
+        return;
+      }
+    if (n_cycles != 1)
+      log << "Discretization/Refinement cycles = " << n_cycles
+          << ": replaced by the nested meshes of Discretization/Target "
+             "accuracy"
+          << std::endl;
+    solve_coupled_to_target(log, run);
+  }
+
+  void
+  Simulator::solve_coupled_cycles(std::ostream &log, CoupledCurveRun &run)
+  {
+    const unsigned int  n_cycles = parameters.discretization.refinement_cycles;
+    const Harmonic      any{0, Family::symmetric};
+    std::vector<double> values;
+    CoupledGoal         goal;
+    Timer               run_timer;
+    double              last_cycle_time = 0.;
+    for (unsigned int cycle = 0; cycle < n_cycles; ++cycle)
+      {
+        if (cycle > 0)
+          {
+            Triangulation<2> next;
+            next_coupled_mesh(run, cycle, next);
+            adopt_coupled_mesh(run, next);
+          }
+        Timer cycle_timer;
+        goal = run.solve(log);
+        values.push_back(goal.value);
+        last_cycle_time = cycle_timer.wall_time();
+        log << "cycle " << cycle << ": " << triangulation->n_active_cells()
+            << " cells, " << static_cast<long long>(coupled_dofs())
+            << " DoFs over all harmonics, " << run.goal_prefix << goal.name
+            << " = " << std::setprecision(7) << goal.value << " " << goal.unit
+            << std::setprecision(6) << ", " << std::setprecision(3)
+            << last_cycle_time << std::setprecision(6) << " s" << std::endl;
+        results.add("cycle_" + run.goal_prefix + goal.name,
+                    any,
+                    cycle,
+                    goal.value,
+                    goal.unit);
+        results.add(
+          "cycle_cells", any, cycle, triangulation->n_active_cells(), "-");
+        results.add("cycle_dofs", any, cycle, coupled_dofs(), "-");
+        results.add("cycle_wall_time", any, cycle, last_cycle_time, "s");
+      }
+    write_coupled_mesh(n_cycles - 1, Vector<float>());
+    estimate_wall_time = run_timer.wall_time() - last_cycle_time;
+    const double mesh_error =
+      estimate_sequence_error(values, one_halving_ratio).absolute;
+    const bool axisymmetric = highest_harmonic(plan.harmonics) == 0;
+    report_coupled_error(run,
+                         goal,
+                         values.size(),
+                         mesh_error,
+                         axisymmetric ?
+                           0. :
+                           std::numeric_limits<double>::quiet_NaN(),
+                         axisymmetric ?
+                           "none (n = 0 only: an axisymmetric problem)" :
+                           "NOT estimated (Refinement cycles refine the mesh; "
+                           "Discretization/Target accuracy also halves n_max)",
+                         log);
+    run.write_files(log);
+  }
+} // namespace FourierSSI
