@@ -207,7 +207,10 @@ namespace FourierSSI
          check_scene_before_solve(parameters, *triangulation, plan))
       log << line << std::endl;
     goal_estimator.reset();
-    if (parameters.adaptivity.strategy == RefinementStrategy::goal)
+    // A coupled path refuses the goal strategy (check_coupled_path_supported)
+    // before it would need the linear goals' stiffness coefficients.
+    if (parameters.adaptivity.strategy == RefinementStrategy::goal &&
+        !parameters.coupled())
       goal_estimator =
         std::make_unique<GoalEstimator>(parameters, plan.harmonics);
   }

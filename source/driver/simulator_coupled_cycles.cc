@@ -8,6 +8,7 @@
 #include <deal.II/numerics/data_out.h>
 #include <fourier_ssi/coupled/coupled_solver.h>
 #include <fourier_ssi/coupled/mechanism_indicator.h>
+#include <fourier_ssi/driver/memory_estimate.h>
 #include <fourier_ssi/driver/simulator.h>
 #include <fourier_ssi/input/atomic_file.h>
 #include <fourier_ssi/mesh/discretization_design.h>
@@ -37,9 +38,48 @@ namespace FourierSSI
     next.copy_triangulation(*triangulation);
     RefinementIndicator refinement(next);
     refinement.add(indicator);
+    // A one-cell slice stays one cell in z, as its uniform members do.
     refinement.refine(next,
                       parameters.adaptivity.refine_fraction,
-                      interface_ids);
+                      interface_ids,
+                      DiscretizationDesign::is_one_cell_slice(parameters.mesh) ?
+                        RefinementCase<2>::cut_x :
+                        RefinementCase<2>::isotropic_refinement);
+  }
+
+  double
+  Simulator::coupled_mesh_error(const std::vector<double> &values) const
+  {
+    const bool adaptive =
+      parameters.adaptivity.strategy == RefinementStrategy::kelly;
+    return estimate_sequence_error(values,
+                                   one_halving_ratio,
+                                   adaptive ? adaptive_member_ratio :
+                                              minimum_ratio)
+      .absolute;
+  }
+
+  void
+  Simulator::check_next_cycle_fits(const unsigned int      cycle,
+                                   const Triangulation<2> &next) const
+  {
+    // The coupled tangent is one LU over all harmonics: their DoFs
+    // together are what Maximum DoFs bounds.
+    const double dofs = cell_growth(next) * coupled_dofs();
+    AssertThrow(dofs <= parameters.adaptivity.maximum_dofs,
+                ExcMessage("Discretization/Refinement cycles: the mesh of "
+                           "cycle " +
+                           std::to_string(cycle) + " (" +
+                           std::to_string(next.n_active_cells()) +
+                           " cells, about " +
+                           std::to_string(static_cast<long long>(dofs)) +
+                           " DoFs over all harmonics) exceeds Adaptivity/"
+                           "Maximum DoFs = " +
+                           std::to_string(static_cast<long long>(
+                             parameters.adaptivity.maximum_dofs)) +
+                           "; ask fewer cycles or a smaller Refine fraction"));
+    check_memory_fits(estimate_run_memory(parameters, next, plan),
+                      available_memory_on_all_ranks(communicator));
   }
 
   void
@@ -102,10 +142,35 @@ namespace FourierSSI
   }
 
   void
+  Simulator::record_coupled_cycle(const unsigned int     cycle,
+                                  const CoupledCurveRun &run,
+                                  const CoupledGoal     &goal,
+                                  const double           wall_time,
+                                  std::ostream          &log)
+  {
+    const Harmonic any{0, Family::symmetric};
+    const double   dofs = coupled_dofs();
+    log << "cycle " << cycle << ": " << triangulation->n_active_cells()
+        << " cells, " << static_cast<long long>(dofs)
+        << " DoFs over all harmonics, " << run.goal_prefix << goal.name << " = "
+        << std::setprecision(7) << goal.value << " " << goal.unit << ", "
+        << std::setprecision(3) << wall_time << std::setprecision(6) << " s"
+        << std::endl;
+    results.add("cycle_" + run.goal_prefix + goal.name,
+                any,
+                cycle,
+                goal.value,
+                goal.unit);
+    results.add(
+      "cycle_cells", any, cycle, triangulation->n_active_cells(), "-");
+    results.add("cycle_dofs", any, cycle, dofs, "-");
+    results.add("cycle_wall_time", any, cycle, wall_time, "s");
+  }
+
+  void
   Simulator::solve_coupled_cycles(std::ostream &log, CoupledCurveRun &run)
   {
     const unsigned int  n_cycles = parameters.discretization.refinement_cycles;
-    const Harmonic      any{0, Family::symmetric};
     std::vector<double> values;
     CoupledGoal         goal;
     Timer               run_timer;
@@ -116,37 +181,23 @@ namespace FourierSSI
           {
             Triangulation<2> next;
             next_coupled_mesh(run, cycle, next);
+            check_next_cycle_fits(cycle, next);
             adopt_coupled_mesh(run, next);
           }
         Timer cycle_timer;
         goal = run.solve(log);
         values.push_back(goal.value);
         last_cycle_time = cycle_timer.wall_time();
-        log << "cycle " << cycle << ": " << triangulation->n_active_cells()
-            << " cells, " << static_cast<long long>(coupled_dofs())
-            << " DoFs over all harmonics, " << run.goal_prefix << goal.name
-            << " = " << std::setprecision(7) << goal.value << " " << goal.unit
-            << std::setprecision(6) << ", " << std::setprecision(3)
-            << last_cycle_time << std::setprecision(6) << " s" << std::endl;
-        results.add("cycle_" + run.goal_prefix + goal.name,
-                    any,
-                    cycle,
-                    goal.value,
-                    goal.unit);
-        results.add(
-          "cycle_cells", any, cycle, triangulation->n_active_cells(), "-");
-        results.add("cycle_dofs", any, cycle, coupled_dofs(), "-");
-        results.add("cycle_wall_time", any, cycle, last_cycle_time, "s");
+        record_coupled_cycle(cycle, run, goal, last_cycle_time, log);
       }
     write_coupled_mesh(n_cycles - 1, Vector<float>());
     estimate_wall_time = run_timer.wall_time() - last_cycle_time;
-    const double mesh_error =
-      estimate_sequence_error(values, one_halving_ratio).absolute;
+    // Cycles refine the mesh only: the truncation is not studied.
     const bool axisymmetric = highest_harmonic(plan.harmonics) == 0;
     report_coupled_error(run,
                          goal,
                          values.size(),
-                         mesh_error,
+                         coupled_mesh_error(values),
                          axisymmetric ?
                            0. :
                            std::numeric_limits<double>::quiet_NaN(),

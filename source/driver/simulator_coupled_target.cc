@@ -368,9 +368,8 @@ namespace FourierSSI
                                     CoupledTargetProgress &progress,
                                     std::ostream          &log)
   {
-    const double target = parameters.discretization.target_accuracy;
-    progress.mesh_error =
-      estimate_sequence_error(progress.mesh_values, one_halving_ratio).absolute;
+    const double target       = parameters.discretization.target_accuracy;
+    progress.mesh_error       = coupled_mesh_error(progress.mesh_values);
     const double      plateau = progress.goal.plateau_error;
     const double      total   = progress.relative(progress.mesh_error +
                                            progress.harmonic_error + plateau);

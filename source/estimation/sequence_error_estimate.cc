@@ -16,7 +16,8 @@ namespace FourierSSI
 
   SequenceErrorEstimate
   estimate_sequence_error(const std::vector<double> &values,
-                          const double               assumed_ratio)
+                          const double               assumed_ratio,
+                          const double               ratio_floor)
   {
     AssertThrow(values.size() >= 2,
                 dealii::ExcMessage("an error estimate needs the values on "
@@ -31,7 +32,7 @@ namespace FourierSSI
         if (r > 0. && r < 1.)
           {
             e.asymptotic = true;
-            e.ratio      = std::max(r, minimum_ratio);
+            e.ratio      = std::max(r, ratio_floor);
           }
       }
     e.absolute = std::abs(d) * e.ratio / (1. - e.ratio);

@@ -45,7 +45,12 @@ namespace FourierSSI
                         "symmetric and Polynomial degree = 2; the error is "
                         "estimated with an FE_Q(4) solve on the same mesh, "
                         "doc/accuracy-vs-time.md). Both sides of an interface "
-                        "are refined alike.");
+                        "are refined alike. With plastic soil or a coulomb "
+                        "interface (Refinement cycles or Target accuracy): "
+                        "global takes the uniform members, kelly refines "
+                        "where the last step's mechanism is (Kelly of its "
+                        "displacement increment), goal is refused "
+                        "(doc/soil-plasticity.md 8d).");
       prm.declare_entry("Refine fraction",
                         "0.3",
                         Patterns::Double(0., 1.),

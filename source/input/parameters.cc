@@ -88,11 +88,16 @@ namespace FourierSSI
                       ExcMessage("Discretization/Target accuracy: the scene "
                                  "has no goal quantity (no rigid foundation, "
                                  "no supports whose reactions to measure)"));
-          AssertThrow(parameters.adaptivity.strategy ==
-                        RefinementStrategy::global,
-                      ExcMessage("Discretization/Target accuracy: refines by "
-                                 "its own design; leave Adaptivity/Strategy = "
-                                 "global"));
+          // A linear scene's members follow their own design; a coupled
+          // scene's may follow its mechanism (kelly).
+          AssertThrow(
+            parameters.adaptivity.strategy == RefinementStrategy::global ||
+              (parameters.coupled() &&
+               parameters.adaptivity.strategy == RefinementStrategy::kelly),
+            ExcMessage("Discretization/Target accuracy: refines by "
+                       "its own design; leave Adaptivity/Strategy = "
+                       "global (kelly only with plastic soil or a "
+                       "coulomb interface)"));
           // Load control's goal is the work of the loads (plastic soil):
           // the condensed load vector is the work's only with homogeneous
           // constraints.

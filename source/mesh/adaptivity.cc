@@ -40,15 +40,19 @@ namespace FourierSSI
   }
 
   void
-  RefinementIndicator::refine(
-    Triangulation<2>                   &triangulation,
-    const double                        fraction,
-    const std::set<types::boundary_id> &interface_ids) const
+  RefinementIndicator::refine(Triangulation<2>                   &triangulation,
+                              const double                        fraction,
+                              const std::set<types::boundary_id> &interface_ids,
+                              const RefinementCase<2>             cut) const
   {
     GridRefinement::refine_and_coarsen_fixed_fraction(triangulation,
                                                       indicators,
                                                       fraction,
                                                       0.);
+    if (cut != RefinementCase<2>::isotropic_refinement)
+      for (const auto &cell : triangulation.active_cell_iterators())
+        if (cell->refine_flag_set())
+          cell->set_refine_flag(cut);
     execute_refinement_keeping_interface_twins(triangulation, interface_ids);
   }
 
@@ -77,14 +81,15 @@ namespace FourierSSI
         changed = false;
         for (auto &[key, cells] : cells_at_face)
           {
-            bool any = false;
+            // The union of the twins' cases: both sides cut alike.
+            RefinementCase<2> cut = RefinementCase<2>::no_refinement;
             for (const auto &cell : cells)
-              any |= cell->refine_flag_set();
-            if (any)
+              cut = cut | cell->refine_flag_set();
+            if (cut != RefinementCase<2>::no_refinement)
               for (const auto &cell : cells)
-                if (!cell->refine_flag_set())
+                if (cell->refine_flag_set() != cut)
                   {
-                    cell->set_refine_flag();
+                    cell->set_refine_flag(cut);
                     changed = true;
                   }
           }

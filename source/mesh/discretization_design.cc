@@ -165,6 +165,16 @@ namespace FourierSSI
                       interface_ids);
     }
 
+    bool
+    is_one_cell_slice(const MeshParameters &mesh)
+    {
+      unsigned int z_cells = 0;
+      for (const unsigned int c : mesh.z_cells)
+        z_cells += c;
+      return mesh.type == MeshType::rectangle && z_cells == 1 &&
+             mesh.global_refinements == 0;
+    }
+
     void
     build_plastic_member(const AllParameters                &parameters,
                          const unsigned int                  member,
@@ -183,10 +193,7 @@ namespace FourierSSI
       if (mesh.type == MeshType::rectangle)
         {
           refine(mesh.r_cells, mesh.r_growth);
-          unsigned int z_cells = 0;
-          for (const unsigned int c : mesh.z_cells)
-            z_cells += c;
-          if (z_cells > 1 || mesh.global_refinements > 0)
+          if (!is_one_cell_slice(mesh))
             refine(mesh.z_cells, mesh.z_growth);
         }
       else

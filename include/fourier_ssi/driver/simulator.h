@@ -337,6 +337,14 @@ namespace FourierSSI
     void
     solve_coupled_cycles(std::ostream &log, CoupledCurveRun &run);
 
+    /** A cycle's log line and rows (goal, cells, DoFs, wall time). */
+    void
+    record_coupled_cycle(const unsigned int     cycle,
+                         const CoupledCurveRun &run,
+                         const CoupledGoal     &goal,
+                         const double           wall_time,
+                         std::ostream          &log);
+
     /**
      * The mesh after the current one, aside in `next`: with Adaptivity/
      * Strategy = kelly the current mesh with the Refine fraction of the
@@ -349,6 +357,22 @@ namespace FourierSSI
     next_coupled_mesh(const CoupledCurveRun &run,
                       const unsigned int     member,
                       Triangulation<2>      &next);
+
+    /**
+     * The mesh error of the last of a coupled run's goal values on nested
+     * meshes: the geometric tail, with one halving's ratio assumed, and
+     * never below adaptive_member_ratio on adaptive members.
+     */
+    double
+    coupled_mesh_error(const std::vector<double> &values) const;
+
+    /**
+     * One line if cycle `cycle`'s mesh `next` would exceed Adaptivity/
+     * Maximum DoFs (all harmonics) or the memory.
+     */
+    void
+    check_next_cycle_fits(const unsigned int      cycle,
+                          const Triangulation<2> &next) const;
 
     /** The solver and the set released, `next` the current mesh. */
     void

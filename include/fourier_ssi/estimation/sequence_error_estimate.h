@@ -89,12 +89,27 @@ namespace FourierSSI
                       const bool   slip_wedges);
 
   /**
+   * The ratio floor of adaptive members (Adaptivity/Strategy = kelly on a
+   * coupled scene, mechanism_indicator.h), also their assumed ratio. Such a
+   * member refines the few cells where the mechanism is, and its error falls
+   * by a ratio that rises as the singular part is resolved: on the rough
+   * footing (Refine fraction 0.6) the capacity's differences fell by 0.55,
+   * 0.55 while its errors against Eason & Shield's N_c fell by 0.56, 0.58,
+   * 0.60, so an observed ratio under-reported (effectivity 0.88 ... 0.91).
+   * Not below one halving's slowest ratio, then (doc/accuracy-vs-time.md,
+   * "Coupled scenes").
+   */
+  constexpr double adaptive_member_ratio = one_halving_ratio;
+
+  /**
    * Eq. (1) for the last of `values` (at least two, nested meshes, coarse
-   * to fine); `assumed_ratio` where r cannot be observed.
+   * to fine); `assumed_ratio` where r cannot be observed, and r no smaller
+   * than `ratio_floor`.
    */
   SequenceErrorEstimate
   estimate_sequence_error(const std::vector<double> &values,
-                          const double               assumed_ratio);
+                          const double               assumed_ratio,
+                          const double ratio_floor = minimum_ratio);
 } // namespace FourierSSI
 
 #endif

@@ -33,8 +33,9 @@ namespace FourierSSI
 
   /**
    * Refine the cells flagged in `triangulation`, after mirroring the flags
-   * across every interface (faces with an id in `interface_ids` and their
-   * geometric twins) until both sides agree, so interface pairs stay valid.
+   * (and their refinement cases) across every interface (faces with an id
+   * in `interface_ids` and their geometric twins) until both sides agree,
+   * so interface pairs stay valid.
    */
   void
   execute_refinement_keeping_interface_twins(
@@ -69,13 +70,16 @@ namespace FourierSSI
     add(const Vector<float> &cell_indicators);
 
     /**
-     * Flag the top `fraction` of cells by indicator and refine them, with
+     * Flag the top `fraction` of cells by indicator and refine them, each
+     * by `cut` (isotropic, or cut_x: in r only), with
      * execute_refinement_keeping_interface_twins().
      */
     void
     refine(Triangulation<2>                   &triangulation,
            const double                        fraction,
-           const std::set<types::boundary_id> &interface_ids) const;
+           const std::set<types::boundary_id> &interface_ids,
+           const RefinementCase<2>             cut =
+             RefinementCase<2>::isotropic_refinement) const;
 
   private:
     Vector<float> indicators;

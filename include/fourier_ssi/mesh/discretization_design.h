@@ -95,6 +95,14 @@ namespace FourierSSI
     coarsen_once(Triangulation<2>                   &triangulation,
                  const std::set<types::boundary_id> &interface_ids);
     /**
+     * A rectangle mesh of one cell in z and no global refinement: a slice
+     * between smooth planes, whose fields do not vary in z (the plane-strain
+     * pile and disc). Its members refine in r only.
+     */
+    bool
+    is_one_cell_slice(const MeshParameters &mesh);
+
+    /**
      * Member `member` of a plastic scene with a target
      * (doc/soil-plasticity.md section 8c): the scene's own mesh and element
      * with 2^member times the cells of each segment of a rectangle mesh,
