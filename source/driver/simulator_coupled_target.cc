@@ -477,7 +477,7 @@ namespace FourierSSI
         << (n_max == 0 ? "none (n = 0 only: an axisymmetric problem)" :
             std::isfinite(harmonic_error) ?
                          "from n_max halved on the coarsest mesh" :
-            growth ? "NOT estimated (grown by the interface tractions)" :
+            growth ? "NOT estimated (grown by the solution)" :
             lateral_truncation_unseen(plan.harmonics) ?
                      "NOT estimated (n_max = 2: n <= 1 and n <= 2 both lack "
                      "n = 3, the first correction of a lateral response; "
