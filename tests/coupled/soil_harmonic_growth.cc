@@ -24,7 +24,13 @@
 //  (2) The growth is reported: one log line names the step, the harmonic
 //      and its relative amplitude; results.csv has step_harmonics at every
 //      step (1 before the growth, 2 from it on).
-//  (3) Growth never adds a harmonic an elastic state does not have: the
+//  (3) Both sources: the same pile with its coulomb shaft of
+//      prm/pile-adhesion.prm (c = 5 kPa, phi = 0) slips at the first step,
+//      while the soil is still elastic; the interface traction calls for
+//      n = 3 (the soil's stress does not: round-off), the line names both
+//      sources' amplitudes, and the path again equals the run listing
+//      n = 1, 3 to 1e-10.
+//  (4) Growth never adds a harmonic an elastic state does not have: the
 //      same pile with s_u = 1e6 kPa (it never yields) and Maximum harmonic
 //      = 3 solves n = 1 alone even at Harmonic tolerance = 1e-12 (D eps is
 //      band-limited to the solved harmonics; the others are round-off).
@@ -87,6 +93,31 @@ namespace
                              "  set Maximum harmonic = 3\n"
                              "end\n";
 
+  /** Every step's path and the capacity, grown vs listed, to 1e-10. */
+  void
+  check_same_path(const Run &grown, const Run &listed)
+  {
+    for (const std::string quantity : {"step_load_factor",
+                                       "step_horizontal_force",
+                                       "step_horizontal_displacement",
+                                       "step_iterations",
+                                       "step_plastic_samples",
+                                       "capacity_H",
+                                       "capacity_H_plateau_error",
+                                       "capacity_normalised"})
+      {
+        const std::vector<double> a = rows(grown, quantity),
+                                  b = rows(listed, quantity);
+        check::equal(quantity + ": rows", a.size(), b.size());
+        for (unsigned int i = 0; i < std::min(a.size(), b.size()); ++i)
+          check::relative(quantity + " " + std::to_string(i + 1) +
+                            ", grown vs listed n = 1, 3",
+                          a[i],
+                          b[i],
+                          1e-10);
+      }
+  }
+
   void
   growth_is_exact()
   {
@@ -118,25 +149,26 @@ namespace
     check::that("one log line names the step, n = 3 and its amplitude",
                 std::regex_search(grown.log, line));
     // (1) The same path to round-off.
-    for (const std::string quantity : {"step_load_factor",
-                                       "step_horizontal_force",
-                                       "step_horizontal_displacement",
-                                       "step_iterations",
-                                       "step_plastic_samples",
-                                       "capacity_H",
-                                       "capacity_H_plateau_error",
-                                       "capacity_normalised"})
-      {
-        const std::vector<double> a = rows(grown, quantity),
-                                  b = rows(listed, quantity);
-        check::equal(quantity + ": rows", a.size(), b.size());
-        for (unsigned int i = 0; i < std::min(a.size(), b.size()); ++i)
-          check::relative(quantity + " " + std::to_string(i + 1) +
-                            ", grown vs listed n = 1, 3",
-                          a[i],
-                          b[i],
-                          1e-10);
-      }
+    check_same_path(grown, listed);
+  }
+
+  void
+  both_sources_grow_the_set()
+  {
+    const std::string shaft =
+      "5: coulomb, kn=1e6, ks=1e6, c=5, phi=0, sigma_t=none";
+    const Run grown = run(
+      test_support::with_entry(pile_scene("1", growth), "Interfaces", shaft));
+    const Run listed = run(
+      test_support::with_entry(pile_scene("1, 3", ""), "Interfaces", shaft));
+    std::cout << grown.log;
+    const std::regex line(
+      "step 1: harmonics added, soil-stress / interface-traction amplitude "
+      "relative to the largest above 0\\.001: n=3 symmetric \\([0-9.e-]+ / "
+      "[0-9.e-]+\\); the step is solved again");
+    check::that("coulomb shaft: one line, both sources' amplitudes",
+                std::regex_search(grown.log, line));
+    check_same_path(grown, listed);
   }
 
   void
@@ -160,6 +192,7 @@ int
 main()
 {
   growth_is_exact();
+  both_sources_grow_the_set();
   elastic_soil_adds_nothing();
   return check::summary();
 }
