@@ -172,8 +172,14 @@ namespace FourierSSI
         << (sources.soil_points().projects_dilatation() ? ", B-bar" : "");
     if (sources.grows())
       log << ", harmonics grow up to n = " << settings.maximum_harmonic
-          << " where the interface traction calls for them (tolerance "
-          << settings.harmonic_tolerance << ")";
+          << " where the "
+          << (sources.soil_points().size() == 0 ?
+                "interface traction" :
+              sources.interface_points() == nullptr ?
+                "soil's stress" :
+                "soil's stress or the interface traction")
+          << " calls for them (tolerance " << settings.harmonic_tolerance
+          << ")";
     log << '\n';
     sources.describe_interfaces(log);
     states.write_held_motions(log, "");
@@ -209,7 +215,10 @@ namespace FourierSSI
   CoupledSolver::grows(std::ostream &log)
   {
     const std::vector<Harmonic> added =
-      sources.harmonics_called_for(states.trial_result.interface_state, log);
+      sources.harmonics_called_for(states.trial,
+                                   states.trial_result.interface_state,
+                                   n_converged_steps() + 1,
+                                   log);
     if (added.empty())
       return false;
     grow(added);

@@ -23,7 +23,7 @@ namespace FourierSSI
     ThetaFactor
     factor_of(const unsigned int k)
     {
-      return k < 4 ? ThetaFactor::in_plane : ThetaFactor::circumferential;
+      return strain_theta_factor(k);
     }
 
     /**
@@ -129,8 +129,9 @@ namespace FourierSSI
           {
             fe_values.reinit(iterators[0]);
             SoilCell cell;
-            cell.first_point = points.size();
-            cell.centre      = iterators[0]->center();
+            cell.first_point  = points.size();
+            cell.centre       = iterators[0]->center();
+            cell.active_index = iterators[0]->active_cell_index();
             for (unsigned int h = 0; h < set.size(); ++h)
               {
                 std::vector<types::global_dof_index> indices(n_dofs);

@@ -24,17 +24,23 @@ namespace FourierSSI
                theta_samples_for(n_max, settings.theta_samples);
     }
 
-    /** The theta samples of the soil (of the interfaces without soil). */
+    /**
+     * The theta samples of the soil (of the interfaces without soil). With
+     * growth n_max is Maximum harmonic, as for the interfaces: the
+     * committed plastic state lives at the samples, and samples that never
+     * change carry it over exactly when harmonics are added.
+     */
     unsigned int
     soil_theta_samples(const std::vector<Harmonic> &list,
                        const AllParameters         &parameters,
                        const bool                   condensed)
     {
-      return condensed ? interface_theta_samples(list,
-                                                 parameters.load_path,
-                                                 parameters.interfaces) :
-                         theta_samples_for(highest_harmonic(list),
-                                           parameters.load_path.theta_samples);
+      const LoadPathParameters &settings = parameters.load_path;
+      return condensed ?
+               interface_theta_samples(list, settings, parameters.interfaces) :
+               theta_samples_for(std::max(highest_harmonic(list),
+                                          settings.maximum_harmonic),
+                                 settings.theta_samples);
     }
 
     /**
@@ -65,17 +71,15 @@ namespace FourierSSI
     }
 
     /**
-     * Growth (interfaces only): every n <= Maximum harmonic in the families
-     * of the set, if that is above the highest harmonic of the set; else
-     * none.
+     * Growth: every n <= Maximum harmonic in the families of the set, if
+     * that is above the highest harmonic of the set; else none.
      */
     std::vector<Harmonic>
-    candidate_harmonics(const bool                   condensed,
-                        const std::vector<Harmonic> &list,
+    candidate_harmonics(const std::vector<Harmonic> &list,
                         const unsigned int           maximum_harmonic)
     {
       std::vector<Harmonic> result;
-      if (!condensed || maximum_harmonic <= highest_harmonic(list))
+      if (maximum_harmonic <= highest_harmonic(list))
         return result;
       for (const Family family : {Family::symmetric, Family::antisymmetric})
         if (std::any_of(list.begin(), list.end(), [&](const Harmonic &h) {
@@ -147,14 +151,15 @@ namespace FourierSSI
     , condensed(condensed)
     , harmonics(set.get_harmonics())
     , sampling(harmonics, soil_theta_samples(harmonics, parameters, condensed))
-    , candidates(
-        candidate_harmonics(condensed, harmonics, settings.maximum_harmonic))
-    , spectrum(candidates, sampling.n_samples())
-    , interface_samples(harmonics,
-                        !condensed &&
-                            holds_gaps_by_multipliers(set, parameters) ?
-                          minimum_theta_samples(highest_harmonic(harmonics)) :
-                          sampling.n_samples())
+    , candidates(candidate_harmonics(harmonics, settings.maximum_harmonic))
+    , interface_samples(
+        harmonics,
+        !condensed && holds_gaps_by_multipliers(set, parameters) ?
+          minimum_theta_samples(
+            std::max(highest_harmonic(harmonics), settings.maximum_harmonic)) :
+          sampling.n_samples())
+    , spectrum(candidates, interface_samples.n_samples())
+    , soil_spectrum(candidates, sampling.n_samples())
     , soil(set, parameters, sampling)
   {
     check_homogeneous_constraints(set, condensed);
@@ -401,9 +406,12 @@ namespace FourierSSI
   NonlinearSources::resample()
   {
     harmonics = set.get_harmonics();
-    // Without soil, the interfaces' samples are the soil's.
+    // The same angles (chosen for Maximum harmonic), every harmonic's
+    // factors.
     sampling          = ThetaSampling(harmonics, sampling.n_samples());
-    interface_samples = sampling;
+    interface_samples = ThetaSampling(harmonics, interface_samples.n_samples());
+    if (soil.size() > 0)
+      soil.grow(sampling);
   }
 
   void

@@ -133,9 +133,11 @@ namespace FourierSSI
   TangentLinearisation::grow(const unsigned int first)
   {
     (void)first;
-    AssertThrow(false,
-                ExcMessage("Soil plasticity: not yet: harmonics added along "
-                           "the load path on the coupled tangent"));
+    // The coupled tangent's blocks and pattern are those of the set it was
+    // built on: the next Newton update builds it anew over every harmonic
+    // (the kept factorizations of the earlier K_h serve the re-solves).
+    tangent.reset();
+    tangent_pattern.clear();
   }
 
   std::string

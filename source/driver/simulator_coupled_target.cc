@@ -97,7 +97,7 @@ namespace FourierSSI
       if (estimated)
         return "from n_max halved on the coarsest mesh";
       if (growth)
-        return "NOT estimated (grown by the interface tractions)";
+        return "NOT estimated (grown by the solution)";
       if (lateral_truncation_unseen(harmonics))
         return "NOT estimated (n_max = 2: n <= 1 and n <= 2 both lack n = 3, "
                "the first correction of a lateral response; list n <= 3 or "

@@ -33,16 +33,15 @@ namespace FourierSSI
     void
     check_supported(const AllParameters &parameters)
     {
-      // The plastic soil iterates on the harmonics given (with or without
-      // coulomb interfaces, one correction load for both): no growth, so a
-      // Maximum harmonic above them would be ignored.
+      // Growth with a swipe (its second multiplier keeping w) is not
+      // checked yet.
       const LoadPathParameters &settings = parameters.load_path;
-      AssertThrow(settings.maximum_harmonic <=
-                    highest_harmonic(parameters.discretization.harmonics),
+      AssertThrow(!parameters.rigid_foundation.swipes() ||
+                    settings.maximum_harmonic <=
+                      highest_harmonic(parameters.discretization.harmonics),
                   ExcMessage("Load path/Maximum harmonic: not "
-                             "yet with plastic soil or a swipe (the "
-                             "harmonics do not grow); list them in "
-                             "Discretization/Harmonics"));
+                             "yet with a swipe (the harmonics do not grow); "
+                             "list them in Discretization/Harmonics"));
       check_coupled_path_supported(parameters,
                                    parameters.soil_plasticity.any() ?
                                      "plastic soil" :
@@ -67,8 +66,15 @@ namespace FourierSSI
     {
       const Harmonic any{0, Family::symmetric};
       const auto    &steps = solver.get_steps();
+      // With growth (Maximum harmonic above the listed) the harmonics
+      // solved at every step.
+      const bool grows = parameters.load_path.maximum_harmonic >
+                         highest_harmonic(parameters.discretization.harmonics);
       for (unsigned int s = 0; s < steps.size(); ++s)
         {
+          if (grows)
+            results.add(
+              "step_harmonics", any, s + 1, steps[s].n_harmonics, "-");
           if (solver.n_soil_points() > 0)
             {
               results.add(

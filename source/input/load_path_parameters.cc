@@ -185,18 +185,19 @@ namespace FourierSSI
                                           LoadPathParameters::largest_harmonic),
                         "Harmonics chosen by the solution: after each "
                         "converged step, every harmonic n <= Maximum harmonic "
-                        "not solved yet whose amplitude in the interface "
-                        "traction exceeds Harmonic tolerance times the largest "
-                        "is added (its own factorization) and the step solved "
-                        "again. 0, or not above the highest listed harmonic: "
-                        "only the listed harmonics. At most 1024 (as "
-                        "Discretization/Harmonics); interface runs only.");
+                        "not solved yet whose amplitude in the plastic soil's "
+                        "stress or in the interface traction exceeds Harmonic "
+                        "tolerance times that one's largest is added (its own "
+                        "factorization) and the step solved again. 0: only "
+                        "the listed harmonics; below the highest listed one: "
+                        "refused. At most 1024 (as Discretization/Harmonics); "
+                        "coupled runs only, not with a swipe.");
       prm.declare_entry("Harmonic tolerance",
                         "1e-3",
                         Patterns::Double(0.),
                         "Maximum harmonic > highest listed: the relative "
-                        "amplitude of the interface-traction spectrum above "
-                        "which a harmonic is added.");
+                        "amplitude of the soil-stress or interface-traction "
+                        "spectrum above which a harmonic is added.");
     }
   } // namespace
 

@@ -1,4 +1,6 @@
+#include <algorithm>
 #include <fourier_ssi/input/problem_checks.h>
+#include <string>
 
 namespace FourierSSI
 {
@@ -171,11 +173,35 @@ namespace FourierSSI
                              "plastic soil or a coulomb interface; set it "
                              "false"));
     }
+
+    /**
+     * Load path/Maximum harmonic is the highest harmonic the solution may
+     * add to those listed; set below them it can add none and is most
+     * likely a typing error (0, the default, asks for no growth).
+     */
+    void
+    check_maximum_harmonic_not_below_listed(const AllParameters &parameters)
+    {
+      const unsigned int maximum = parameters.load_path.maximum_harmonic;
+      unsigned int       highest = 0;
+      for (const Harmonic &h : parameters.discretization.harmonics)
+        highest = std::max(highest, h.n);
+      AssertThrow(maximum == 0 || maximum >= highest,
+                  ExcMessage(
+                    "Load path/Maximum harmonic: " + std::to_string(maximum) +
+                    " is below the highest listed harmonic n = " +
+                    std::to_string(highest) +
+                    " (Discretization/Harmonics); set it above " +
+                    std::to_string(highest) +
+                    " for harmonics chosen by the solution, or 0 "
+                    "for the listed ones only"));
+    }
   } // namespace
 
   void
   check_problem_is_meaningful(const AllParameters &parameters)
   {
+    check_maximum_harmonic_not_below_listed(parameters);
     check_controlled_motion_not_held(parameters);
     check_motion_direction_path(parameters);
     check_swipe_path(parameters);

@@ -42,6 +42,12 @@ comes from a 2x2 system on the summed rigid motions, and K_t^-1 e_V from
 the one factorizing rank: the same text again, or a rank read e_V or the
 motions apart from the others. The scene must yield and V must move (mu
 acts) for the comparison to see the swipe.
+With STIFFNESS = growth, the pile listing n = 1 only with Maximum
+harmonic = 3 and Newton (doc/soil-plasticity.md section 3e): the soil's
+stress calls for n = 3 at the first step, the set grows on both runs
+(n = 3 on rank 1), and the text must again be the same: the spectrum is
+summed over the ranks (every rank takes the same decision) and the added
+harmonic runs the distributed Newton above.
 With a sixth argument, the scene is prm/pile-adhesion.prm (plastic soil
 and a coulomb shaft, doc/soil-plasticity.md section 6b) with that interface
 law: the relative displacements are summed over the ranks too, and
@@ -95,6 +101,24 @@ end
 """
 
 
+GROWTH = """
+subsection Discretization
+  set Harmonics = 1
+end
+subsection Load path
+  set Load steps       = 4
+  set Target           = 0.02
+  set Maximum harmonic = 3
+end
+subsection Soil plasticity
+  set Stiffness = tangent
+end
+subsection Output
+  set Directory = out
+end
+"""
+
+
 def same_text(name, one, two, skip_row, skip_columns):
     """Rows compared as text, cell by cell; returns the number of failures."""
     if len(one) != len(two):
@@ -129,6 +153,11 @@ def main():
         scene, overrides = "prm/footing-capacity.prm", SWIPE
         distribution = ("harmonics distributed over 2 MPI ranks: rank 0 "
                         "n=0 symmetric; rank 1 n=1 symmetric")
+    growth = sys.argv[5] == "growth"
+    if growth:
+        overrides = GROWTH
+        distribution = ("harmonics distributed over 2 MPI ranks: rank 0 "
+                        "n=1 symmetric; rank 1")
     if len(sys.argv) > 6:
         scene = "prm/pile-adhesion.prm"
         overrides += ("subsection Interfaces\n  set Interfaces = %s\nend\n"
@@ -152,6 +181,12 @@ def main():
         print(f"  {'ok  ' if ok else 'FAIL'} the swipe moves V: "
               f"{V[0] if V else 0:.6g} to {V[-1] if V else 0:.6g} kN over "
               f"{len(V)} driven steps")
+        failures += not ok
+    if growth:
+        solved = [int(row["harmonics"]) for row in curve[1]]
+        ok = solved[-1] == 2
+        print(f"  {'ok  ' if ok else 'FAIL'} the set grows: harmonics per "
+              f"step {solved}")
         failures += not ok
     failures += same_text("load-displacement.csv", curve[1], curve[2],
                           lambda row: False, {"time_s"})

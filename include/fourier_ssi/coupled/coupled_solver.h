@@ -62,9 +62,10 @@ namespace FourierSSI
   public:
     /**
      * `set` must be assembled and factorized; its harmonics' matrices hold
-     * the elastic interface stiffness kn, ks of every interface. Interfaces
-     * only, with `Load path/Maximum harmonic` above the highest harmonic of
-     * the set, harmonics the interface tractions call for are added to it.
+     * the elastic interface stiffness kn, ks of every interface. With
+     * `Load path/Maximum harmonic` above the highest harmonic of the set,
+     * harmonics the soil's stress or the interface tractions call for are
+     * added to it.
      */
     CoupledSolver(HarmonicSet &set, const AllParameters &parameters);
 

@@ -52,6 +52,17 @@ namespace FourierSSI
    */
   using StrainAmplitudes = std::vector<std::vector<StrainVector>>;
 
+  /**
+   * The theta factor of stress and strain component k (order r, z, theta,
+   * rz, z theta, r theta): 0..3 that of (u, v), 4, 5 that of w
+   * (harmonic_operator.h).
+   */
+  inline ThetaFactor
+  strain_theta_factor(const unsigned int k)
+  {
+    return k < 4 ? ThetaFactor::in_plane : ThetaFactor::circumferential;
+  }
+
   /** The soil's state over its (point, theta) samples. */
   struct SoilYieldCounts
   {
@@ -167,6 +178,30 @@ namespace FourierSSI
                   const std::vector<StrainVector> &committed_plastic,
                   CoupledTangent                  &tangent) const;
 
+    /**
+     * The set grew (HarmonicSet::add): the strain operators and cell DoFs
+     * of the harmonics added; `grown` the same angles with the factors of
+     * every harmonic. The points, their weights and the state kept at the
+     * samples do not depend on the harmonics (nonlinear_soil_points_growth.cc).
+     */
+    void
+    grow(const ThetaSampling &grown);
+
+    /**
+     * The theta spectrum of the stress change sigma - sigma_0 = D eps - s_p
+     * at the samples of a converged state (`strain`, `plastic`): per
+     * harmonic of `candidates` (the same angles), the sum over the points
+     * and the six components of dV |a|^2, a the amplitude of that harmonic
+     * (ThetaSampling::project with the component's factor); summed over
+     * the ranks. The elastic part D eps is band-limited to the harmonics
+     * solved, so a harmonic not solved shows only the plastic correction
+     * (doc/soil-plasticity.md section 3e).
+     */
+    std::vector<double>
+    stress_spectrum(const std::vector<StrainVector> &strain,
+                    const std::vector<StrainVector> &plastic,
+                    const ThetaSampling             &candidates) const;
+
   private:
     /** A soil quadrature point: its weight and elastic constants. */
     struct SoilPoint
@@ -190,6 +225,8 @@ namespace FourierSSI
       std::shared_ptr<LinearProjection> projection;
       unsigned int                      first_point;
       Point<2>                          centre;
+      /** Its active cell index (the DoFs of harmonics added later). */
+      unsigned int active_index;
     };
 
     void

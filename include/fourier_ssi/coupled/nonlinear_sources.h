@@ -49,9 +49,11 @@ namespace FourierSSI
 
     /**
      * `condensed`: the step is linearised on the interfaces' DoFs
-     * (interfaces only); it decides their theta samples (with growth chosen
-     * for Load path/Maximum harmonic) and whether stiff coulomb laws are
-     * augmented. `loads` are the run's (read_loads()).
+     * (interfaces only); it decides their theta samples and whether stiff
+     * coulomb laws are augmented. With growth (Load path/Maximum harmonic
+     * above the set's) every sample count is chosen for Maximum harmonic,
+     * so that the samples, and the state kept at them, stay when
+     * harmonics are added. `loads` are the run's (read_loads()).
      */
     NonlinearSources(const HarmonicSet   &set,
                      const AllParameters &parameters,
@@ -161,19 +163,24 @@ namespace FourierSSI
                   CoupledTangent                  &tangent) const;
 
     /**
-     * Interfaces only, Maximum harmonic above the set's: harmonics n <=
-     * Maximum harmonic, not solved, whose amplitude in the traction change
-     * t - t0 of a converged state exceeds Harmonic tolerance times the
-     * largest amplitude; each logged with its amplitude
-     * (nonlinear_sources_growth.cc).
+     * Maximum harmonic above the set's: harmonics n <= Maximum harmonic,
+     * not solved, that a source of the converged `state` calls for: the
+     * amplitude of the soil's stress change sigma - sigma_0, or of the
+     * interfaces' traction change t - t0 (`snapshot`), exceeds Harmonic
+     * tolerance times that source's largest amplitude. One log line names
+     * the step (`step`, from 1), each harmonic added, its relative
+     * amplitudes and the source (nonlinear_sources_growth.cc).
      */
     std::vector<Harmonic>
-    harmonics_called_for(const InterfaceSnapshot &snapshot,
+    harmonics_called_for(const CoupledStepState  &state,
+                         const InterfaceSnapshot &snapshot,
+                         const unsigned int       step,
                          std::ostream            &log) const;
 
     /**
      * The set grew: the samples stay (chosen for Maximum harmonic), their
-     * factors gain the added harmonics; read_loads() follows.
+     * factors gain the added harmonics, the soil points their strain
+     * operators and DoFs; read_loads() follows.
      */
     void
     resample();
@@ -245,6 +252,21 @@ namespace FourierSSI
     add_interface_residual(const CoupledStepState &state,
                            CoupledEvaluation      &e) const;
 
+    /**
+     * Growth: per candidate harmonic, the area-weighted sum of squares of
+     * the amplitudes of the interface traction change t - t0.
+     */
+    std::vector<double>
+    interface_spectrum(const InterfaceSnapshot &snapshot) const;
+
+    /**
+     * Growth: per candidate harmonic, the volume-weighted sum of squares of
+     * the amplitudes of the soil's stress change at `state`
+     * (NonlinearSoilPoints::stress_spectrum; a collective under MPI).
+     */
+    std::vector<double>
+    soil_stress_spectrum(const CoupledStepState &state) const;
+
     const HarmonicSet        &set;
     const LoadPathParameters &settings;
     const LoadPattern        &loads;
@@ -253,15 +275,17 @@ namespace FourierSSI
     ThetaSampling             sampling;
     /** Every candidate harmonic n <= Maximum harmonic (growth only). */
     std::vector<Harmonic> candidates;
-    ThetaSampling         spectrum;
     /**
      * The nonlinear interfaces' samples: those of the soil, but with
      * `contact` or a stiff coulomb law that can open (through the
      * multipliers) always 2 n_max + 1, one per value of the band-limited
      * gap (minimum_theta_samples(); more make the multipliers drift,
      * constrained_theta_samples()), while Theta samples sets the soil's.
+     * With growth n_max is Maximum harmonic.
      */
     ThetaSampling interface_samples;
+    /** The candidates' factors at the interfaces' and the soil's samples. */
+    ThetaSampling spectrum, soil_spectrum;
     /** The plastic soil's quadrature points and their laws. */
     NonlinearSoilPoints soil;
     /** Strain amplitudes of the load pattern, the held loads and e_V. */
