@@ -1,15 +1,18 @@
 #!/usr/bin/python3
 """One A4 page per run, read at a glance (doc/report.md): the geometry, the
 load-displacement curve with its plateau and error bar, the interface state
-around the circumference, the yielding of the soil, and the goal values with
-their units and error bars.
+around the circumference, the yielding of the soil and its plastic zone in
+the loading plane, and the goal values with their units and error bars.
 
     /usr/bin/python3 tools/report.py OUTPUT_DIR [--prm PRM] [-o report.png]
 
 It reads what the run left in OUTPUT_DIR (results.csv; load-displacement.csv
 of a nonlinear run; interface-state.csv of a run with coulomb interfaces)
-and, with --prm, the scene's Mesh, Materials, Interfaces, Rigid foundation
-and Boundary conditions entries for the geometry. A panel whose data the run
+and the plastic field of the plane theta = 0 of plastic soil
+(plastic-field-theta0-step<s>.vtu, the latest step; read with the standard
+library and numpy, no VTK module), and, with --prm, the scene's Mesh,
+Materials, Interfaces, Rigid foundation and Boundary conditions entries for
+the geometry. A panel whose data the run
 did not write is left out and named under "not shown" with the reason.
 
 Besides the PNG it prints, one line each, the panels drawn, the panels left
@@ -562,8 +565,111 @@ def draw_yielding(ax, history):
     ax.set_ylabel("plastic samples", fontsize=7)
     ax.tick_params(labelsize=6)
     ax.grid(True, alpha=0.3)
-    ax.set_title("Yielding: plastic soil samples per step\n(the zone's map "
-                 "is not written by the program)", fontsize=8)
+    ax.set_title("Yielding: plastic soil samples per step", fontsize=8)
+
+
+# ---------------------------------------------------------- plastic zone
+
+
+def vtu_arrays(path):
+    """{name: numpy array (n_points, n_components)} of a VTU as fourier-ssi
+    writes it (deal.II's DataOutBase: base64, zlib-compressed blocks or
+    raw, Float32/Float64), and "Points"; the standard library and numpy
+    only (no VTK module needed)."""
+    import base64
+    import struct
+    import xml.etree.ElementTree as ElementTree
+    import zlib
+    root = ElementTree.parse(path).getroot()
+    compressed = root.get("compressor") is not None
+    header = "Q" if root.get("header_type") == "UInt64" else "I"
+    size = struct.calcsize(header)
+    kinds = {"Float32": np.float32, "Float64": np.float64,
+             "Int32": np.int32, "Int64": np.int64, "UInt8": np.uint8}
+    arrays = {}
+    for piece in root.iter("Piece"):
+        for parent in ("Points", "PointData"):
+            for array in piece.find(parent).iter("DataArray"):
+                text = array.text.strip()
+                if array.get("format") == "ascii":
+                    data = np.array(text.split(), dtype=float)
+                elif compressed:
+                    first = base64.b64decode(text[:((3 * size + 2) // 3) * 4])
+                    n_blocks = struct.unpack(header, first[:size])[0]
+                    length = (((3 + n_blocks) * size + 2) // 3) * 4
+                    counts = struct.unpack(header * (3 + n_blocks),
+                                           base64.b64decode(text[:length]))
+                    raw, offset, blocks = base64.b64decode(text[length:]), \
+                        0, []
+                    for count in counts[3:]:
+                        blocks.append(zlib.decompress(raw[offset:offset +
+                                                          count]))
+                        offset += count
+                    data = np.frombuffer(b"".join(blocks),
+                                         dtype=kinds[array.get("type")])
+                else:
+                    data = np.frombuffer(base64.b64decode(text)[size:],
+                                         dtype=kinds[array.get("type")])
+                components = int(array.get("NumberOfComponents", "1"))
+                name = "Points" if parent == "Points" else array.get("Name")
+                arrays[name] = data.astype(float).reshape(-1, components)
+    return arrays
+
+
+def plastic_plane_file(directory):
+    """The loading plane's (theta = 0) plastic field of the latest step
+    written, or None."""
+    steps = []
+    for name in os.listdir(directory):
+        m = re.fullmatch(r"plastic-field-theta0-step(\d+)\.vtu", name)
+        if m:
+            steps.append((int(m.group(1)), name))
+    return os.path.join(directory, max(steps)[1]) if steps else None
+
+
+def draw_plastic_zone(ax, path):
+    """The equivalent plastic strain per cell of the plane theta = 0, its
+    contours and the displacement (u_r, u_z) as arrows."""
+    from matplotlib.collections import PolyCollection
+    a = vtu_arrays(path)
+    x, z = a["Points"][:, 0], a["Points"][:, 2]
+    # Each cell is a patch of its own 4 vertices, deal.II's lexicographic
+    # order (0, 1, 3, 2 goes round the quadrilateral).
+    quads = np.arange(len(x)).reshape(-1, 4)[:, [0, 1, 3, 2]]
+    strain = a["plastic_strain"][quads[:, 0], 0]
+    polygons = [np.column_stack([x[q], z[q]]) for q in quads]
+    cells = PolyCollection(polygons, array=strain, cmap="magma_r",
+                           edgecolors="face", linewidths=0.2)
+    ax.add_collection(cells)
+    centre_x, centre_z = x[quads].mean(axis=1), z[quads].mean(axis=1)
+    if strain.max() > 0 and len(strain) >= 3:
+        try:
+            ax.tricontour(centre_x, centre_z, strain, levels=
+                          np.linspace(0, strain.max(), 6)[1:-1],
+                          colors="#1f77b4", linewidths=0.6)
+        except (ValueError, RuntimeError):
+            pass  # too few distinct cell centres for a triangulation
+    u = a["u_r"][:, 0], a["u_z"][:, 0]
+    first = np.unique(np.round(np.column_stack([x, z]), 9), axis=0,
+                      return_index=True)[1]
+    step = max(1, len(first) // 250)
+    shown = first[::step]
+    ax.quiver(x[shown], z[shown], u[0][shown], u[1][shown], color="#2ca02c",
+              width=0.003)
+    ax.set_xlim(x.min(), x.max())
+    ax.set_ylim(z.min(), z.max())
+    ax.set_aspect("equal", adjustable="box")
+    ax.tick_params(labelsize=6)
+    ax.set_xlabel("r [m] (theta = 0)", fontsize=7)
+    ax.set_ylabel("z [m]", fontsize=7)
+    bar = plt.colorbar(cells, ax=ax, fraction=0.04, pad=0.02)
+    bar.ax.tick_params(labelsize=6)
+    bar.set_label("equivalent plastic strain", fontsize=6)
+    step_number = re.search(r"step(\d+)", os.path.basename(path)).group(1)
+    ax.set_title("Plastic zone in the loading plane, step %s: cell means "
+                 "(%d of %d cells yielded), contours, displacement arrows"
+                 % (step_number, int((strain > 0).sum()), len(strain)),
+                 fontsize=8)
 
 
 # ----------------------------------------------------------------- table
@@ -642,10 +748,14 @@ def choose_panels(directory, prm, rows, goals):
                        "(no coulomb interfaces)")
     if yield_history(rows):
         shown.append("yielding")
-        missing.append("plastic zone: no map: the program writes no plastic "
-                       "field (only the count of plastic samples per step)")
+        if plastic_plane_file(directory):
+            shown.append("plastic-zone")
+        else:
+            missing.append("plastic-zone: no plastic-field-theta0-step*.vtu "
+                           "(Output/Write vtu = false, or Plastic field "
+                           "planes without 0)")
     else:
-        missing.append("plastic zone: no plastic soil in this run")
+        missing.append("plastic-zone: no plastic soil in this run")
     if goals:
         shown.append("goals")
     else:
@@ -665,12 +775,14 @@ def layout(fig, shown, n_goals):
         plan.append(("curves", 2.6))
     if "interface-state" in shown:
         plan.append(("interface-state", 2.0))
+    if "plastic-zone" in shown:
+        plan.append(("plastic-zone", 2.4))
     if "goals" in shown:
         plan.append(("goals", 0.6 + 0.19 * n_goals))
     plan.append(("footer", 0.5))
     # Every panel keeps its size on every page: the space of the panels
     # left out stays blank at the bottom.
-    full_page = 0.05 + 3.2 + 2.6 + 2.0 + 1.2 + 0.5
+    full_page = 0.05 + 3.2 + 2.6 + 2.0 + 2.4 + 1.2 + 0.5
     plan.append(("blank", max(0., full_page - sum(h for _, h in plan))))
     grid = GridSpec(len(plan), 1, figure=fig,
                     height_ratios=[h for _, h in plan], hspace=0.6,
@@ -700,6 +812,9 @@ def draw_page(directory, prm, prm_path, rows, out):
         ax = fig.add_subplot(spots["interface-state"])
         extra["interface-state"] = draw_interface_state(
             ax, read_csv(os.path.join(directory, "interface-state.csv")))
+    if "plastic-zone" in shown:
+        draw_plastic_zone(fig.add_subplot(spots["plastic-zone"]),
+                          plastic_plane_file(directory))
     texts = []
     if "goals" in shown:
         table = draw_goal_table(fig.add_subplot(spots["goals"]), goals, rows)

@@ -59,7 +59,9 @@ namespace FourierSSI
         {"{family}", "(symmetric|antisymmetric)"},
         {"{cycle}", "[0-9]+"},
         {"{rank}", "[0-9]+"},
-        {"{id}", "[0-9]+"}};
+        {"{id}", "[0-9]+"},
+        {"{step}", "[0-9]+"},
+        {"{deg}", "[0-9][0-9.e+-]*"}};
       return fields;
     }
 
@@ -137,6 +139,12 @@ namespace FourierSSI
       "load-displacement-incomplete.csv",
       "interface-state.csv",
       "interface-state-3d.vtu",
+      // Plastic soil: the plastic field per meridian plane and step, the
+      // revolved soil per step, and their .pvd series (plastic_field_output.h).
+      "plastic-field-theta{deg}-step{step}.vtu",
+      "plastic-field-theta{deg}.pvd",
+      "plastic-field-3d-step{step}.vtu",
+      "plastic-field-3d.pvd",
       // Output/Soil reaction depths: the PISA curves of a plastic run.
       "soil-reaction-curves.csv",
       // Rigid foundation/Stiffness matrix: the 6x6 matrix, as CSV and as

@@ -43,6 +43,12 @@ namespace FourierSSI
                     !parameters.output.write_3d_vtu,
                   ExcMessage(entry + ": not yet: Output/Lines 3D and Write "
                                      "3d vtu with plastic soil or a swipe"));
+      AssertThrow(parameters.output.plastic_field_steps.empty() ||
+                    parameters.discretization.target_accuracy == 0.,
+                  ExcMessage("Output/Plastic field steps: not yet with "
+                             "Discretization/Target accuracy (the field of "
+                             "the last step of the last mesh only): set "
+                             "Plastic field steps = last"));
       AssertThrow(!parameters.output.soil_reaction_curves() ||
                     parameters.discretization.target_accuracy == 0.,
                   ExcMessage("Output/Soil reaction depths: not yet with "
@@ -247,6 +253,7 @@ namespace FourierSSI
     const std::unique_ptr<CoupledSolver> solver =
       solve_coupled_curve(log, true, [&](CoupledSolver &s) {
         record_soil_reactions(s);
+        record_plastic_field(s);
       });
     add_plastic_rows(*solver, log);
     write_plastic_files(*solver, log);
@@ -271,7 +278,7 @@ namespace FourierSSI
     reaction_curves = std::make_unique<SoilReactionCurves>(
       harmonic_set->problem(h).get_dof_handler(), parameters);
     SoilReactionCurves &curves = *reaction_curves;
-    solver.set_step_observer([&solver, &curves, h, this](
+    solver.add_step_observer([&solver, &curves, h, this](
                                const LoadStepResult &step) {
       const auto start = std::chrono::steady_clock::now();
       const auto shaft = solver.soil_nodal_force(
@@ -290,6 +297,91 @@ namespace FourierSSI
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();
     });
+  }
+
+  void
+  Simulator::record_plastic_field(CoupledSolver &solver)
+  {
+    plastic_field.reset();
+    if (solver.n_soil_points() == 0 ||
+        !parameters.output.writes_plastic_field())
+      return;
+    plastic_field = std::make_unique<PlasticFieldRecorder>(solver,
+                                                           *harmonic_set,
+                                                           parameters.output);
+    PlasticFieldRecorder &recorder = *plastic_field;
+    solver.add_step_observer([&solver, &recorder](const LoadStepResult &) {
+      recorder.observe(solver.get_steps().size());
+    });
+  }
+
+  void
+  Simulator::finish_plastic_field(const CoupledSolver &solver)
+  {
+    if (!plastic_field)
+      return;
+    plastic_field->finish(solver.get_steps().size());
+  }
+
+  void
+  Simulator::write_plastic_field(std::ostream &log)
+  {
+    if (!plastic_field)
+      return;
+    const OutputParameters &output = parameters.output;
+    const auto              start  = std::chrono::steady_clock::now();
+    std::vector<std::vector<std::pair<double, std::string>>> planes(
+      output.plastic_field_planes.size());
+    std::vector<std::pair<double, std::string>> revolved;
+    for (const PlasticFieldSnapshot &snapshot : plastic_field->snapshots())
+      {
+        std::ostringstream line;
+        line << "plastic field of step " << snapshot.step << " ("
+             << snapshot.n_plastic << " plastic of " << snapshot.n_total
+             << " samples, " << snapshot.n_samples
+             << " theta samples) written to";
+        for (unsigned int i = 0; i < planes.size(); ++i)
+          {
+            const double      theta = output.plastic_field_planes[i];
+            const std::string name =
+              plastic_field_plane_name(theta, snapshot.step);
+            write_plastic_field_plane(snapshot,
+                                      theta,
+                                      result_files.claim(name));
+            planes[i].emplace_back(snapshot.step, name);
+            line << (i == 0 ? " " : ", ") << output.directory << "/" << name
+                 << " (theta sample "
+                 << theta_sample_degrees(
+                      snapshot.n_samples,
+                      nearest_theta_sample(snapshot.n_samples, theta))
+                 << " deg)";
+          }
+        if (output.plastic_field_3d)
+          {
+            const std::string name = plastic_field_3d_name(snapshot.step);
+            write_plastic_field_revolved(snapshot,
+                                         output.theta_divisions,
+                                         result_files.claim(name));
+            revolved.emplace_back(snapshot.step, name);
+            line << (planes.empty() ? " " : ", ") << output.directory << "/"
+                 << name << " (" << output.theta_divisions << " sectors)";
+          }
+        log << line.str() << std::endl;
+      }
+    for (unsigned int i = 0; i < planes.size(); ++i)
+      write_plastic_field_series(planes[i],
+                                 result_files.claim(plastic_field_plane_series(
+                                   output.plastic_field_planes[i])));
+    if (output.plastic_field_3d)
+      write_plastic_field_series(revolved,
+                                 result_files.claim(plastic_field_3d_series()));
+    log << "plastic field series (.pvd, for ParaView) written to "
+        << output.directory << "/plastic-field-*.pvd; "
+        << plastic_field->wall_time() +
+             std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                           start)
+               .count()
+        << " s for the plastic field" << std::endl;
   }
 
   void
@@ -343,6 +435,9 @@ namespace FourierSSI
   void
   Simulator::write_plastic_files(const CoupledSolver &solver, std::ostream &log)
   {
+    // Before any result file: a chosen step beyond the path stops the run
+    // here (and the capture of the last step is a collective).
+    finish_plastic_field(solver);
     if (!writes_csv())
       return;
     write_load_displacement_csv(solver, log);
@@ -369,6 +464,7 @@ namespace FourierSSI
     // The stress of plastic soil is not C eps(u): displacements only (an
     // elastic soil's stress is).
     write_last_step_vtu(solver.n_soil_points() == 0, log);
+    write_plastic_field(log);
     const std::string name = result_files.claim_results_file();
     results.write_csv(name);
     log << "results written to " << name << std::endl;
@@ -404,6 +500,9 @@ namespace FourierSSI
     run.release  = [&]() { solver.reset(); };
     run.add_rows = [&](std::ostream &out) { add_plastic_rows(*solver, out); };
     run.write_files = [&](std::ostream &out) {
+      // The field of the last step of the last mesh (Plastic field steps
+      // other than last are refused with a target).
+      record_plastic_field(*solver);
       write_plastic_files(*solver, out);
     };
     solve_coupled_to_target(log, run);
