@@ -627,49 +627,81 @@ def plastic_plane_file(directory):
     return os.path.join(directory, max(steps)[1]) if steps else None
 
 
-def draw_plastic_zone(ax, path):
-    """The equivalent plastic strain per cell of the plane theta = 0, its
-    contours and the displacement (u_r, u_z) as arrows."""
+def plastic_window(x, z, quads, strain):
+    """The box around the yielded cells, a third larger (None: none)."""
+    yielded = quads[strain > 0]
+    if len(yielded) == 0:
+        return None
+    x0, x1 = x[yielded].min(), x[yielded].max()
+    z0, z1 = z[yielded].min(), z[yielded].max()
+    grow = max(x1 - x0, z1 - z0) / 6
+    return [max(x.min(), x0 - grow), min(x.max(), x1 + grow),
+            max(z.min(), z0 - grow), min(z.max(), z1 + grow)]
+
+
+def draw_plastic_plane(ax, a, quads, strain, window, arrows):
+    """Cells filled by their plastic strain, its contours, and at most
+    `arrows` displacement arrows inside the window."""
     from matplotlib.collections import PolyCollection
+    from matplotlib.colors import PowerNorm
+    x, z = a["Points"][:, 0], a["Points"][:, 2]
+    cells = PolyCollection([np.column_stack([x[q], z[q]]) for q in quads],
+                           array=strain, cmap="magma_r", edgecolors="face",
+                           linewidths=0.2,
+                           norm=PowerNorm(0.5, 0, max(strain.max(), 1e-30)))
+    ax.add_collection(cells)
+    if strain.max() > 0 and len(strain) >= 3:
+        try:
+            ax.tricontour(x[quads].mean(axis=1), z[quads].mean(axis=1),
+                          strain, levels=strain.max() *
+                          np.array([0.01, 0.1, 0.3, 0.6]),
+                          colors="#1f77b4", linewidths=0.6)
+        except (ValueError, RuntimeError):
+            pass  # cell centres on one line: no triangulation
+    inside = np.flatnonzero((x >= window[0]) & (x <= window[1]) &
+                            (z >= window[2]) & (z <= window[3]))
+    inside = inside[np.unique(np.round(np.column_stack(
+        [x[inside], z[inside]]), 9), axis=0, return_index=True)[1]]
+    shown = inside[::max(1, len(inside) // arrows)]
+    ax.quiver(x[shown], z[shown], a["u_r"][shown, 0], a["u_z"][shown, 0],
+              color="#2ca02c", width=0.004)
+    ax.set_xlim(window[0], window[1])
+    ax.set_ylim(window[2], window[3])
+    ax.set_aspect("equal", adjustable="box")
+    ax.tick_params(labelsize=6)
+    ax.set_xlabel("r [m]", fontsize=7)
+    ax.set_ylabel("z [m]", fontsize=7)
+    return cells
+
+
+def draw_plastic_zone(fig, spec, path):
+    """The loading plane theta = 0: the whole soil and a zoom on the cells
+    that yielded, filled by their equivalent plastic strain, with its
+    contours and the displacement (u_r, u_z) as arrows."""
     a = vtu_arrays(path)
     x, z = a["Points"][:, 0], a["Points"][:, 2]
     # Each cell is a patch of its own 4 vertices, deal.II's lexicographic
     # order (0, 1, 3, 2 goes round the quadrilateral).
     quads = np.arange(len(x)).reshape(-1, 4)[:, [0, 1, 3, 2]]
     strain = a["plastic_strain"][quads[:, 0], 0]
-    polygons = [np.column_stack([x[q], z[q]]) for q in quads]
-    cells = PolyCollection(polygons, array=strain, cmap="magma_r",
-                           edgecolors="face", linewidths=0.2)
-    ax.add_collection(cells)
-    centre_x, centre_z = x[quads].mean(axis=1), z[quads].mean(axis=1)
-    if strain.max() > 0 and len(strain) >= 3:
-        try:
-            ax.tricontour(centre_x, centre_z, strain, levels=
-                          np.linspace(0, strain.max(), 6)[1:-1],
-                          colors="#1f77b4", linewidths=0.6)
-        except (ValueError, RuntimeError):
-            pass  # too few distinct cell centres for a triangulation
-    u = a["u_r"][:, 0], a["u_z"][:, 0]
-    first = np.unique(np.round(np.column_stack([x, z]), 9), axis=0,
-                      return_index=True)[1]
-    step = max(1, len(first) // 250)
-    shown = first[::step]
-    ax.quiver(x[shown], z[shown], u[0][shown], u[1][shown], color="#2ca02c",
-              width=0.003)
-    ax.set_xlim(x.min(), x.max())
-    ax.set_ylim(z.min(), z.max())
-    ax.set_aspect("equal", adjustable="box")
-    ax.tick_params(labelsize=6)
-    ax.set_xlabel("r [m] (theta = 0)", fontsize=7)
-    ax.set_ylabel("z [m]", fontsize=7)
-    bar = plt.colorbar(cells, ax=ax, fraction=0.04, pad=0.02)
+    inner = spec.subgridspec(1, 2, wspace=0.35)
+    whole = [x.min(), x.max(), z.min(), z.max()]
+    draw_plastic_plane(fig.add_subplot(inner[0, 0]), a, quads, strain, whole,
+                       120)
+    window = plastic_window(x, z, quads, strain) or whole
+    ax = fig.add_subplot(inner[0, 1])
+    cells = draw_plastic_plane(ax, a, quads, strain, window, 200)
+    bar = fig.colorbar(cells, ax=ax, fraction=0.05, pad=0.03)
     bar.ax.tick_params(labelsize=6)
     bar.set_label("equivalent plastic strain", fontsize=6)
-    step_number = re.search(r"step(\d+)", os.path.basename(path)).group(1)
-    ax.set_title("Plastic zone in the loading plane, step %s: cell means "
-                 "(%d of %d cells yielded), contours, displacement arrows"
-                 % (step_number, int((strain > 0).sum()), len(strain)),
-                 fontsize=8)
+    step = re.search(r"step(\d+)", os.path.basename(path)).group(1)
+    top = spec.get_position(fig)
+    fig.text(top.x0, top.y1 + 0.004, "Plastic zone in the loading plane "
+             "(theta = 0), step %s: cell means, %d of %d cells yielded\n"
+             "(right: near them); contours at 1, 10, 30, 60 %% of the "
+             "largest; arrows: displacement (u_r, u_z)"
+             % (step, int((strain > 0).sum()), len(strain)), fontsize=8,
+             va="bottom")
 
 
 # ----------------------------------------------------------------- table
@@ -776,7 +808,7 @@ def layout(fig, shown, n_goals):
     if "interface-state" in shown:
         plan.append(("interface-state", 2.0))
     if "plastic-zone" in shown:
-        plan.append(("plastic-zone", 2.4))
+        plan.append(("plastic-zone", 2.2))
     if "goals" in shown:
         plan.append(("goals", 0.6 + 0.19 * n_goals))
     plan.append(("footer", 0.5))
@@ -813,7 +845,7 @@ def draw_page(directory, prm, prm_path, rows, out):
         extra["interface-state"] = draw_interface_state(
             ax, read_csv(os.path.join(directory, "interface-state.csv")))
     if "plastic-zone" in shown:
-        draw_plastic_zone(fig.add_subplot(spots["plastic-zone"]),
+        draw_plastic_zone(fig, spots["plastic-zone"],
                           plastic_plane_file(directory))
     texts = []
     if "goals" in shown:
