@@ -6,14 +6,19 @@
 #include <deal.II/base/timer.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/coupled_solver.h>
+#include <fourier_ssi/coupled/plastic_field_recorder.h>
 #include <fourier_ssi/driver/simulator.h>
 #include <fourier_ssi/estimation/capacity_plateau.h>
 #include <fourier_ssi/input/problem_checks.h>
 #include <fourier_ssi/mesh/discretization_design.h>
+#include <fourier_ssi/postprocess/plastic_field_output.h>
 #include <functional>
 #include <iomanip>
 #include <limits>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace FourierSSI
 {
@@ -239,6 +244,71 @@ namespace FourierSSI
                             "fewer than three)"))
           << std::endl;
     }
+
+    /**
+     * The .pvd series of the plastic field: (step, file) per plane, and
+     * the revolved files last.
+     */
+    using PlasticSeries =
+      std::vector<std::vector<std::pair<double, std::string>>>;
+
+    /** One step's plastic-field files and its log line. */
+    void
+    write_plastic_field_step(const PlasticFieldSnapshot &snapshot,
+                             const OutputParameters     &output,
+                             ResultFiles                &files,
+                             PlasticSeries              &series,
+                             std::ostream               &log)
+    {
+      log << "plastic field of step " << snapshot.step << " ("
+          << snapshot.n_plastic << " plastic of " << snapshot.n_total
+          << " samples, " << snapshot.n_samples << " theta samples) written to";
+      const std::vector<double> &planes = output.plastic_field_planes;
+      for (unsigned int i = 0; i < planes.size(); ++i)
+        {
+          const std::string name =
+            plastic_field_plane_name(planes[i], snapshot.step);
+          write_plastic_field_plane(snapshot, planes[i], files.claim(name));
+          series[i].emplace_back(snapshot.step, name);
+          // The plane shows the theta sample nearest to its angle.
+          log << (i == 0 ? " " : ", ") << output.directory << "/" << name
+              << " (theta sample "
+              << theta_sample_degrees(snapshot.n_samples,
+                                      nearest_theta_sample(snapshot.n_samples,
+                                                           planes[i]))
+              << " deg)";
+        }
+      if (output.plastic_field_3d)
+        {
+          const std::string name = plastic_field_3d_name(snapshot.step);
+          write_plastic_field_revolved(snapshot,
+                                       output.theta_divisions,
+                                       files.claim(name));
+          series.resize(planes.size() + 1);
+          series.back().emplace_back(snapshot.step, name);
+          log << (planes.empty() ? " " : ", ") << output.directory << "/"
+              << name << " (" << output.theta_divisions << " sectors)";
+        }
+      log << std::endl;
+    }
+
+    /** The .pvd series of every plane and of the revolved files. */
+    void
+    write_plastic_field_series_files(const PlasticSeries    &series,
+                                     const OutputParameters &output,
+                                     ResultFiles            &files,
+                                     std::ostream           &log)
+    {
+      const std::vector<double> &planes = output.plastic_field_planes;
+      for (unsigned int i = 0; i < series.size(); ++i)
+        write_plastic_field_series(series[i],
+                                   files.claim(
+                                     i < planes.size() ?
+                                       plastic_field_plane_series(planes[i]) :
+                                       plastic_field_3d_series()));
+      log << "plastic field series (.pvd, for ParaView) written to "
+          << output.directory << "/plastic-field-*.pvd";
+    }
   } // namespace
 
   void
@@ -328,55 +398,16 @@ namespace FourierSSI
   {
     if (!plastic_field)
       return;
-    const OutputParameters &output = parameters.output;
-    const auto              start  = std::chrono::steady_clock::now();
-    std::vector<std::vector<std::pair<double, std::string>>> planes(
-      output.plastic_field_planes.size());
-    std::vector<std::pair<double, std::string>> revolved;
+    const auto    start = std::chrono::steady_clock::now();
+    PlasticSeries series(parameters.output.plastic_field_planes.size());
     for (const PlasticFieldSnapshot &snapshot : plastic_field->snapshots())
-      {
-        std::ostringstream line;
-        line << "plastic field of step " << snapshot.step << " ("
-             << snapshot.n_plastic << " plastic of " << snapshot.n_total
-             << " samples, " << snapshot.n_samples
-             << " theta samples) written to";
-        for (unsigned int i = 0; i < planes.size(); ++i)
-          {
-            const double      theta = output.plastic_field_planes[i];
-            const std::string name =
-              plastic_field_plane_name(theta, snapshot.step);
-            write_plastic_field_plane(snapshot,
-                                      theta,
-                                      result_files.claim(name));
-            planes[i].emplace_back(snapshot.step, name);
-            line << (i == 0 ? " " : ", ") << output.directory << "/" << name
-                 << " (theta sample "
-                 << theta_sample_degrees(
-                      snapshot.n_samples,
-                      nearest_theta_sample(snapshot.n_samples, theta))
-                 << " deg)";
-          }
-        if (output.plastic_field_3d)
-          {
-            const std::string name = plastic_field_3d_name(snapshot.step);
-            write_plastic_field_revolved(snapshot,
-                                         output.theta_divisions,
-                                         result_files.claim(name));
-            revolved.emplace_back(snapshot.step, name);
-            line << (planes.empty() ? " " : ", ") << output.directory << "/"
-                 << name << " (" << output.theta_divisions << " sectors)";
-          }
-        log << line.str() << std::endl;
-      }
-    for (unsigned int i = 0; i < planes.size(); ++i)
-      write_plastic_field_series(planes[i],
-                                 result_files.claim(plastic_field_plane_series(
-                                   output.plastic_field_planes[i])));
-    if (output.plastic_field_3d)
-      write_plastic_field_series(revolved,
-                                 result_files.claim(plastic_field_3d_series()));
-    log << "plastic field series (.pvd, for ParaView) written to "
-        << output.directory << "/plastic-field-*.pvd; "
+      write_plastic_field_step(
+        snapshot, parameters.output, result_files, series, log);
+    write_plastic_field_series_files(series,
+                                     parameters.output,
+                                     result_files,
+                                     log);
+    log << "; "
         << plastic_field->wall_time() +
              std::chrono::duration<double>(std::chrono::steady_clock::now() -
                                            start)
