@@ -7,8 +7,9 @@ scenes of four kinds:
   interface  prm/disc-gap.prm with Discretization/Target accuracy = 1e-2
              (coulomb interface on elastic soil: curve, interface state,
              the end load with its error bar);
-  plastic    prm/triaxial-mohr-coulomb.prm (plastic soil: curve to a
-             plateau, capacity with its plateau's error, yielding);
+  plastic    prm/triaxial-mohr-coulomb.prm with Write vtu (plastic soil:
+             curve to a plateau, capacity with its plateau's error,
+             yielding, the plastic zone);
   boundary load  prm/cylinder-mohr-coulomb.prm (plastic soil under a
              pressure on a boundary, no rigid foundation, no target: its
              curve has no foundation load or motion and there is no goal
@@ -18,8 +19,9 @@ For each it checks:
 (1) the PNG is written, a PNG of one A4 page (827 x 1169 px at 100 dpi);
 (2) the panels drawn are the ones the run's files allow (geometry with
     --prm; curve iff load-displacement.csv; interface state iff
-    interface-state.csv; yielding iff plastic-sample rows; goal table iff
-    goal rows) and every panel left out is named with a reason;
+    interface-state.csv; yielding iff plastic-sample rows; the plastic
+    zone iff plastic-field-theta0-step*.vtu; goal table iff goal rows) and
+    every panel left out is named with a reason;
 (3) the goal rows on the page are exactly: every quantity Q with a row
     Q_error in results.csv, every foundation stiffness (whose bar is its
     motion's: K = F/u at a given F), every capacity without a total bar
@@ -57,8 +59,10 @@ SCENES = {
                   "  set Target accuracy = 1e-2\nend\n",
                   ["geometry", "load-displacement", "interface-state",
                    "goals"]),
-    "plastic": ("prm/triaxial-mohr-coulomb.prm", "",
-                ["geometry", "load-displacement", "yielding", "goals"]),
+    "plastic": ("prm/triaxial-mohr-coulomb.prm",
+                "subsection Output\n  set Write vtu = true\nend\n",
+                ["geometry", "load-displacement", "yielding", "plastic-zone",
+                 "goals"]),
     "boundary load": ("prm/cylinder-mohr-coulomb.prm", "",
                       ["geometry", "yielding"]),
 }
@@ -182,12 +186,12 @@ def check_scene(name, prm, appended, panels_expected):
     panels, missing, step, goals = parse_report(result.stdout)
     check("%s: panels %s = %s" % (name, panels, panels_expected),
           panels == panels_expected)
-    optional = ["geometry", "load-displacement", "interface-state", "goals"]
-    check("%s: each panel left out is named with its reason, and the "
-          "plastic zone's map always (%d lines)" % (name, len(missing)),
+    optional = ["geometry", "load-displacement", "interface-state",
+                "plastic-zone", "goals"]
+    check("%s: each panel left out is named with its reason (%d lines)"
+          % (name, len(missing)),
           all((p in panels) != any(m.startswith(p + ": ") for m in missing)
-              for p in optional) and
-          any(m.startswith("plastic zone: ") for m in missing))
+              for p in optional))
     check_goals(name, out, goals)
     if "interface-state" in panels:
         with open(os.path.join(out, "load-displacement.csv")) as f:

@@ -1,15 +1,18 @@
 #!/usr/bin/python3
 """One A4 page per run, read at a glance (doc/report.md): the geometry, the
 load-displacement curve with its plateau and error bar, the interface state
-around the circumference, the yielding of the soil, and the goal values with
-their units and error bars.
+around the circumference, the yielding of the soil and its plastic zone in
+the loading plane, and the goal values with their units and error bars.
 
     /usr/bin/python3 tools/report.py OUTPUT_DIR [--prm PRM] [-o report.png]
 
 It reads what the run left in OUTPUT_DIR (results.csv; load-displacement.csv
 of a nonlinear run; interface-state.csv of a run with coulomb interfaces)
-and, with --prm, the scene's Mesh, Materials, Interfaces, Rigid foundation
-and Boundary conditions entries for the geometry. A panel whose data the run
+and the plastic field of the plane theta = 0 of plastic soil
+(plastic-field-theta0-step<s>.vtu, the latest step; read with the standard
+library and numpy, no VTK module), and, with --prm, the scene's Mesh,
+Materials, Interfaces, Rigid foundation and Boundary conditions entries for
+the geometry. A panel whose data the run
 did not write is left out and named under "not shown" with the reason.
 
 Besides the PNG it prints, one line each, the panels drawn, the panels left
@@ -562,8 +565,143 @@ def draw_yielding(ax, history):
     ax.set_ylabel("plastic samples", fontsize=7)
     ax.tick_params(labelsize=6)
     ax.grid(True, alpha=0.3)
-    ax.set_title("Yielding: plastic soil samples per step\n(the zone's map "
-                 "is not written by the program)", fontsize=8)
+    ax.set_title("Yielding: plastic soil samples per step", fontsize=8)
+
+
+# ---------------------------------------------------------- plastic zone
+
+
+def vtu_arrays(path):
+    """{name: numpy array (n_points, n_components)} of a VTU as fourier-ssi
+    writes it (deal.II's DataOutBase: base64, zlib-compressed blocks or
+    raw, Float32/Float64), and "Points"; the standard library and numpy
+    only (no VTK module needed)."""
+    import base64
+    import struct
+    import xml.etree.ElementTree as ElementTree
+    import zlib
+    root = ElementTree.parse(path).getroot()
+    compressed = root.get("compressor") is not None
+    header = "Q" if root.get("header_type") == "UInt64" else "I"
+    size = struct.calcsize(header)
+    kinds = {"Float32": np.float32, "Float64": np.float64,
+             "Int32": np.int32, "Int64": np.int64, "UInt8": np.uint8}
+    arrays = {}
+    for piece in root.iter("Piece"):
+        for parent in ("Points", "PointData"):
+            for array in piece.find(parent).iter("DataArray"):
+                text = array.text.strip()
+                if array.get("format") == "ascii":
+                    data = np.array(text.split(), dtype=float)
+                elif compressed:
+                    first = base64.b64decode(text[:((3 * size + 2) // 3) * 4])
+                    n_blocks = struct.unpack(header, first[:size])[0]
+                    length = (((3 + n_blocks) * size + 2) // 3) * 4
+                    counts = struct.unpack(header * (3 + n_blocks),
+                                           base64.b64decode(text[:length]))
+                    raw, offset, blocks = base64.b64decode(text[length:]), \
+                        0, []
+                    for count in counts[3:]:
+                        blocks.append(zlib.decompress(raw[offset:offset +
+                                                          count]))
+                        offset += count
+                    data = np.frombuffer(b"".join(blocks),
+                                         dtype=kinds[array.get("type")])
+                else:
+                    data = np.frombuffer(base64.b64decode(text)[size:],
+                                         dtype=kinds[array.get("type")])
+                components = int(array.get("NumberOfComponents", "1"))
+                name = "Points" if parent == "Points" else array.get("Name")
+                arrays[name] = data.astype(float).reshape(-1, components)
+    return arrays
+
+
+def plastic_plane_file(directory):
+    """The loading plane's (theta = 0) plastic field of the latest step
+    written, or None."""
+    steps = []
+    for name in os.listdir(directory):
+        m = re.fullmatch(r"plastic-field-theta0-step(\d+)\.vtu", name)
+        if m:
+            steps.append((int(m.group(1)), name))
+    return os.path.join(directory, max(steps)[1]) if steps else None
+
+
+def plastic_window(x, z, quads, strain):
+    """The box around the yielded cells, a third larger (None: none)."""
+    yielded = quads[strain > 0]
+    if len(yielded) == 0:
+        return None
+    x0, x1 = x[yielded].min(), x[yielded].max()
+    z0, z1 = z[yielded].min(), z[yielded].max()
+    grow = max(x1 - x0, z1 - z0) / 6
+    return [max(x.min(), x0 - grow), min(x.max(), x1 + grow),
+            max(z.min(), z0 - grow), min(z.max(), z1 + grow)]
+
+
+def draw_plastic_plane(ax, a, quads, strain, window, arrows):
+    """Cells filled by their plastic strain, its contours, and at most
+    `arrows` displacement arrows inside the window."""
+    from matplotlib.collections import PolyCollection
+    from matplotlib.colors import PowerNorm
+    x, z = a["Points"][:, 0], a["Points"][:, 2]
+    cells = PolyCollection([np.column_stack([x[q], z[q]]) for q in quads],
+                           array=strain, cmap="magma_r", edgecolors="face",
+                           linewidths=0.2,
+                           norm=PowerNorm(0.5, 0, max(strain.max(), 1e-30)))
+    ax.add_collection(cells)
+    if strain.max() > 0 and len(strain) >= 3:
+        try:
+            ax.tricontour(x[quads].mean(axis=1), z[quads].mean(axis=1),
+                          strain, levels=strain.max() *
+                          np.array([0.01, 0.1, 0.3, 0.6]),
+                          colors="#1f77b4", linewidths=0.6)
+        except (ValueError, RuntimeError):
+            pass  # cell centres on one line: no triangulation
+    inside = np.flatnonzero((x >= window[0]) & (x <= window[1]) &
+                            (z >= window[2]) & (z <= window[3]))
+    inside = inside[np.unique(np.round(np.column_stack(
+        [x[inside], z[inside]]), 9), axis=0, return_index=True)[1]]
+    shown = inside[::max(1, len(inside) // arrows)]
+    ax.quiver(x[shown], z[shown], a["u_r"][shown, 0], a["u_z"][shown, 0],
+              color="#2ca02c", width=0.004)
+    ax.set_xlim(window[0], window[1])
+    ax.set_ylim(window[2], window[3])
+    ax.set_aspect("equal", adjustable="box")
+    ax.tick_params(labelsize=6)
+    ax.set_xlabel("r [m]", fontsize=7)
+    ax.set_ylabel("z [m]", fontsize=7)
+    return cells
+
+
+def draw_plastic_zone(fig, spec, path):
+    """The loading plane theta = 0: the whole soil and a zoom on the cells
+    that yielded, filled by their equivalent plastic strain, with its
+    contours and the displacement (u_r, u_z) as arrows."""
+    a = vtu_arrays(path)
+    x, z = a["Points"][:, 0], a["Points"][:, 2]
+    # Each cell is a patch of its own 4 vertices, deal.II's lexicographic
+    # order (0, 1, 3, 2 goes round the quadrilateral).
+    quads = np.arange(len(x)).reshape(-1, 4)[:, [0, 1, 3, 2]]
+    strain = a["plastic_strain"][quads[:, 0], 0]
+    inner = spec.subgridspec(1, 2, wspace=0.35)
+    whole = [x.min(), x.max(), z.min(), z.max()]
+    draw_plastic_plane(fig.add_subplot(inner[0, 0]), a, quads, strain, whole,
+                       120)
+    window = plastic_window(x, z, quads, strain) or whole
+    ax = fig.add_subplot(inner[0, 1])
+    cells = draw_plastic_plane(ax, a, quads, strain, window, 200)
+    bar = fig.colorbar(cells, ax=ax, fraction=0.05, pad=0.03)
+    bar.ax.tick_params(labelsize=6)
+    bar.set_label("equivalent plastic strain", fontsize=6)
+    step = re.search(r"step(\d+)", os.path.basename(path)).group(1)
+    top = spec.get_position(fig)
+    fig.text(top.x0, top.y1 + 0.004, "Plastic zone in the loading plane "
+             "(theta = 0), step %s: cell means, %d of %d cells yielded\n"
+             "(right: near them); contours at 1, 10, 30, 60 %% of the "
+             "largest; arrows: displacement (u_r, u_z)"
+             % (step, int((strain > 0).sum()), len(strain)), fontsize=8,
+             va="bottom")
 
 
 # ----------------------------------------------------------------- table
@@ -642,10 +780,14 @@ def choose_panels(directory, prm, rows, goals):
                        "(no coulomb interfaces)")
     if yield_history(rows):
         shown.append("yielding")
-        missing.append("plastic zone: no map: the program writes no plastic "
-                       "field (only the count of plastic samples per step)")
+        if plastic_plane_file(directory):
+            shown.append("plastic-zone")
+        else:
+            missing.append("plastic-zone: no plastic-field-theta0-step*.vtu "
+                           "(Output/Write vtu = false, or Plastic field "
+                           "planes without 0)")
     else:
-        missing.append("plastic zone: no plastic soil in this run")
+        missing.append("plastic-zone: no plastic soil in this run")
     if goals:
         shown.append("goals")
     else:
@@ -665,12 +807,14 @@ def layout(fig, shown, n_goals):
         plan.append(("curves", 2.6))
     if "interface-state" in shown:
         plan.append(("interface-state", 2.0))
+    if "plastic-zone" in shown:
+        plan.append(("plastic-zone", 2.2))
     if "goals" in shown:
         plan.append(("goals", 0.6 + 0.19 * n_goals))
     plan.append(("footer", 0.5))
     # Every panel keeps its size on every page: the space of the panels
     # left out stays blank at the bottom.
-    full_page = 0.05 + 3.2 + 2.6 + 2.0 + 1.2 + 0.5
+    full_page = 0.05 + 3.2 + 2.6 + 2.0 + 2.4 + 1.2 + 0.5
     plan.append(("blank", max(0., full_page - sum(h for _, h in plan))))
     grid = GridSpec(len(plan), 1, figure=fig,
                     height_ratios=[h for _, h in plan], hspace=0.6,
@@ -700,6 +844,9 @@ def draw_page(directory, prm, prm_path, rows, out):
         ax = fig.add_subplot(spots["interface-state"])
         extra["interface-state"] = draw_interface_state(
             ax, read_csv(os.path.join(directory, "interface-state.csv")))
+    if "plastic-zone" in shown:
+        draw_plastic_zone(fig, spots["plastic-zone"],
+                          plastic_plane_file(directory))
     texts = []
     if "goals" in shown:
         table = draw_goal_table(fig.add_subplot(spots["goals"]), goals, rows)

@@ -85,6 +85,19 @@ namespace FourierSSI
       selected);
   }
 
+  std::vector<SoilSample>
+  CoupledSolver::committed_soil_samples() const
+  {
+    const CoupledStepState &committed = states.committed;
+    return sources.soil_points().samples_of(
+      sources.strain_samples(committed.correction_solution,
+                             committed.load_factor,
+                             committed.held_fraction,
+                             committed.swipe_force),
+      states.before_last.plastic,
+      committed.plastic);
+  }
+
   std::vector<Vector<double>>
   CoupledSolver::soil_force(const std::vector<Vector<double>> &fields) const
   {
@@ -265,7 +278,10 @@ namespace FourierSSI
     if (sources.interface_points())
       states.record_interfaces(*sources.interface_points(),
                                sources.interface_sampling());
-    states.record_trial(holding, log, step_observer);
+    states.record_trial(holding, log, [this](const LoadStepResult &r) {
+      for (const auto &observer : step_observers)
+        observer(r);
+    });
   }
 
   RigidMotion

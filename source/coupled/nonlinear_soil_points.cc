@@ -129,9 +129,9 @@ namespace FourierSSI
           {
             fe_values.reinit(iterators[0]);
             SoilCell cell;
-            cell.first_point  = points.size();
-            cell.centre       = iterators[0]->center();
-            cell.active_index = iterators[0]->active_cell_index();
+            cell.first_point       = points.size();
+            cell.centre            = iterators[0]->center();
+            cell.active_cell_index = iterators[0]->active_cell_index();
             for (unsigned int h = 0; h < set.size(); ++h)
               {
                 std::vector<types::global_dof_index> indices(n_dofs);
@@ -154,6 +154,7 @@ namespace FourierSSI
                     cell.shape_grad[q][i]  = fe_values.shape_grad(i, q);
                   }
                 SoilPoint point;
+                point.position      = x;
                 point.dV            = x[0] * fe_values.JxW(q);
                 point.depth         = parameters.materials.depth(x[1]);
                 point.shear_modulus = material.shear_modulus(point.depth);
@@ -504,6 +505,46 @@ namespace FourierSSI
             sampling.evaluate(a, factor_of(k), s);
             for (unsigned int j = 0; j < N; ++j)
               samples[p * N + j][k] = s[j];
+          }
+      }
+    return samples;
+  }
+
+  std::vector<SoilSample>
+  NonlinearSoilPoints::samples_of(
+    const std::vector<StrainVector> &strain,
+    const std::vector<StrainVector> &previous_plastic,
+    const std::vector<StrainVector> &plastic) const
+  {
+    const unsigned int      N = sampling.n_samples();
+    std::vector<SoilSample> samples(points.size() * N);
+    const StrainVector      at_rest = {{0., 0., 0., 0., 0., 0.}};
+    for (unsigned int p = 0; p < points.size(); ++p)
+      {
+        if (!owns_point(p))
+          continue;
+        const SoilPoint &point = points[p];
+        for (unsigned int j = 0; j < N; ++j)
+          {
+            const unsigned int  k = p * N + j;
+            const StrainVector &before =
+              previous_plastic.empty() ? at_rest : previous_plastic[k];
+            const StrainVector elastic = elastic_stress(point, strain[k]);
+            SoilSample        &sample  = samples[k];
+            StrainVector       step_change;
+            for (unsigned int c = 0; c < 6; ++c)
+              {
+                sample.stress[c] = elastic[c] - plastic[k][c];
+                step_change[c]   = plastic[k][c] - before[c];
+              }
+            sample.plastic_strain =
+              compliance_strain(plastic[k], point.lambda, point.shear_modulus);
+            sample.plastic_strain_increment =
+              compliance_strain(step_change, point.lambda, point.shear_modulus);
+            sample.yield_value =
+              laws[point.law].yield_function(sample.stress, point.depth);
+            sample.plastic =
+              return_from(point, elastic, before).state != SoilState::elastic;
           }
       }
     return samples;

@@ -23,7 +23,7 @@ namespace FourierSSI
         auto it = set.problem(h).get_dof_handler().begin_active();
         for (SoilCell &cell : cells)
           {
-            while (it->active_cell_index() != cell.active_index)
+            while (it->active_cell_index() != cell.active_cell_index)
               ++it;
             std::vector<types::global_dof_index> indices(n_dofs);
             it->get_dof_indices(indices);

@@ -59,7 +59,9 @@ namespace FourierSSI
         {"{family}", "(symmetric|antisymmetric)"},
         {"{cycle}", "[0-9]+"},
         {"{rank}", "[0-9]+"},
-        {"{id}", "[0-9]+"}};
+        {"{id}", "[0-9]+"},
+        {"{step}", "[0-9]+"},
+        {"{deg}", "[0-9][0-9.e+-]*"}};
       return fields;
     }
 
@@ -140,6 +142,12 @@ namespace FourierSSI
       // Refinement cycles and Target accuracy of a coupled run: each mesh
       // with the indicator that refined it.
       "mesh-cycle{cycle}.vtu",
+      // Plastic soil: the plastic field per meridian plane and step, the
+      // revolved soil per step, and their .pvd series (plastic_field_output.h).
+      "plastic-field-theta{deg}-step{step}.vtu",
+      "plastic-field-theta{deg}.pvd",
+      "plastic-field-3d-step{step}.vtu",
+      "plastic-field-3d.pvd",
       // Output/Soil reaction depths: the PISA curves of a plastic run.
       "soil-reaction-curves.csv",
       // Rigid foundation/Stiffness matrix: the 6x6 matrix, as CSV and as

@@ -6,14 +6,19 @@
 #include <deal.II/base/timer.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/coupled_solver.h>
+#include <fourier_ssi/coupled/plastic_field_recorder.h>
 #include <fourier_ssi/driver/simulator.h>
 #include <fourier_ssi/estimation/capacity_plateau.h>
 #include <fourier_ssi/input/problem_checks.h>
 #include <fourier_ssi/mesh/discretization_design.h>
+#include <fourier_ssi/postprocess/plastic_field_output.h>
 #include <functional>
 #include <iomanip>
 #include <limits>
 #include <sstream>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace FourierSSI
 {
@@ -50,6 +55,13 @@ namespace FourierSSI
                     !parameters.output.write_3d_vtu,
                   ExcMessage(entry + ": not yet: Output/Lines 3D and Write "
                                      "3d vtu with plastic soil or a swipe"));
+      AssertThrow(parameters.output.plastic_field_steps.empty() ||
+                    !on_nested_meshes(parameters),
+                  ExcMessage("Output/Plastic field steps: not yet with "
+                             "Discretization/Target accuracy or Refinement "
+                             "cycles > 1 (the field of the last step of the "
+                             "last mesh only): set Plastic field steps = "
+                             "last"));
       AssertThrow(!parameters.output.soil_reaction_curves() ||
                     !on_nested_meshes(parameters),
                   ExcMessage("Output/Soil reaction depths: not yet with "
@@ -247,6 +259,71 @@ namespace FourierSSI
                             "fewer than three)"))
           << std::endl;
     }
+
+    /**
+     * The .pvd series of the plastic field: (step, file) per plane, and
+     * the revolved files last.
+     */
+    using PlasticSeries =
+      std::vector<std::vector<std::pair<double, std::string>>>;
+
+    /** One step's plastic-field files and its log line. */
+    void
+    write_plastic_field_step(const PlasticFieldSnapshot &snapshot,
+                             const OutputParameters     &output,
+                             ResultFiles                &files,
+                             PlasticSeries              &series,
+                             std::ostream               &log)
+    {
+      log << "plastic field of step " << snapshot.step << " ("
+          << snapshot.n_plastic << " plastic of " << snapshot.n_total
+          << " samples, " << snapshot.n_samples << " theta samples) written to";
+      const std::vector<double> &planes = output.plastic_field_planes;
+      for (unsigned int i = 0; i < planes.size(); ++i)
+        {
+          const std::string name =
+            plastic_field_plane_name(planes[i], snapshot.step);
+          write_plastic_field_plane(snapshot, planes[i], files.claim(name));
+          series[i].emplace_back(snapshot.step, name);
+          // The plane shows the theta sample nearest to its angle.
+          log << (i == 0 ? " " : ", ") << output.directory << "/" << name
+              << " (theta sample "
+              << theta_sample_degrees(snapshot.n_samples,
+                                      nearest_theta_sample(snapshot.n_samples,
+                                                           planes[i]))
+              << " deg)";
+        }
+      if (output.plastic_field_3d)
+        {
+          const std::string name = plastic_field_3d_name(snapshot.step);
+          write_plastic_field_revolved(snapshot,
+                                       output.theta_divisions,
+                                       files.claim(name));
+          series.resize(planes.size() + 1);
+          series.back().emplace_back(snapshot.step, name);
+          log << (planes.empty() ? " " : ", ") << output.directory << "/"
+              << name << " (" << output.theta_divisions << " sectors)";
+        }
+      log << std::endl;
+    }
+
+    /** The .pvd series of every plane and of the revolved files. */
+    void
+    write_plastic_field_series_files(const PlasticSeries    &series,
+                                     const OutputParameters &output,
+                                     ResultFiles            &files,
+                                     std::ostream           &log)
+    {
+      const std::vector<double> &planes = output.plastic_field_planes;
+      for (unsigned int i = 0; i < series.size(); ++i)
+        write_plastic_field_series(series[i],
+                                   files.claim(
+                                     i < planes.size() ?
+                                       plastic_field_plane_series(planes[i]) :
+                                       plastic_field_3d_series()));
+      log << "plastic field series (.pvd, for ParaView) written to "
+          << output.directory << "/plastic-field-*.pvd";
+    }
   } // namespace
 
   void
@@ -261,6 +338,7 @@ namespace FourierSSI
     const std::unique_ptr<CoupledSolver> solver =
       solve_coupled_curve(log, true, [&](CoupledSolver &s) {
         record_soil_reactions(s);
+        record_plastic_field(s);
       });
     add_plastic_rows(*solver, log);
     write_plastic_files(*solver, log);
@@ -285,7 +363,7 @@ namespace FourierSSI
     reaction_curves = std::make_unique<SoilReactionCurves>(
       harmonic_set->problem(h).get_dof_handler(), parameters);
     SoilReactionCurves &curves = *reaction_curves;
-    solver.set_step_observer([&solver, &curves, h, this](
+    solver.add_step_observer([&solver, &curves, h, this](
                                const LoadStepResult &step) {
       const auto start = std::chrono::steady_clock::now();
       const auto shaft = solver.soil_nodal_force(
@@ -304,6 +382,52 @@ namespace FourierSSI
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start)
           .count();
     });
+  }
+
+  void
+  Simulator::record_plastic_field(CoupledSolver &solver)
+  {
+    plastic_field.reset();
+    if (solver.n_soil_points() == 0 ||
+        !parameters.output.writes_plastic_field())
+      return;
+    plastic_field = std::make_unique<PlasticFieldRecorder>(solver,
+                                                           *harmonic_set,
+                                                           parameters.output);
+    PlasticFieldRecorder &recorder = *plastic_field;
+    solver.add_step_observer([&solver, &recorder](const LoadStepResult &) {
+      recorder.observe(solver.get_steps().size());
+    });
+  }
+
+  void
+  Simulator::finish_plastic_field(const CoupledSolver &solver)
+  {
+    if (!plastic_field)
+      return;
+    plastic_field->finish(solver.get_steps().size());
+  }
+
+  void
+  Simulator::write_plastic_field(std::ostream &log)
+  {
+    if (!plastic_field)
+      return;
+    const auto    start = std::chrono::steady_clock::now();
+    PlasticSeries series(parameters.output.plastic_field_planes.size());
+    for (const PlasticFieldSnapshot &snapshot : plastic_field->snapshots())
+      write_plastic_field_step(
+        snapshot, parameters.output, result_files, series, log);
+    write_plastic_field_series_files(series,
+                                     parameters.output,
+                                     result_files,
+                                     log);
+    log << "; "
+        << plastic_field->wall_time() +
+             std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                           start)
+               .count()
+        << " s for the plastic field" << std::endl;
   }
 
   void
@@ -357,6 +481,9 @@ namespace FourierSSI
   void
   Simulator::write_plastic_files(const CoupledSolver &solver, std::ostream &log)
   {
+    // Before any result file: a chosen step beyond the path stops the run
+    // here (and the capture of the last step is a collective).
+    finish_plastic_field(solver);
     if (!writes_csv())
       return;
     write_load_displacement_csv(solver, log);
@@ -383,6 +510,7 @@ namespace FourierSSI
     // The stress of plastic soil is not C eps(u): displacements only (an
     // elastic soil's stress is).
     write_last_step_vtu(solver.n_soil_points() == 0, log);
+    write_plastic_field(log);
     const std::string name = result_files.claim_results_file();
     results.write_csv(name);
     log << "results written to " << name << std::endl;
@@ -418,6 +546,9 @@ namespace FourierSSI
     run.release  = [&]() { solver.reset(); };
     run.add_rows = [&](std::ostream &out) { add_plastic_rows(*solver, out); };
     run.write_files = [&](std::ostream &out) {
+      // The field of the last step of the last mesh (Plastic field steps
+      // other than last are refused with a target).
+      record_plastic_field(*solver);
       write_plastic_files(*solver, out);
     };
     run.last_solver = [&]() -> const CoupledSolver & { return *solver; };

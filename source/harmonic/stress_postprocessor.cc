@@ -15,6 +15,18 @@ namespace FourierSSI
     return s;
   }
 
+  StrainVector
+  compliance_strain(const StrainVector &s, const double lambda, const double mu)
+  {
+    StrainVector e;
+    const double trace = (s[0] + s[1] + s[2]) / (3. * lambda + 2. * mu);
+    for (unsigned int k = 0; k < 3; ++k)
+      e[k] = (s[k] - lambda * trace) / (2. * mu);
+    for (unsigned int k = 3; k < 6; ++k)
+      e[k] = s[k] / mu;
+    return e;
+  }
+
   StressPostprocessor::StressPostprocessor(
     const HarmonicOperator                  &harmonic_operator,
     const MaterialLibrary                   &materials,

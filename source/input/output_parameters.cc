@@ -66,7 +66,8 @@ namespace FourierSSI
     prm.declare_entry("Theta divisions",
                       "36",
                       Patterns::Integer(3, 720),
-                      "Sectors of the revolved 3D VTU.");
+                      "Sectors of the revolved 3D VTU (solution-3d.vtu, "
+                      "and plastic-field-3d-step<s>.vtu of plastic soil).");
     prm.declare_entry("Soil reaction depths",
                       "",
                       Patterns::Anything(),
@@ -84,6 +85,28 @@ namespace FourierSSI
                       "rigid or an elastic material region loaded through "
                       "the Rigid foundation's tied material. auto: the "
                       "Rigid foundation's Id (a rigid pile).");
+    prm.declare_entry("Plastic field steps",
+                      "last",
+                      Patterns::Anything(),
+                      "Plastic soil: the load steps (numbers as in "
+                      "load-displacement.csv, from 1) whose plastic field "
+                      "is written (plastic strain, yield state, stress, "
+                      "displacement; doc/output-files.md), or 'last'. "
+                      "Steps beyond the path stop the run at its end, "
+                      "before any result is written.");
+    prm.declare_entry("Plastic field planes",
+                      "0, 90",
+                      Patterns::Anything(),
+                      "Plastic soil: meridian planes [degrees, 0 <= theta "
+                      "< 360] written as plastic-field-theta<deg>-step<s>."
+                      "vtu, each at the nearest theta sample of the soil; "
+                      "empty: none. Needs Write vtu.");
+    prm.declare_entry("Plastic field 3D",
+                      "false",
+                      Patterns::Bool(),
+                      "Plastic soil: the soil cells revolved about the axis "
+                      "in Theta divisions sectors with the plastic field "
+                      "(plastic-field-3d-step<s>.vtu). Needs Write vtu.");
     prm.leave_subsection();
   }
 
@@ -151,6 +174,69 @@ namespace FourierSSI
   }
 
   void
+  OutputParameters::parse_plastic_field_steps(const std::string &text)
+  {
+    plastic_field_steps.clear();
+    if (Utilities::trim(text) == "last")
+      return;
+    const std::string message =
+      "Output/Plastic field steps: '" + text +
+      "' is not 'last' or a list of load step numbers (1, 2, ...) in "
+      "increasing order, each once";
+    const auto words = Utilities::split_string_list(text);
+    AssertThrow(!words.empty(), ExcMessage(message));
+    for (const std::string &word : words)
+      {
+        // Whole numbers only: string_to_int would read "2.5" as 2.
+        AssertThrow(!word.empty() &&
+                      word.find_first_not_of("0123456789") == std::string::npos,
+                    ExcMessage(message));
+        unsigned long step = 0;
+        try
+          {
+            step = std::stoul(word);
+          }
+        catch (...)
+          {
+            AssertThrow(false, ExcMessage(message));
+          }
+        AssertThrow(step >= 1 && step <= 1000000 &&
+                      (plastic_field_steps.empty() ||
+                       step > plastic_field_steps.back()),
+                    ExcMessage(message));
+        plastic_field_steps.push_back(static_cast<unsigned int>(step));
+      }
+  }
+
+  void
+  OutputParameters::parse_plastic_field_planes(const std::string &text)
+  {
+    plastic_field_planes.clear();
+    const std::string message =
+      "Output/Plastic field planes: '" + text +
+      "' is not a list of angles theta [degrees] with 0 <= theta < 360, "
+      "each once";
+    for (const std::string &word : Utilities::split_string_list(text))
+      {
+        double theta = 0.;
+        try
+          {
+            theta = Utilities::string_to_double(word);
+          }
+        catch (...)
+          {
+            AssertThrow(false, ExcMessage(message));
+          }
+        AssertThrow(std::isfinite(theta) && theta >= 0. && theta < 360. &&
+                      std::find(plastic_field_planes.begin(),
+                                plastic_field_planes.end(),
+                                theta) == plastic_field_planes.end(),
+                    ExcMessage(message));
+        plastic_field_planes.push_back(theta);
+      }
+  }
+
+  void
   OutputParameters::parse_parameters(ParameterHandler &prm)
   {
     prm.enter_subsection("Output");
@@ -167,6 +253,9 @@ namespace FourierSSI
       theta_degrees.push_back(Utilities::string_to_double(t));
     parse_soil_reaction_depths(prm.get("Soil reaction depths"));
     parse_soil_reaction_pile(prm.get("Soil reaction pile"));
+    parse_plastic_field_steps(prm.get("Plastic field steps"));
+    parse_plastic_field_planes(prm.get("Plastic field planes"));
+    plastic_field_3d = prm.get_bool("Plastic field 3D");
     lines.clear();
     for (const std::string &item : split_top_level(prm.get("Lines 3D"), ';'))
       {

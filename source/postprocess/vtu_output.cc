@@ -76,6 +76,10 @@ namespace FourierSSI
                        const std::vector<VtuField> &,
                        const std::string &);
   template void
+  write_patches_vtu<2>(const std::vector<DataOutBase::Patch<2, 3>> &,
+                       const std::vector<VtuField> &,
+                       const std::string &);
+  template void
   write_patches_vtu<3>(const std::vector<DataOutBase::Patch<3, 3>> &,
                        const std::vector<VtuField> &,
                        const std::string &);

@@ -34,7 +34,7 @@ namespace reaction_test
                     SoilReactionCurves &curves,
                     const unsigned int  h1)
   {
-    run.solver->set_step_observer(
+    run.solver->add_step_observer(
       [&run, &curves, h1](const LoadStepResult &step) {
         const auto shaft = run.solver->soil_nodal_force(
           [&](const Point<2> &c) { return curves.beside_shaft(c); });

@@ -183,13 +183,31 @@ namespace FourierSSI
 
     /**
      * Called after every converged step (the state then is that step's:
-     * solution(), soil_nodal_force()), before the step's log line.
+     * solution(), soil_nodal_force(), committed_soil_samples()), before
+     * the step's log line; several observers are called in the order they
+     * were added (soil-reaction curves, the plastic field).
      */
     void
-    set_step_observer(std::function<void(const LoadStepResult &)> observer)
+    add_step_observer(std::function<void(const LoadStepResult &)> observer)
     {
-      step_observer = std::move(observer);
+      step_observers.push_back(std::move(observer));
     }
+
+    /** The soil's quadrature points (positions, cells, theta samples). */
+    const NonlinearSoilPoints &
+    soil_points() const
+    {
+      return sources.soil_points();
+    }
+
+    /**
+     * The soil's samples [point * N + j] of the last converged step at the
+     * points this rank owns (NonlinearSoilPoints::samples_of): stress,
+     * plastic strain and its change over the step, f and whether the
+     * step's return mapping yielded there.
+     */
+    std::vector<SoilSample>
+    committed_soil_samples() const;
 
     /** True if the scene has nonlinear (coulomb, contact) interfaces. */
     bool
@@ -274,8 +292,8 @@ namespace FourierSSI
     std::unique_ptr<Linearisation> linearisation;
     StepIteration                  step_iteration;
     /** The trial is the retry after the last cut (retry_persistently). */
-    bool                                        persistent = false;
-    std::function<void(const LoadStepResult &)> step_observer;
+    bool                                                     persistent = false;
+    std::vector<std::function<void(const LoadStepResult &)>> step_observers;
   };
 } // namespace FourierSSI
 

@@ -72,6 +72,37 @@ namespace FourierSSI
     double largest_yield_value = 0.;
   };
 
+  /**
+   * One (point, theta) sample of a converged state, as the plastic-field
+   * output reads it (plastic_field_recorder.h).
+   */
+  struct SoilSample
+  {
+    /** sigma = sigma_0 + D eps - s_p (tension positive, shear stresses). */
+    StrainVector stress = {{0., 0., 0., 0., 0., 0.}};
+    /**
+     * eps_p = D^-1 s_p and its change over the step (engineering shear
+     * strains).
+     */
+    StrainVector plastic_strain           = {{0., 0., 0., 0., 0., 0.}};
+    StrainVector plastic_strain_increment = {{0., 0., 0., 0., 0., 0.}};
+    /** f(sigma) [kPa], <= 0 admissible. */
+    double yield_value = 0.;
+    /** The step's return mapping ended on the yield surface. */
+    bool plastic = false;
+  };
+
+  /** Where a soil point lies and what it weighs, for output. */
+  struct SoilPointPlace
+  {
+    /** (r, z) [m]. */
+    Point<2> position;
+    /** r JxW: its weight in int ... r dr dz. */
+    double dV;
+    /** The index of its plastic law (Soil plasticity/Laws, in order). */
+    unsigned int law;
+  };
+
   class NonlinearSoilPoints
   {
   public:
@@ -90,6 +121,52 @@ namespace FourierSSI
     {
       return points.size();
     }
+
+    unsigned int
+    n_theta_samples() const
+    {
+      return sampling.n_samples();
+    }
+
+    /** The soil cells (cells with a plastic law), in mesh order. */
+    unsigned int
+    n_cells() const
+    {
+      return cells.size();
+    }
+
+    /** The active cell index of soil cell c (DoFHandler order). */
+    unsigned int
+    active_cell_index(const unsigned int c) const
+    {
+      return cells[c].active_cell_index;
+    }
+
+    /** The points of soil cell c: [first_point(c), first_point(c + 1)). */
+    unsigned int
+    first_point(const unsigned int c) const
+    {
+      return c < cells.size() ? cells[c].first_point : points.size();
+    }
+
+    /** Position, weight and law of point p. */
+    SoilPointPlace
+    place(const unsigned int p) const
+    {
+      return {points[p].position, points[p].dV, points[p].law};
+    }
+
+    /**
+     * The samples [point * N + j] of a converged state at the points this
+     * rank owns (default values at the others): its strain and s_p, and
+     * s_p of the step before (empty: at rest), from which the step's
+     * return mapping is repeated to tell plastic from elastic samples (the
+     * same count as the step's record).
+     */
+    std::vector<SoilSample>
+    samples_of(const std::vector<StrainVector> &strain,
+               const std::vector<StrainVector> &previous_plastic,
+               const std::vector<StrainVector> &plastic) const;
 
     /** The strains are B-bar's (the dilatation projected per cell). */
     bool
@@ -206,6 +283,7 @@ namespace FourierSSI
     /** A soil quadrature point: its weight and elastic constants. */
     struct SoilPoint
     {
+      Point<2>     position;
       double       dV, depth, shear_modulus, lambda;
       unsigned int law;
       /** The geostatic stress sigma_0 (Initial stress; zero without). */
@@ -224,9 +302,12 @@ namespace FourierSSI
       /** B-bar projection of the cell (null: standard strains). */
       std::shared_ptr<LinearProjection> projection;
       unsigned int                      first_point;
-      Point<2>                          centre;
-      /** Its active cell index (the DoFs of harmonics added later). */
-      unsigned int active_index;
+      /**
+       * Its active cell index: the DoFs of harmonics added later, the
+       * plastic fields' cells.
+       */
+      unsigned int active_cell_index;
+      Point<2>     centre;
     };
 
     void

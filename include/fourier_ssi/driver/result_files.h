@@ -44,7 +44,8 @@ namespace FourierSSI
      * The catalogue: every name a run may write into its folder, as
      * templates with the fields {n} (harmonic number), {family}
      * (symmetric, antisymmetric), {cycle}, {rank} (MPI rank of a VTU
-     * piece) and {id} (interface boundary id). Output/Results file is
+     * piece), {id} (interface boundary id), {step} (load step) and {deg}
+     * (a meridian plane's angle). Output/Results file is
      * added to these by each object.
      */
     static const std::vector<std::string> &

@@ -15,6 +15,7 @@
 #include <deal.II/base/timer.h>
 #include <deal.II/grid/tria.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
+#include <fourier_ssi/coupled/plastic_field_recorder.h>
 #include <fourier_ssi/driver/result_files.h>
 #include <fourier_ssi/driver/scene_plan.h>
 #include <fourier_ssi/estimation/goal_estimator.h>
@@ -265,6 +266,24 @@ namespace FourierSSI
      */
     void
     record_soil_reactions(CoupledSolver &solver);
+
+    /**
+     * Output/Plastic field steps of plastic soil: the recorder, fed by the
+     * solver after every converged step (none without soil points or
+     * without a plastic-field file to write).
+     */
+    void
+    record_plastic_field(CoupledSolver &solver);
+
+    /**
+     * The plastic field's VTU files and .pvd series, after the path: a
+     * chosen step beyond it stops the run with one line before any result
+     * is written (finish_plastic_field, on every rank).
+     */
+    void
+    finish_plastic_field(const CoupledSolver &solver);
+    void
+    write_plastic_field(std::ostream &log);
 
     /** A plastic curve's rows (steps, plastic state, capacity). */
     void
@@ -718,7 +737,8 @@ namespace FourierSSI
     /** The result files of this run (removed again if it fails). */
     ResultFiles result_files;
     /** Output/Soil reaction depths: the curves of the load path. */
-    std::unique_ptr<SoilReactionCurves> reaction_curves;
+    std::unique_ptr<SoilReactionCurves>   reaction_curves;
+    std::unique_ptr<PlasticFieldRecorder> plastic_field;
   };
 } // namespace FourierSSI
 

@@ -26,6 +26,16 @@ namespace FourierSSI
                const double        lambda,
                const double        mu);
 
+  /**
+   * epsilon = D^-1 sigma, the inverse of hooke_stress: tr eps = tr sigma /
+   * (3 lambda + 2 mu), eps_k = (sigma_k - lambda tr eps) / (2 mu), the
+   * engineering shears tau / mu.
+   */
+  StrainVector
+  compliance_strain(const StrainVector &stress,
+                    const double        lambda,
+                    const double        mu);
+
   class StressPostprocessor : public DataPostprocessor<2>
   {
   public:

@@ -1,7 +1,7 @@
 /**
  * Subsection "Output" of the .prm file: where the results go, which files
- * are written (VTU, interface tractions, 3D lines and the revolved mesh) and
- * the soil-reaction curves.
+ * are written (VTU, interface tractions, 3D lines and the revolved mesh),
+ * the soil-reaction curves and the plastic field of plastic soil.
  */
 #ifndef fourier_ssi_output_parameters_h
 #define fourier_ssi_output_parameters_h
@@ -76,6 +76,33 @@ namespace FourierSSI
     /** Read the entry Soil reaction pile; one line if it is malformed. */
     void
     parse_soil_reaction_pile(const std::string &text);
+
+    /**
+     * Plastic field steps: the load steps (numbered as in
+     * load-displacement.csv, from 1) whose plastic field is written, in
+     * increasing order; empty for `last` (the last converged step). Steps
+     * beyond the path are known only at its end (checked there).
+     */
+    std::vector<unsigned int> plastic_field_steps;
+    /** Plastic field planes: meridian angles [degrees], in [0, 360). */
+    std::vector<double> plastic_field_planes = {0., 90.};
+    /** Plastic field 3D: the revolved mesh with the plastic field. */
+    bool plastic_field_3d = false;
+
+    /** True if a plastic run writes any plastic-field file. */
+    bool
+    writes_plastic_field() const
+    {
+      return write_vtu && (!plastic_field_planes.empty() || plastic_field_3d);
+    }
+
+    /** Read the entry Plastic field steps; one line if it is malformed. */
+    void
+    parse_plastic_field_steps(const std::string &text);
+
+    /** Read the entry Plastic field planes; one line if it is malformed. */
+    void
+    parse_plastic_field_planes(const std::string &text);
 
     /**
      * Only Output/Directory and Output/Results file of a parameter file,
