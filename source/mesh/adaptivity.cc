@@ -64,15 +64,26 @@ namespace FourierSSI
     // Twin interface faces, matched by their centres (rounded to a grid far
     // below the smallest face length).
     std::map<std::pair<long long, long long>,
-             std::vector<Triangulation<2>::active_cell_iterator>>
+             std::vector<
+               std::pair<Triangulation<2>::active_cell_iterator, unsigned int>>>
                  cells_at_face;
     const double scale = 1e-9 * GridTools::minimal_cell_diameter(triangulation);
     for (const auto &cell : triangulation.active_cell_iterators())
-      for (const auto &face : cell->face_iterators())
-        if (face->at_boundary() && interface_ids.count(face->boundary_id()))
-          cells_at_face[{std::llround(face->center()[0] / scale),
-                         std::llround(face->center()[1] / scale)}]
-            .push_back(cell);
+      for (const unsigned int f : cell->face_indices())
+        if (cell->face(f)->at_boundary() &&
+            interface_ids.count(cell->face(f)->boundary_id()))
+          cells_at_face[{std::llround(cell->face(f)->center()[0] / scale),
+                         std::llround(cell->face(f)->center()[1] / scale)}]
+            .emplace_back(cell, f);
+    // A cell's cut splits its face f if it cuts across the face: faces 0, 1
+    // (normal r) by cut_y, faces 2, 3 (normal z) by cut_x.
+    const auto splits_face = [](const RefinementCase<2> cut,
+                                const unsigned int      f) {
+      const RefinementCase<2> across(f < 2 ? RefinementCase<2>::cut_y :
+                                             RefinementCase<2>::cut_x);
+      return (cut & across) !=
+             RefinementCase<2>(RefinementCase<2>::no_refinement);
+    };
     // Mesh smoothing (2:1 rule) may flag more cells: repeat until the two
     // sides of every interface agree.
     for (bool changed = true; changed;)
@@ -81,15 +92,14 @@ namespace FourierSSI
         changed = false;
         for (auto &[key, cells] : cells_at_face)
           {
-            // The union of the twins' cases: both sides cut alike.
-            RefinementCase<2> cut = RefinementCase<2>::no_refinement;
-            for (const auto &cell : cells)
-              cut = cut | cell->refine_flag_set();
-            if (cut != RefinementCase<2>::no_refinement)
-              for (const auto &cell : cells)
-                if (cell->refine_flag_set() != cut)
+            bool split = false;
+            for (const auto &[cell, f] : cells)
+              split |= splits_face(cell->refine_flag_set(), f);
+            if (split)
+              for (const auto &[cell, f] : cells)
+                if (!cell->refine_flag_set())
                   {
-                    cell->set_refine_flag(cut);
+                    cell->set_refine_flag();
                     changed = true;
                   }
           }

@@ -32,10 +32,11 @@ namespace FourierSSI
                   const std::set<types::boundary_id> &interface_ids);
 
   /**
-   * Refine the cells flagged in `triangulation`, after mirroring the flags
-   * (and their refinement cases) across every interface (faces with an id
-   * in `interface_ids` and their geometric twins) until both sides agree,
-   * so interface pairs stay valid.
+   * Refine the cells flagged in `triangulation`, after mirroring across
+   * every interface (faces with an id in `interface_ids` and their
+   * geometric twins) each flag whose cut splits the interface face, until
+   * both sides agree, so interface pairs stay valid. A cut that leaves the
+   * face whole (cut_x at a face of constant r) needs no twin.
    */
   void
   execute_refinement_keeping_interface_twins(
