@@ -147,9 +147,14 @@ namespace
                                              Harmonic{3, Family::antisymmetric},
                                              2,
                                              5);
-        const auto  rank = name.find("{rank}");
-        if (rank != std::string::npos)
-          name.replace(rank, 6, "1");
+        // The fields fill() does not know: an MPI rank, a plastic field's
+        // step and meridian angle.
+        for (const auto &[field, value] :
+             {std::pair<std::string, std::string>{"{rank}", "1"},
+              {"{step}", "4"},
+              {"{deg}", "90"}})
+          if (const auto at = name.find(field); at != std::string::npos)
+            name.replace(at, field.size(), value);
         ours.push_back(name);
         ours.push_back(fs::path(AtomicFile::temporary_name(name)).string());
       }
