@@ -8,9 +8,10 @@ namespace FourierSSI
     /**
      * The interfaces' theta samples without soil. With growth n_max is
      * Maximum harmonic, so that the samples (and the state kept at them)
-     * stay valid when harmonics are added. Exact contact and Newton on a
-     * stiff penalty take one sample per value of the gap; the
-     * initial-stiffness iteration keeps the general default.
+     * stay valid when harmonics are added. Exact contact and a stiff
+     * penalty (InterfaceParameters::is_stiff) take one sample per value of
+     * the gap, whichever solver steps the path (so that both give the same
+     * answer); softer laws the general default.
      */
     unsigned int
     interface_theta_samples(const std::vector<Harmonic> &list,
@@ -19,7 +20,7 @@ namespace FourierSSI
     {
       const unsigned int n_max =
         std::max(highest_harmonic(list), settings.maximum_harmonic);
-      return interfaces.any_contact() || settings.tangent_stiffness ?
+      return interfaces.is_stiff() ?
                constrained_theta_samples(n_max, settings.theta_samples) :
                theta_samples_for(n_max, settings.theta_samples);
     }

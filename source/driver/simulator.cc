@@ -1,5 +1,6 @@
 #include <deal.II/base/timer.h>
 #include <filesystem>
+#include <fourier_ssi/coupled/linearisation_choice.h>
 #include <fourier_ssi/driver/input_checks.h>
 #include <fourier_ssi/driver/memory_estimate.h>
 #include <fourier_ssi/driver/simulator.h>
@@ -198,9 +199,12 @@ namespace FourierSSI
   void
   Simulator::make_plan(std::ostream &log)
   {
+    choose_interface_linearisation(parameters, *triangulation);
     plan = plan_scene(parameters, *triangulation);
     for (const std::string &line : plan.log_lines)
       log << line << std::endl;
+    if (plan.run_mode == RunMode::load_path)
+      log << describe_interface_linearisation(parameters) << std::endl;
     // Checks that can be made before anything is assembled (throw on bad
     // input, return warnings).
     for (const std::string &line :

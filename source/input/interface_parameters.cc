@@ -380,4 +380,15 @@ namespace FourierSSI
       return entry.second.kind == InterfaceLaw::Kind::contact;
     });
   }
+
+  bool
+  InterfaceParameters::is_stiff() const
+  {
+    AssertThrow(penalty_ratio.has_value(),
+                ExcMessage("internal: the interfaces' penalty ratio is "
+                           "measured on the mesh "
+                           "(choose_interface_linearisation) before a "
+                           "coupled solve asks for it"));
+    return any_contact() || *penalty_ratio >= stiff_penalty_ratio;
+  }
 } // namespace FourierSSI

@@ -8,6 +8,7 @@ namespace FourierSSI
     using Control      = LoadPathParameters::Control;
     using Motion       = LoadPathParameters::Motion;
     using Acceleration = LoadPathParameters::Acceleration;
+    using Stiffness    = LoadPathParameters::Stiffness;
 
     const Choices<Control> &
     controls()
@@ -38,11 +39,12 @@ namespace FourierSSI
       return choices;
     }
 
-    /** Load path/Stiffness: Newton on the tangent (true) or initial. */
-    const Choices<bool> &
+    const Choices<Stiffness> &
     stiffnesses()
     {
-      static const Choices<bool> choices{{"initial", false}, {"tangent", true}};
+      static const Choices<Stiffness> choices{{"auto", Stiffness::automatic},
+                                              {"initial", Stiffness::initial},
+                                              {"tangent", Stiffness::tangent}};
       return choices;
     }
 
@@ -56,8 +58,9 @@ namespace FourierSSI
         Patterns::Integer(0, LoadPathParameters::most_theta_samples),
         "Angles N at which the interface law and the soil law are "
         "evaluated. 0: 4 (n_max + 1); 2 n_max + 1 (one sample per value "
-        "of a band-limited gap) with a contact interface or Stiffness = "
-        "tangent in an interface-only scene. With plastic soil it sets "
+        "of a band-limited gap) in an interface-only scene with a contact "
+        "interface or a stiff coulomb penalty (as Stiffness = auto "
+        "decides it; whichever Stiffness is chosen). With plastic soil it sets "
         "the soil's samples, and a contact interface always takes "
         "2 n_max + 1. Must exceed 2 n_max (n_max "
         "the highest harmonic), else a band-limited field aliases. At "
@@ -142,23 +145,22 @@ namespace FourierSSI
                         "same time, a worse worst case: "
                         "benchmarks/nonlinear-interfaces); none: plain initial "
                         "stiffness.");
-      prm.declare_entry("Stiffness",
-                        "initial",
-                        Patterns::Selection(stiffnesses().selection()),
-                        "Interface-only scenes: initial = the kept elastic "
-                        "factorizations, accelerated as Acceleration says; "
-                        "tangent = Newton on the interface DoFs with the "
-                        "closed-form consistent tangent of the coulomb return "
-                        "mapping, safeguarded by a line search on the "
-                        "residual norm (2-3 updates at kappa = kn r0 / G up "
-                        "to 1e6 with its default Theta samples = 2 n_max + "
-                        "1; with more samples a stiff penalty "
-                        "over-constrains the band-limited gap: tens of "
-                        "updates at 1e4-1e5, no convergence above; on "
-                        "several MPI ranks each fills the Jacobian columns "
-                        "of its harmonics; "
-                        "doc/nonlinear-interfaces.md section 5b). Plastic "
-                        "soil takes Soil plasticity/Stiffness.");
+      prm.declare_entry(
+        "Stiffness",
+        "auto",
+        Patterns::Selection(stiffnesses().selection()),
+        "Interface-only scenes: initial = the kept elastic factorizations, "
+        "accelerated as Acceleration says; tangent = Newton on the "
+        "interface DoFs with the closed-form consistent tangent of the "
+        "coulomb return mapping, safeguarded by a line search on the "
+        "residual norm (on several MPI ranks each fills the Jacobian "
+        "columns of its harmonics); auto = tangent for a contact interface "
+        "or a stiff coulomb penalty (max(kn, ks) l / G >= 5e3 on some face, "
+        "l the interface's mean face length, G the softer side's shear "
+        "modulus), else initial: the faster one on each side of that ratio "
+        "(benchmarks/nonlinear-engine; doc/nonlinear-interfaces.md section "
+        "5b). The run prints the choice and the ratio. Plastic soil takes "
+        "Soil plasticity/Stiffness.");
       prm.declare_entry("Anderson depth",
                         "10",
                         Patterns::Integer(1, 50),
@@ -171,8 +173,14 @@ namespace FourierSSI
                         "Halvings of each step that does not converge "
                         "before the run stops with an error; a cut step "
                         "size doubles back after two converged steps, twice "
-                        "as many after a doubling that failed. At most 20 "
-                        "(a millionth of the step).");
+                        "as many after a doubling that failed. Under load "
+                        "control (the held stage, Control = load) it is also "
+                        "the floor of the step size, 2^-N of a load step: "
+                        "steps that converge ever closer to a load below "
+                        "that are at a limit load, and the run stops with "
+                        "one line saying how much of the load is carried "
+                        "(displacement control passes limits; its floor is "
+                        "2^-20). At most 20 (a millionth of the step).");
     }
 
     /** Harmonics added by the solution. */
@@ -232,7 +240,7 @@ namespace FourierSSI
     maximum_iterations = prm.get_integer("Maximum iterations");
     acceleration       = accelerations().value_of(prm.get("Acceleration"),
                                             "Load path/Acceleration");
-    tangent_stiffness =
+    stiffness =
       stiffnesses().value_of(prm.get("Stiffness"), "Load path/Stiffness");
     anderson_depth     = prm.get_integer("Anderson depth");
     maximum_step_cuts  = prm.get_integer("Maximum step cuts");

@@ -157,13 +157,6 @@ namespace FourierSSI
     choose_element(*this);
     initial_stress.parse_parameters(prm);
     load_path.parse_parameters(prm);
-    // Newton (either linearisation) assembles coulomb springs no
-    // stiffer than a cap times G / l; stiffer laws act through the augmented
-    // Lagrangian's multipliers (interface_law.h).
-    if (newton_on_load_path())
-      interfaces.iteration_stiffness_cap = linearises_on_coupled_tangent() ?
-                                             soil_iteration_stiffness :
-                                             interface_iteration_stiffness;
     check_laws(*this);
     check_target_accuracy(*this);
     check_prescribed_displacements(*this);

@@ -8,6 +8,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/vector.h>
+#include <fourier_ssi/coupled/linearisation_choice.h>
 #include <fourier_ssi/driver/scene_plan.h>
 #include <fourier_ssi/harmonic/harmonic_set.h>
 #include <fourier_ssi/input/parameters.h>
@@ -56,17 +57,19 @@ namespace test_support
       return x;
     }
 
-    const FourierSSI::AllParameters parameters;
-    dealii::Triangulation<2>        triangulation;
-    const FourierSSI::ScenePlan     plan;
-    FourierSSI::HarmonicSet         set;
+    /** With the choices made on the mesh (choose_interface_linearisation). */
+    FourierSSI::AllParameters   parameters;
+    dealii::Triangulation<2>    triangulation;
+    const FourierSSI::ScenePlan plan;
+    FourierSSI::HarmonicSet     set;
 
   private:
     static FourierSSI::ScenePlan
-    build_mesh_and_plan(const FourierSSI::AllParameters &parameters,
-                        dealii::Triangulation<2>        &triangulation)
+    build_mesh_and_plan(FourierSSI::AllParameters &parameters,
+                        dealii::Triangulation<2>  &triangulation)
     {
       build_mesh(parameters.mesh, triangulation);
+      FourierSSI::choose_interface_linearisation(parameters, triangulation);
       return FourierSSI::plan_scene(parameters, triangulation);
     }
   };

@@ -9,6 +9,7 @@
 
 #include <deal.II/grid/tria.h>
 #include <fourier_ssi/coupled/coupled_solver.h>
+#include <fourier_ssi/coupled/linearisation_choice.h>
 #include <fourier_ssi/driver/scene_plan.h>
 #include <fourier_ssi/harmonic/harmonic_set.h>
 #include <fourier_ssi/mesh/mesh_builder.h>
@@ -85,6 +86,7 @@ namespace soil_test
       : parameters(test_support::parameters_from(text))
     {
       build_mesh(parameters.mesh, triangulation);
+      choose_interface_linearisation(parameters, triangulation);
       const ScenePlan plan = plan_scene(parameters, triangulation);
       set                  = std::make_unique<HarmonicSet>(parameters,
                                           plan.harmonics,

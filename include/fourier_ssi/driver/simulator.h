@@ -706,8 +706,13 @@ namespace FourierSSI
     bool
     writes_csv() const;
 
-    const AllParameters &parameters;
-    const MPI_Comm       communicator;
+    /**
+     * The run's own copy: the mesh-dependent choices
+     * (choose_interface_linearisation) are written into it once the first
+     * mesh exists.
+     */
+    AllParameters  parameters;
+    const MPI_Comm communicator;
     /** The cores this simulator may use (0: the rank's share). */
     unsigned int cores       = 0;
     bool         write_files = true;

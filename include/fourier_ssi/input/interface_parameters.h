@@ -12,6 +12,7 @@
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
 #include <map>
+#include <optional>
 #include <string>
 
 namespace FourierSSI
@@ -130,6 +131,18 @@ namespace FourierSSI
    */
   constexpr double soil_iteration_stiffness = 1e4;
 
+  /**
+   * The coulomb penalty, max(kn, ks) l / G, from which an interface is
+   * stiff: Load path/Stiffness = auto takes Newton for it, and its theta
+   * samples are 2 n_max + 1 (constrained_theta_samples) with either
+   * solver. Measured on the disc in a ring (benchmarks/nonlinear-engine,
+   * l = 2 r0): the initial-stiffness iteration is faster up to
+   * kn r0 / G = 1e3 (0.13 s against 0.27 s) and Newton from 1e4 on (0.31 s
+   * against 1.0 s; from 1e5 on the iteration does not converge), with the
+   * crossover of the two time trends at kn r0 / G = 2.6e3.
+   */
+  constexpr double stiff_penalty_ratio = 5e3;
+
   /** Subsection "Interfaces" of the .prm file. */
   struct InterfaceParameters
   {
@@ -168,6 +181,24 @@ namespace FourierSSI
     /** True if some interface is `contact` (exact, augmented Lagrangian). */
     bool
     any_contact() const;
+
+    /**
+     * A contact interface, or a coulomb penalty at or above
+     * stiff_penalty_ratio: what Load path/Stiffness = auto and the theta
+     * samples of an interface-only scene follow. Needs penalty_ratio
+     * (measured on the mesh; an internal error before).
+     */
+    bool
+    is_stiff() const;
+
+    /**
+     * The stiffest coulomb penalty against the soil beside it, max(kn, ks)
+     * l / G over the faces of the coulomb interfaces (l the interface's
+     * mean face length, G the softer side's shear modulus at the face),
+     * measured on the scene's first mesh (choose_interface_linearisation);
+     * empty before.
+     */
+    std::optional<double> penalty_ratio;
 
     std::map<types::boundary_id, InterfaceLaw> laws;
     /** Twin faces and nodes must coincide within this times face length. */

@@ -78,9 +78,17 @@ namespace FourierSSI
     Acceleration            acceleration       = Acceleration::aitken;
     /**
      * Interface-only scenes: Newton with the consistent tangent and a line
-     * search (Stiffness = tangent) instead of the initial stiffness.
+     * search (tangent), the initial stiffness (initial), or whichever the
+     * interfaces' stiffness calls for (automatic: Newton for contact and for
+     * stiff penalties, InterfaceParameters::is_stiff()).
      */
-    bool tangent_stiffness = false;
+    enum class Stiffness
+    {
+      automatic,
+      initial,
+      tangent
+    };
+    Stiffness stiffness = Stiffness::automatic;
     /** Previous residuals an Anderson update uses (m). */
     unsigned int anderson_depth    = 5;
     unsigned int maximum_step_cuts = 4;

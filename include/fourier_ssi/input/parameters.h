@@ -56,16 +56,26 @@ namespace FourierSSI
     }
 
     /**
-     * Newton steps the load path (Stiffness = tangent): Soil
-     * plasticity/Stiffness on the coupled tangent, Load path/Stiffness where
-     * the interfaces run condensed; otherwise the initial-stiffness
+     * Newton steps the load path: Soil plasticity/Stiffness on the coupled
+     * tangent; where the interfaces run condensed, Load path/Stiffness, and
+     * for `auto` the interfaces' stiffness (InterfaceParameters::is_stiff,
+     * known once the mesh is made); otherwise the initial-stiffness
      * iteration.
      */
     bool
     newton_on_load_path() const
     {
-      return linearises_on_coupled_tangent() ? soil_plasticity.tangent :
-                                               load_path.tangent_stiffness;
+      if (linearises_on_coupled_tangent())
+        return soil_plasticity.tangent;
+      switch (load_path.stiffness)
+        {
+          case LoadPathParameters::Stiffness::tangent:
+            return true;
+          case LoadPathParameters::Stiffness::initial:
+            return false;
+          default:
+            return interfaces.is_stiff();
+        }
     }
 
     AllParameters();
