@@ -3,6 +3,8 @@
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/harmonic/harmonic_problem.h>
 #include <fourier_ssi/harmonic/rigid_foundation.h>
+#include <iomanip>
+#include <sstream>
 
 namespace FourierSSI
 {
@@ -176,6 +178,22 @@ namespace FourierSSI
         << ',' << motion.twist << ',' << iterations << ',' << residual;
   }
 
+  namespace
+  {
+    /**
+     * The step whose interval [k-1, k] / n_steps the path was in, as the
+     * user counts them; the round-off guard keeps a completed step's end
+     * out of the next.
+     */
+    unsigned int
+    step_of(const double done, const unsigned int n_steps)
+    {
+      return std::min<unsigned int>(
+        n_steps,
+        static_cast<unsigned int>(std::floor(done * n_steps + 1e-9)) + 1);
+    }
+  } // namespace
+
   std::string
   unconverged_step_message(const std::string        &entry,
                            const double              done,
@@ -185,14 +203,10 @@ namespace FourierSSI
                            const unsigned int        converged_steps,
                            const LoadPathParameters &settings)
   {
-    // The step whose interval [k-1, k] / n_steps the path was in; the
-    // round-off guard keeps a completed step's end out of the next.
-    const unsigned int step = std::min<unsigned int>(
-      n_steps,
-      static_cast<unsigned int>(std::floor(done * n_steps + 1e-9)) + 1);
-    return entry + ": load step " + std::to_string(step) + " of " +
-           std::to_string(n_steps) + (held ? " of the held loads" : "") +
-           " (after " + std::to_string(cuts) + " cuts" +
+    return entry + ": load step " + std::to_string(step_of(done, n_steps)) +
+           " of " + std::to_string(n_steps) +
+           (held ? " of the held loads" : "") + " (after " +
+           std::to_string(cuts) + " cuts" +
            (cuts < settings.maximum_step_cuts ?
               ", at the smallest step size, 2^-" +
                 std::to_string(LoadPathParameters::most_step_cuts) +
@@ -201,6 +215,33 @@ namespace FourierSSI
            ") did not converge in " +
            std::to_string(settings.maximum_iterations) + " iterations; the " +
            std::to_string(converged_steps) + " converged steps are kept";
+  }
+
+  std::string
+  limit_load_message(const std::string        &entry,
+                     const double              done,
+                     const unsigned int        n_steps,
+                     const bool                held,
+                     const LoadPathParameters &settings,
+                     const unsigned int        converged_steps)
+  {
+    std::ostringstream line;
+    line << entry << ": load step " << step_of(done, n_steps) << " of "
+         << n_steps << (held ? " of the held loads" : "") << ": "
+         << (held ? "the held loads (body force, tractions, held foundation "
+                    "loads) are" :
+                    "the loads are")
+         << " carried only up to " << std::setprecision(4) << done
+         << " of their full value: the steps converge ever closer to a "
+            "limit load and the next would be below 2^-"
+         << settings.maximum_step_cuts
+         << " of a load step (Maximum step cuts); "
+         << (held ? "the soil cannot carry them (check the supports that "
+                    "hold it, or lower them)" :
+                    "Load path/Control = displacement follows a foundation "
+                    "past its limit")
+         << "; the " << converged_steps << " converged steps are kept";
+    return line.str();
   }
 
   FixedPointAcceleration::FixedPointAcceleration(

@@ -4,6 +4,8 @@
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/load_path.h>
 #include <fourier_ssi/harmonic/rigid_foundation.h>
+#include <iomanip>
+#include <sstream>
 
 namespace FourierSSI
 {
@@ -82,13 +84,19 @@ namespace FourierSSI
              1e-8 * std::abs(target);
   }
 
+  unsigned int
+  LoadPath::floor_cuts(const bool holding) const
+  {
+    return controls_motion(holding) ? LoadPathParameters::most_step_cuts :
+                                      settings.maximum_step_cuts;
+  }
+
   bool
-  LoadPath::StepSize::can_cut() const
+  LoadPath::StepSize::can_cut(const unsigned int floor_cuts) const
   {
     // Cuts reset at every converged step, so without a floor a path that
     // converges only ever closer to a limit would take steps without end.
-    return increment / 2. >=
-           step * std::ldexp(1., -int(LoadPathParameters::most_step_cuts));
+    return increment / 2. >= step * std::ldexp(1., -int(floor_cuts));
   }
 
   void
@@ -146,6 +154,7 @@ namespace FourierSSI
         0.;
     StepSize size;
     size.step = size.increment = 1. / n_steps;
+    bool   estimated           = false;
     double done                = 0.;
     // The size of the last converged step of this stage (0: none, or the
     // harmonics grew since): the secant predictor's denominator.
@@ -168,13 +177,26 @@ namespace FourierSSI
           }
         if (!converged)
           {
+            const bool at_floor = !size.can_cut(floor_cuts(holding));
             const bool last_cut =
-              size.cuts == settings.maximum_step_cuts || !size.can_cut();
+              size.cuts == settings.maximum_step_cuts || at_floor;
             if (last_cut && !size.retried && iteration.retry_persistently(log))
               {
                 size.retried = true;
                 continue;
               }
+            // The floor, not the count of cuts in a row, stopped a
+            // load-controlled stage: its steps had converged at ever
+            // smaller sizes towards a load it cannot pass.
+            AssertThrow(!at_floor || controls_motion(holding) ||
+                          size.cuts == settings.maximum_step_cuts,
+                        ExcMessage(
+                          limit_load_message(entry,
+                                             done,
+                                             n_steps,
+                                             holding,
+                                             settings,
+                                             iteration.n_converged_steps())));
             AssertThrow(
               !last_cut,
               ExcMessage(unconverged_step_message(entry,
@@ -201,6 +223,30 @@ namespace FourierSSI
                       std::chrono::steady_clock::now() - clock)
                       .count();
         iteration.commit_trial(step, holding, log);
+        if (!estimated)
+          report_remaining_time(done, size.increment, step.time, log);
+        estimated = true;
+      }
+  }
+
+  void
+  LoadPath::report_remaining_time(const double  done,
+                                  const double  increment,
+                                  const double  step_time,
+                                  std::ostream &log) const
+  {
+    // From the first converged step of a stage: its time times the steps
+    // still to come at its size (cuts make it longer, a plateau shorter).
+    const double remaining_steps = std::ceil((1. - done) / increment - 1e-9);
+    const double remaining_time  = remaining_steps * step_time;
+    if (remaining_time > long_stage_seconds)
+      {
+        std::ostringstream line;
+        line << "  estimated: about " << std::lround(remaining_time)
+             << " s for the remaining " << remaining_steps
+             << " steps of this stage, at this step's " << std::setprecision(3)
+             << step_time << " s each\n";
+        log << line.str();
       }
   }
 } // namespace FourierSSI

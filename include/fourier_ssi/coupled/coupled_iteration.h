@@ -219,6 +219,22 @@ namespace FourierSSI
                           const double                     residual);
 
   /**
+   * The one line of a load-controlled stage that stopped at a limit load:
+   * its steps converged at ever smaller sizes until the next would be
+   * below 2^-(Maximum step cuts) of a load step. `done` is the fraction of
+   * the stage's loads carried, numbered as unconverged_step_message()
+   * numbers it; `held` says they are the held loads (body force,
+   * tractions, held foundation loads).
+   */
+  std::string
+  limit_load_message(const std::string        &entry,
+                     const double              done,
+                     const unsigned int        n_steps,
+                     const bool                held,
+                     const LoadPathParameters &settings,
+                     const unsigned int        converged_steps);
+
+  /**
    * The one line of a load step that did not converge even after the
    * allowed step cuts (`entry` names the solver's parameter section). The
    * step is numbered as the user counts them, "load step 2 of 2 (after 4

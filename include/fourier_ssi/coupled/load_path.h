@@ -246,18 +246,43 @@ namespace FourierSSI
       bool retried = false;
 
       /**
-       * A cut keeps the size at or above 2^-most_step_cuts of the stage's
-       * step (LoadPathParameters::most_step_cuts), however many steps
-       * converged at cut sizes before.
+       * A cut keeps the size at or above 2^-floor_cuts of the stage's step,
+       * however many steps converged at cut sizes before.
        */
       bool
-      can_cut() const;
+      can_cut(const unsigned int floor_cuts) const;
       /** Halves the size and counts the cut. */
       void
       cut();
       void
       converged();
     };
+
+    /**
+     * The smallest step of a stage is 2^-floor_cuts of its load step:
+     * Maximum step cuts under load control, where a path whose steps
+     * converge only ever closer to a load it cannot pass is at a limit
+     * load (limit_load_message), and most_step_cuts under displacement
+     * control, which passes limits.
+     */
+    unsigned int
+    floor_cuts(const bool holding) const;
+
+    /**
+     * A stage whose remaining steps would take longer than this at the
+     * first step's time gets an estimate in the log [s].
+     */
+    static constexpr double long_stage_seconds = 60.;
+
+    /**
+     * After the first converged step of a stage: prints the estimated time
+     * of the rest if it is long.
+     */
+    void
+    report_remaining_time(const double  done,
+                          const double  increment,
+                          const double  step_time,
+                          std::ostream &log) const;
 
     /** Displacement control in this stage (not the held one). */
     bool
