@@ -12,6 +12,8 @@
 #include <fourier_ssi/input/parameters.h>
 #include <fstream>
 #include <iomanip>
+#include <map>
+#include <optional>
 #include <sstream>
 
 namespace FourierSSI
@@ -49,6 +51,35 @@ namespace FourierSSI
                 ExcMessage("--batch: no cases given (usage: fourier-ssi "
                            "--batch [--csv FILE] CASE.prm... | LIST...)"));
     return cases;
+  }
+
+  void
+  check_batch_output_folders(const std::vector<std::string> &cases)
+  {
+    // Each run removes the stale results of its folder and claims its file
+    // names there, so two cases in one folder would delete each other's.
+    std::map<std::string, std::string> case_of_folder;
+    for (const std::string &file : cases)
+      {
+        const std::optional<OutputParameters> output =
+          OutputParameters::read_folder_of(file);
+        if (!output)
+          continue; // the case fails on its own with its one line
+        std::error_code       ignored;
+        std::filesystem::path folder =
+          std::filesystem::weakly_canonical(output->directory, ignored)
+            .lexically_normal();
+        if (!folder.has_filename()) // "out/" names the folder "out"
+          folder = folder.parent_path();
+        const auto [entry, inserted] =
+          case_of_folder.emplace(folder.string(), file);
+        AssertThrow(inserted,
+                    ExcMessage("--batch: " + entry->second + " and " + file +
+                               " both write to Output/Directory '" +
+                               output->directory +
+                               "' (each run removes the other's results): "
+                               "give each case its own folder"));
+      }
   }
 
   namespace
@@ -207,6 +238,7 @@ namespace FourierSSI
     // Every rank expands the list itself (same files, same result), so an
     // unreadable list fails on all ranks alike.
     const std::vector<std::string> cases = batch_cases(rest);
+    check_batch_output_folders(cases);
 
     // Per case: status ("ok" or the error), log, CSV rows. Cases of other
     // ranks stay empty strings: a non-empty status marks the case's rank.

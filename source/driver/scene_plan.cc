@@ -1,6 +1,8 @@
 #include <algorithm>
+#include <cmath>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/base/utilities.h>
+#include <deal.II/lac/vector.h>
 #include <fourier_ssi/driver/scene_plan.h>
 #include <set>
 #include <sstream>
@@ -202,13 +204,41 @@ namespace FourierSSI
     }
 
     /**
+     * A boundary amplitude on a boundary id the mesh has, and finite there
+     * (evaluated with n = 0): what is wrong with it is said before that it
+     * is an amplitude at all (Harmonics = auto).
+     */
+    void
+    require_usable_amplitude(const Triangulation<2>     &triangulation,
+                             const types::boundary_id    id,
+                             const ComponentExpressions &expressions,
+                             const std::string          &entry)
+    {
+      const auto function =
+        BoundaryConditions::make_function(expressions, 0, entry);
+      Vector<double> value(3);
+      for (const Point<2> &p : boundary_points(triangulation, id, entry))
+        {
+          function->vector_value(p, value);
+          for (unsigned int c = 0; c < 3; ++c)
+            AssertThrow(!expressions.given[c] || std::isfinite(value(c)),
+                        ExcMessage(entry + ": boundary " + std::to_string(id) +
+                                   ", '" + expressions.expression[c] + "' is " +
+                                   (std::isnan(value(c)) ? "NaN" : "infinite") +
+                                   " at (r, z) = (" + std::to_string(p[0]) +
+                                   ", " + std::to_string(p[1]) + ") m"));
+        }
+    }
+
+    /**
      * The harmonics to solve: those with a reason (Harmonics = auto) or the
      * listed ones (with a warning for a loaded harmonic left out).
      */
     void
-    select_harmonics(const AllParameters   &parameters,
-                     const HarmonicReasons &reasons,
-                     ScenePlan             &plan)
+    select_harmonics(const AllParameters    &parameters,
+                     const Triangulation<2> &triangulation,
+                     const HarmonicReasons  &reasons,
+                     ScenePlan              &plan)
     {
       const DiscretizationParameters &discretization =
         parameters.discretization;
@@ -233,9 +263,21 @@ namespace FourierSSI
                                  "harmonics"));
           };
           for (const auto &[id, e] : bc.dirichlet)
-            require_zero(e, "Boundary conditions/Dirichlet");
+            {
+              require_usable_amplitude(triangulation,
+                                       id,
+                                       e,
+                                       "Boundary conditions/Dirichlet");
+              require_zero(e, "Boundary conditions/Dirichlet");
+            }
           for (const auto &[id, e] : bc.traction)
-            require_zero(e, "Boundary conditions/Traction");
+            {
+              require_usable_amplitude(triangulation,
+                                       id,
+                                       e,
+                                       "Boundary conditions/Traction");
+              require_zero(e, "Boundary conditions/Traction");
+            }
           require_zero(bc.body_force, "Body force");
 
           for (const auto &[key, why] : reasons)
@@ -413,7 +455,7 @@ namespace FourierSSI
     HarmonicReasons reasons;
     decompose_loads(parameters, triangulation, plan, reasons);
     map_foundation_resultants(parameters, reasons);
-    select_harmonics(parameters, reasons, plan);
+    select_harmonics(parameters, triangulation, reasons, plan);
     describe_effects(parameters, triangulation, plan);
     return plan;
   }

@@ -83,8 +83,16 @@ namespace FourierSSI
   Simulator::prepare_output_directory() const
   {
     check_output_paths();
-    if (write_files)
-      std::filesystem::create_directories(parameters.output.directory);
+    if (!write_files)
+      return;
+    // What the checks cannot foresee (a folder the file system refuses
+    // even to root, such as one under /proc) gets the entry's one line,
+    // not the file system's exception text.
+    std::error_code error;
+    std::filesystem::create_directories(parameters.output.directory, error);
+    AssertThrow(!error,
+                ExcMessage("Output/Directory: '" + parameters.output.directory +
+                           "' cannot be created: " + error.message()));
   }
 
   void

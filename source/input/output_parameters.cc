@@ -298,7 +298,25 @@ namespace FourierSSI
                                " points per line"));
         lines.push_back(line);
       }
+    check_lines_3d_size();
     prm.leave_subsection();
+  }
+
+  void
+  OutputParameters::check_lines_3d_size() const
+  {
+    std::size_t rows = 0;
+    for (const OutputLine &line : lines)
+      rows += std::size_t(line.n_points) * theta_degrees.size();
+    // About 213 bytes a row (measured on prm/default.prm's stresses).
+    AssertThrow(rows <= max_lines_3d_rows,
+                ExcMessage("Output/Lines 3D: " + std::to_string(rows) +
+                           " rows (points times the " +
+                           std::to_string(theta_degrees.size()) +
+                           " Theta values) would make lines-3d.csv about " +
+                           std::to_string(rows * 213 / 1000000) +
+                           " MB; at most " + std::to_string(max_lines_3d_rows) +
+                           " rows (about 213 MB): fewer points or angles"));
   }
 
   namespace

@@ -196,12 +196,58 @@ namespace FourierSSI
                     " for harmonics chosen by the solution, or 0 "
                     "for the listed ones only"));
     }
+
+    /**
+     * Mesh/Interface lines splits the mesh along each line: without a law
+     * the split faces connect nothing, and the bodies on either side come
+     * apart (a singular system, or a body that floats).
+     */
+    void
+    check_interface_lines_have_laws(const AllParameters &parameters)
+    {
+      for (const InterfaceLine &line : parameters.mesh.interface_lines)
+        AssertThrow(parameters.interfaces.laws.count(line.boundary_id) > 0,
+                    ExcMessage("Mesh/Interface lines: boundary id " +
+                               std::to_string(line.boundary_id) +
+                               " has no law in Interfaces/Interfaces, so the "
+                               "faces split along it connect nothing: give "
+                               "it one, e.g. '" +
+                               std::to_string(line.boundary_id) +
+                               ": rough' for a bonded face"));
+    }
+
+    /**
+     * The stiffness coefficients and the 6 x 6 are those of the elastic
+     * scene (doc/foundation-stiffness.md); refused before anything else
+     * about the harmonics they would need is checked.
+     */
+    void
+    check_stiffness_of_linear_scene(const AllParameters &parameters)
+    {
+      const RigidFoundationParameters &foundation = parameters.rigid_foundation;
+      if (!foundation.stiffness_coefficients || !parameters.coupled())
+        return;
+      AssertThrow(false,
+                  ExcMessage(
+                    std::string("Rigid foundation/") +
+                    (foundation.stiffness_matrix ? "Stiffness matrix" :
+                                                   "Stiffness coefficients") +
+                    ": the foundation stiffness is that of the elastic "
+                    "scene, not computed with " +
+                    (parameters.soil_plasticity.any() ?
+                       "plastic soil (Soil plasticity/Laws)" :
+                       "a coulomb or contact interface") +
+                    "; set it false here and run the scene without them for "
+                    "the stiffness"));
+    }
   } // namespace
 
   void
   check_problem_is_meaningful(const AllParameters &parameters)
   {
+    check_stiffness_of_linear_scene(parameters);
     check_maximum_harmonic_not_below_listed(parameters);
+    check_interface_lines_have_laws(parameters);
     check_controlled_motion_not_held(parameters);
     check_motion_direction_path(parameters);
     check_swipe_path(parameters);
@@ -231,11 +277,5 @@ namespace FourierSSI
                            with +
                            "; under mpirun the harmonics are distributed "
                            "over the ranks"));
-    AssertThrow(!parameters.rigid_foundation.stiffness_coefficients,
-                ExcMessage(entry +
-                           ": Rigid foundation/Stiffness coefficients and "
-                           "Stiffness matrix are linear quantities; set them "
-                           "false with " +
-                           with));
   }
 } // namespace FourierSSI

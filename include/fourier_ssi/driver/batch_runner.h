@@ -30,6 +30,13 @@ namespace FourierSSI
   batch_cases(const std::vector<std::string> &arguments);
 
   /**
+   * Refuses (one line naming both files and the folder) a batch in which
+   * two cases write to the same Output/Directory, before any case runs.
+   */
+  void
+  check_batch_output_folders(const std::vector<std::string> &cases);
+
+  /**
    * Run the batch on all ranks of communicator; out and err are used on rank
    * 0 only. Returns the exit code (1 if any case failed: one error line per
    * failed case, and no batch CSV).

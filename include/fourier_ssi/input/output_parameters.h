@@ -45,7 +45,15 @@ namespace FourierSSI
      * and one row per angle).
      */
     static constexpr unsigned int max_points_per_line = 100000;
-    std::vector<double>           theta_degrees;
+    /**
+     * Rows of lines-3d.csv (points times angles) at most: 2 lines of 1e5
+     * points at 65 angles wrote 2.8 GB for a minute before this bound.
+     */
+    static constexpr std::size_t max_lines_3d_rows = 1000000;
+    /** One line if Lines 3D and Theta values ask for more rows. */
+    void
+                        check_lines_3d_size() const;
+    std::vector<double> theta_degrees;
     /** The mesh revolved about the axis with the 3D displacement. */
     bool         write_3d_vtu    = false;
     unsigned int theta_divisions = 36;
