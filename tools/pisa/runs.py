@@ -9,18 +9,23 @@ from space import pile_overrides
 
 
 def write_cases(spec, out):
-    """Writes OUT/runs/<pile>.prm for every pile and OUT/runs/batch.txt
-    (one .prm a line); returns the list file."""
+    """Writes OUT/runs/<pile>.prm for every pile (and <pile>-initial.prm, the
+    one step to `initial v/D` that resolves the curves' initial slope) and
+    OUT/runs/batch.txt (one .prm a line); returns the list file."""
     runs = os.path.join(out, "runs")
     os.makedirs(runs, exist_ok=True)
     with open(spec["base"]) as f:
         base = f.read()
     lines = []
     for pile in spec["piles"]:
-        prm = os.path.join(runs, pile["name"] + ".prm")
-        with open(prm, "w") as f:
-            f.write(base + pile_overrides(spec, pile, os.path.join(runs, pile["name"])))
-        lines.append(prm)
+        cases = [(pile["name"], False)]
+        if spec["initial_over_D"] > 0:
+            cases.append((pile["name"] + "-initial", True))
+        for name, initial in cases:
+            prm = os.path.join(runs, name + ".prm")
+            with open(prm, "w") as f:
+                f.write(base + pile_overrides(spec, pile, os.path.join(runs, name), initial))
+            lines.append(prm)
     listing = os.path.join(runs, "batch.txt")
     with open(listing, "w") as f:
         f.write("\n".join(lines) + "\n")

@@ -10,6 +10,8 @@ The spec is a list of `key = value` lines (`#` starts a comment):
     wall t/D      = 0.0122           # steel wall thickness / D
     stick-up h/D  = 2                # height of H above the mudline / D (M = H h)
     target v/D    = 0.1              # mudline displacement pushed to / D
+    initial v/D   = 0.002            # a second run per pile, one step to this
+                                     # (the curves' initial slope; 0: none)
     load steps    = 10
     depths        = 8                # reaction curves at the middles of N parts
     cells along pile = 10
@@ -32,6 +34,7 @@ DEFAULTS = {
     "wall t/D": "0.0122",
     "stick-up h/D": "2",
     "target v/D": "0.1",
+    "initial v/D": "0.002",
     "load steps": "10",
     "depths": "8",
     "cells along pile": "10",
@@ -50,6 +53,13 @@ def _numbers(text, key, path):
     if any(v <= 0 for v in values):
         raise SpecError(f"{path}: '{key} = {text}' must be positive")
     return values
+
+
+def spec_steps(entries, path):
+    try:
+        return max(int(entries["load steps"]), 1)
+    except ValueError:
+        raise SpecError(f"{path}: 'load steps = {entries['load steps']}' is not an integer")
 
 
 def read_spec(path):
@@ -97,6 +107,12 @@ def read_spec(path):
     spec = dict(base=base, piles=piles, path=path)
     for key, name in [("wall t/D", "t_over_D"), ("target v/D", "target_over_D")]:
         (spec[name],) = _numbers(entries[key], key, path)[:1] or [None]
+    try:
+        spec["initial_over_D"] = float(entries["initial v/D"])
+    except ValueError:
+        raise SpecError(f"{path}: 'initial v/D = {entries['initial v/D']}' is not a number")
+    if not 0 <= spec["initial_over_D"] < spec["target_over_D"] / spec_steps(entries, path):
+        raise SpecError(f"{path}: 'initial v/D' must lie in [0, target v/D / load steps)")
     h = entries["stick-up h/D"].strip()
     try:
         spec["h_over_D"] = float(h)
@@ -116,7 +132,7 @@ def read_spec(path):
     return spec
 
 
-def pile_overrides(spec, pile, out_dir):
+def pile_overrides(spec, pile, out_dir, initial=False):
     """The entries appended to the base scene for one pile: the tube's
     geometry (the domain scaled with D and L as the base scene's 50 m radius
     and 23 m below the tip of the 9 m x 42 m monopile), the load's
@@ -128,7 +144,8 @@ def pile_overrides(spec, pile, out_dir):
     far = max(50. / 4.5 * R, 3. * L)
     below = max(23. / 42. * L, 2.5 * D)
     h = spec["h_over_D"] * D
-    target = spec["target_over_D"] * D
+    target = (spec["initial_over_D"] if initial else spec["target_over_D"]) * D
+    steps = 1 if initial else spec["steps"]
     return f"""
 # ---- appended by tools/pisa/calibrate.py: pile {pile['name']} ----
 subsection Mesh
@@ -148,7 +165,7 @@ subsection Load path
   set Control           = displacement
   set Controlled motion = horizontal
   set Target            = {target:.6g}
-  set Load steps        = {spec['steps']}
+  set Load steps        = {steps}
 end
 subsection Output
   set Directory            = {out_dir}
