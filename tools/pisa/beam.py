@@ -109,7 +109,10 @@ class Beam:
             r = self.K @ u + fs - f_ext
             if np.linalg.norm(r) <= tol * max(np.linalg.norm(f_ext), 1e-30):
                 return u
-            u -= np.linalg.solve(self.K + T, r)
+            du = np.linalg.solve(self.K + T, r)
+            u -= du
+            if np.linalg.norm(du) <= 1e-13 * np.linalg.norm(u):
+                return u
         raise RuntimeError("beam: Newton did not converge under load control")
 
     def push(self, target, h, steps, tol=1e-10, max_iter=100):
@@ -134,6 +137,9 @@ class Beam:
                 d = np.linalg.solve(J, -r)
                 u[free] += d[:-1]
                 lam += d[-1]
+                if np.linalg.norm(d[:-1]) <= 1e-13 * np.linalg.norm(u) and \
+                        abs(d[-1]) <= 1e-13 * abs(lam):
+                    break
             else:
                 raise RuntimeError(f"beam: Newton did not converge at step {s} (v = {u[0]:.4g} m)")
             out.append((u[0], u[1], lam, lam * h))
