@@ -111,7 +111,7 @@ class Beam:
                 return u
             du = np.linalg.solve(self.K + T, r)
             u -= du
-            if np.linalg.norm(du) <= 1e-13 * np.linalg.norm(u):
+            if np.linalg.norm(du) <= 1e-9 * np.linalg.norm(u):
                 return u
         raise RuntimeError("beam: Newton did not converge under load control")
 
@@ -137,8 +137,8 @@ class Beam:
                 d = np.linalg.solve(J, -r)
                 u[free] += d[:-1]
                 lam += d[-1]
-                if np.linalg.norm(d[:-1]) <= 1e-13 * np.linalg.norm(u) and \
-                        abs(d[-1]) <= 1e-13 * abs(lam):
+                if np.linalg.norm(d[:-1]) <= 1e-9 * np.linalg.norm(u) and \
+                        abs(d[-1]) <= 1e-9 * abs(lam):
                     break
             else:
                 raise RuntimeError(f"beam: Newton did not converge at step {s} (v = {u[0]:.4g} m)")
