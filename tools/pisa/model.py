@@ -1,0 +1,85 @@
+"""The calibrated PISA model of a site: its four components' parameters
+linear in z/D (p-v, m-psi) or L/D (H_B-v, M_B-psi), the soil profile s_u(z),
+G0(z) read from the FE runs, and the springs of one pile for beam.py.
+
+Clay normalisations (Byrne et al. 2020):
+    p-v:    p/(s_u D)     against v G0/(s_u D)
+    m-psi:  m/(s_u D^2)   against psi G0/s_u
+    H_B-v:  H_B/(s_u D^2) against v G0/(s_u D)
+    M_B-psi: M_B/(s_u D^3) against psi G0/s_u
+with s_u and G0 at the depth (at the tip for the base)."""
+import json
+
+import numpy as np
+
+from conic import conic, conic_slope
+from fit import linear
+
+COMPONENTS = ("py", "mt", "Hb", "Mb")
+
+
+class Model:
+    def __init__(self, params, profile):
+        """params[c] = dict(top, bottom, s0, s1) (fit_linear_family);
+        profile = dict(depth, s, G): arrays [m], [kPa], [kPa]."""
+        self.params = params
+        self.profile = {k: np.asarray(v, float) for k, v in profile.items()}
+
+    def to_json(self, path, extra=None):
+        d = dict(params=self.params, profile={k: v.tolist() for k, v in self.profile.items()})
+        d.update(extra or {})
+        with open(path, "w") as f:
+            json.dump(d, f, indent=1)
+
+    @classmethod
+    def from_json(cls, path):
+        with open(path) as f:
+            d = json.load(f)
+        return cls(d["params"], d["profile"])
+
+    def soil(self, depth):
+        """s_u [kPa] and G0 [kPa] at depth [m] (linear between the FE's
+        depths, constant beyond)."""
+        order = np.argsort(self.profile["depth"])
+        dz = self.profile["depth"][order]
+        return (np.interp(depth, dz, self.profile["s"][order]),
+                np.interp(depth, dz, self.profile["G"][order]))
+
+    def at(self, component, s):
+        """(k, n, x_u, y_u) of a component at s (z/D or L/D), linear in s
+        (clamped to the calibrated range: no extrapolation)."""
+        P = self.params[component]
+        s = np.clip(s, min(P["s0"], P["s1"]), max(P["s0"], P["s1"]))
+        return tuple(linear(P["top"][q], P["bottom"][q], s, P["s0"], P["s1"])
+                     for q in ("k", "n", "xu", "yu"))
+
+    def springs(self, D, L):
+        """The functions p(v, z), m(psi, z), H_B(v), M_B(psi) of beam.Beam
+        for a pile of diameter D [m] and embedded length L [m]."""
+        def p(v, z):
+            depth = -z
+            su, G = self.soil(depth)
+            k, n, xu, yu = self.at("py", depth / D)
+            x = v * G / (su * D)
+            return su * D * conic(x, k, n, xu, yu), G * conic_slope(x, k, n, xu, yu)
+
+        def m(psi, z):
+            depth = -z
+            su, G = self.soil(depth)
+            k, n, xu, yu = self.at("mt", depth / D)
+            x = psi * G / su
+            return su * D * D * conic(x, k, n, xu, yu), D * D * G * conic_slope(x, k, n, xu, yu)
+
+        sb, Gb = self.soil(L)
+        base_H = self.at("Hb", L / D)
+        base_M = self.at("Mb", L / D)
+
+        def HB(v):
+            x = v * Gb / (sb * D)
+            return sb * D * D * conic(x, *base_H), D * Gb * conic_slope(x, *base_H)
+
+        def MB(psi):
+            x = psi * Gb / sb
+            return sb * D ** 3 * conic(x, *base_M), D ** 3 * Gb * conic_slope(x, *base_M)
+
+        return p, m, HB, MB

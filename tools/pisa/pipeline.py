@@ -1,0 +1,240 @@
+"""From the FE runs of a calibration space to the calibrated model: the
+curves of every pile, the fits per curve and per family, the 1D model
+against the FE's pile head, and the files (calibrate.py's second half)."""
+import csv
+import json
+import os
+import sys
+import time
+
+import numpy as np
+
+from beam import Beam, Pile
+from fit import prepare, fit_curve, fit_linear_family
+from model import Model, COMPONENTS
+import export
+
+# component: (x column, y column) of soil-reaction-curves.csv
+COLUMNS = {
+    "py": ("v G/(s D) [-]", "p/(s D) [-]"),
+    "mt": ("psi G/s [-]", "m/(s D^2) or m/(|p| D) [-]"),
+    "Hb": ("v_base G/(s D) [-]", "H_B/(s D^2) [-]"),
+    "Mb": ("psi G/s_base [-]", "M_B/(s D^3) [-]"),
+}
+LABEL = {"py": "p/(s_u D) vs v G0/(s_u D)", "mt": "m/(s_u D^2) vs psi G0/s_u",
+         "Hb": "H_B/(s_u D^2) vs v G0/(s_u D)", "Mb": "M_B/(s_u D^3) vs psi G0/s_u"}
+# A distributed curve whose largest |x| is below this fraction of its
+# pile's largest (the depths next to the rotation point) stays out of the
+# depth fit: it carries almost no information on y_u and x_u.
+NEAR_ROTATION_POINT = 0.1
+
+
+class InputError(Exception):
+    pass
+
+
+def pile_curves(pile, d):
+    """{component: [dict(depth, zD, x, y)]} of one pile, the initial run's
+    point first when there is one."""
+    rows = d["curves"]
+    if rows and rows[0].get("normalised by") != "s_u":
+        raise InputError(f"pile {pile['name']}: the curves are normalised by "
+                         f"'{rows[0].get('normalised by')}'; only clay (s_u, a Tresca law) is calibrated yet")
+    init = d["initial"]["curves"] if d.get("initial") else []
+    L = pile["L_over_D"] * pile["D"]
+    out = {c: [] for c in COMPONENTS}
+    depths = sorted({r["depth [m]"] for r in rows})
+    for depth in depths:
+        if not 0 < depth <= L + 1e-9:
+            raise InputError(f"pile {pile['name']}: a curve at depth {depth:g} m lies outside the pile (0, {L:g}] m")
+        sel = sorted([r for r in init if abs(r["depth [m]"] - depth) < 1e-9] +
+                     [r for r in rows if abs(r["depth [m]"] - depth) < 1e-9],
+                     key=lambda r: abs(r[COLUMNS["py"][0]]))
+        for c in ("py", "mt"):
+            xc, yc = COLUMNS[c]
+            out[c].append(dict(depth=depth, zD=depth / pile["D"],
+                               x=np.array([r[xc] for r in sel]), y=np.array([r[yc] for r in sel])))
+    first = depths[0]
+    sel = [r for r in init if abs(r["depth [m]"] - first) < 1e-9] + \
+          [r for r in rows if abs(r["depth [m]"] - first) < 1e-9]
+    for c in ("Hb", "Mb"):
+        xc, yc = COLUMNS[c]
+        out[c].append(dict(depth=L, zD=L / pile["D"],
+                           x=np.array([r[xc] for r in sel]), y=np.array([r[yc] for r in sel])))
+    return out
+
+
+def soil_profile(data):
+    """(depth, s_u, G0) points from every run's CSV, the tips' included."""
+    pts = {}
+    for d in data.values():
+        for r in d["curves"]:
+            pts[round(r["depth [m]"], 9)] = (r["s [kPa]"], r["G [kPa]"])
+            v, xb = r["v_base [m]"], r["v_base G/(s D) [-]"]
+    depth = sorted(pts)
+    return dict(depth=depth, s=[pts[z][0] for z in depth], G=[pts[z][1] for z in depth])
+
+
+def head_fe(d):
+    rows = d["head"]
+    v = np.array([0.0] + [r["horizontal_m"] for r in rows])
+    th = np.array([0.0] + [r["rotation_rad"] for r in rows])
+    H = np.array([0.0] + [r["H_kN"] for r in rows])
+    M = np.array([0.0] + [r["M_kNm"] for r in rows])
+    return v, th, H, M
+
+
+def run_1d(model, spec, pile, steps=40, elements=80):
+    D = pile["D"]
+    L = pile["L_over_D"] * D
+    t = spec["t_over_D"] * D
+    tube = Pile(D, t, L)
+    p, m, HB, MB = model.springs(D, L)
+    beam = Beam(tube.EI, tube.kGA, L, elements, p=p, m=m, HB=HB, MB=MB)
+    return beam.push(spec["target_over_D"] * D, spec["h_over_D"] * D, steps)
+
+
+def compare(fe, one_d):
+    """Relative differences at the FE's steps: H at the FE's v, and theta
+    at the FE's v (the 1D curve interpolated)."""
+    v, th, H, M = fe
+    v1, th1, H1, M1 = one_d
+    H1i = np.interp(v[1:], v1, H1)
+    th1i = np.interp(v[1:], v1, th1)
+    dH = (H1i - H[1:]) / H[1:]
+    dth = (th1i - th[1:]) / th[1:]
+    return dH, dth, H1i, th1i
+
+
+def calibrate_and_compare(spec, data, out, plot=True):
+    start = time.time()
+    piles = {p["name"]: p for p in spec["piles"] if p["name"] in data}
+    try:
+        curves = {name: pile_curves(p, data[name]) for name, p in piles.items()}
+    except InputError as e:
+        sys.exit(f"calibrate.py: {e}")
+    fitted = [n for n, p in piles.items() if p["fitted"]]
+    # 1. one conic per curve
+    rows = []
+    for name in fitted:
+        for c in COMPONENTS:
+            for cv in curves[name][c]:
+                sgn, x, y = prepare(cv["x"], cv["y"])
+                cv.update(sgn=sgn, xp=x, yp=y)
+                if x.size < 3:
+                    cv["fit"] = None
+                    continue
+                f = fit_curve(x, y)
+                cv["fit"] = f
+                rows.append(dict(pile=name, component=c, depth_m=cv["depth"], z_over_D=cv["zD"],
+                                 L_over_D=piles[name]["L_over_D"], x_max=x.max(), **f))
+    # 2. families: linear in z/D (distributed) and in L/D (base)
+    params, family_err = {}, {}
+    LDs = [piles[n]["L_over_D"] for n in fitted]
+    for c in COMPONENTS:
+        fam = []
+        for name in fitted:
+            cvs = [cv for cv in curves[name][c] if cv["xp"].size >= 3]
+            if not cvs:
+                continue
+            top = max(cv["xp"].max() for cv in cvs)
+            for cv in cvs:
+                if c in ("py", "mt") and cv["xp"].max() < NEAR_ROTATION_POINT * top:
+                    cv["in_family"] = False
+                    continue
+                cv["in_family"] = True
+                s = cv["zD"] if c in ("py", "mt") else piles[name]["L_over_D"]
+                fam.append(dict(s=s, x=cv["xp"], y=cv["yp"], pile=name, depth=cv["depth"],
+                                k0=cv["fit"]["k"] if cv["fit"] else None))
+        if c in ("py", "mt"):
+            s0, s1 = 0.0, max(LDs)
+        else:
+            s0, s1 = min(LDs), max(LDs)
+        if len(fam) < 2:
+            sys.exit(f"calibrate.py: component {c} has {len(fam)} usable curve(s); a linear fit needs 2")
+        for f in fam:
+            if f["k0"] is None:
+                f["k0"] = f["y"][0] / f["x"][0]
+        r = fit_linear_family(fam, s0, s1)
+        params[c] = dict(top=r["top"], bottom=r["bottom"], s0=s0, s1=s1,
+                         variable="z/D" if c in ("py", "mt") else "L/D",
+                         rms_all=r["rms_all"], rms_max=max(r["rms"]))
+        family_err[c] = [(f["pile"], f["depth"], e) for f, e in zip(fam, r["rms"])]
+        xmax_all = max(f["x"].max() for f in fam)
+        for which in ("top", "bottom"):
+            if r[which]["xu"] > xmax_all:
+                print(f"note: {c} x_u at {params[c]['variable']} = {s0 if which == 'top' else s1:g} is "
+                      f"{r[which]['xu']:.4g}, beyond the largest x of its curves ({xmax_all:.4g}): "
+                      "its y_u is an extrapolation of curves that never reach x_u")
+    model = Model(params, soil_profile(data))
+    model.to_json(os.path.join(out, "model.json"),
+                  extra=dict(normalisation={c: LABEL[c] for c in COMPONENTS},
+                             t_over_D=spec["t_over_D"], h_over_D=spec["h_over_D"]))
+    # fits.csv: every per-curve fit and every family parameter with its error
+    with open(os.path.join(out, "fits.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["kind", "pile", "component", "depth [m]", "z/D or L/D [-]", "k [-]", "n [-]",
+                    "x_u [-]", "y_u [-]", "rms (y_fit - y_FE)/y_u [-]", "x_u within data", "largest x [-]"])
+        for r in rows:
+            s = r["z_over_D"] if r["component"] in ("py", "mt") else r["L_over_D"]
+            w.writerow(["curve", r["pile"], r["component"], f"{r['depth_m']:.6g}", f"{s:.6g}",
+                        f"{r['k']:.6g}", f"{r['n']:.6g}", f"{r['xu']:.6g}", f"{r['yu']:.6g}",
+                        f"{r['rms']:.3g}", int(r["reached"]), f"{r['x_max']:.6g}"])
+        for c in COMPONENTS:
+            P = params[c]
+            for which, s in (("top", P["s0"]), ("bottom", P["s1"])):
+                q = P[which]
+                w.writerow([f"model {which}", "all fitted", c, "", f"{s:.6g}", f"{q['k']:.6g}",
+                            f"{q['n']:.6g}", f"{q['xu']:.6g}", f"{q['yu']:.6g}",
+                            f"{P['rms_all']:.3g}", "", ""])
+    print("conic fits, one per curve (fitted piles), error = RMS of (y_fit - y_FE)/y_u over the curve:")
+    for c in COMPONENTS:
+        e = [r["rms"] for r in rows if r["component"] == c]
+        print(f"  {c:2s} ({LABEL[c]}): {len(e)} curves, error median {np.median(e):.3g}, max {max(e):.3g}")
+    print("the model (each parameter linear in z/D for py, mt; in L/D for Hb, Mb), error over its curves:")
+    for c in COMPONENTS:
+        P = params[c]
+        t, b = P["top"], P["bottom"]
+        print(f"  {c:2s} {P['variable']} = {P['s0']:g} -> {P['s1']:g}: k {t['k']:.4g} -> {b['k']:.4g}, "
+              f"n {t['n']:.3f} -> {b['n']:.3f}, x_u {t['xu']:.4g} -> {b['xu']:.4g}, "
+              f"y_u {t['yu']:.4g} -> {b['yu']:.4g}; error RMS {P['rms_all']:.3g}, max {P['rms_max']:.3g}")
+    # 3. the 1D model against the FE's pile head
+    head_rows, summary = [], {}
+    print("1D model against the FE at the pile head (mudline), at the FE's displacements:")
+    for name, p in piles.items():
+        fe = head_fe(data[name])
+        try:
+            one = run_1d(model, spec, p)
+        except RuntimeError as e:
+            print(f"  {name}: the 1D model failed: {e}")
+            continue
+        dH, dth, H1i, th1i = compare(fe, one)
+        summary[name] = dict(fitted=p["fitted"], D=p["D"], L_over_D=p["L_over_D"],
+                             max_dH=float(np.max(np.abs(dH))), end_dH=float(dH[-1]),
+                             max_dtheta=float(np.max(np.abs(dth))), end_dtheta=float(dth[-1]),
+                             H_FE_end=float(fe[2][-1]), H_1D_end=float(H1i[-1]))
+        tag = "fitted" if p["fitted"] else "LEFT OUT"
+        print(f"  {name} ({tag}): H_1D/H_FE - 1 at v/D = {fe[0][1] / p['D']:.3g}..{fe[0][-1] / p['D']:.3g}: "
+              f"max |.| {summary[name]['max_dH']:.3f}, at the end {dH[-1]:+.3f} "
+              f"(H_FE = {fe[2][-1]:.6g} kN); theta_1D/theta_FE - 1: max |.| {summary[name]['max_dtheta']:.3f}")
+        for i in range(1, fe[0].size):
+            head_rows.append([name, int(p["fitted"]), f"{fe[0][i]:.6g}", f"{fe[1][i]:.6g}", f"{fe[2][i]:.6g}",
+                              f"{fe[3][i]:.6g}", f"{H1i[i - 1]:.6g}", f"{th1i[i - 1]:.6g}"])
+        summary[name]["curve_1d"] = [a.tolist() for a in one]
+        summary[name]["curve_fe"] = [a.tolist() for a in fe]
+    with open(os.path.join(out, "head-curves.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["pile", "fitted", "v FE [m]", "theta FE [rad]", "H FE [kN]", "M FE [kN m]",
+                    "H 1D at v FE [kN]", "theta 1D at v FE [rad]"])
+        w.writerows(head_rows)
+    with open(os.path.join(out, "summary.json"), "w") as f:
+        json.dump(summary, f, indent=1)
+    # 4. OpenPile export, one file per pile
+    for name, p in piles.items():
+        export.write_openpile(model, p, spec["t_over_D"], os.path.join(out, f"openpile-{name}.json"))
+    print(f"written: fits.csv, model.json, head-curves.csv, summary.json, openpile-<pile>.json in {out} "
+          f"({time.time() - start:.1f} s of fits and 1D runs)")
+    if plot:
+        import plot_sheet
+        plot_sheet.sheet(curves, model, summary, piles, os.path.join(out, "sheet.png"))
+        print(f"plot sheet: {os.path.join(out, 'sheet.png')}")
