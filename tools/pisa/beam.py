@@ -64,24 +64,31 @@ class Beam:
             for xi in gp:
                 Na = 0.5 * (1 - xi)
                 self.gauss.append((e, self.z[e] * Na + self.z[e + 1] * (1 - Na), 0.5 * h, Na))
+        self._ge = np.array([g[0] for g in self.gauss])
+        self._gz = np.array([g[1] for g in self.gauss])
+        self._gw = np.array([g[2] for g in self.gauss])
+        self._gN = np.array([g[3] for g in self.gauss])
 
     def soil(self, u):
-        """The springs' internal force and tangent at the displacements u."""
+        """The springs' internal force and tangent at the displacements u
+        (the spring functions are called once with all Gauss points)."""
         nd = u.size
         f = np.zeros(nd)
         T = np.zeros((nd, nd))
-        for e, zg, w, Na in self.gauss:
-            N = np.array([Na, 1 - Na])
-            iv = np.array([2 * e, 2 * e + 2])
-            ip = iv + 1
-            if self.p is not None:
-                val, der = self.p(N @ u[iv], zg)
-                f[iv] += w * val * N
-                T[np.ix_(iv, iv)] += w * der * np.outer(N, N)
-            if self.m is not None:
-                val, der = self.m(N @ u[ip], zg)
-                f[ip] += w * val * N
-                T[np.ix_(ip, ip)] += w * der * np.outer(N, N)
+        e = self._ge
+        Na, w, zg = self._gN, self._gw, self._gz
+        for off, spring in ((0, self.p), (1, self.m)):
+            if spring is None:
+                continue
+            ia, ib = 2 * e + off, 2 * e + 2 + off
+            val, der = spring(Na * u[ia] + (1 - Na) * u[ib], zg)
+            der = np.broadcast_to(der, Na.shape)
+            np.add.at(f, ia, w * val * Na)
+            np.add.at(f, ib, w * val * (1 - Na))
+            np.add.at(T, (ia, ia), w * der * Na * Na)
+            np.add.at(T, (ia, ib), w * der * Na * (1 - Na))
+            np.add.at(T, (ib, ia), w * der * Na * (1 - Na))
+            np.add.at(T, (ib, ib), w * der * (1 - Na) * (1 - Na))
         it = 2 * self.ne
         if self.HB is not None:
             val, der = self.HB(u[it])

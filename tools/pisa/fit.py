@@ -49,12 +49,12 @@ def fit_curve(x, y, xu_max_factor=10.0):
     k0 = max(y[i0] / x[i0], 1e-9)
     best = None
     for n0 in (0.05, 0.5, 0.95):
-        for xu0 in (xmax, 3 * xmax):
+        for xu0 in (0.5 * xmax, 2 * xmax):
             yu0 = ymax * (1.0 if xu0 == xmax else 1.2)
             K0 = max(k0 * xu0 / yu0, 1.0 + 1e-6)
             q0 = np.clip([np.log(yu0), np.log(xu0), n0, np.log(K0)], lo, hi)
             r = least_squares(resid, q0, bounds=(lo, hi), x_scale="jac",
-                              xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=4000)
+                              xtol=1e-12, ftol=1e-12, gtol=1e-12, max_nfev=300)
             if best is None or r.cost < best.cost:
                 best = r
     k, n, xu, yu = unpack(best.x)
@@ -69,21 +69,26 @@ def linear(top, bottom, s, s0, s1):
     return top + (bottom - top) * w
 
 
-def fit_linear_family(curves, s0, s1, start=None, xu_max_factor=10.0):
+def fit_linear_family(curves, s0, s1, start=None, xu_max_factor=10.0, shared_xu=False):
     """One fit of all `curves` (list of dicts with s, x, y; x > 0) with each
     parameter linear in s between its values at s0 and s1.  Returns dict
     with 'top' and 'bottom' (k, n, xu, yu at s0 and s1), 'rms' per curve
     and 'rms_all'.  The constraints are imposed at s0 and s1 (n, x_u,
     y_u: linear, so everywhere between) and k x_u >= y_u on the curves'
-    s by a penalty."""
+    s by a penalty.  A curve's residuals are divided by its 'scale' (default
+    its own largest |y|).  shared_xu: one x_u for all s (as PISA's clay
+    p-v and m-psi, Byrne et al. 2020), when the curves do not resolve its
+    variation."""
     xmax = max(c["x"].max() for c in curves)
     ymax = max(np.abs(c["y"]).max() for c in curves)
-    scale = [max(np.abs(c["y"]).max(), 1e-12) for c in curves]
+    scale = [c.get("scale") or max(np.abs(c["y"]).max(), 1e-12) for c in curves]
     # q = ln k0, ln k1, n0, n1, ln xu0, ln xu1, ln yu0, ln yu1
     lo = [np.log(ymax / xmax) - 6] * 2 + [0.0, 0.0] + [np.log(xmax) - 8] * 2 + [np.log(ymax) - 6] * 2
     hi = [np.log(ymax / xmax) + 12] * 2 + [1.0, 1.0] + [np.log(xmax * xu_max_factor)] * 2 + [np.log(ymax) + 3] * 2
 
     def params(q, s):
+        if shared_xu:
+            q = np.concatenate([q[:5], q[4:5], q[5:]])
         k = linear(np.exp(q[0]), np.exp(q[1]), s, s0, s1)
         n = linear(q[2], q[3], s, s0, s1)
         xu = linear(np.exp(q[4]), np.exp(q[5]), s, s0, s1)
@@ -109,8 +114,11 @@ def fit_linear_family(curves, s0, s1, start=None, xu_max_factor=10.0):
         q0 = np.array([np.log(st["k"][0]), np.log(st["k"][1]), st["n"][0], st["n"][1],
                        np.log(st["xu"][0]), np.log(st["xu"][1]),
                        np.log(st["yu"][0]), np.log(st["yu"][1])])
-        q0 = np.clip(q0, np.array(lo) + 1e-9, np.array(hi) - 1e-9)
-        r = least_squares(resid, q0, bounds=(lo, hi), x_scale="jac", max_nfev=3000)
+        lo_, hi_ = np.array(lo), np.array(hi)
+        if shared_xu:
+            q0, lo_, hi_ = (np.delete(a, 5) for a in (q0, lo_, hi_))
+        q0 = np.clip(q0, lo_ + 1e-9, hi_ - 1e-9)
+        r = least_squares(resid, q0, bounds=(lo_, hi_), x_scale="jac", max_nfev=3000)
         if best is None or r.cost < best.cost:
             best = r
     q = best.x

@@ -155,7 +155,11 @@ def calibrate_and_compare(spec, data, out, plot=True):
         for f in fam:
             if f["k0"] is None:
                 f["k0"] = f["y"][0] / f["x"][0]
-        r = fit_linear_family(fam, s0, s1)
+        # each curve weighted by its pile's largest reaction: the curves
+        # that carry the head's load count most
+        for f in fam:
+            f["scale"] = max(np.abs(g["y"]).max() for g in fam if g["pile"] == f["pile"])
+        r = fit_linear_family(fam, s0, s1, shared_xu=c in ("py", "mt"))
         params[c] = dict(top=r["top"], bottom=r["bottom"], s0=s0, s1=s1,
                          variable="z/D" if c in ("py", "mt") else "L/D",
                          rms_all=r["rms_all"], rms_max=max(r["rms"]))
