@@ -129,5 +129,8 @@ def fit_linear_family(curves, s0, s1, start=None, xu_max_factor=10.0, shared_xu=
     names = ("k", "n", "xu", "yu")
     top = dict(zip(names, [float(v) for v in params(q, s0)]))
     bottom = dict(zip(names, [float(v) for v in params(q, s1)]))
+    # the penalty holds k x_u >= y_u to about 1e-3; make it exact at the ends
+    for end in (top, bottom):
+        end["k"] = max(end["k"], end["yu"] / end["xu"])
     return dict(top=top, bottom=bottom, s0=float(s0), s1=float(s1), rms=rms,
                 rms_all=float(np.sqrt(np.mean(np.square(rms)))))
