@@ -83,3 +83,25 @@ class Model:
             return sb * D ** 3 * conic(x, *base_M), D ** 3 * Gb * conic_slope(x, *base_M)
 
         return p, m, HB, MB
+
+
+class OwnCurvesModel(Model):
+    """One pile's own per-curve conics (fit.fit_curve), linear in depth
+    between the curves' depths and constant beyond: the 1D model without
+    the depth and L/D fits, to tell the error of the conic and the beam from
+    that of the fitted depth variation."""
+
+    def __init__(self, own, profile, D):
+        """own[c] = list of (z/D, (k, n, x_u, y_u)) for py, mt; own['Hb'],
+        own['Mb'] = (k, n, x_u, y_u) of the pile's base."""
+        super().__init__({}, profile)
+        self.own = own
+        self.D = D
+
+    def at(self, component, s):
+        if component in ("Hb", "Mb"):
+            return self.own[component]
+        pts = sorted(self.own[component])
+        zs = np.array([p[0] for p in pts])
+        vals = np.array([p[1] for p in pts])
+        return tuple(np.interp(s, zs, vals[:, i]) for i in range(4))

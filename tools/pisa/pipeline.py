@@ -11,7 +11,7 @@ import numpy as np
 
 from beam import Beam, Pile
 from fit import prepare, fit_curve, fit_linear_family
-from model import Model, COMPONENTS
+from model import Model, OwnCurvesModel, COMPONENTS
 import export
 
 # component: (x column, y column) of soil-reaction-curves.csv
@@ -217,10 +217,27 @@ def calibrate_and_compare(spec, data, out, plot=True):
                              max_dH=float(np.max(np.abs(dH))), end_dH=float(dH[-1]),
                              max_dtheta=float(np.max(np.abs(dth))), end_dtheta=float(dth[-1]),
                              H_FE_end=float(fe[2][-1]), H_1D_end=float(H1i[-1]))
+        if p["fitted"]:
+            own = {c: [(cv["zD"], tuple(cv["fit"][q] for q in ("k", "n", "xu", "yu")))
+                       for cv in curves[name][c] if cv.get("fit")] for c in ("py", "mt")}
+            for c in ("Hb", "Mb"):
+                f0 = curves[name][c][0].get("fit")
+                own[c] = tuple(f0[q] for q in ("k", "n", "xu", "yu")) if f0 else model.at(c, p["L_over_D"])
+            try:
+                own_1d = run_1d(OwnCurvesModel(own, model.profile, p["D"]), spec, p)
+                dH_own = compare(fe, own_1d)[0]
+                summary[name]["own_max_dH"] = float(np.max(np.abs(dH_own)))
+                summary[name]["own_end_dH"] = float(dH_own[-1])
+                summary[name]["curve_1d_own"] = [a.tolist() for a in own_1d]
+            except RuntimeError as e:
+                print(f"  {name}: the 1D model on its own curves failed: {e}")
         tag = "fitted" if p["fitted"] else "LEFT OUT"
         print(f"  {name} ({tag}): H_1D/H_FE - 1 at v/D = {fe[0][1] / p['D']:.3g}..{fe[0][-1] / p['D']:.3g}: "
               f"max |.| {summary[name]['max_dH']:.3f}, at the end {dH[-1]:+.3f} "
               f"(H_FE = {fe[2][-1]:.6g} kN); theta_1D/theta_FE - 1: max |.| {summary[name]['max_dtheta']:.3f}")
+        if "own_max_dH" in summary[name]:
+            print(f"    the same beam on the pile's own per-curve conics: H_1D/H_FE - 1 max |.| "
+                  f"{summary[name]['own_max_dH']:.3f}, at the end {summary[name]['own_end_dH']:+.3f}")
         for i in range(1, fe[0].size):
             head_rows.append([name, int(p["fitted"]), f"{fe[0][i]:.6g}", f"{fe[1][i]:.6g}", f"{fe[2][i]:.6g}",
                               f"{fe[3][i]:.6g}", f"{H1i[i - 1]:.6g}", f"{th1i[i - 1]:.6g}"])

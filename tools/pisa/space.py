@@ -6,14 +6,14 @@ The spec is a list of `key = value` lines (`#` starts a comment):
     base scene    = prm/monopile-clay-lateral.prm  # the soil profile and laws
     diameters     = 9                # D [m]
     L/D           = 3, 4.5, 6        # embedded length / D, fitted
-    left out      = 4@9              # L/D@D piles run but not fitted (may be empty)
+    left out      = 4@9, 5@4.5       # L/D@D piles run but not fitted (may be empty)
     wall t/D      = 0.0122           # steel wall thickness / D
     stick-up h/D  = 2                # height of H above the mudline / D (M = H h)
     target v/D    = 0.1              # mudline displacement pushed to / D
     initial v/D   = 0.002            # a second run per pile, one step to this
                                      # (the curves' initial slope; 0: none)
     load steps    = 10
-    depths        = 8                # reaction curves at the middles of N parts
+    depths        = 20               # reaction curves at the middles of N parts
     cells along pile = 10
 
 The base scene must be a monopile scene in the form of
@@ -30,13 +30,13 @@ DEFAULTS = {
     "base scene": "prm/monopile-clay-lateral.prm",
     "diameters": "9",
     "L/D": "3, 4.5, 6",
-    "left out": "4@9",
+    "left out": "4@9, 5@4.5",
     "wall t/D": "0.0122",
     "stick-up h/D": "2",
     "target v/D": "0.1",
     "initial v/D": "0.002",
     "load steps": "10",
-    "depths": "8",
+    "depths": "20",
     "cells along pile": "10",
 }
 
