@@ -122,9 +122,10 @@ class Beam:
                 return u
         raise RuntimeError("beam: Newton did not converge under load control")
 
-    def push(self, target, h, steps, tol=1e-10, max_iter=100):
+    def push(self, target, h, steps, tol=1e-10, max_iter=50, max_cuts=8):
         """Displacement control: the mudline's v from 0 to target [m] in equal
-        steps, H = lam, M = lam h.  Returns arrays v0, psi0 [rad], H [kN],
+        steps, H = lam, M = lam h; a step whose Newton fails is cut in halves
+        (at most max_cuts times).  Returns arrays v0, psi0 [rad], H [kN],
         M [kN m] at the head, the origin first."""
         nd = self.K.shape[0]
         fh = self.head_vector(h)
@@ -132,22 +133,38 @@ class Beam:
         lam = 0.0
         free = np.arange(1, nd)
         out = [(0.0, 0.0, 0.0, 0.0)]
-        for s in range(1, steps + 1):
-            u[0] = target * s / steps
+
+        def newton(u, lam, v0):
+            u = u.copy()
+            u[0] = v0
             for it in range(max_iter):
                 fs, T = self.soil(u)
                 r = self.K @ u + fs - lam * fh
                 scale = max(abs(lam), 1e-12) * np.linalg.norm(fh) + 1e-30
                 if np.linalg.norm(r) <= tol * scale and it > 0:
-                    break
+                    return u, lam
                 J = np.column_stack([(self.K + T)[:, free], -fh])
                 d = np.linalg.solve(J, -r)
                 u[free] += d[:-1]
                 lam += d[-1]
-                if np.linalg.norm(d[:-1]) <= 1e-9 * np.linalg.norm(u) and \
-                        abs(d[-1]) <= 1e-9 * abs(lam):
-                    break
-            else:
-                raise RuntimeError(f"beam: Newton did not converge at step {s} (v = {u[0]:.4g} m)")
+                if not np.all(np.isfinite(u)):
+                    return None
+                if np.linalg.norm(d[:-1]) <= 1e-9 * np.linalg.norm(u) and abs(d[-1]) <= 1e-9 * abs(lam):
+                    return u, lam
+            return None
+
+        for s in range(1, steps + 1):
+            goal = target * s / steps
+            cuts = 0
+            while u[0] < goal * (1 - 1e-12):
+                dv = (goal - u[0]) if cuts == 0 else (target / steps) / 2 ** cuts
+                res = newton(u, lam, min(goal, u[0] + dv))
+                if res is None:
+                    cuts += 1
+                    if cuts > max_cuts:
+                        raise RuntimeError(f"beam: Newton did not converge at step {s} (v = {u[0] + dv:.4g} m) "
+                                           f"after {max_cuts} cuts")
+                    continue
+                u, lam = res
             out.append((u[0], u[1], lam, lam * h))
         return tuple(np.array(c) for c in zip(*out))

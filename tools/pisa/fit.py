@@ -132,5 +132,5 @@ def fit_linear_family(curves, s0, s1, start=None, xu_max_factor=10.0, shared_xu=
     # the penalty holds k x_u >= y_u to about 1e-3; make it exact at the ends
     for end in (top, bottom):
         end["k"] = max(end["k"], end["yu"] / end["xu"])
-    return dict(top=top, bottom=bottom, s0=float(s0), s1=float(s1), rms=rms,
+    return dict(top=top, bottom=bottom, s0=float(s0), s1=float(s1), rms=rms, cost=float(best.cost),
                 rms_all=float(np.sqrt(np.mean(np.square(rms)))))
