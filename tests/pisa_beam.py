@@ -80,23 +80,27 @@ check("rigid pile: psi0 against the rigid-body 2x2 solution [rad]", u[1], psi, 1
 check("rigid pile: psi at the tip equals psi0 [rad]", u[-1], psi, 1e-4)
 
 # 4. the export read back
-params = {c: dict(top=dict(k=8.0, n=0.4, xu=20.0, yu=10.0), bottom=dict(k=6.0, n=1.0, xu=20.0, yu=12.0),
-                  s0=0.0, s1=5.0) for c in ("py", "mt")}
-params.update({c: dict(top=dict(k=1.0, n=0.2, xu=3.0, yu=0.5), bottom=dict(k=2.0, n=0.6, xu=5.0, yu=0.7),
-                       s0=2.0, s1=6.0) for c in ("Hb", "Mb")})
+params = {c: dict(layers=[dict(top=dict(k=8.0, n=0.4, xu=20.0, yu=10.0),
+                               bottom=dict(k=6.0, n=1.0, xu=20.0, yu=12.0), s0=0.0, s1=5.0)])
+          for c in ("py", "mt")}
+params.update({c: dict(layers=[dict(top=dict(k=1.0, n=0.2, xu=3.0, yu=0.5),
+                                    bottom=dict(k=2.0, n=0.6, xu=5.0, yu=0.7), s0=2.0, s1=6.0)])
+               for c in ("Hb", "Mb")})
 model = Model(params, dict(depth=[1.0, 9.0], s=[50.0, 90.0], G=[15000.0, 27000.0]))
 path = os.path.join(work, "openpile.json")
 export.write_openpile(model, dict(name="test", D=2.0, L_over_D=4.0), 0.02, path)
-pile, layer, args = export.read_openpile(path)
-check("export: py_Y at the bottom (z/D = 4)", args["py_Y"][1], 10.0 + 2.0 * 4 / 5, 1e-12)
-check("export: py_n at the bottom (z/D = 4)", args["py_n"][1], 0.4 + 0.6 * 4 / 5, 1e-12)
+pile, layers = export.read_openpile(path)
+layer, args = layers[-1], layers[-1]["Custom_pisa_clay"]
+check("export: one layer", len(layers), 1, 0)
+check("export: py_Y at the bottom (z/D = 4; read 1e-9 D inside the layer)", args["py_Y"][1], 10.0 + 2.0 * 4 / 5, 1e-9)
+check("export: py_n at the bottom (z/D = 4)", args["py_n"][1], 0.4 + 0.6 * 4 / 5, 1e-9)
 check("export: Hb_X at L/D = 4 (top = bottom)", args["Hb_X"][0], 4.0, 1e-12)
 check("export: Su at the mudline (constant above the shallowest FE depth) [kPa]", args["Su"][0], 50.0, 1e-12)
 check("export: G0 at the tip (depth 8 m) [kPa]", args["G0"][1], 15000 + 12000 * 7 / 8, 1e-12)
 check("export: layer bottom = -L [m]", layer["bottom"], -8.0, 1e-15)
 with open(path) as f:
     doc = json.load(f)
-del doc["Custom_pisa_clay"]["mt_k"]
+del doc["layers"][0]["Custom_pisa_clay"]["mt_k"]
 with open(path, "w") as f:
     json.dump(doc, f)
 try:
@@ -105,5 +109,17 @@ try:
     print("FAIL a file without mt_k is refused")
 except ValueError as e:
     print(f"ok   a file without mt_k is refused: {e}")
+# two model layers: the export splits the pile at z/D = 2
+params["py"]["layers"] = [dict(top=dict(k=8.0, n=0.4, xu=20.0, yu=10.0), bottom=dict(k=7.0, n=0.5, xu=20.0, yu=11.0),
+                               s0=0.0, s1=2.0),
+                          dict(top=dict(k=5.0, n=0.6, xu=30.0, yu=14.0), bottom=dict(k=4.0, n=0.7, xu=30.0, yu=15.0),
+                               s0=2.0, s1=5.0)]
+export.write_openpile(Model(params, model.profile), dict(name="test", D=2.0, L_over_D=4.0), 0.02, path)
+pile, layers = export.read_openpile(path)
+check("export, two layers: two OpenPile layers", len(layers), 2, 0)
+check("export, two layers: the first ends at z = -2 D [m]", layers[0]["bottom"], -4.0, 1e-15)
+check("export, two layers: py_Y at the top of the second (its own value)", layers[1]["Custom_pisa_clay"]["py_Y"][0],
+      14.0, 1e-6)
+check("export, two layers: py_Y at the bottom of the first", layers[0]["Custom_pisa_clay"]["py_Y"][1], 11.0, 1e-6)
 print(f"{len(failed)} failed")
 sys.exit(1 if failed else 0)

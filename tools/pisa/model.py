@@ -20,7 +20,8 @@ COMPONENTS = ("py", "mt", "Hb", "Mb")
 
 class Model:
     def __init__(self, params, profile):
-        """params[c] = dict(top, bottom, s0, s1) (fit_linear_family);
+        """params[c] = dict(layers=[dict(top, bottom, s0, s1), ...]) (one
+        fit_linear_family per layer of s; the base components one layer);
         profile = dict(depth, s, G): arrays [m], [kPa], [kPa]."""
         self.params = params
         self.profile = {k: np.asarray(v, float) for k, v in profile.items()}
@@ -47,11 +48,16 @@ class Model:
 
     def at(self, component, s):
         """(k, n, x_u, y_u) of a component at s (z/D or L/D), linear in s
-        (clamped to the calibrated range: no extrapolation)."""
-        P = self.params[component]
-        s = np.clip(s, min(P["s0"], P["s1"]), max(P["s0"], P["s1"]))
-        return tuple(linear(P["top"][q], P["bottom"][q], s, P["s0"], P["s1"])
-                     for q in ("k", "n", "xu", "yu"))
+        within each layer (clamped to the calibrated range: no
+        extrapolation); s may be an array."""
+        layers = self.params[component]["layers"]
+        s = np.clip(np.asarray(s, float), layers[0]["s0"], layers[-1]["s1"])
+        out = [np.zeros_like(s) for _ in range(4)]
+        for i, ly in enumerate(layers):
+            inside = (s >= ly["s0"]) & ((s < ly["s1"]) | (i == len(layers) - 1))
+            for j, q in enumerate(("k", "n", "xu", "yu")):
+                out[j] = np.where(inside, linear(ly["top"][q], ly["bottom"][q], s, ly["s0"], ly["s1"]), out[j])
+        return tuple(float(o) if o.ndim == 0 else o for o in out)
 
     def springs(self, D, L):
         """The functions p(v, z), m(psi, z), H_B(v), M_B(psi) of beam.Beam

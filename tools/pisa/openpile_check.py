@@ -8,7 +8,8 @@ Usage: PYTHONPATH=<pydantic 2>:<openpile>/src /usr/bin/python3 \\
 DIR: calibrate.py's --out; PILE: a pile name (openpile-PILE.json there).
 The pile stands h = stick-up above the mudline (its top loaded by H: M = H h
 at the mudline) and the soil is one Custom_pisa_clay layer from the mudline
-to the tip.  Prints, at 20-90 % of the 1D model's H at the end of its push,
+to the tip (one Layer per exported layer; weight 18 kN/m3, not used by
+Custom_pisa_clay).  Prints, at 20-90 % of the 1D model's H at the end of its push,
 OpenPile's and the 1D model's mudline deflection [m] and their ratio."""
 import json
 import os
@@ -30,7 +31,7 @@ def main():
     except ImportError as e:
         sys.exit(f"openpile_check.py: OpenPile cannot be imported ({e}); see doc/pisa-design-model.md")
     try:
-        pile, layer, args = export.read_openpile(os.path.join(out, f"openpile-{name}.json"))
+        pile, layers = export.read_openpile(os.path.join(out, f"openpile-{name}.json"))
     except (OSError, ValueError) as e:
         sys.exit(f"openpile_check.py: {e}")
     with open(os.path.join(out, "summary.json")) as f:
@@ -42,8 +43,8 @@ def main():
     p = Pile.create_tubular(name=name, top_elevation=top, bottom_elevation=pile["bottom_elevation"],
                             diameter=pile["diameter"], wt=pile["wt"])
     sp = SoilProfile(name="calibrated", top_elevation=0.0, water_line=10.0,
-                     layers=[Layer(name=layer["name"], top=0.0, bottom=layer["bottom"], weight=18.0,
-                                   lateral_model=Custom_pisa_clay(**args))])
+                     layers=[Layer(name=ly["name"], top=ly["top"], bottom=ly["bottom"], weight=18.0,
+                                   lateral_model=Custom_pisa_clay(**ly["Custom_pisa_clay"])) for ly in layers])
     print(f"{'H [kN]':>10} {'v OpenPile [m]':>15} {'v 1D [m]':>10} {'ratio':>7}")
     for frac in (0.2, 0.4, 0.6, 0.8, 0.9):
         H = frac * H1[-1]

@@ -180,11 +180,10 @@ def calibrate_and_compare(spec, data, out, plot=True):
                 fam.append(dict(s=s, x=cv["xp"], y=cv["yp"], pile=name, depth=cv["depth"],
                                 k0=cv["fit"]["k"] if cv["fit"] else None, fit=cv["fit"]))
         if c in ("py", "mt"):
-            s0, s1 = 0.0, max(LDs)
+            edges = list(spec["layers"]) if spec["layers"] else [0.0, max(LDs)]
+            edges[-1] = max(edges[-1], max(LDs))
         else:
-            s0, s1 = min(LDs), max(LDs)
-        if len(fam) < 2:
-            sys.exit(f"calibrate.py: component {c} has {len(fam)} usable curve(s); a linear fit needs 2")
+            edges = [min(LDs), max(LDs)]
         for f in fam:
             if f["k0"] is None:
                 f["k0"] = f["y"][0] / f["x"][0]
@@ -192,17 +191,28 @@ def calibrate_and_compare(spec, data, out, plot=True):
         # that carry the head's load count most
         for f in fam:
             f["scale"] = max(np.abs(g["y"]).max() for g in fam if g["pile"] == f["pile"])
-        r = best_family(fam, s0, s1, c)
-        params[c] = dict(top=r["top"], bottom=r["bottom"], s0=s0, s1=s1,
-                         variable="z/D" if c in ("py", "mt") else "L/D",
-                         rms_all=r["rms_all"], rms_max=max(r["rms"]))
-        family_err[c] = [(f["pile"], f["depth"], e) for f, e in zip(fam, r["rms"])]
-        xmax_all = max(f["x"].max() for f in fam)
-        for which in ("top", "bottom"):
-            if r[which]["xu"] > xmax_all:
-                print(f"note: {c} x_u at {params[c]['variable']} = {s0 if which == 'top' else s1:g} is "
-                      f"{r[which]['xu']:.4g}, beyond the largest x of its curves ({xmax_all:.4g}): "
-                      "its y_u is an extrapolation of curves that never reach x_u")
+        layers = []
+        family_err[c] = []
+        for i, (s0, s1) in enumerate(zip(edges[:-1], edges[1:])):
+            last = i == len(edges) - 2
+            sub = [f for f in fam if s0 <= f["s"] and (f["s"] < s1 or (last and f["s"] <= s1 + 1e-9))]
+            if len(sub) < 2 or len({round(f["s"], 9) for f in sub}) < 2:
+                sys.exit(f"calibrate.py: component {c}, {'z/D' if c in ('py', 'mt') else 'L/D'} "
+                         f"{s0:g}..{s1:g}: {len(sub)} usable curve(s) at fewer than 2 depths or lengths; "
+                         "a linear fit needs 2 (more piles, more depths or fewer model layers)")
+            r = best_family(sub, s0, s1, c)
+            layers.append(dict(top=r["top"], bottom=r["bottom"], s0=s0, s1=s1,
+                               rms_all=r["rms_all"], rms_max=max(r["rms"])))
+            family_err[c] += [(f["pile"], f["depth"], e) for f, e in zip(sub, r["rms"])]
+            xmax_all = max(f["x"].max() for f in sub)
+            for which, s in (("top", s0), ("bottom", s1)):
+                if r[which]["xu"] > xmax_all:
+                    print(f"note: {c} x_u at {'z/D' if c in ('py', 'mt') else 'L/D'} = {s:g} is "
+                          f"{r[which]['xu']:.4g}, beyond the largest x of its curves ({xmax_all:.4g}): "
+                          "its y_u is an extrapolation of curves that never reach x_u")
+        errs = np.array([e for _, _, e in family_err[c]])
+        params[c] = dict(layers=layers, variable="z/D" if c in ("py", "mt") else "L/D",
+                         rms_all=float(np.sqrt(np.mean(errs ** 2))), rms_max=float(errs.max()))
     model = Model(params, soil_profile(data))
     model.to_json(os.path.join(out, "model.json"),
                   extra=dict(normalisation={c: LABEL[c] for c in COMPONENTS},
@@ -218,12 +228,12 @@ def calibrate_and_compare(spec, data, out, plot=True):
                         f"{r['k']:.6g}", f"{r['n']:.6g}", f"{r['xu']:.6g}", f"{r['yu']:.6g}",
                         f"{r['rms']:.3g}", int(r["reached"]), f"{r['x_max']:.6g}"])
         for c in COMPONENTS:
-            P = params[c]
-            for which, s in (("top", P["s0"]), ("bottom", P["s1"])):
-                q = P[which]
-                w.writerow([f"model {which}", "all fitted", c, "", f"{s:.6g}", f"{q['k']:.6g}",
-                            f"{q['n']:.6g}", f"{q['xu']:.6g}", f"{q['yu']:.6g}",
-                            f"{P['rms_all']:.3g}", "", ""])
+            for i, ly in enumerate(params[c]["layers"]):
+                for which, s in (("top", ly["s0"]), ("bottom", ly["s1"])):
+                    q = ly[which]
+                    w.writerow([f"model layer {i + 1} {which}", "all fitted", c, "", f"{s:.6g}", f"{q['k']:.6g}",
+                                f"{q['n']:.6g}", f"{q['xu']:.6g}", f"{q['yu']:.6g}",
+                                f"{ly['rms_all']:.3g}", "", ""])
     print("conic fits, one per curve (fitted piles), error = RMS of (y_fit - y_FE)/y_u over the curve:")
     for c in COMPONENTS:
         e = [r["rms"] for r in rows if r["component"] == c]
@@ -231,10 +241,11 @@ def calibrate_and_compare(spec, data, out, plot=True):
     print("the model (each parameter linear in z/D for py, mt; in L/D for Hb, Mb), error over its curves:")
     for c in COMPONENTS:
         P = params[c]
-        t, b = P["top"], P["bottom"]
-        print(f"  {c:2s} {P['variable']} = {P['s0']:g} -> {P['s1']:g}: k {t['k']:.4g} -> {b['k']:.4g}, "
-              f"n {t['n']:.3f} -> {b['n']:.3f}, x_u {t['xu']:.4g} -> {b['xu']:.4g}, "
-              f"y_u {t['yu']:.4g} -> {b['yu']:.4g}; error RMS {P['rms_all']:.3g}, max {P['rms_max']:.3g}")
+        for ly in P["layers"]:
+            t, b = ly["top"], ly["bottom"]
+            print(f"  {c:2s} {P['variable']} = {ly['s0']:g} -> {ly['s1']:g}: k {t['k']:.4g} -> {b['k']:.4g}, "
+                  f"n {t['n']:.3f} -> {b['n']:.3f}, x_u {t['xu']:.4g} -> {b['xu']:.4g}, "
+                  f"y_u {t['yu']:.4g} -> {b['yu']:.4g}; error RMS {ly['rms_all']:.3g}, max {ly['rms_max']:.3g}")
     # 3. the 1D model against the FE's pile head
     head_rows, summary = [], {}
     print("1D model against the FE at the pile head (mudline), at the FE's displacements:")

@@ -42,7 +42,7 @@ def sheet(curves, model, summary, piles, path):
                 ax.plot(zs, vs, mk, ms=4, color=colours[i % len(colours)],
                         mfc="none" if c == "mt" else None, label=f"{c} {name}")
             P = model.params[c]
-            ss = np.linspace(P["s0"], P["s1"], 20)
+            ss = np.linspace(P["layers"][0]["s0"], P["layers"][-1]["s1"], 200)
             ax.plot(ss, [model.at(c, s)[("k", "n", "xu", "yu").index(q)] for s in ss], "k-" if c == "py" else "k--",
                     lw=1, label=f"{c} model")
         ax.set_xlabel("z/D [-]")

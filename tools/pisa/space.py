@@ -15,6 +15,9 @@ The spec is a list of `key = value` lines (`#` starts a comment):
     load steps    = 10
     depths        = 20               # reaction curves at the middles of N parts
     cells along pile = 10
+    model layers z/D = auto          # edges of the layers in z/D within which the
+                                     # p-v and m-psi parameters are linear (OpenPile
+                                     # layers); auto: one, 0 to the largest L/D
 
 The base scene must be a monopile scene in the form of
 prm/monopile-clay-lateral.prm: a steel wall (material 1), a tied ring on its
@@ -38,6 +41,7 @@ DEFAULTS = {
     "load steps": "10",
     "depths": "20",
     "cells along pile": "10",
+    "model layers z/D": "auto",
 }
 
 
@@ -127,6 +131,17 @@ def read_spec(path):
             raise SpecError(f"{path}: '{key} = {entries[key]}' is not an integer")
         if spec[name] < 2:
             raise SpecError(f"{path}: '{key} = {entries[key]}' must be at least 2")
+    ml = entries["model layers z/D"].strip()
+    if ml == "auto":
+        spec["layers"] = None
+    else:
+        try:
+            edges = [float(x) for x in ml.replace(",", " ").split()]
+        except ValueError:
+            raise SpecError(f"{path}: 'model layers z/D = {ml}' is not 'auto' or a list of numbers")
+        if len(edges) < 2 or edges[0] != 0 or any(b <= a for a, b in zip(edges, edges[1:])):
+            raise SpecError(f"{path}: 'model layers z/D = {ml}' must start at 0 and increase")
+        spec["layers"] = edges
     if spec["t_over_D"] >= 0.5:
         raise SpecError(f"{path}: 'wall t/D' must be below 0.5")
     return spec
