@@ -44,10 +44,11 @@ if os.path.isfile(os.path.join(out, "model.json")):
     with open(os.path.join(out, "model.json")) as f:
         params = json.load(f)["params"]
     for c, P in params.items():
-        for which in ("top", "bottom"):
-            q = P[which]
-            ok = 0 <= q["n"] <= 1 and q["xu"] > 0 and q["yu"] > 0 and q["k"] * q["xu"] >= q["yu"] * (1 - 1e-6)
-            expect(f"model {c} {which} within the constraints", ok, str(q))
+        for ly in P["layers"]:
+            for which in ("top", "bottom"):
+                q = ly[which]
+                ok = 0 <= q["n"] <= 1 and q["xu"] > 0 and q["yu"] > 0 and q["k"] * q["xu"] >= q["yu"] * (1 - 1e-12)
+                expect(f"model {c} {which} within the constraints", ok, str(q))
     with open(os.path.join(out, "summary.json")) as f:
         summary = json.load(f)
     for name, s in summary.items():
