@@ -1,11 +1,12 @@
 #!/usr/bin/python3
-"""tools/pisa/calibrate.py end to end on a tiny space (2 piles in the clay
-of prm/monopile-clay-lateral.prm, 6 cells along the pile, 4 steps to 0.05 D,
+"""tools/pisa/calibrate.py end to end on a tiny space (2 fitted piles and
+one left out in the clay of prm/monopile-clay-lateral.prm, 6 cells along the pile, 4 steps to 0.05 D,
 4 depths) with the program: every output file is written, every fitted
 value is finite and within the PISA constraints, the 1D model's H at the
 end of the push is within 30 % of the FE's (a coarse, two-pile model;
 doc/pisa-design-model.md gives the measured differences), and bad input
-gets one line and exit 1 (a space with one L/D; an unknown key).
+gets one line and exit 1 (a space with one L/D; an unknown key); a pile
+whose run left no curves gets one line naming it and the others are kept.
 Usage: pisa_calibration.py EXE SOURCE_DIR WORK_DIR."""
 import csv
 import json
@@ -30,7 +31,7 @@ def expect(name, ok, detail=""):
 site = os.path.join(work, "site.txt")
 with open(site, "w") as f:
     f.write(f"base scene = {os.path.join(source, 'prm', 'monopile-clay-lateral.prm')}\n"
-            "diameters = 4\nL/D = 3, 5\nleft out =\nwall t/D = 0.0122\nstick-up h/D = 1\n"
+            "diameters = 4\nL/D = 3, 5\nleft out = 4@4\nwall t/D = 0.0122\nstick-up h/D = 1\n"
             "target v/D = 0.05\nload steps = 4\ninitial v/D = 0.002\ndepths = 4\ncells along pile = 6\n")
 run = subprocess.run(["/usr/bin/python3", tool, site, "--out", os.path.join(work, "out"), "--exe", exe,
                       "--no-plot"], capture_output=True, text=True)
@@ -57,6 +58,13 @@ if os.path.isfile(os.path.join(out, "model.json")):
         rows = list(csv.DictReader(f))
     expect("fits.csv has the 4 components' per-curve fits",
            {r["component"] for r in rows if r["kind"] == "curve"} == {"py", "mt", "Hb", "Mb"})
+# a pile whose run left no curves: one line naming it, the rest kept
+os.remove(os.path.join(out, "runs", "D4-LD4-left-out", "soil-reaction-curves.csv"))
+r = subprocess.run(["/usr/bin/python3", tool, site, "--out", out, "--exe", exe, "--reuse", "--no-plot"],
+                   capture_output=True, text=True)
+named = [l for l in r.stdout.splitlines() if l.startswith("FAILED") and "D4-LD4-left-out" in l]
+expect("a pile without curves: exit 0, one FAILED line naming it, the others compared",
+       r.returncode == 0 and len(named) == 1 and "D4-LD5 (fitted)" in r.stdout, f"(exit {r.returncode}: {named})")
 # bad input: one line, exit 1
 for text, what in (("L/D = 4\n", "one L/D"), ("diameter = 4\n", "an unknown key")):
     bad = os.path.join(work, "bad.txt")
