@@ -1,0 +1,91 @@
+"""The calibrated model in the terms of OpenPile's `Custom_pisa_clay`
+lateral model (openpile.soilmodels): for one pile, one layer per model layer
+between the mudline and the tip, with the top and bottom values of X (x_u), n, k and Y (y_u) of
+py, mt, Hb and Mb and of Su and G0 [kPa].
+
+The base components depend on L/D, so they are the pile's own (the same at
+top and bottom).  OpenPile requires n < 1: n is written as at most
+N_MAX_OPENPILE.  `read_openpile` is the small reader of those field names
+(the test reads an export back with it)."""
+import json
+
+import numpy as np
+
+FIELDS = [f"{c}_{q}" for c in ("py", "mt", "Hb", "Mb") for q in ("X", "n", "k", "Y")]
+N_MAX_OPENPILE = 0.999
+OURS = {"X": "xu", "n": "n", "k": "k", "Y": "yu"}
+
+
+def openpile_layers(model, D, L):
+    """The Custom_pisa_clay arguments of one pile: a list of (top depth,
+    bottom depth [m], {field: [top, bottom]}), one per model layer of the
+    distributed components that the pile reaches."""
+    edges = sorted({0.0, L} | {ly[k] * D for ly in model.params["py"]["layers"] + model.params["mt"]["layers"]
+                               for k in ("s0", "s1") if 0 < ly[k] * D < L})
+    out = []
+    for a, b in zip(edges[:-1], edges[1:]):
+        args = {}
+        su, G = model.soil(np.array([a, b]))
+        args["Su"] = [float(su[0]), float(su[1])]
+        args["G0"] = [float(G[0]), float(G[1])]
+        # the values just inside the layer at both ends (a layer edge of
+        # the model is a jump)
+        eps = 1e-9 * D
+        for c in ("py", "mt"):
+            top = model.at(c, (a + eps) / D)
+            bottom = model.at(c, (b - eps) / D)
+            for q, ours in OURS.items():
+                j = ("k", "n", "xu", "yu").index(ours)
+                args[f"{c}_{q}"] = [float(top[j]), float(bottom[j])]
+        for c in ("Hb", "Mb"):
+            val = model.at(c, L / D)
+            for q, ours in OURS.items():
+                j = ("k", "n", "xu", "yu").index(ours)
+                args[f"{c}_{q}"] = [float(val[j])] * 2
+        for c in ("py", "mt", "Hb", "Mb"):
+            args[f"{c}_n"] = [min(v, N_MAX_OPENPILE) for v in args[f"{c}_n"]]
+        out.append((a, b, args))
+    return out
+
+
+def write_openpile(model, pile, t_over_D, path):
+    D = pile["D"]
+    L = pile["L_over_D"] * D
+    doc = dict(
+        pile=dict(name=pile["name"], diameter=D, wt=t_over_D * D, top_elevation=0.0, bottom_elevation=-L),
+        layers=[dict(name=f"calibrated clay {i + 1}", top=-a, bottom=-b, Custom_pisa_clay=args)
+                for i, (a, b, args) in enumerate(openpile_layers(model, D, L))],
+        units="kPa for Su and G0; the conic parameters in the PISA clay normalisation "
+              "(p/(Su D), m/(Su D^2), Hb/(Su D^2), Mb/(Su D^3) against y G0/(Su D) or psi G0/Su)",
+    )
+    with open(path, "w") as f:
+        json.dump(doc, f, indent=1)
+
+
+def read_openpile(path):
+    """Reads an export back: returns (pile dict, list of layer dicts, each
+    with name, top, bottom [m elevation] and Custom_pisa_clay {field: [top,
+    bottom]}); raises ValueError naming the first missing or invalid field."""
+    with open(path) as f:
+        doc = json.load(f)
+    layers = doc.get("layers")
+    if not isinstance(layers, list) or not layers:
+        raise ValueError(f"{path}: no layers")
+    for layer in layers:
+        check_layer(path, layer)
+    return doc["pile"], layers
+
+
+def check_layer(path, layer):
+    args = layer.get("Custom_pisa_clay")
+    if not isinstance(args, dict):
+        raise ValueError(f"{path}: layer {layer.get('name')} has no Custom_pisa_clay object")
+    for name in ["Su", "G0"] + FIELDS:
+        v = args.get(name)
+        if not (isinstance(v, list) and len(v) == 2 and all(isinstance(x, (int, float)) for x in v)):
+            raise ValueError(f"{path}: field {name} is not [top, bottom]")
+        if name.endswith("_n"):
+            if not all(0 <= x < 1 for x in v):
+                raise ValueError(f"{path}: {name} = {v} outside OpenPile's 0 <= n < 1")
+        elif not all(x > 0 for x in v):
+            raise ValueError(f"{path}: {name} = {v} must be positive")

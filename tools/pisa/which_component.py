@@ -1,0 +1,85 @@
+#!/usr/bin/python3
+"""Which component's depth (or L/D) model carries the 1D model's error: for
+each fitted pile, the 1D model is rerun with one component at a time
+replaced by the pile's own per-curve conics (model.OwnCurvesModel), the
+others kept from the calibrated model.
+
+Usage: /usr/bin/python3 tools/pisa/which_component.py SITE.txt DIR
+(DIR: a calibrate.py --out with its runs and model.json).  Prints, per pile
+and replacement, H_1D/H_FE - 1 at the first FE step, at the end and its
+largest |.| over the steps."""
+import os
+import sys
+
+import numpy as np
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import pipeline  # noqa: E402
+import runs  # noqa: E402
+from fit import prepare, fit_curve  # noqa: E402
+from model import Model, OwnCurvesModel  # noqa: E402
+from space import read_spec, SpecError  # noqa: E402
+
+
+class Mixed(Model):
+    """The calibrated model with the components in `own_components` taken
+    from one pile's own conics."""
+
+    def __init__(self, model, own_model, own_components):
+        super().__init__(model.params, model.profile)
+        self.own_model = own_model
+        self.own_components = own_components
+
+    def at(self, component, s):
+        if component in self.own_components:
+            return self.own_model.at(component, s)
+        return Model.at(self, component, s)
+
+
+def own_conics(curves):
+    own = {}
+    for c in ("py", "mt"):
+        own[c] = []
+        for cv in curves[c]:
+            _, x, y = prepare(cv["x"], cv["y"])
+            if x.size >= 3:
+                f = fit_curve(x, y)
+                own[c].append((cv["zD"], (f["k"], f["n"], f["xu"], f["yu"])))
+    for c in ("Hb", "Mb"):
+        _, x, y = prepare(curves[c][0]["x"], curves[c][0]["y"])
+        f = fit_curve(x, y)
+        own[c] = (f["k"], f["n"], f["xu"], f["yu"])
+    return own
+
+
+def main():
+    if len(sys.argv) != 3:
+        sys.exit("usage: which_component.py SITE.txt DIR")
+    try:
+        spec = read_spec(sys.argv[1])
+    except SpecError as e:
+        sys.exit(f"which_component.py: {e}")
+    out = sys.argv[2]
+    if not os.path.isfile(os.path.join(out, "model.json")):
+        sys.exit(f"which_component.py: no model.json in {out} (run calibrate.py first)")
+    model = Model.from_json(os.path.join(out, "model.json"))
+    print("H_1D/H_FE - 1 with the components named taken from the pile's own conics:")
+    for p in spec["piles"]:
+        if not p["fitted"]:
+            continue
+        d = runs.read_pile(os.path.join(out, "runs", p["name"]))
+        if d is None:
+            print(f"  {p['name']}: no curves")
+            continue
+        d["initial"] = runs.read_pile(os.path.join(out, "runs", p["name"] + "-initial"))
+        own = OwnCurvesModel(own_conics(pipeline.pile_curves(p, d)), model.profile, p["D"])
+        fe = pipeline.head_fe(d)
+        for use in ((), ("py",), ("mt",), ("Hb", "Mb"), ("py", "mt", "Hb", "Mb")):
+            dH = pipeline.compare(fe, pipeline.run_1d(Mixed(model, own, use), spec, p))[0]
+            name = "+".join(use) if use else "none (the model)"
+            print(f"  {p['name']:10s} own {name:18s}: first step {dH[0]:+.3f}, end {dH[-1]:+.3f}, "
+                  f"max |.| {np.abs(dH).max():.3f}")
+
+
+if __name__ == "__main__":
+    main()
