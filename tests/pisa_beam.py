@@ -27,21 +27,14 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.join(sys.argv[2] if len(sys.argv) > 2 else ".", "tools", "pisa"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from relative_checks import check, failed  # noqa: E402
 from beam import Beam  # noqa: E402
 from model import Model  # noqa: E402
 import export  # noqa: E402
 
 work = sys.argv[3] if len(sys.argv) > 3 else "/tmp/pisa_beam"
 os.makedirs(work, exist_ok=True)
-failed = []
-
-
-def check(name, value, reference, tol):
-    err = abs(value - reference) / abs(reference)
-    ok = err <= tol
-    print(f"{'ok  ' if ok else 'FAIL'} {name}: {value:.10g} vs {reference:.10g} (rel {err:.2e}, tol {tol:g})")
-    if not ok:
-        failed.append(name)
 
 
 def linear_spring(k):

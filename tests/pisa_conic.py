@@ -10,17 +10,10 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.join(sys.argv[2] if len(sys.argv) > 2 else ".", "tools", "pisa"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from relative_checks import check, failed  # noqa: E402
 from conic import conic, conic_slope  # noqa: E402
 
-failed = []
-
-
-def check(name, value, reference, tol):
-    err = abs(value - reference) / max(abs(reference), 1e-300)
-    ok = err <= tol
-    print(f"{'ok  ' if ok else 'FAIL'} {name}: {value:.12g} vs {reference:.12g} (rel {err:.2e}, tol {tol:g})")
-    if not ok:
-        failed.append(name)
 
 
 k, xu, yu = 40.0, 12.0, 9.0

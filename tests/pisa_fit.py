@@ -9,18 +9,11 @@ import sys
 import numpy as np
 
 sys.path.insert(0, os.path.join(sys.argv[2] if len(sys.argv) > 2 else ".", "tools", "pisa"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from relative_checks import check, failed  # noqa: E402
 from conic import conic  # noqa: E402
 from fit import fit_curve, fit_linear_family, linear  # noqa: E402
 
-failed = []
-
-
-def check(name, value, reference, tol):
-    err = abs(value - reference) / abs(reference)
-    ok = err <= tol
-    print(f"{'ok  ' if ok else 'FAIL'} {name}: {value:.10g} vs {reference:.10g} (rel {err:.2e}, tol {tol:g})")
-    if not ok:
-        failed.append(name)
 
 
 # one curve: PISA-like clay p-v values (k x_u / y_u = 26), 30 points

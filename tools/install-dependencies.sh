@@ -2,7 +2,7 @@
 # Install what fourier-ssi needs from Debian 12 packages, only if missing.
 set -euo pipefail
 packages=(cmake g++ make libdeal.ii-dev gmsh libopenblas0-pthread
-          python3 python3-numpy python3-matplotlib python3-sympy)
+          python3 python3-numpy python3-scipy python3-matplotlib python3-sympy)
 missing=()
 for p in "${packages[@]}"; do
   dpkg -s "$p" >/dev/null 2>&1 || missing+=("$p")
