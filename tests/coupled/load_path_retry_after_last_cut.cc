@@ -1,9 +1,10 @@
 // The load path's step sizes and its retry after the last cut (load_path.h,
 // doc/soil-plasticity.md section 3b), on a scripted iteration: a trial
-// converges when its step (target minus the committed load factor) is at
-// most `plain_size`, or, on the retry (retry_persistently), at most
-// `retry_size`. One stage of 1 load-controlled step, Maximum step cuts = 2,
-// so a step is tried at 1, 1/2, 1/4 of what is left of its size:
+// converges when its step (target minus the committed value) is at most
+// `plain_size`, or, on the retry (retry_persistently), at most
+// `retry_size`. One stage of 1 step, Maximum step cuts = 2, so a step is
+// tried at 1, 1/2, 1/4 of what is left of its size. Under displacement
+// control (the scripted vertical motion follows the target):
 //  (1) plain_size = 0.3: 1 and 1/2 fail, 1/4 converges; no retry; the path
 //      ends at 1.
 //  (2) plain_size = 0.05, retry_size = 0.25: the first step fails at 1,
@@ -15,12 +16,16 @@
 //      section and the cuts, after exactly 4 trials (3 sizes and 1 retry)
 //      and 1 retry: a retry is not repeated.
 //  (4) a path that converges only ever closer to its end (a step converges
-//      when it is at most 0.3 of what is left, as a load-controlled path
-//      approaching a limit load): the cuts reset at every converged step,
-//      but the size has a floor, 2^-20 of the stage's step, so the run ends
-//      with the one-line error after fewer than 200 trials (measured 78,
-//      55 converged steps). Without the floor the path took 120 steps and
-//      passed for complete once what was left fell below 1e-12.
+//      when it is at most 0.3 of what is left, as a path approaching a
+//      limit): the cuts reset at every converged step, but the size has a
+//      floor, 2^-20 of the stage's step, so the run ends with the one-line
+//      error after fewer than 200 trials (measured 78, 55 converged steps).
+//      Without the floor the path took 120 steps and passed for complete
+//      once what was left fell below 1e-12.
+// Under load control the floor is 2^-(Maximum step cuts) of the step:
+//  (5) the path of (4) stops at the limit with the one line that names
+//      the load step and the fraction carried, once a step would fall
+//      below 1/4 (fewer than 20 trials).
 #include "check.h"
 
 #include <cmath>
@@ -66,7 +71,9 @@ namespace
     RigidMotion
     trial_motion() const override
     {
-      return {};
+      RigidMotion motion;
+      motion.vertical_displacement = trial;
+      return motion;
     }
 
     void
@@ -79,7 +86,9 @@ namespace
     RigidMotion
     committed_motion() const override
     {
-      return {};
+      RigidMotion motion;
+      motion.vertical_displacement = committed;
+      return motion;
     }
 
     unsigned int
@@ -131,12 +140,16 @@ namespace
     return "";
   }
 
+  /** One step to 1 (a vertical motion of 1 m under displacement control). */
   LoadPathParameters
-  one_step_two_cuts()
+  one_step_two_cuts(const LoadPathParameters::Control control)
   {
     LoadPathParameters settings;
     settings.load_steps        = 1;
     settings.maximum_step_cuts = 2;
+    settings.control           = control;
+    settings.motion            = LoadPathParameters::Motion::vertical;
+    settings.target            = 1.;
     return settings;
   }
 } // namespace
@@ -144,8 +157,9 @@ namespace
 int
 main()
 {
-  const LoadPathParameters settings = one_step_two_cuts();
-  std::ostringstream       log;
+  const LoadPathParameters settings =
+    one_step_two_cuts(LoadPathParameters::Control::displacement);
+  std::ostringstream log;
 
   // (1)
   {
@@ -196,6 +210,17 @@ main()
                              "the smallest step size") != std::string::npos);
     check::in_range("(4) trials", iteration.sizes.size(), 1, 200);
     check::in_range("(4) converged steps", iteration.n_steps, 1, 200);
+  }
+  // (5)
+  {
+    ScriptedIteration iteration(0.3, 0.3, true);
+    const std::string message =
+      error_of(one_step_two_cuts(LoadPathParameters::Control::load), iteration);
+    check::that("(5) the path stops at its limit with the one line naming "
+                "the step and the fraction carried",
+                message.find("Scripted: load step 1 of 1: the loads are "
+                             "carried only up to 0.") != std::string::npos);
+    check::in_range("(5) trials", iteration.sizes.size(), 1, 20);
   }
   return check::summary();
 }
