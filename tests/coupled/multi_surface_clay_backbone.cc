@@ -17,11 +17,13 @@
 //    large strains: the capacity s_u (simple shear) and sqrt(3) s_u
 //    (triaxial) to round-off, with zero shear tangent;
 //  - N = 1 is one von Mises element: min(G0 gamma, s_u) exactly;
-//  - s_u = su + k depth.
+//  - s_u = su + k depth; G0 gamma_ref <= s_u refused with one line (the
+//    hyperbola never reaches s_u).
 #include "check.h"
 #include "multi_surface_clay_test_support.h"
 
 #include <algorithm>
+#include <fourier_ssi/input/messages.h>
 
 using namespace clay_test;
 
@@ -185,6 +187,26 @@ namespace
     p.parse_law_list("0: iwan, su=10, gref=0.001");
     check::equal("surfaces default to 20", p.laws.at(0).n_surfaces, 20);
   }
+
+  void
+  check_unreachable_strength()
+  {
+    std::string message;
+    try
+      {
+        // G0 gamma_ref = 11 kPa < s_u = 12 kPa.
+        MultiSurfaceBackbone(g0, 12., gamma_ref, 20);
+      }
+    catch (const std::exception &e)
+      {
+        message = one_line_message(e);
+      }
+    std::cout << "  message: " << message << std::endl;
+    check::that("G0 gref <= s_u refused with one line naming the entry",
+                message.find("Soil plasticity/Laws: iwan: G0 gref = 11 kPa "
+                             "does not exceed s_u = 12 kPa") == 0 &&
+                  message.find('\n') == std::string::npos);
+  }
 } // namespace
 
 int
@@ -195,5 +217,6 @@ main()
   check_limits();
   check_one_element();
   check_depth_profile();
+  check_unreachable_strength();
   return check::summary();
 }

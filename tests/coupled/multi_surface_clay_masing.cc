@@ -23,16 +23,32 @@
 //    Below that the fit has too few kinks inside the loop: a polygon's
 //    damping is zero below its first yield strain, and the relative error
 //    grows as x falls (the table printed shows it).
+//  - a triaxial cycle +-eps_a (undrained compression and extension): its
+//    elements pass through the states of simple shear at gamma =
+//    sqrt(3) eps_a (section 5), so it closes after one cycle and its
+//    q-eps_a loop, scaled by 1/3, has the area of the simple-shear loop
+//    (q = sqrt(3) tau, eps_a = gamma / sqrt(3)): the same damping ratio,
+//    to round-off (1e-9 relative: two sums of 16000 trapezoids).
 #include "check.h"
 #include "multi_surface_clay_test_support.h"
 
 #include <deal.II/base/numbers.h>
+#include <sstream>
 
 using namespace clay_test;
 
 namespace
 {
   constexpr unsigned int steps = 4000;
+
+  /** x as the log prints it: 0.03, not 0.030000. */
+  std::string
+  number(const double x)
+  {
+    std::ostringstream text;
+    text << x;
+    return text.str();
+  }
 
   /** One run: first loading to gamma_a, then two full cycles. */
   struct Cycles
@@ -180,7 +196,7 @@ namespace
       {
         const double      gamma_a = x * gamma_ref;
         const std::string at =
-          "N = " + std::to_string(n) + ", x = " + std::to_string(x);
+          "N = " + std::to_string(n) + ", x = " + number(x);
         const Cycles c = cycle(law, gamma_a);
         check_closure(c, gamma_a, at);
         check_masing(law, c, gamma_a, at);
@@ -199,6 +215,59 @@ namespace
                        0.002);
       }
   }
+
+  /** The loop area of a strain-stress path from index `from` to `to`. */
+  double
+  area_between(const std::vector<double> &strain,
+               const std::vector<double> &stress,
+               const unsigned int         from,
+               const unsigned int         to)
+  {
+    double area = 0.;
+    for (unsigned int k = from + 1; k <= to; ++k)
+      area += 0.5 * (stress[k] + stress[k - 1]) * (strain[k] - strain[k - 1]);
+    return area;
+  }
+
+  void
+  check_triaxial_cycle()
+  {
+    const MultiSurfaceClay law     = clay(20);
+    const double           gamma_a = 3. * gamma_ref;
+    const Cycles           shear   = cycle(law, gamma_a);
+    // The same path in eps_a = gamma / sqrt(3), triaxial.
+    std::vector<StrainVector> path;
+    std::vector<double>       eps_a, q, tau_rz;
+    for (const double g : shear.gamma)
+      {
+        eps_a.push_back(g / std::sqrt(3.));
+        path.push_back(triaxial_compression(eps_a.back()));
+      }
+    const std::vector<MultiSurfaceReturn> returns = drive(law, path);
+    for (unsigned int k = 0; k < returns.size(); ++k)
+      {
+        q.push_back(returns[k].stress[0] - returns[k].stress[1]);
+        tau_rz.push_back(tau(shear, k));
+      }
+    const double q_a = q[shear.first];
+    check::small("triaxial x = 3: q after one cycle - first q_a, / q_a",
+                 (q[shear.end_1] - q_a) / q_a,
+                 1e-12);
+    check::small("triaxial x = 3: plastic strains after one cycle - first",
+                 state_difference(returns[shear.end_1], returns[shear.first]) /
+                   gamma_a,
+                 1e-12);
+    const double triaxial_xi =
+      area_between(eps_a, q, shear.end_1, shear.end_2) /
+      (4. * numbers::PI * 0.5 * q_a * eps_a[shear.first]);
+    const double shear_xi =
+      area_between(shear.gamma, tau_rz, shear.end_1, shear.end_2) /
+      (4. * numbers::PI * 0.5 * tau(shear, shear.first) * gamma_a);
+    check::relative("triaxial x = 3: damping ratio = simple shear's",
+                    triaxial_xi,
+                    shear_xi,
+                    1e-9);
+  }
 } // namespace
 
 int
@@ -206,5 +275,6 @@ main()
 {
   for (const unsigned int n : {5u, 10u, 20u, 40u})
     check_amplitudes(n);
+  check_triaxial_cycle();
   return check::summary();
 }
