@@ -3,6 +3,7 @@
 // coupled_solver.cc.
 #include <cmath>
 #include <fourier_ssi/coupled/coupled_solver.h>
+#include <fourier_ssi/coupled/interface_state_surface.h>
 #include <fourier_ssi/postprocess/vtu_output.h>
 #include <fstream>
 
@@ -34,11 +35,8 @@ namespace FourierSSI
     std::vector<std::vector<double>> values(3);
     for (unsigned int i = 0; i < points.size(); ++i)
       for (unsigned int j = 0; j < N; ++j)
-        positions.emplace_back(points[i].position[0] *
-                                 std::cos(interface_sampling.angle(j)),
-                               points[i].position[0] *
-                                 std::sin(interface_sampling.angle(j)),
-                               points[i].position[1]);
+        positions.push_back(
+          revolved_point(points[i].position, interface_sampling.angle(j)));
     for (unsigned int k = 0; k < positions.size(); ++k)
       {
         values[0].push_back(static_cast<int>(last.state[k]));
@@ -54,5 +52,23 @@ namespace FourierSSI
                              {"relative_displacement_s_n_theta_m", 3}},
                             values,
                             filename);
+  }
+
+  ContactCounts
+  CoupledSolver::write_interface_state_surface(
+    const unsigned int step,
+    const std::string &filename) const
+  {
+    const NonlinearInterfacePoints *interface = sources.interface_points();
+    AssertThrow(interface != nullptr && step >= 1 &&
+                  step <= states.steps.size(),
+                ExcMessage("Output/Interface state steps: no converged "
+                           "interface state of step " +
+                           std::to_string(step)));
+    return FourierSSI::write_interface_state_surface(
+      *interface,
+      states.steps[step - 1].interface_state,
+      sources.interface_sampling(),
+      filename);
   }
 } // namespace FourierSSI

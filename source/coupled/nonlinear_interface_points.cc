@@ -112,11 +112,21 @@ namespace FourierSSI
         // sticking interface gives exactly no correction.
         const Quadrature<1> rule =
           nonlinear_interface_rule(p, parameters.interfaces.nodal_integration);
+        // The face is straight (equidistant nodes on a line): the share of
+        // point q runs between the rule's cumulative weights before and
+        // after it, in order along the face (deal.II's rules are sorted).
+        const Point<2> &first = pairs[i].nodes.front(),
+                       &last  = pairs[i].nodes.back();
+        double weight_before  = 0.;
         for (unsigned int q = 0; q < rule.size(); ++q)
           {
             InterfacePoint point;
             point.pair  = i;
             point.law   = law_index;
+            point.share = {
+              {first + weight_before * (last - first),
+               first + (weight_before + rule.weight(q)) * (last - first)}};
+            weight_before += rule.weight(q);
             point.shape = lagrange_values(p, rule.point(q)[0]);
             for (unsigned int k = 0; k <= p; ++k)
               for (unsigned int d = 0; d < 2; ++d)

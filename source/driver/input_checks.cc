@@ -284,6 +284,22 @@ namespace FourierSSI
     }
 
     /**
+     * Interface state 3D draws the state of the nonlinear interfaces: a
+     * scene without one would silently write nothing (a linear interface
+     * has no state; its tractions are Write interface tractions).
+     */
+    void
+    check_interface_state_3d_has_interfaces(const AllParameters &parameters)
+    {
+      AssertThrow(!parameters.output.interface_state_3d ||
+                    parameters.interfaces.any_nonlinear(),
+                  ExcMessage("Output/Interface state 3D: the scene has no "
+                             "nonlinear (coulomb or contact) interface; "
+                             "set it false or give Interfaces/Interfaces a "
+                             "coulomb or contact law"));
+    }
+
+    /**
      * A rigid foundation tied to DoFs of a boundary fixed in u, v and w is
      * clamped by the supports (typically the soil's material id given as
      * the foundation's). Rollers (some components fixed, e.g. the
@@ -506,6 +522,7 @@ namespace FourierSSI
     std::vector<std::string> notes;
     check_foundation_loads_are_solved(parameters, plan);
     check_held_loads_have_a_path(parameters);
+    check_interface_state_3d_has_interfaces(parameters);
     check_foundation_not_clamped(parameters, triangulation);
     const MeshExtent extent = mesh_extent(triangulation);
     check_surface_patch(parameters.mesh, extent);

@@ -139,6 +139,10 @@ namespace FourierSSI
       "load-displacement-incomplete.csv",
       "interface-state.csv",
       "interface-state-3d.vtu",
+      // Output/Interface state 3D: the interface state as a revolved
+      // surface per step and its .pvd series (interface_state_surface.h).
+      "interface-state-3d-step{step}.vtu",
+      "interface-state-3d.pvd",
       // Refinement cycles and Target accuracy of a coupled run: each mesh
       // with the indicator that refined it.
       "mesh-cycle{cycle}.vtu",

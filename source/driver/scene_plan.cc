@@ -361,8 +361,14 @@ namespace FourierSSI
     interface_tractions_output(const AllParameters &parameters)
     {
       if (parameters.interfaces.any_nonlinear())
-        return "interface-state.csv (nonlinear interfaces: state, tractions "
-               "and relative displacements per point, angle and step)";
+        return std::string(
+                 "interface-state.csv (nonlinear interfaces: state, "
+                 "tractions and relative displacements per point, angle and "
+                 "step)") +
+               (parameters.output.interface_state_3d ?
+                  "; as a revolved surface: interface-state-3d-step<s>.vtu "
+                  "(Output/Interface state 3D)" :
+                  "");
       if (parameters.soil_plasticity.any())
         return "not written with plastic soil and linear interfaces";
       return parameters.output.write_interface_tractions ?

@@ -1,13 +1,19 @@
 // The driver's path for scenes with nonlinear (coulomb) interfaces: the
 // harmonics are coupled through theta, so they are solved together by
 // CoupledSolver on one HarmonicSet (doc/nonlinear-interfaces.md).
+#include <chrono>
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/base/timer.h>
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/coupled_solver.h>
+#include <fourier_ssi/coupled/interface_state_surface.h>
 #include <fourier_ssi/driver/simulator.h>
 #include <fourier_ssi/harmonic/distributed_linear_system.h>
 #include <fourier_ssi/input/problem_checks.h>
+#include <fourier_ssi/postprocess/vtu_output.h>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace FourierSSI
 {
@@ -65,6 +71,7 @@ namespace FourierSSI
   Simulator::write_interface_files(const CoupledSolver &solver,
                                    std::ostream        &log)
   {
+    check_interface_state_steps(solver);
     if (!writes_csv())
       return;
     {
@@ -81,9 +88,56 @@ namespace FourierSSI
           log << "interface state of the last step (3D points) written to "
               << vtu << std::endl;
         }
+      write_interface_state_3d(solver, log);
     }
     // Lines 3D, the revolved 3D VTU and the results, as a linear run.
     write_output(log);
+  }
+
+  void
+  Simulator::check_interface_state_steps(const CoupledSolver &solver) const
+  {
+    const std::vector<unsigned int> &chosen =
+      parameters.output.interface_state_steps;
+    const auto n_steps = static_cast<unsigned int>(solver.get_steps().size());
+    if (!parameters.output.interface_state_3d || chosen.empty())
+      return;
+    AssertThrow(chosen.back() <= n_steps,
+                ExcMessage("Output/Interface state steps: step " +
+                           std::to_string(chosen.back()) +
+                           " lies beyond the load path, which has " +
+                           std::to_string(n_steps) + " converged steps"));
+  }
+
+  void
+  Simulator::write_interface_state_3d(const CoupledSolver &solver,
+                                      std::ostream        &log)
+  {
+    if (!parameters.output.interface_state_3d)
+      return;
+    const auto                start = std::chrono::steady_clock::now();
+    std::vector<unsigned int> steps = parameters.output.interface_state_steps;
+    if (steps.empty())
+      steps = {static_cast<unsigned int>(solver.get_steps().size())};
+    std::vector<std::pair<double, std::string>> series;
+    log << "interface state in 3D (quads of point x theta sample) of";
+    for (const unsigned int step : steps)
+      {
+        const std::string   name = interface_state_3d_name(step);
+        const ContactCounts counts =
+          solver.write_interface_state_surface(step, result_files.claim(name));
+        series.emplace_back(step, name);
+        log << (step == steps.front() ? " step " : ", step ") << step << " ("
+            << counts[0] << '/' << counts[1] << '/' << counts[2]
+            << " stick/slip/open)";
+      }
+    write_pvd_series(series, result_files.claim(interface_state_3d_series()));
+    log << " written to " << parameters.output.directory
+        << "/interface-state-3d-step*.vtu and interface-state-3d.pvd; "
+        << std::chrono::duration<double>(std::chrono::steady_clock::now() -
+                                         start)
+             .count()
+        << " s" << std::endl;
   }
 
   void

@@ -12,6 +12,7 @@
 #include <fourier_ssi/input/problem_checks.h>
 #include <fourier_ssi/mesh/discretization_design.h>
 #include <fourier_ssi/postprocess/plastic_field_output.h>
+#include <fourier_ssi/postprocess/vtu_output.h>
 #include <functional>
 #include <iomanip>
 #include <limits>
@@ -316,9 +317,8 @@ namespace FourierSSI
     {
       const std::vector<double> &planes = output.plastic_field_planes;
       for (unsigned int i = 0; i < series.size(); ++i)
-        write_plastic_field_series(series[i],
-                                   files.claim(
-                                     i < planes.size() ?
+        write_pvd_series(series[i],
+                         files.claim(i < planes.size() ?
                                        plastic_field_plane_series(planes[i]) :
                                        plastic_field_3d_series()));
       log << "plastic field series (.pvd, for ParaView) written to "
@@ -484,6 +484,7 @@ namespace FourierSSI
     // Before any result file: a chosen step beyond the path stops the run
     // here (and the capture of the last step is a collective).
     finish_plastic_field(solver);
+    check_interface_state_steps(solver);
     if (!writes_csv())
       return;
     write_load_displacement_csv(solver, log);
@@ -493,6 +494,7 @@ namespace FourierSSI
         solver.write_interface_state_csv(state);
         log << "interface state around the circumference written to " << state
             << std::endl;
+        write_interface_state_3d(solver, log);
       }
     if (reaction_curves)
       {

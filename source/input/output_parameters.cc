@@ -107,6 +107,23 @@ namespace FourierSSI
                       "Plastic soil: the soil cells revolved about the axis "
                       "in Theta divisions sectors with the plastic field "
                       "(plastic-field-3d-step<s>.vtu). Needs Write vtu.");
+    prm.declare_entry("Interface state 3D",
+                      "false",
+                      Patterns::Bool(),
+                      "Nonlinear (coulomb, contact) interfaces: their state "
+                      "as a surface revolved about the axis, one quad per "
+                      "interface point and theta sample with its stick / "
+                      "slip / open state, tractions and relative "
+                      "displacements (interface-state-3d-step<s>.vtu and "
+                      "interface-state-3d.pvd; doc/output-files.md). "
+                      "Refused without a nonlinear interface.");
+    prm.declare_entry("Interface state steps",
+                      "last",
+                      Patterns::Anything(),
+                      "The load steps (as in load-displacement.csv, from 1) "
+                      "written by Interface state 3D, or 'last'. Steps "
+                      "beyond the path stop the run at its end, before any "
+                      "result is written.");
     prm.leave_subsection();
   }
 
@@ -176,11 +193,18 @@ namespace FourierSSI
   void
   OutputParameters::parse_plastic_field_steps(const std::string &text)
   {
-    plastic_field_steps.clear();
+    plastic_field_steps = parse_load_steps("Plastic field steps", text);
+  }
+
+  std::vector<unsigned int>
+  OutputParameters::parse_load_steps(const std::string &entry,
+                                     const std::string &text)
+  {
+    std::vector<unsigned int> steps;
     if (Utilities::trim(text) == "last")
-      return;
+      return steps;
     const std::string message =
-      "Output/Plastic field steps: '" + text +
+      "Output/" + entry + ": '" + text +
       "' is not 'last' or a list of load step numbers (1, 2, ...) in "
       "increasing order, each once";
     const auto words = Utilities::split_string_list(text);
@@ -201,11 +225,11 @@ namespace FourierSSI
             AssertThrow(false, ExcMessage(message));
           }
         AssertThrow(step >= 1 && step <= 1000000 &&
-                      (plastic_field_steps.empty() ||
-                       step > plastic_field_steps.back()),
+                      (steps.empty() || step > steps.back()),
                     ExcMessage(message));
-        plastic_field_steps.push_back(static_cast<unsigned int>(step));
+        steps.push_back(static_cast<unsigned int>(step));
       }
+    return steps;
   }
 
   void
@@ -255,7 +279,10 @@ namespace FourierSSI
     parse_soil_reaction_pile(prm.get("Soil reaction pile"));
     parse_plastic_field_steps(prm.get("Plastic field steps"));
     parse_plastic_field_planes(prm.get("Plastic field planes"));
-    plastic_field_3d = prm.get_bool("Plastic field 3D");
+    plastic_field_3d      = prm.get_bool("Plastic field 3D");
+    interface_state_3d    = prm.get_bool("Interface state 3D");
+    interface_state_steps = parse_load_steps("Interface state steps",
+                                             prm.get("Interface state steps"));
     lines.clear();
     for (const std::string &item : split_top_level(prm.get("Lines 3D"), ';'))
       {

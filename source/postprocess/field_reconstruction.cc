@@ -207,7 +207,7 @@ namespace FourierSSI
               const double       ct = std::cos(theta), st = std::sin(theta);
               const std::array<double, 3> &u =
                 cylindrical[sector * n_vertices + cell->vertex_index(v % 4)];
-              patch.vertices[v] = Point<3>(p[0] * ct, p[0] * st, p[1]);
+              patch.vertices[v] = revolved_point(p, theta);
               patch.data(0, v)  = u[0] * ct - u[2] * st;
               patch.data(1, v)  = u[0] * st + u[2] * ct;
               patch.data(2, v)  = u[1];

@@ -1,7 +1,6 @@
 #include <cmath>
 #include <deal.II/base/data_out_base.h>
 #include <fourier_ssi/fourier/theta_sampling.h>
-#include <fourier_ssi/input/atomic_file.h>
 #include <fourier_ssi/postprocess/plastic_field_output.h>
 #include <fourier_ssi/postprocess/vtu_output.h>
 #include <sstream>
@@ -156,8 +155,7 @@ namespace FourierSSI
         for (unsigned int v = 0; v < 4; ++v)
           {
             const Point<2> &x = cell.vertices[v];
-            patch.vertices[v] =
-              Point<3>(x[0] * std::cos(theta), x[0] * std::sin(theta), x[1]);
+            patch.vertices[v] = revolved_point(x, theta);
             fill_vertex(patch,
                         v,
                         displacement_at(snapshot, cell, v, theta),
@@ -192,11 +190,8 @@ namespace FourierSSI
             patch.data.reinit(n_rows, 8);
             for (unsigned int v = 0; v < 8; ++v)
               {
-                const double    theta = angles[v / 4];
-                const Point<2> &x     = cell.vertices[v % 4];
-                patch.vertices[v]     = Point<3>(x[0] * std::cos(theta),
-                                             x[0] * std::sin(theta),
-                                             x[1]);
+                const double theta = angles[v / 4];
+                patch.vertices[v] = revolved_point(cell.vertices[v % 4], theta);
                 fill_vertex(patch,
                             v,
                             displacement_at(snapshot, cell, v % 4, theta),
@@ -207,15 +202,5 @@ namespace FourierSSI
           }
       }
     write_patches_vtu(patches, plastic_fields(), filename);
-  }
-
-  void
-  write_plastic_field_series(
-    const std::vector<std::pair<double, std::string>> &steps,
-    const std::string                                 &filename)
-  {
-    AtomicFile file(filename);
-    DataOutBase::write_pvd_record(file.stream(), steps);
-    file.commit();
   }
 } // namespace FourierSSI

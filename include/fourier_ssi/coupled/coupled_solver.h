@@ -234,6 +234,15 @@ namespace FourierSSI
     void
     write_interface_state_vtu(const std::string &filename) const;
 
+    /**
+     * The interface state of converged step `step` (from 1) as a surface
+     * revolved about the axis (interface_state_surface.h); returns its
+     * stick / slip / open counts.
+     */
+    ContactCounts
+    write_interface_state_surface(const unsigned int step,
+                                  const std::string &filename) const;
+
   private:
     /** LoadPath::Iteration (load_path.h), on the states and the step. */
     void

@@ -44,6 +44,12 @@ namespace FourierSSI
     double              area_per_radian = 0.;
     std::vector<double> shape;
     Point<2>            position;
+    /**
+     * The part of the face (start, end) the point's weight stands for: the
+     * face cut at the cumulative weights of the rule, which enclose the
+     * point (interface_state_surface.h draws it).
+     */
+    std::array<Point<2>, 2> share;
     /** t0 of the Initial stress, local (s, n, theta) [kPa]. */
     LocalVector initial_traction = {{0., 0., 0.}};
     /** Index into the laws. */

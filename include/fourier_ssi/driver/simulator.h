@@ -512,6 +512,20 @@ namespace FourierSSI
     void
     write_interface_files(const CoupledSolver &solver, std::ostream &log);
 
+    /**
+     * Output/Interface state steps beyond the path: one line, on every
+     * rank, before any result file is written.
+     */
+    void
+    check_interface_state_steps(const CoupledSolver &solver) const;
+
+    /**
+     * Output/Interface state 3D: the chosen steps' revolved interface
+     * surfaces, their .pvd series and one log line.
+     */
+    void
+    write_interface_state_3d(const CoupledSolver &solver, std::ostream &log);
+
     /** Set up, assemble, solve and post-process every harmonic. */
     void
     solve_harmonics(const unsigned int cycle);

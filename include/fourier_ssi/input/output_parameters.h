@@ -108,6 +108,19 @@ namespace FourierSSI
     void
     parse_plastic_field_steps(const std::string &text);
 
+    /**
+     * Interface state 3D: the nonlinear interfaces' state as a surface
+     * revolved about the axis (interface-state-3d-step<s>.vtu and
+     * interface-state-3d.pvd) at the steps of Interface state steps (as
+     * plastic_field_steps; empty for the last converged step).
+     */
+    bool                      interface_state_3d = false;
+    std::vector<unsigned int> interface_state_steps;
+
+    /** Read a list of load steps or 'last' of the entry `entry`. */
+    static std::vector<unsigned int>
+    parse_load_steps(const std::string &entry, const std::string &text);
+
     /** Read the entry Plastic field planes; one line if it is malformed. */
     void
     parse_plastic_field_planes(const std::string &text);

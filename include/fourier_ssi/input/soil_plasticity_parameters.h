@@ -22,16 +22,26 @@ namespace FourierSSI
     enum class Kind
     {
       tresca,
-      mohr_coulomb
+      mohr_coulomb,
+      /** Multi-surface kinematic hardening clay (multi_surface_clay.h). */
+      iwan
     };
     Kind kind = Kind::tresca;
-    /** Tresca: s_u = su0 + su_gradient depth [kPa, kPa/m]. */
+    /** Tresca and iwan: s_u = su0 + su_gradient depth [kPa, kPa/m]. */
     double su0         = 0.;
     double su_gradient = 0.;
     /** Mohr-Coulomb: c' [kPa], phi', psi [rad]. */
     double cohesion = 0., friction = 0., dilation = 0.;
+    /**
+     * iwan: the reference shear strain gamma_ref of the hyperbolic backbone
+     * (G / G0 = 1/2 at gamma_ref) and the number of sub-elements.
+     */
+    double       reference_strain = 0.;
+    unsigned int n_surfaces       = 20;
+    /** The largest number of iwan sub-elements (memory per soil point). */
+    static constexpr unsigned int max_surfaces = 100;
 
-    /** Undrained strength s_u at a depth [kPa] (Tresca). */
+    /** Undrained strength s_u at a depth [kPa] (Tresca, iwan). */
     double
     undrained_strength(const double depth) const
     {
@@ -52,10 +62,18 @@ namespace FourierSSI
 
     /**
      * "id: tresca, su=..., k=...; id: mohr-coulomb, c=..., phi=...,
-     * psi=..."; throws one line naming the entry and the offending text.
+     * psi=...; id: iwan, su=..., k=..., gref=..., surfaces=..."; throws one
+     * line naming the entry and the offending text.
      */
     void
     parse_law_list(const std::string &text);
+
+    /**
+     * Throws one line for a law that parses but that the coupled soil
+     * points cannot run yet (iwan).
+     */
+    void
+    refuse_laws_not_wired() const;
 
     bool
     any() const

@@ -16,7 +16,7 @@
  *
  * Filled in by PlasticFieldRecorder (coupled layer); written here through
  * write_patches_vtu (vtu_output.h), cell values constant over each cell's
- * own vertices.
+ * own vertices; the .pvd series by write_pvd_series (vtu_output.h).
  */
 #ifndef fourier_ssi_plastic_field_output_h
 #define fourier_ssi_plastic_field_output_h
@@ -116,12 +116,6 @@ namespace FourierSSI
   write_plastic_field_revolved(const PlasticFieldSnapshot &snapshot,
                                const unsigned int          divisions,
                                const std::string          &filename);
-
-  /** A .pvd series: (step, file name in the same folder) in order. */
-  void
-  write_plastic_field_series(
-    const std::vector<std::pair<double, std::string>> &steps,
-    const std::string                                 &filename);
 } // namespace FourierSSI
 
 #endif
