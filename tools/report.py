@@ -483,15 +483,21 @@ def draw_plateau(ax, goal, sign, u_last, rows, unit):
     if plateau is not None and math.isfinite(float(plateau["value"])):
         ax.axhspan(value, value + float(plateau["value"]), color="0.8",
                    label="plateau's error (asymptote)")
+    # A plateau-only bar is one-sided: the load still to come as the curve
+    # rises to its asymptote, on the side of the band.
+    one_sided = "plateau" in goal.bar_from
+    rises = plateau is None or float(plateau["value"]) >= 0.
     if math.isfinite(goal.bar):
-        ax.errorbar([sign * u_last], [value], yerr=[goal.bar], color="k",
+        yerr = ([[0.], [goal.bar]] if rises else [[goal.bar], [0.]]) \
+            if one_sided else [goal.bar]
+        ax.errorbar([sign * u_last], [value], yerr=yerr, color="k",
                     capsize=4, lw=1.2, label="error bar (%s)" % (
-                        "plateau only" if "plateau" in goal.bar_from
-                        else "total"))
+                        "plateau only, one-sided" if one_sided else "total"))
     name = "capacity" if is_capacity else "end load"
-    return "%s %s = %s ± %s %s" % (name, goal.row["quantity"][-1],
-                                   VALUE_FORMAT % goal.value,
-                                   BAR_FORMAT % goal.bar, unit)
+    spread = ("+ %s (one-sided: the rise still to come)" if one_sided
+              else "± %s") % (BAR_FORMAT % goal.bar)
+    return "%s %s = %s %s %s" % (name, goal.row["quantity"][-1],
+                                 VALUE_FORMAT % goal.value, spread, unit)
 
 
 # ------------------------------------------------------- interface state
@@ -713,6 +719,7 @@ def goal_table_cells(goals, rows):
         r = g.row
         cells.append([r["quantity"], "%s %s" % (r["n"], r["family"][:4]),
                       r["cycle"], VALUE_FORMAT % g.value,
+                      ("+" if "plateau" in g.bar_from else "") +
                       BAR_FORMAT % g.bar if math.isfinite(g.bar) else "-",
                       r["unit"], bar_note(g, rows)])
     return cells

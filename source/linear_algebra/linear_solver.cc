@@ -27,7 +27,7 @@ namespace FourierSSI
     if (b.l2_norm() == 0.)
       {
         x = 0.;
-        report.method += " (zero load, skipped)";
+        report.method += " (scene load zero: its solution is 0, not solved)";
         return report;
       }
     if (parameters.is_direct())
