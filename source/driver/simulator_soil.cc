@@ -25,6 +25,13 @@ namespace FourierSSI
 {
   namespace
   {
+    /**
+     * A rise of the foundation above this fraction of its horizontal
+     * displacement is warned of (warn_weightless_heave); below it, the
+     * round-off and the small uplift of an elastic rocking mode.
+     */
+    constexpr double heave_warning_fraction = 0.05;
+
     const std::string entry = "Soil plasticity";
 
     /** Target accuracy or Refinement cycles > 1: more than one mesh. */
@@ -222,6 +229,42 @@ namespace FourierSSI
       return parameters.load_path.control ==
                LoadPathParameters::Control::displacement &&
              solver.get_steps().size() >= 2;
+    }
+
+    /**
+     * A foundation with no vertical load on it (no Vertical force or Held
+     * vertical force, w not held or driven, no Body force) is weightless:
+     * pushed sideways over dilatant or frictional soil it rises, which a
+     * real caisson or footing under its own weight does not. Warned, not
+     * refused: the path is the one the input asks for.
+     */
+    void
+    warn_weightless_heave(const CoupledSolver &solver,
+                          const AllParameters &parameters,
+                          std::ostream        &log)
+    {
+      const RigidFoundationParameters &foundation = parameters.rigid_foundation;
+      const LoadPathParameters        &path       = parameters.load_path;
+      const bool                       drives_w =
+        path.control == LoadPathParameters::Control::displacement &&
+        path.motion == LoadPathParameters::Motion::vertical;
+      if (!foundation.enabled || solver.get_steps().empty() ||
+          foundation.vertical_force != 0. ||
+          foundation.held_vertical_force != 0. ||
+          foundation.holds(FoundationMotion::w) || drives_w ||
+          !parameters.boundary_conditions.body_force.is_zero())
+        return;
+      const RigidMotion &motion = solver.get_steps().back().motion;
+      const double       w      = motion.vertical_displacement;
+      if (w > 0. &&
+          w > heave_warning_fraction * std::abs(motion.horizontal_displacement))
+        log << "warning: the foundation rose by w = +" << w
+            << " m over the path (u = " << motion.horizontal_displacement
+            << " m at the end) with no vertical load on it: a weightless "
+               "foundation heaves as it is pushed; give Rigid "
+               "foundation/Held vertical force (its weight, negative "
+               "down) for the path of a real one"
+            << std::endl;
     }
 
     /** The capacity's rows and log line. */
@@ -449,6 +492,7 @@ namespace FourierSSI
       }
     keep_last_step(solver);
     add_held_reaction_rows(solver);
+    warn_weightless_heave(solver, parameters, log);
     if (!has_capacity(solver, parameters))
       return;
     if (parameters.rigid_foundation.probes_direction())
