@@ -225,9 +225,7 @@ namespace FourierSSI
     check_stiffness_of_linear_scene(const AllParameters &parameters)
     {
       const RigidFoundationParameters &foundation = parameters.rigid_foundation;
-      if (!foundation.stiffness_coefficients || !parameters.coupled())
-        return;
-      AssertThrow(false,
+      AssertThrow(!foundation.stiffness_coefficients || !parameters.coupled(),
                   ExcMessage(
                     std::string("Rigid foundation/") +
                     (foundation.stiffness_matrix ? "Stiffness matrix" :
