@@ -201,11 +201,12 @@ namespace FourierSSI
                            const bool                held,
                            const unsigned int        cuts,
                            const unsigned int        converged_steps,
-                           const LoadPathParameters &settings)
+                           const LoadPathParameters &settings,
+                           const std::string        &segment)
   {
     return entry + ": load step " + std::to_string(step_of(done, n_steps)) +
            " of " + std::to_string(n_steps) +
-           (held ? " of the held loads" : "") + " (after " +
+           (held ? " of the held loads" : segment) + " (after " +
            std::to_string(cuts) + " cuts" +
            (cuts < settings.maximum_step_cuts ?
               ", at the smallest step size, 2^-" +
@@ -223,11 +224,12 @@ namespace FourierSSI
                      const unsigned int        n_steps,
                      const bool                held,
                      const LoadPathParameters &settings,
-                     const unsigned int        converged_steps)
+                     const unsigned int        converged_steps,
+                     const std::string        &segment)
   {
     std::ostringstream line;
     line << entry << ": load step " << step_of(done, n_steps) << " of "
-         << n_steps << (held ? " of the held loads" : "") << ": "
+         << n_steps << (held ? " of the held loads" : segment) << ": "
          << (held ? "the held loads (body force, tractions, held foundation "
                     "loads) are" :
                     "the loads are")

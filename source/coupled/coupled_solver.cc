@@ -95,6 +95,7 @@ namespace FourierSSI
                              committed.held_fraction,
                              committed.swipe_force),
       states.before_last.plastic,
+      states.before_last.soil_history,
       committed.plastic);
   }
 
@@ -282,6 +283,12 @@ namespace FourierSSI
       for (const auto &observer : step_observers)
         observer(r);
     });
+  }
+
+  double
+  CoupledSolver::committed_load_factor() const
+  {
+    return states.committed.load_factor;
   }
 
   RigidMotion

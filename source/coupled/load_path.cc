@@ -74,6 +74,7 @@ namespace FourierSSI
   bool
   LoadPath::misses_target(const RigidMotion &motion,
                           const double       target,
+                          const double       scale,
                           const bool         holding) const
   {
     // A diverged iterate can pass the relative force test with a huge load
@@ -81,7 +82,19 @@ namespace FourierSSI
     // of lambda m(u_F) against m(v)).
     return controls_motion(holding) &&
            std::abs(controlled_component(motion, settings.motion) - target) >
-             1e-8 * std::abs(target);
+             1e-8 * scale;
+  }
+
+  std::string
+  LoadPath::segment_label(const unsigned int segment) const
+  {
+    const std::vector<double> ends = settings.segment_targets();
+    if (ends.size() < 2 || segment == 0)
+      return "";
+    std::ostringstream label;
+    label << " of segment " << segment << " of " << ends.size() << " (to "
+          << ends[segment - 1] << ")";
+    return label.str();
   }
 
   unsigned int
@@ -136,22 +149,37 @@ namespace FourierSSI
                "foundation ";
         iteration.write_held_loads(log);
         log << '\n';
-        run_stage(true, settings.held_load_steps, log);
+        run_stage(true, settings.held_load_steps, 1., 0, log);
       }
-    run_stage(false, settings.load_steps, log);
+    const std::vector<double> ends = settings.segment_targets();
+    for (unsigned int s = 0; s < ends.size(); ++s)
+      {
+        if (ends.size() > 1)
+          log << "segment " << s + 1 << " of " << ends.size() << ": "
+              << (controls_motion(false) ? "the controlled motion" :
+                                           "the load factor")
+              << " to " << ends[s] << '\n';
+        run_stage(false, settings.load_steps, ends[s], s + 1, log);
+      }
   }
 
   void
   LoadPath::run_stage(const bool         holding,
                       const unsigned int n_steps,
+                      const double       end,
+                      const unsigned int segment,
                       std::ostream      &log)
   {
-    // Displacement control moves from where the held loads left the
-    // controlled motion to Target.
+    // Displacement control moves from where the held loads (or the last
+    // segment) left the controlled motion to `end`; load control from the
+    // committed load factor (0 on the first segment).
     const double start =
       controls_motion(holding) ?
         controlled_component(iteration.committed_motion(), settings.motion) :
-        0.;
+      holding ? 0. :
+                iteration.committed_load_factor();
+    const double motion_scale =
+      settings.is_cyclic() ? std::max(std::abs(start), std::abs(end)) : 0.;
     StepSize size;
     size.step = size.increment = 1. / n_steps;
     bool   estimated           = false;
@@ -162,9 +190,7 @@ namespace FourierSSI
     while (done < 1. - 1e-12)
       {
         const double fraction = std::min(1., done + size.increment);
-        const double target   = controls_motion(holding) ?
-                                  start + fraction * (settings.target - start) :
-                                  fraction;
+        const double target   = start + fraction * (end - start);
         iteration.start_trial(
           last_increment > 0. ? size.increment / last_increment : 0.);
         const auto clock     = std::chrono::steady_clock::now();
@@ -173,7 +199,10 @@ namespace FourierSSI
         if (converged)
           {
             step.motion = iteration.trial_motion();
-            converged   = !misses_target(step.motion, target, holding);
+            converged   = !misses_target(step.motion,
+                                       target,
+                                       std::max(std::abs(target), motion_scale),
+                                       holding);
           }
         if (!converged)
           {
@@ -196,7 +225,8 @@ namespace FourierSSI
                                              n_steps,
                                              holding,
                                              settings,
-                                             iteration.n_converged_steps())));
+                                             iteration.n_converged_steps(),
+                                             segment_label(segment))));
             AssertThrow(
               !last_cut,
               ExcMessage(unconverged_step_message(entry,
@@ -205,7 +235,8 @@ namespace FourierSSI
                                                   holding,
                                                   size.cuts,
                                                   iteration.n_converged_steps(),
-                                                  settings)));
+                                                  settings,
+                                                  segment_label(segment))));
             size.cut();
             log << "  step cut to " << size.increment << " of the "
                 << (holding ? "held loads" : "loading") << '\n';
@@ -219,7 +250,8 @@ namespace FourierSSI
         last_increment = fraction - done;
         done           = fraction;
         size.converged();
-        step.time = std::chrono::duration<double>(
+        step.segment = segment;
+        step.time    = std::chrono::duration<double>(
                       std::chrono::steady_clock::now() - clock)
                       .count();
         iteration.commit_trial(step, holding, log);

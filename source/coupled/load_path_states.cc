@@ -139,6 +139,7 @@ namespace FourierSSI
     trial_result.swipe_force   = committed.swipe_force;
     trial_result.motion        = step.motion;
     trial_result.time          = step.time;
+    trial_result.segment       = step.segment;
     trial_result.n_harmonics   = harmonic_set.size();
   }
 

@@ -1,5 +1,6 @@
 // The record of a converged load step: its log line and its row of
 // load-displacement.csv, each nonlinear source adding only its own part.
+#include <algorithm>
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/load_step_result.h>
 #include <fourier_ssi/harmonic/rigid_motion.h>
@@ -79,6 +80,11 @@ namespace FourierSSI
   {
     AtomicFile    file(filename);
     std::ostream &out = file.stream();
+    // A cyclic path (Load path/Targets) numbers the segment of each step.
+    const bool cyclic =
+      std::any_of(steps.begin(), steps.end(), [](const LoadStepResult &r) {
+        return r.segment > 1;
+      });
     // The loads that hold the held motions, or a direction probe's H and M,
     // one column each: the H and M columns before them are the applied
     // drive.
@@ -89,7 +95,7 @@ namespace FourierSSI
         << (steps.empty() ?
               std::string() :
               held_reaction_columns(foundation, steps.back().held_reactions))
-        << ",converged\n"
+        << (cyclic ? ",segment" : "") << ",converged\n"
         << std::setprecision(12);
     for (unsigned int s = 0; s < steps.size(); ++s)
       {
@@ -112,6 +118,8 @@ namespace FourierSSI
         out << ',' << r.n_harmonics << ',' << r.time << ',' << r.held_fraction;
         for (const auto &reaction : r.held_reactions)
           out << ',' << reaction.second;
+        if (cyclic)
+          out << ',' << r.segment;
         out << ",1\n";
       }
     file.commit();

@@ -86,7 +86,17 @@ namespace FourierSSI
   MultiSurfaceClay::return_map(const StrainVector      &strain,
                                const MultiSurfaceState &committed) const
   {
-    return return_map(strain, committed, nullptr);
+    Assert(committed.size() == n_surfaces(),
+           ExcDimensionMismatch(committed.size(), n_surfaces()));
+    MultiSurfaceReturn result;
+    result.plastic_strains.resize(n_surfaces());
+    const MultiSurfaceStress r = return_map(strain,
+                                            committed.data(),
+                                            result.plastic_strains.data(),
+                                            nullptr);
+    result.stress              = r.stress;
+    result.n_yielding          = r.n_yielding;
+    return result;
   }
 
   MultiSurfaceReturn
@@ -94,28 +104,37 @@ namespace FourierSSI
                                             const MultiSurfaceState &committed,
                                             StressTangent &tangent) const
   {
-    return return_map(strain, committed, &tangent);
-  }
-
-  MultiSurfaceReturn
-  MultiSurfaceClay::return_map(const StrainVector      &strain,
-                               const MultiSurfaceState &committed,
-                               StressTangent           *tangent) const
-  {
     Assert(committed.size() == n_surfaces(),
            ExcDimensionMismatch(committed.size(), n_surfaces()));
+    MultiSurfaceReturn result;
+    result.plastic_strains.resize(n_surfaces());
+    const MultiSurfaceStress r = return_map(strain,
+                                            committed.data(),
+                                            result.plastic_strains.data(),
+                                            &tangent);
+    result.stress              = r.stress;
+    result.n_yielding          = r.n_yielding;
+    return result;
+  }
+
+  MultiSurfaceStress
+  MultiSurfaceClay::return_map(const StrainVector &strain,
+                               const StrainVector *committed,
+                               StrainVector       *updated,
+                               StressTangent      *tangent) const
+  {
     const SymmetricTensor<2, 3> eps   = strain_tensor(strain);
     const SymmetricTensor<2, 3> e     = deviator(eps);
     const SymmetricTensor<4, 3> i_dev = deviator_tensor<3>();
 
-    MultiSurfaceReturn result;
-    result.plastic_strains.resize(n_surfaces());
+    MultiSurfaceStress result;
     // (C1): the volumetric part is elastic.
     SymmetricTensor<2, 3> stress =
       bulk_modulus * trace(eps) * unit_symmetric_tensor<3>();
-    SymmetricTensor<4, 3> c =
-      bulk_modulus *
-      outer_product(unit_symmetric_tensor<3>(), unit_symmetric_tensor<3>());
+    SymmetricTensor<4, 3> c;
+    if (tangent)
+      c = bulk_modulus *
+          outer_product(unit_symmetric_tensor<3>(), unit_symmetric_tensor<3>());
     for (unsigned int i = 0; i < n_surfaces(); ++i)
       {
         const double g                  = backbone.shear_modulus(i);
@@ -126,7 +145,8 @@ namespace FourierSSI
         const double          size = s.norm();
         if (size <= radius)
           {
-            result.plastic_strains[i] = committed[i];
+            if (updated)
+              updated[i] = committed[i];
             if (tangent)
               c += 2. * g * i_dev;
           }
@@ -137,7 +157,8 @@ namespace FourierSSI
             const double                scale = radius / size;
             const SymmetricTensor<2, 3> n     = s / size;
             s *= scale;
-            result.plastic_strains[i] = strain_vector(e - s / (2. * g));
+            if (updated)
+              updated[i] = strain_vector(e - s / (2. * g));
             ++result.n_yielding;
             if (tangent)
               c += 2. * g * scale * (i_dev - outer_product(n, n));

@@ -77,8 +77,7 @@ namespace FourierSSI
         double size = 0.;
         for (const double s : point.initial_stress)
           size = std::max(size, std::abs(s));
-        const double f =
-          laws[point.law].yield_function(point.initial_stress, point.depth);
+        const double f = yield_value(point, point.initial_stress);
         if (f <= 1e-12 * std::max(size, 1.))
           continue;
         const auto law =
@@ -100,10 +99,12 @@ namespace FourierSSI
   NonlinearSoilPoints::make_points(const AllParameters &parameters)
   {
     std::map<types::material_id, unsigned int> law_index;
+    std::vector<const SoilLaw *>               law_data;
     for (const auto &[id, law] : parameters.soil_plasticity.laws)
       {
         law_index[id] = laws.size();
         laws.emplace_back(law);
+        law_data.push_back(&law);
       }
     const DoFHandler<2> &dofs0 = set.problem(0).get_dof_handler();
     const auto          &fe    = dofs0.get_fe();
@@ -162,6 +163,7 @@ namespace FourierSSI
                 point.law           = law->second;
                 point.initial_stress =
                   initial_soil_stress(parameters.initial_stress, point.depth);
+                add_hardening_elements(*law_data[point.law], point);
                 points.push_back(point);
               }
             cells.push_back(std::move(cell));
@@ -174,6 +176,21 @@ namespace FourierSSI
     AssertThrow(!points.empty() || !parameters.soil_plasticity.any(),
                 ExcMessage(entry + "/Laws: no cell of the mesh has a "
                                    "material id with a plastic law"));
+  }
+
+  void
+  NonlinearSoilPoints::add_hardening_elements(const SoilLaw &law,
+                                              SoilPoint     &point)
+  {
+    if (law.kind != SoilLaw::Kind::iwan)
+      return;
+    // The elements follow G0 and s_u at the point's depth (their profiles);
+    // K is the material's, the volume change stays elastic (C1).
+    const double bulk_modulus = point.lambda + 2. * point.shear_modulus / 3.;
+    clays.emplace_back(law, point.shear_modulus, bulk_modulus, point.depth);
+    point.clay          = clays.size() - 1;
+    point.first_history = n_history;
+    n_history += std::size_t(sampling.n_samples()) * law.n_surfaces;
   }
 
   std::vector<std::vector<StrainVector>>
@@ -250,10 +267,14 @@ namespace FourierSSI
   NonlinearSoilPoints::return_map(
     const std::vector<StrainVector> &strain,
     const std::vector<StrainVector> &committed_plastic,
-    std::vector<StrainVector>       &plastic) const
+    const std::vector<StrainVector> &committed_history,
+    std::vector<StrainVector>       &plastic,
+    std::vector<StrainVector>       &history) const
   {
     const unsigned int N = sampling.n_samples();
     plastic.resize(strain.size());
+    // The points this rank does not own keep the committed history.
+    history = committed_history;
     SoilYieldCounts result;
     result.n_elastic           = 0;
     result.n_plastic           = 0;
@@ -280,17 +301,23 @@ namespace FourierSSI
                 // s_p = sigma_0 + D eps - sigma keeps the internal force
                 // int Bbar^T (sigma - sigma_0) = K u - c.
                 const StrainVector elastic = elastic_stress(point, strain[k]);
-                const SoilReturn   r =
-                  return_from(point, elastic, committed_plastic[k]);
+                StrainVector      *updated =
+                  point.clay == numbers::invalid_unsigned_int ?
+                         nullptr :
+                         &history[point.first_history +
+                             j * clays[point.clay].n_surfaces()];
+                const SoilReturn r = return_from(
+                  point,
+                  strain[k],
+                  history_of(p, k, committed_plastic, committed_history),
+                  updated);
                 for (unsigned int c = 0; c < 6; ++c)
                   plastic[k][c] = elastic[c] - r.stress[c];
                 if (r.state == SoilState::elastic)
                   ++n_elastic;
                 else
                   ++n_plastic;
-                largest = std::max(largest,
-                                   laws[point.law].yield_function(r.stress,
-                                                                  point.depth));
+                largest = std::max(largest, yield_value(point, r.stress));
               }
           }
         std::lock_guard<std::mutex> lock(merge);
@@ -514,11 +541,21 @@ namespace FourierSSI
   NonlinearSoilPoints::samples_of(
     const std::vector<StrainVector> &strain,
     const std::vector<StrainVector> &previous_plastic,
+    const std::vector<StrainVector> &previous_history,
     const std::vector<StrainVector> &plastic) const
   {
     const unsigned int      N = sampling.n_samples();
     std::vector<SoilSample> samples(points.size() * N);
     const StrainVector      at_rest = {{0., 0., 0., 0., 0., 0.}};
+    // At rest (no step before): zero s_p and virgin elements.
+    const std::vector<StrainVector> rest_plastic(
+      previous_plastic.empty() ? points.size() * N : 0, at_rest);
+    const std::vector<StrainVector> rest_history(
+      previous_history.empty() ? n_history : 0, at_rest);
+    const auto &before_plastic =
+      previous_plastic.empty() ? rest_plastic : previous_plastic;
+    const auto &before_history =
+      previous_history.empty() ? rest_history : previous_history;
     for (unsigned int p = 0; p < points.size(); ++p)
       {
         if (!owns_point(p))
@@ -526,12 +563,11 @@ namespace FourierSSI
         const SoilPoint &point = points[p];
         for (unsigned int j = 0; j < N; ++j)
           {
-            const unsigned int  k = p * N + j;
-            const StrainVector &before =
-              previous_plastic.empty() ? at_rest : previous_plastic[k];
-            const StrainVector elastic = elastic_stress(point, strain[k]);
-            SoilSample        &sample  = samples[k];
-            StrainVector       step_change;
+            const unsigned int  k       = p * N + j;
+            const StrainVector &before  = before_plastic[k];
+            const StrainVector  elastic = elastic_stress(point, strain[k]);
+            SoilSample         &sample  = samples[k];
+            StrainVector        step_change;
             for (unsigned int c = 0; c < 6; ++c)
               {
                 sample.stress[c] = elastic[c] - plastic[k][c];
@@ -541,10 +577,13 @@ namespace FourierSSI
               compliance_strain(plastic[k], point.lambda, point.shear_modulus);
             sample.plastic_strain_increment =
               compliance_strain(step_change, point.lambda, point.shear_modulus);
-            sample.yield_value =
-              laws[point.law].yield_function(sample.stress, point.depth);
+            sample.yield_value = yield_value(point, sample.stress);
             sample.plastic =
-              return_from(point, elastic, before).state != SoilState::elastic;
+              return_from(point,
+                          strain[k],
+                          history_of(p, k, before_plastic, before_history),
+                          nullptr)
+                .state != SoilState::elastic;
           }
       }
     return samples;
@@ -560,16 +599,44 @@ namespace FourierSSI
     return stress;
   }
 
-  SoilReturn
-  NonlinearSoilPoints::return_from(const SoilPoint    &point,
-                                   const StrainVector &elastic,
-                                   const StrainVector &committed_plastic,
-                                   StressTangent      *tangent) const
+  NonlinearSoilPoints::SampleHistory
+  NonlinearSoilPoints::history_of(
+    const unsigned int               p,
+    const unsigned int               k,
+    const std::vector<StrainVector> &plastic,
+    const std::vector<StrainVector> &history) const
   {
+    const SoilPoint &point = points[p];
+    if (point.clay == numbers::invalid_unsigned_int)
+      return {&plastic[k], nullptr};
+    const unsigned int j = k - p * sampling.n_samples();
+    return {&plastic[k],
+            &history[point.first_history + j * clays[point.clay].n_surfaces()]};
+  }
+
+  SoilReturn
+  NonlinearSoilPoints::return_from(const SoilPoint     &point,
+                                   const StrainVector  &strain,
+                                   const SampleHistory &committed,
+                                   StrainVector        *updated,
+                                   StressTangent       *tangent) const
+  {
+    if (point.clay != numbers::invalid_unsigned_int)
+      {
+        // sigma = sigma_0 + the elements' stress at eps (C1): the surfaces
+        // start centred on the geostatic stress.
+        const MultiSurfaceStress r = clays[point.clay].return_map(
+          strain, committed.elements, updated, tangent);
+        SoilReturn result;
+        for (unsigned int c = 0; c < 6; ++c)
+          result.stress[c] = point.initial_stress[c] + r.stress[c];
+        result.state = r.n_yielding > 0 ? SoilState::plane : SoilState::elastic;
+        return result;
+      }
     // Trial: sigma_0 + D (eps - eps_p,committed) = elastic - s_p,committed.
-    StrainVector trial = elastic;
+    StrainVector trial = elastic_stress(point, strain);
     for (unsigned int c = 0; c < 6; ++c)
-      trial[c] -= committed_plastic[c];
+      trial[c] -= (*committed.plastic)[c];
     const double G = point.shear_modulus, K = point.lambda + 2. * G / 3.;
     const SoilReturnMapping &law = laws[point.law];
     return tangent == nullptr ?
@@ -577,18 +644,38 @@ namespace FourierSSI
              law.return_map_with_tangent(trial, G, K, point.depth, *tangent);
   }
 
+  double
+  NonlinearSoilPoints::yield_value(const SoilPoint    &point,
+                                   const StrainVector &stress) const
+  {
+    if (point.clay == numbers::invalid_unsigned_int)
+      return laws[point.law].yield_function(stress, point.depth);
+    // sqrt(J2) of sigma - sigma_0: |dev| / sqrt(2) with the shears doubled
+    // in the squared norm.
+    StrainVector change;
+    for (unsigned int c = 0; c < 6; ++c)
+      change[c] = stress[c] - point.initial_stress[c];
+    const double mean = (change[0] + change[1] + change[2]) / 3.;
+    double       j2   = 0.;
+    for (unsigned int c = 0; c < 3; ++c)
+      j2 += 0.5 * (change[c] - mean) * (change[c] - mean);
+    for (unsigned int c = 3; c < 6; ++c)
+      j2 += change[c] * change[c];
+    double strength = 0.;
+    for (unsigned int i = 0; i < clays[point.clay].n_surfaces(); ++i)
+      strength += clays[point.clay].elements().strength(i);
+    return std::sqrt(j2) - strength;
+  }
+
   bool
   NonlinearSoilPoints::softening_at(const SoilPoint        &point,
                                     const StrainVector     &strain,
-                                    const StrainVector     &committed_plastic,
+                                    const SampleHistory    &committed,
                                     std::array<double, 36> &softening) const
   {
     const double     G = point.shear_modulus, lambda = point.lambda;
     StressTangent    d_ep;
-    const SoilReturn at = return_from(point,
-                                      elastic_stress(point, strain),
-                                      committed_plastic,
-                                      &d_ep);
+    const SoilReturn at = return_from(point, strain, committed, nullptr, &d_ep);
     if (at.state == SoilState::elastic)
       return false;
     // D_e - D_ep, D_ep in closed form
@@ -607,7 +694,8 @@ namespace FourierSSI
   std::vector<std::vector<double>>
   NonlinearSoilPoints::softening_integrals(
     const std::vector<StrainVector> &strain,
-    const std::vector<StrainVector> &committed) const
+    const std::vector<StrainVector> &committed,
+    const std::vector<StrainVector> &history) const
   {
     const unsigned int               N = sampling.n_samples();
     std::vector<std::vector<double>> softening(points.size());
@@ -626,7 +714,10 @@ namespace FourierSSI
             for (unsigned int j = 0; j < N; ++j)
               {
                 const unsigned int k = p * N + j;
-                if (!softening_at(points[p], strain[k], committed[k], c))
+                if (!softening_at(points[p],
+                                  strain[k],
+                                  history_of(p, k, committed, history),
+                                  c))
                   continue;
                 if (!yields)
                   {
@@ -771,6 +862,7 @@ namespace FourierSSI
   NonlinearSoilPoints::add_softening(
     const std::vector<StrainVector> &strain,
     const std::vector<StrainVector> &committed_plastic,
+    const std::vector<StrainVector> &committed_history,
     CoupledTangent                  &tangent) const
   {
     const unsigned int H = set.size();
@@ -779,7 +871,7 @@ namespace FourierSSI
     //    point elastic at every theta. softening[p][(a * 6 + b) * H^2 + h *
     //    H + g], the harmonic pair innermost (contiguous in the assembly).
     const std::vector<std::vector<double>> softening =
-      softening_integrals(strain, committed_plastic);
+      softening_integrals(strain, committed_plastic, committed_history);
     // 2. The Bbar strains of the shape functions of the yielding cells once
     //    per build (every block row h needs every column harmonic g).
     const std::vector<unsigned int> yielding = yielding_cells(softening);

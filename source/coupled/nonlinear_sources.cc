@@ -192,6 +192,7 @@ namespace FourierSSI
   {
     state.plastic.assign(soil.size() * sampling.n_samples(),
                          {{0., 0., 0., 0., 0., 0.}});
+    state.soil_history.assign(soil.history_size(), {{0., 0., 0., 0., 0., 0.}});
     if (interface)
       state.interfaces = interface->at_rest(interface_samples);
   }
@@ -241,7 +242,11 @@ namespace FourierSSI
                                   state.held_fraction,
                                   state.swipe_force);
         static_cast<SoilYieldCounts &>(result) =
-          soil.return_map(e.strain, committed.plastic, e.plastic);
+          soil.return_map(e.strain,
+                          committed.plastic,
+                          committed.soil_history,
+                          e.plastic,
+                          e.soil_history);
         // 3: the soil's out-of-balance load.
         e.residual = soil.load_of(e.plastic);
       }
@@ -266,8 +271,12 @@ namespace FourierSSI
     const std::vector<Vector<double>> &fields,
     const CoupledStepState            &committed) const
   {
-    std::vector<StrainVector> plastic;
-    soil.return_map(strain_samples(fields, 0., 0.), committed.plastic, plastic);
+    std::vector<StrainVector> plastic, history;
+    soil.return_map(strain_samples(fields, 0., 0.),
+                    committed.plastic,
+                    committed.soil_history,
+                    plastic,
+                    history);
     CoupledEvaluation e;
     e.residual = soil.load_of(plastic);
     if (interface)
@@ -336,7 +345,8 @@ namespace FourierSSI
   {
     if (soil.size() > 0)
       soil.count_over_ranks(result);
-    state.plastic = std::move(e.plastic);
+    state.plastic      = std::move(e.plastic);
+    state.soil_history = std::move(e.soil_history);
     if (interface)
       {
         interface->commit(e.relative,
@@ -390,12 +400,15 @@ namespace FourierSSI
   void
   NonlinearSources::add_softening(
     const std::vector<StrainVector> &strain,
-    const std::vector<StrainVector> &committed_plastic,
+    const CoupledStepState          &committed,
     const std::vector<LocalVector>  &relative,
     const std::vector<LocalVector>  &interface_origin,
     CoupledTangent                  &tangent) const
   {
-    soil.add_softening(strain, committed_plastic, tangent);
+    soil.add_softening(strain,
+                       committed.plastic,
+                       committed.soil_history,
+                       tangent);
     if (interface)
       interface->add_softening(relative,
                                interface_origin,

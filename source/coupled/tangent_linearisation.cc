@@ -178,7 +178,7 @@ namespace FourierSSI
       tangent = std::make_unique<CoupledTangent>(set, sources.tangent_dofs());
     tangent->reset_to_elastic();
     sources.add_softening(
-      strain, states.committed.plastic, relative, interface_origin, *tangent);
+      strain, states.committed, relative, interface_origin, *tangent);
     if (displacement_control)
       add_control_stiffening();
     tangent->factorize();

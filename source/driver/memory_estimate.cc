@@ -46,6 +46,14 @@ namespace FourierSSI
     constexpr double bytes_per_theta_sample = 800.;
 
     /**
+     * One element's plastic strain (48 bytes) of an iwan sample's history,
+     * in the state copies a step holds: committed, the step before, the
+     * trial and the iteration's evaluation (4; measured in
+     * benchmarks/soil-plasticity, the iwan rows).
+     */
+    constexpr double bytes_per_hardening_element = 4. * 48.;
+
+    /**
      * One sector of one cell of the revolved 3D VTU (Write 3D vtu): its
      * vertices, fields and the text buffers of the writer. Measured on
      * prm/default.prm (3072 cells) with Theta divisions = 36, 180, 360:
@@ -82,6 +90,27 @@ namespace FourierSSI
       for (const auto &cell : triangulation.active_cell_iterators())
         cells += parameters.soil_plasticity.laws.count(cell->material_id());
       return cells * (p + 2.) * (p + 2.);
+    }
+
+    /**
+     * The elements of the iwan soil points: sum over their cells of
+     * (p + 2)^2 points times the law's surfaces.
+     */
+    double
+    hardening_elements(const AllParameters    &parameters,
+                       const Triangulation<2> &triangulation)
+    {
+      const double p        = parameters.discretization.degree;
+      double       elements = 0.;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        {
+          const auto law =
+            parameters.soil_plasticity.laws.find(cell->material_id());
+          if (law != parameters.soil_plasticity.laws.end() &&
+              law->second.kind == SoilLaw::Kind::iwan)
+            elements += law->second.n_surfaces;
+        }
+      return elements * (p + 2.) * (p + 2.);
     }
 
     /** Factorizations held at the same time in a linear run. */
@@ -122,9 +151,11 @@ namespace FourierSSI
         theta_samples_for(highest_harmonic(plan.harmonics),
                           parameters.load_path.theta_samples) :
         0;
-    const double theta_state = samples *
-                               plastic_points(parameters, triangulation) *
-                               bytes_per_theta_sample;
+    const double theta_state =
+      samples *
+      (plastic_points(parameters, triangulation) * bytes_per_theta_sample +
+       hardening_elements(parameters, triangulation) *
+         bytes_per_hardening_element);
 
     const double revolved_vtu = parameters.output.write_3d_vtu ?
                                   bytes_per_revolved_cell *

@@ -139,6 +139,8 @@ namespace FourierSSI
       "load-displacement-incomplete.csv",
       "interface-state.csv",
       "interface-state-3d.vtu",
+      // A cyclic path (Load path/Targets): one row per cycle.
+      "load-cycles.csv",
       // Output/Interface state 3D: the interface state as a revolved
       // surface per step and its .pvd series (interface_state_surface.h).
       "interface-state-3d-step{step}.vtu",

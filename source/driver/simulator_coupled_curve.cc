@@ -5,6 +5,7 @@
 // and simulator_soil.cc.
 #include <deal.II/base/timer.h>
 #include <fourier_ssi/coupled/coupled_solver.h>
+#include <fourier_ssi/driver/cyclic_output.h>
 #include <fourier_ssi/driver/simulator.h>
 
 namespace FourierSSI
@@ -66,6 +67,7 @@ namespace FourierSSI
     const std::string curve = result_files.claim("load-displacement.csv");
     solver.write_csv(curve);
     log << "load-displacement curve written to " << curve << std::endl;
+    write_cyclic_output(solver, parameters, result_files, log);
   }
 
   void

@@ -226,8 +226,10 @@ namespace FourierSSI
     bool
     has_capacity(const CoupledSolver &solver, const AllParameters &parameters)
     {
+      // A cyclic path has loops, not a capacity (load-cycles.csv).
       return parameters.load_path.control ==
                LoadPathParameters::Control::displacement &&
+             !parameters.load_path.is_cyclic() &&
              solver.get_steps().size() >= 2;
     }
 

@@ -1,5 +1,6 @@
 #include <fourier_ssi/input/choice.h>
 #include <fourier_ssi/input/load_path_parameters.h>
+#include <fourier_ssi/input/load_path_targets.h>
 
 namespace FourierSSI
 {
@@ -111,6 +112,27 @@ namespace FourierSSI
                         Patterns::Double(),
                         "Displacement control: final value of the controlled "
                         "motion [m or rad].");
+      prm.declare_entry(
+        "Targets",
+        "",
+        Patterns::Anything(),
+        "A cyclic path instead of Target: the turning points, e.g. "
+        "'0.01, -0.01, 0.01', each reached in Load steps steps from the "
+        "one before (the first from 0). Displacement control: values of "
+        "the controlled motion [m or rad]; load control: factors on the "
+        "Rigid foundation loads. The path must reverse at every target. "
+        "Per cycle (turning point to the next but one) the run prints and "
+        "writes load-cycles.csv: peak loads, secant stiffness, dissipated "
+        "energy, damping ratio, the motions at zero load "
+        "(doc/cyclic-loading.md). Empty: a monotonic path.");
+      prm.declare_entry("Cycles",
+                        "0",
+                        Patterns::Integer(0,
+                                          LoadPathParameters::most_load_steps),
+                        "With Targets = t1, t2: the path t1, t2, t1, ... "
+                        "of this many cycles between them (t1 and t2 about "
+                        "a mean give a one-way cyclic load). 0: Targets as "
+                        "listed.");
     }
 
     /** Convergence, iteration, acceleration and step cuts. */
@@ -231,6 +253,8 @@ namespace FourierSSI
     motion    = motions().value_of(prm.get("Controlled motion"),
                                 "Load path/Controlled motion");
     target    = prm.get_double("Target");
+    cycles    = prm.get_integer("Cycles");
+    targets   = parse_load_path_targets(prm.get("Targets"), cycles, target);
     tolerance = prm.get_double("Tolerance");
     AssertThrow(tolerance > 0. && tolerance < largest_tolerance,
                 ExcMessage("Load path/Tolerance: " + prm.get("Tolerance") +

@@ -41,7 +41,7 @@ namespace FourierSSI
       const LoadPathParameters &path = parameters.load_path;
       AssertThrow(!parameters.coupled() ||
                     path.control != LoadPathParameters::Control::displacement ||
-                    path.target != 0.,
+                    path.target != 0. || path.is_cyclic(),
                   ExcMessage("Load path/Target: 0 with Control = "
                              "displacement, the controlled motion would not "
                              "move; give its final value [m or rad]"));
@@ -114,6 +114,39 @@ namespace FourierSSI
                   ExcMessage(entry + ": not yet with Discretization/Target "
                                      "accuracy (the capacity with error bars "
                                      "is that of the applied drive alone)"));
+    }
+
+    /**
+     * A cyclic path (Load path/Targets) needs a source of hysteresis, and
+     * what is computed from one monotonic curve (a capacity with error
+     * bars, refinement by the last step's mechanism, the swipe and the
+     * probe) does not apply to it.
+     */
+    void
+    check_cyclic_path(const AllParameters &parameters)
+    {
+      if (!parameters.load_path.is_cyclic())
+        return;
+      const std::string entry = "Load path/Targets";
+      AssertThrow(parameters.coupled(),
+                  ExcMessage(entry +
+                             ": the scene is linear elastic (no Soil "
+                             "plasticity/Laws, no coulomb or contact "
+                             "interface): its cycles retrace one line and "
+                             "dissipate nothing"));
+      AssertThrow(parameters.rigid_foundation.enabled,
+                  ExcMessage(entry + ": needs a Rigid foundation, whose load "
+                                     "and motion the cycles are drawn in"));
+      AssertThrow(parameters.discretization.target_accuracy == 0. &&
+                    parameters.discretization.refinement_cycles == 1,
+                  ExcMessage(entry +
+                             ": not with Discretization/Target accuracy or "
+                             "Refinement cycles > 1 (they estimate a capacity "
+                             "of a monotonic path)"));
+      AssertThrow(!parameters.rigid_foundation.swipes() &&
+                    !parameters.rigid_foundation.probes_direction(),
+                  ExcMessage(entry + ": not yet with a swipe or a Motion "
+                                     "direction probe (monotonic paths)"));
     }
 
     /** True if some load of the scene is not zero. */
@@ -251,6 +284,7 @@ namespace FourierSSI
     check_swipe_path(parameters);
     check_capacity_needs_nonlinear_source(parameters);
     check_displacement_target(parameters);
+    check_cyclic_path(parameters);
     check_load_control_has_load(parameters);
     check_exact_solution_linear(parameters);
   }

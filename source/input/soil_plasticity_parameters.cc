@@ -159,8 +159,7 @@ namespace FourierSSI
       "kinematic hardening clay (undrained, total stress) on the hyperbolic "
       "backbone G/G0 = 1/(1 + gamma/gref) capped at s_u, G0 from the "
       "material, N = 1..100 von Mises sub-elements (default 20; "
-      "doc/soil-plasticity.md section 10; element level only, not yet in "
-      "a run). The loading and the iteration are set in 'Load path'.");
+      "doc/soil-plasticity.md section 10). The loading and the iteration are set in 'Load path'.");
     prm.declare_entry(
       "Stiffness",
       "tangent",
@@ -182,25 +181,9 @@ namespace FourierSSI
   {
     prm.enter_subsection("Soil plasticity");
     parse_law_list(prm.get("Laws"));
-    refuse_laws_not_wired();
     tangent =
       stiffnesses().value_of(prm.get("Stiffness"), "Soil plasticity/Stiffness");
     prm.leave_subsection();
-  }
-
-  void
-  SoilPlasticityParameters::refuse_laws_not_wired() const
-  {
-    // The iwan law exists at element level (MultiSurfaceClay) but the
-    // coupled soil points keep one plastic strain per sample, not N: a run
-    // must stop here rather than treat it as another law.
-    for (const auto &[id, law] : laws)
-      AssertThrow(law.kind != SoilLaw::Kind::iwan,
-                  ExcMessage(entry + ": material " + std::to_string(id) +
-                             ": iwan is not yet available in a run (the "
-                             "multi-surface clay law exists at element "
-                             "level only, doc/soil-plasticity.md section "
-                             "10); use tresca"));
   }
 
   void

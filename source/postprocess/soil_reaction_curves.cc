@@ -579,10 +579,12 @@ namespace FourierSSI
     const SoilLaw &law   = parameters.soil_plasticity.laws.at(id);
     Normalisation  result;
     result.shear_modulus = parameters.materials.get(id).shear_modulus(depth);
-    result.clay          = law.kind == SoilLaw::Kind::tresca;
-    result.strength      = result.clay ?
-                             law.undrained_strength(depth) :
-                             parameters.initial_stress.vertical_stress(depth);
+    // Undrained laws (Tresca, iwan) normalise by s_u, drained ones by
+    // sigma'_v (the PISA clay and sand forms).
+    result.clay     = law.kind != SoilLaw::Kind::mohr_coulomb;
+    result.strength = result.clay ?
+                        law.undrained_strength(depth) :
+                        parameters.initial_stress.vertical_stress(depth);
     return result;
   }
 

@@ -91,6 +91,13 @@ namespace
       return motion;
     }
 
+    double
+    committed_load_factor() const override
+    {
+      // Under load control the scripted state is the load factor.
+      return committed;
+    }
+
     unsigned int
     n_converged_steps() const override
     {

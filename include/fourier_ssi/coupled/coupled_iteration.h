@@ -232,7 +232,8 @@ namespace FourierSSI
                      const unsigned int        n_steps,
                      const bool                held,
                      const LoadPathParameters &settings,
-                     const unsigned int        converged_steps);
+                     const unsigned int        converged_steps,
+                     const std::string        &segment = "");
 
   /**
    * The one line of a load step that did not converge even after the
@@ -242,7 +243,9 @@ namespace FourierSSI
    * (`done`, the fraction of the stage completed), not the count of
    * converged cut steps; `held` says it is a step of the held loads;
    * `cuts` the cuts it had: Maximum step cuts, or fewer where the step size
-   * reached its floor, which the line then names.
+   * reached its floor, which the line then names. `segment` follows the
+   * step's number on a path of several targets (" of segment 2 of 3 (to
+   * -0.01)").
    */
   std::string
   unconverged_step_message(const std::string        &entry,
@@ -251,7 +254,8 @@ namespace FourierSSI
                            const bool                held,
                            const unsigned int        cuts,
                            const unsigned int        converged_steps,
-                           const LoadPathParameters &settings);
+                           const LoadPathParameters &settings,
+                           const std::string        &segment = "");
 
   /**
    * The update of the correction load c <- c + dc of one iteration from

@@ -267,6 +267,8 @@ namespace FourierSSI
                  std::ostream   &log) override;
     RigidMotion
     committed_motion() const override;
+    double
+    committed_load_factor() const override;
     unsigned int
     n_converged_steps() const override;
     bool

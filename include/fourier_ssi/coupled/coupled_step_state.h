@@ -38,6 +38,11 @@ namespace FourierSSI
     /** Plastic soil: s_p = D eps_p per (point, theta); empty without. */
     std::vector<StrainVector> plastic;
     /**
+     * Multi-surface (iwan) soil: the plastic strains of every sample's
+     * elements (NonlinearSoilPoints::history_size); empty without.
+     */
+    std::vector<StrainVector> soil_history;
+    /**
      * Nonlinear interfaces: d_p, the return's origin and p_c per
      * (interface point, theta); empty without.
      */
@@ -49,8 +54,11 @@ namespace FourierSSI
   /** The residual and the state of the soil and interfaces at an iterate. */
   struct CoupledEvaluation
   {
-    /** Total strain and s_p per (point, theta). */
-    std::vector<StrainVector> strain, plastic;
+    /**
+     * Total strain and s_p per (point, theta); the iwan elements' plastic
+     * strains.
+     */
+    std::vector<StrainVector> strain, plastic, soil_history;
     /**
      * Nonlinear interfaces (empty without): relative displacement, d_p,
      * traction, stick/slip/open per (point, theta), and the counts.

@@ -71,6 +71,12 @@ namespace FourierSSI
     /** Wall time of the step [s]. */
     double time = 0.;
     /**
+     * The segment of the path the step belongs to: 0 the held stage, k
+     * the loading towards the k-th of Load path/Targets (1 without a
+     * list).
+     */
+    unsigned int segment = 0;
+    /**
      * The load that holds each of Rigid foundation/Held motions, or a
      * direction probe's H and M [kN or kN m] (LoadControl::
      * held_reactions(); empty without).
@@ -197,6 +203,10 @@ namespace FourierSSI
       virtual RigidMotion
       committed_motion() const = 0;
 
+      /** The load factor of the committed state (load_factor_pattern). */
+      virtual double
+      committed_load_factor() const = 0;
+
       /** The converged steps so far. */
       virtual unsigned int
       n_converged_steps() const = 0;
@@ -220,19 +230,24 @@ namespace FourierSSI
 
     /**
      * The held stage (Held load steps) if the scene holds loads, then the
-     * loading (Load steps).
+     * loading (Load steps), in one segment per target of
+     * LoadPathParameters::segment_targets (a cyclic path reverses at each).
      */
     void
     run(std::ostream &log);
 
     /**
      * One stage in `n_steps` equal steps: the held loads brought on
-     * (holding) or the loads scaled by the load or displacement control.
-     * Throws one line if a step does not converge after the cuts.
+     * (holding, `end` 1) or the loads scaled by the load or displacement
+     * control from where the path is to `end` (a load factor or the
+     * controlled motion); `segment` numbers the target (0: the held
+     * stage). Throws one line if a step does not converge after the cuts.
      */
     void
     run_stage(const bool         holding,
               const unsigned int n_steps,
+              const double       end,
+              const unsigned int segment,
               std::ostream      &log);
 
   private:
@@ -288,11 +303,20 @@ namespace FourierSSI
     bool
     controls_motion(const bool holding) const;
 
-    /** Under displacement control: the motion misses `target`. */
+    /**
+     * Under displacement control: the motion misses `target` by more than
+     * 1e-8 of `scale` (|target|, or the segment's motions on a cyclic path,
+     * whose targets pass through 0).
+     */
     bool
     misses_target(const RigidMotion &motion,
                   const double       target,
+                  const double       scale,
                   const bool         holding) const;
+
+    /** " of segment 2 of 3 (to -0.01)" on a path of several targets. */
+    std::string
+    segment_label(const unsigned int segment) const;
 
     const LoadPathParameters &settings;
     const std::string         entry;

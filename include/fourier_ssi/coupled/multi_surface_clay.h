@@ -37,6 +37,18 @@ namespace FourierSSI
   /** The plastic state: the deviatoric plastic strain of each element. */
   using MultiSurfaceState = std::vector<StrainVector>;
 
+  /**
+   * The stress and the count of yielding elements of a return whose new
+   * plastic strains were written in place (the coupled soil points keep
+   * every sample's elements in one flat array).
+   */
+  struct MultiSurfaceStress
+  {
+    /** The stress (C1) [kPa]. */
+    StrainVector stress     = {{0., 0., 0., 0., 0., 0.}};
+    unsigned int n_yielding = 0;
+  };
+
   struct MultiSurfaceReturn
   {
     /** The stress (C1) [kPa]. */
@@ -95,12 +107,18 @@ namespace FourierSSI
                             const MultiSurfaceState &committed,
                             StressTangent           &tangent) const;
 
-  private:
-    MultiSurfaceReturn
-    return_map(const StrainVector      &strain,
-               const MultiSurfaceState &committed,
-               StressTangent           *tangent) const;
+    /**
+     * The same return on raw arrays of n_surfaces() plastic strains:
+     * `committed` read, `updated` written (it may be null: the stress only);
+     * the tangent (C3) if `tangent` is not null.
+     */
+    MultiSurfaceStress
+    return_map(const StrainVector &strain,
+               const StrainVector *committed,
+               StrainVector       *updated,
+               StressTangent      *tangent) const;
 
+  private:
     MultiSurfaceBackbone backbone;
     double               bulk_modulus;
   };

@@ -7,7 +7,10 @@
  *   - the strain of fields given per harmonic (B-bar where the dilatation
  *     is projected), summed at the theta samples;
  *   - the return mapping from the committed plastic stress
- *     s_p = D eps_p (soil_law.h);
+ *     s_p = D eps_p (soil_law.h), or, for the multi-surface clay (iwan),
+ *     from the committed plastic strains of its elements, the sample's
+ *     hardening history (multi_surface_clay.h), with s_p = D eps -
+ *     (sigma - sigma_0) the same correction;
  * and over the soil cells:
  *   - the out-of-balance load G_h = int Bbar_h^T [int factor_h s_p dtheta]
  *     r dr dz;
@@ -31,6 +34,7 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/coupled/coupled_tangent.h>
+#include <fourier_ssi/coupled/multi_surface_clay.h>
 #include <fourier_ssi/coupled/soil_law.h>
 #include <fourier_ssi/fourier/harmonic_operator.h>
 #include <fourier_ssi/fourier/theta_sampling.h>
@@ -149,6 +153,17 @@ namespace FourierSSI
       return c < cells.size() ? cells[c].first_point : points.size();
     }
 
+    /**
+     * The length of a hardening history: the element plastic strains of
+     * every (iwan point, theta sample), [first of the point + j S + i] for
+     * sample j and element i of S; 0 without iwan laws.
+     */
+    std::size_t
+    history_size() const
+    {
+      return n_history;
+    }
+
     /** Position, weight and law of point p. */
     SoilPointPlace
     place(const unsigned int p) const
@@ -159,13 +174,14 @@ namespace FourierSSI
     /**
      * The samples [point * N + j] of a converged state at the points this
      * rank owns (default values at the others): its strain and s_p, and
-     * s_p of the step before (empty: at rest), from which the step's
-     * return mapping is repeated to tell plastic from elastic samples (the
-     * same count as the step's record).
+     * s_p and the hardening history of the step before (empty: at rest),
+     * from which the step's return mapping is repeated to tell plastic from
+     * elastic samples (the same count as the step's record).
      */
     std::vector<SoilSample>
     samples_of(const std::vector<StrainVector> &strain,
                const std::vector<StrainVector> &previous_plastic,
+               const std::vector<StrainVector> &previous_history,
                const std::vector<StrainVector> &plastic) const;
 
     /** The strains are B-bar's (the dilatation projected per cell). */
@@ -195,14 +211,17 @@ namespace FourierSSI
 
     /**
      * The return mapping at every (point, theta) of the points this rank
-     * owns from the committed s_p: fills `plastic` (s_p = sigma_0 + D eps -
-     * sigma, so that int Bbar^T (sigma - sigma_0) = K u - c); the counts
-     * are this rank's (count_over_ranks: all of them).
+     * owns from the committed s_p and hardening history: fills `plastic`
+     * (s_p = sigma_0 + D eps - sigma, so that int Bbar^T (sigma - sigma_0)
+     * = K u - c) and `history` (the iwan elements' new plastic strains);
+     * the counts are this rank's (count_over_ranks: all of them).
      */
     SoilYieldCounts
     return_map(const std::vector<StrainVector> &strain,
                const std::vector<StrainVector> &committed_plastic,
-               std::vector<StrainVector>       &plastic) const;
+               const std::vector<StrainVector> &committed_history,
+               std::vector<StrainVector>       &plastic,
+               std::vector<StrainVector>       &history) const;
 
     /** The counts summed, and the largest f, over the ranks. */
     void
@@ -253,6 +272,7 @@ namespace FourierSSI
     void
     add_softening(const std::vector<StrainVector> &strain,
                   const std::vector<StrainVector> &committed_plastic,
+                  const std::vector<StrainVector> &committed_history,
                   CoupledTangent                  &tangent) const;
 
     /**
@@ -288,6 +308,22 @@ namespace FourierSSI
       unsigned int law;
       /** The geostatic stress sigma_0 (Initial stress; zero without). */
       StrainVector initial_stress;
+      /**
+       * An iwan point: its elements (index into clays) and the first entry
+       * of its samples' histories; invalid_unsigned_int otherwise.
+       */
+      unsigned int clay          = numbers::invalid_unsigned_int;
+      std::size_t  first_history = 0;
+    };
+
+    /**
+     * The committed state one sample's return mapping starts from: s_p,
+     * and the iwan elements' plastic strains (null for other laws).
+     */
+    struct SampleHistory
+    {
+      const StrainVector *plastic;
+      const StrainVector *elements;
     };
 
     /** A cell of plastic soil: shape data at its quadrature points. */
@@ -313,6 +349,10 @@ namespace FourierSSI
     void
     make_points(const AllParameters &parameters);
 
+    /** An iwan law: the point's elements and its place in the history. */
+    void
+    add_hardening_elements(const SoilLaw &law, SoilPoint &point);
+
     /** One line if the geostatic stress lies outside a soil law. */
     void
     check_initial_stress(const AllParameters &parameters) const;
@@ -325,14 +365,33 @@ namespace FourierSSI
     elastic_stress(const SoilPoint &point, const StrainVector &eps) const;
 
     /**
-     * The return mapping at a point from its committed s_p: trial =
-     * sigma_0 + D eps - s_p,committed; with the tangent D_ep if asked.
+     * The return mapping at sample j of a point from its committed state:
+     * trial = sigma_0 + D eps - s_p,committed for a perfectly plastic law;
+     * sigma_0 plus the elements' stress at eps for an iwan law, their new
+     * plastic strains written to `updated` (if not null). With the tangent
+     * D_ep if asked.
      */
     SoilReturn
-    return_from(const SoilPoint    &point,
-                const StrainVector &strain,
-                const StrainVector &committed_plastic,
-                StressTangent      *tangent = nullptr) const;
+    return_from(const SoilPoint     &point,
+                const StrainVector  &strain,
+                const SampleHistory &committed,
+                StrainVector        *updated,
+                StressTangent       *tangent = nullptr) const;
+
+    /** The committed state of sample k = p N + j of point p. */
+    SampleHistory
+    history_of(const unsigned int               p,
+               const unsigned int               k,
+               const std::vector<StrainVector> &plastic,
+               const std::vector<StrainVector> &history) const;
+
+    /**
+     * f(sigma) [kPa] at a point, <= 0 admissible: the law's yield function;
+     * for iwan sqrt(J2(sigma - sigma_0)) - s_u, the outer surface of its
+     * elements about the geostatic stress they start from.
+     */
+    double
+    yield_value(const SoilPoint &point, const StrainVector &stress) const;
 
     /**
      * D_e - D_ep at one sample (row-major 6 x 6); false where the return
@@ -341,7 +400,7 @@ namespace FourierSSI
     bool
     softening_at(const SoilPoint        &point,
                  const StrainVector     &strain,
-                 const StrainVector     &committed_plastic,
+                 const SampleHistory    &committed,
                  std::array<double, 36> &softening) const;
 
     /**
@@ -351,7 +410,8 @@ namespace FourierSSI
      */
     std::vector<std::vector<double>>
     softening_integrals(const std::vector<StrainVector> &strain,
-                        const std::vector<StrainVector> &committed) const;
+                        const std::vector<StrainVector> &committed,
+                        const std::vector<StrainVector> &history) const;
 
     /**
      * Under MPI: every point's softening integrals on every rank (each
@@ -406,8 +466,12 @@ namespace FourierSSI
     std::vector<HarmonicOperator>  operators;
     ThetaSampling                  sampling;
     std::vector<SoilReturnMapping> laws;
-    std::vector<SoilCell>          cells;
-    std::vector<SoilPoint>         points;
+    /** The elements of every iwan point (SoilPoint::clay). */
+    std::vector<MultiSurfaceClay> clays;
+    /** history_size(). */
+    std::size_t            n_history = 0;
+    std::vector<SoilCell>  cells;
+    std::vector<SoilPoint> points;
     /** The vector component of each local DoF of a cell. */
     std::vector<unsigned int> component;
     /** owns_point(): the ranks and this rank (1, 0: every point). */

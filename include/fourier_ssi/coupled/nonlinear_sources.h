@@ -157,7 +157,7 @@ namespace FourierSSI
      */
     void
     add_softening(const std::vector<StrainVector> &strain,
-                  const std::vector<StrainVector> &committed_plastic,
+                  const CoupledStepState          &committed,
                   const std::vector<LocalVector>  &relative,
                   const std::vector<LocalVector>  &interface_origin,
                   CoupledTangent                  &tangent) const;

@@ -7,6 +7,7 @@
 #define fourier_ssi_load_path_parameters_h
 
 #include <deal.II/base/parameter_handler.h>
+#include <vector>
 
 namespace FourierSSI
 {
@@ -65,6 +66,32 @@ namespace FourierSSI
 
     /** Final value of the controlled motion [m or rad]. */
     double target = 0.;
+    /**
+     * A cyclic path (Targets, Cycles; load_path_targets.h): its turning
+     * points, load factors (load control) or controlled motions
+     * (displacement control); empty for a monotonic path.
+     */
+    std::vector<double> targets;
+    /** The cycles Targets was expanded with (0: the list as given). */
+    unsigned int cycles = 0;
+
+    bool
+    is_cyclic() const
+    {
+      return !targets.empty();
+    }
+
+    /**
+     * The end of each loading segment: the targets of a cyclic path, else
+     * Target (displacement control) or the full loads, 1 (load control).
+     */
+    std::vector<double>
+    segment_targets() const
+    {
+      if (is_cyclic())
+        return targets;
+      return {control == Control::displacement ? target : 1.};
+    }
     /**
      * Relative out-of-balance force at which a step has converged. Bounded
      * below `largest_tolerance`: at 1e-2 a step may stop with a percent of

@@ -68,13 +68,6 @@ namespace FourierSSI
     void
     parse_law_list(const std::string &text);
 
-    /**
-     * Throws one line for a law that parses but that the coupled soil
-     * points cannot run yet (iwan).
-     */
-    void
-    refuse_laws_not_wired() const;
-
     bool
     any() const
     {

@@ -1,0 +1,122 @@
+#include <fourier_ssi/coupled/coupled_iteration.h>
+#include <fourier_ssi/driver/cyclic_output.h>
+#include <fourier_ssi/input/atomic_file.h>
+#include <fourier_ssi/postprocess/load_cycles.h>
+
+namespace FourierSSI
+{
+  namespace
+  {
+    using Motion = LoadPathParameters::Motion;
+
+    /**
+     * The motion whose loops are drawn: the controlled one, or under load
+     * control that of the first load the foundation carries (H, M, T, V).
+     */
+    Motion
+    cycled_motion(const AllParameters &parameters)
+    {
+      const LoadPathParameters        &path = parameters.load_path;
+      const RigidFoundationParameters &f    = parameters.rigid_foundation;
+      if (path.control == LoadPathParameters::Control::displacement)
+        return path.motion;
+      if (f.horizontal_force != 0.)
+        return Motion::horizontal;
+      if (f.moment != 0.)
+        return Motion::rotation;
+      if (f.torque != 0.)
+        return Motion::twist;
+      return Motion::vertical;
+    }
+
+    CycleQuantities
+    quantities_of(const NamedLoad &load, const Motion motion)
+    {
+      switch (motion)
+        {
+          case Motion::vertical:
+            return {load.name, "kN", "vertical", "m"};
+          case Motion::horizontal:
+            return {load.name, "kN", "horizontal", "m"};
+          case Motion::rotation:
+            return {load.name, "kNm", "rotation", "rad"};
+          case Motion::twist:
+            return {load.name, "kNm", "twist", "rad"};
+        }
+      return {};
+    }
+
+    /** The path's points: the state before segment 1, then every step. */
+    std::vector<CyclePoint>
+    path_points(const CoupledSolver &solver,
+                const AllParameters &parameters,
+                const Motion         motion)
+    {
+      std::vector<CyclePoint> path(1);
+      for (const LoadStepResult &step : solver.get_steps())
+        {
+          CyclePoint point;
+          point.segment = step.segment;
+          point.motion  = controlled_component(step.motion, motion);
+          point.load    = conjugate_load(solver.applied_loads(step.load_factor,
+                                                           step.held_fraction),
+                                      parameters.rigid_foundation,
+                                      motion)
+                         .value;
+          point.rigid = step.motion;
+          // The held stage's last step is where segment 1 starts.
+          if (step.segment == 0)
+            path.front() = point;
+          else
+            path.push_back(point);
+        }
+      return path;
+    }
+
+    /** A loop of a perfectly plastic law below first yield is a line. */
+    void
+    note_elastic_loops(const std::vector<LoadCycle> &cycles,
+                       const AllParameters          &parameters,
+                       std::ostream                 &log)
+    {
+      bool hardening = false;
+      for (const auto &[id, law] : parameters.soil_plasticity.laws)
+        hardening = hardening || law.kind == SoilLaw::Kind::iwan;
+      for (unsigned int j = 0; j < cycles.size(); ++j)
+        if (!hardening && std::abs(cycles[j].dissipated_energy) <=
+                            1e-6 * cycles[j].stored_energy)
+          {
+            log << "note: cycle " << j + 1
+                << " dissipates nothing: it stays below first yield of "
+                   "the perfectly plastic laws, which have no small-strain "
+                   "hysteresis (an iwan clay has)\n";
+            return;
+          }
+    }
+  } // namespace
+
+  void
+  write_cyclic_output(const CoupledSolver &solver,
+                      const AllParameters &parameters,
+                      ResultFiles         &files,
+                      std::ostream        &log)
+  {
+    if (!parameters.load_path.is_cyclic())
+      return;
+    const Motion                 motion = cycled_motion(parameters);
+    const std::vector<LoadCycle> cycles =
+      load_cycles(path_points(solver, parameters, motion));
+    const CycleQuantities names =
+      quantities_of(conjugate_load(solver.applied_loads(0.),
+                                   parameters.rigid_foundation,
+                                   motion),
+                    motion);
+    log_load_cycles(log, cycles, names);
+    note_elastic_loops(cycles, parameters, log);
+    AtomicFile file(files.claim("load-cycles.csv"));
+    write_load_cycles(file.stream(), cycles, names);
+    file.commit();
+    log << "load cycles written to " << files.path_of("load-cycles.csv")
+        << '\n';
+  }
+} // namespace FourierSSI
