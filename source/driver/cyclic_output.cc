@@ -93,12 +93,57 @@ namespace FourierSSI
             return;
           }
     }
+
+    /** The loops' main values per cycle, as results.csv rows. */
+    void
+    add_cycle_rows(const std::vector<LoadCycle> &cycles,
+                   const CycleQuantities        &names,
+                   const Motion                  motion,
+                   ResultsTable                 &results)
+    {
+      const Harmonic    any{0, Family::symmetric};
+      const std::string per = names.load_unit + "/" + names.motion_unit;
+      for (unsigned int j = 0; j < cycles.size(); ++j)
+        {
+          const LoadCycle   &c = cycles[j];
+          const unsigned int k = j + 1;
+          results.add(
+            "load_cycle_end_load", any, k, c.end_load, names.load_unit);
+          results.add("load_cycle_reversal_load",
+                      any,
+                      k,
+                      c.reversal_load,
+                      names.load_unit);
+          results.add(
+            "load_cycle_secant_stiffness", any, k, c.secant_stiffness, per);
+          results.add(
+            "load_cycle_dissipated_energy", any, k, c.dissipated_energy, "kJ");
+          results.add("load_cycle_dissipated_energy_error",
+                      any,
+                      k,
+                      c.dissipated_energy_error,
+                      "kJ");
+          results.add("load_cycle_damping_ratio", any, k, c.damping_ratio, "-");
+          results.add("load_cycle_damping_ratio_error",
+                      any,
+                      k,
+                      c.damping_ratio_error,
+                      "-");
+          if (c.passes_zero_load)
+            results.add("load_cycle_zero_load_" + names.motion,
+                        any,
+                        k,
+                        controlled_component(c.at_zero_load, motion),
+                        names.motion_unit);
+        }
+    }
   } // namespace
 
   void
   write_cyclic_output(const CoupledSolver &solver,
                       const AllParameters &parameters,
                       ResultFiles         &files,
+                      ResultsTable        &results,
                       std::ostream        &log)
   {
     if (!parameters.load_path.is_cyclic())
@@ -112,7 +157,11 @@ namespace FourierSSI
                                    motion),
                     motion);
     log_load_cycles(log, cycles, names);
+    if (cycles.empty())
+      log << "load cycles: none complete (a cycle returns to the turning "
+             "point it starts from: Targets = a, b, a, or Cycles)\n";
     note_elastic_loops(cycles, parameters, log);
+    add_cycle_rows(cycles, names, motion, results);
     AtomicFile file(files.claim("load-cycles.csv"));
     write_load_cycles(file.stream(), cycles, names);
     file.commit();

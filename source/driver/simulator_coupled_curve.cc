@@ -67,7 +67,7 @@ namespace FourierSSI
     const std::string curve = result_files.claim("load-displacement.csv");
     solver.write_csv(curve);
     log << "load-displacement curve written to " << curve << std::endl;
-    write_cyclic_output(solver, parameters, result_files, log);
+    write_cyclic_output(solver, parameters, result_files, results, log);
   }
 
   void

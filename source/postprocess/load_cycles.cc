@@ -21,17 +21,49 @@ namespace FourierSSI
       return last;
     }
 
-    /** int F du along [first, last] by the trapezoid rule. */
+    /**
+     * The closed integral of F du around the polygon of `points` (indices
+     * into path), closed by the chord from the last back to the first:
+     * the trapezoid rule.
+     */
     double
-    work_along(const std::vector<CyclePoint> &path,
-               const unsigned int             first,
-               const unsigned int             last)
+    loop_area(const std::vector<CyclePoint>   &path,
+              const std::vector<unsigned int> &points)
     {
       double work = 0.;
-      for (unsigned int i = first; i < last; ++i)
-        work += 0.5 * (path[i].load + path[i + 1].load) *
-                (path[i + 1].motion - path[i].motion);
+      for (unsigned int k = 0; k < points.size(); ++k)
+        {
+          const CyclePoint &a = path[points[k]];
+          const CyclePoint &b = path[points[(k + 1) % points.size()]];
+          work += 0.5 * (a.load + b.load) * (b.motion - a.motion);
+        }
       return work;
+    }
+
+    /**
+     * The points [start, end] of a cycle, every one (stride 1) or every
+     * other one of each segment with its turning points kept (stride 2):
+     * the same loop at twice the step.
+     */
+    std::vector<unsigned int>
+    loop_points(const std::vector<CyclePoint> &path,
+                const unsigned int             start,
+                const unsigned int             end,
+                const unsigned int             stride)
+    {
+      std::vector<unsigned int> points     = {start};
+      unsigned int              since_turn = 0;
+      for (unsigned int i = start + 1; i <= end; ++i)
+        {
+          ++since_turn;
+          const bool turning =
+            i == end || path[i + 1].segment != path[i].segment;
+          if (turning || since_turn % stride == 0)
+            points.push_back(i);
+          if (turning)
+            since_turn = 0;
+        }
+      return points;
     }
 
     RigidMotion
@@ -86,13 +118,22 @@ namespace FourierSSI
           cycle.smallest_load = std::min(cycle.smallest_load, path[i].load);
         }
       cycle.secant_stiffness = (E.load - B.load) / (E.motion - B.motion);
-      // The polygon A -> B -> A' closed by the chord A' -> A.
-      cycle.dissipated_energy = work_along(path, start, end) +
-                                0.5 * (E.load + A.load) * (A.motion - E.motion);
+      // The polygon A -> B -> A' closed by the chord A' -> A; its error
+      // from the steps by Richardson's rule for the trapezoid's h^2: the
+      // same loop at twice the step differs by 3 times the error.
+      cycle.dissipated_energy =
+        loop_area(path, loop_points(path, start, end, 1));
+      cycle.dissipated_energy_error =
+        std::abs(cycle.dissipated_energy -
+                 loop_area(path, loop_points(path, start, end, 2))) /
+        3.;
       cycle.stored_energy = 0.5 * (0.5 * std::abs(E.load - B.load)) *
                             (0.5 * std::abs(E.motion - B.motion));
-      cycle.damping_ratio = cycle.dissipated_energy /
-                            (4. * dealii::numbers::PI * cycle.stored_energy);
+      const double four_pi_stored =
+        4. * dealii::numbers::PI * cycle.stored_energy;
+      cycle.damping_ratio = cycle.dissipated_energy / four_pi_stored;
+      cycle.damping_ratio_error =
+        cycle.dissipated_energy_error / four_pi_stored;
       find_zero_load(path, reversal, end, cycle);
       return cycle;
     }
@@ -121,7 +162,8 @@ namespace FourierSSI
         << ",smallest_" << F << ",end_" << u << ",reversal_" << u
         << ",secant_stiffness_" << names.load_unit << "_per_"
         << names.motion_unit
-        << ",dissipated_energy_kJ,stored_energy_kJ,damping_ratio,"
+        << ",dissipated_energy_kJ,dissipated_energy_error_kJ,stored_energy_kJ,"
+           "damping_ratio,damping_ratio_error,"
            "zero_load_vertical_m,zero_load_horizontal_m,"
            "zero_load_rotation_rad,zero_load_twist_rad\n";
     out << std::setprecision(10);
@@ -131,8 +173,9 @@ namespace FourierSSI
         out << j + 1 << ',' << c.end_load << ',' << c.reversal_load << ','
             << c.largest_load << ',' << c.smallest_load << ',' << c.end_motion
             << ',' << c.reversal_motion << ',' << c.secant_stiffness << ','
-            << c.dissipated_energy << ',' << c.stored_energy << ','
-            << c.damping_ratio;
+            << c.dissipated_energy << ',' << c.dissipated_energy_error << ','
+            << c.stored_energy << ',' << c.damping_ratio << ','
+            << c.damping_ratio_error;
         // No zero crossing (a one-way cycle about a mean): empty fields.
         if (c.passes_zero_load)
           out << ',' << c.at_zero_load.vertical_displacement << ','
@@ -159,8 +202,10 @@ namespace FourierSSI
              << c.reversal_motion << " to " << c.end_motion << " "
              << names.motion_unit << "; secant stiffness " << c.secant_stiffness
              << " " << names.load_unit << "/" << names.motion_unit
-             << ", dissipated " << c.dissipated_energy << " kJ, damping ratio "
-             << c.damping_ratio;
+             << ", dissipated " << c.dissipated_energy << " +- "
+             << c.dissipated_energy_error << " kJ, damping ratio "
+             << c.damping_ratio << " +- " << c.damping_ratio_error
+             << " (the steps' error)";
         if (c.passes_zero_load)
           line << "; at zero load: horizontal "
                << c.at_zero_load.horizontal_displacement << " m, rotation "

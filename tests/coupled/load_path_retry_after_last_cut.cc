@@ -138,7 +138,8 @@ namespace
     std::ostringstream log;
     try
       {
-        LoadPath(settings, "Scripted", iteration).run_stage(false, 1, log);
+        LoadPath(settings, "Scripted", iteration)
+          .run_stage(false, 1, 1., 1, log);
       }
     catch (const std::exception &error)
       {
@@ -171,7 +172,7 @@ main()
   // (1)
   {
     ScriptedIteration iteration(0.3, 0.);
-    LoadPath(settings, "Scripted", iteration).run_stage(false, 1, log);
+    LoadPath(settings, "Scripted", iteration).run_stage(false, 1, 1., 1, log);
     check::relative("(1) the path ends at", iteration.committed, 1., 1e-12);
     check::equal("(1) retries", iteration.n_retries, 0);
     check::relative("(1) first converged size",
@@ -183,7 +184,7 @@ main()
   // (2)
   {
     ScriptedIteration iteration(0.05, 0.25);
-    LoadPath(settings, "Scripted", iteration).run_stage(false, 1, log);
+    LoadPath(settings, "Scripted", iteration).run_stage(false, 1, 1., 1, log);
     check::relative("(2) the path ends at", iteration.committed, 1., 1e-12);
     check::equal("(2) retries", iteration.n_retries, 2);
     bool         as_scripted = iteration.sizes.size() >= 8;

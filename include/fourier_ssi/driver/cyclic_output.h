@@ -1,6 +1,7 @@
 /**
  * The loops of a coupled run on a cyclic path (Load path/Targets): the
- * cycle table load-cycles.csv and one log line per cycle
+ * cycle table load-cycles.csv, its main values as results.csv rows
+ * load_cycle_* (the cycle in the cycle column) and one log line per cycle
  * (postprocess/load_cycles.h; doc/cyclic-loading.md).
  */
 #ifndef fourier_ssi_cyclic_output_h
@@ -9,6 +10,7 @@
 #include <fourier_ssi/coupled/coupled_solver.h>
 #include <fourier_ssi/driver/result_files.h>
 #include <fourier_ssi/input/parameters.h>
+#include <fourier_ssi/postprocess/results_table.h>
 #include <ostream>
 
 namespace FourierSSI
@@ -23,6 +25,7 @@ namespace FourierSSI
   write_cyclic_output(const CoupledSolver &solver,
                       const AllParameters &parameters,
                       ResultFiles         &files,
+                      ResultsTable        &results,
                       std::ostream        &log);
 } // namespace FourierSSI
 

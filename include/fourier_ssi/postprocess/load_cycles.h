@@ -15,7 +15,8 @@
  *                     control where u_A' = u_A),
  *   stored energy     W_s = F_a u_a / 2, F_a = |F_A' - F_B| / 2,
  *                     u_a = |u_A' - u_B| / 2,
- *   damping ratio     xi = W_d / (4 pi W_s),
+ *   damping ratio     xi = W_d / (4 pi W_s), each with its error from the
+ *                     steps (Richardson: the loop at every other step),
  * and the motions at zero load interpolated linearly between the two steps
  * of segment 2j + 1 where F changes sign (none if it does not).
  */
@@ -52,6 +53,12 @@ namespace FourierSSI
     /** W_d and W_s [kJ: kN m or kNm rad]. */
     double dissipated_energy = 0., stored_energy = 0.;
     double damping_ratio = 0.;
+    /**
+     * The error of W_d and xi from the steps of the path (the trapezoid's
+     * h^2: a third of the change when every other step is dropped); the
+     * mesh and harmonic errors of F are not in it.
+     */
+    double dissipated_energy_error = 0., damping_ratio_error = 0.;
     /** The load passes zero on the cycle's last segment. */
     bool        passes_zero_load = false;
     RigidMotion at_zero_load;
