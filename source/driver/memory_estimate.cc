@@ -188,7 +188,10 @@ namespace FourierSSI
           std::to_string(samples) + " theta samples x " +
           std::to_string(
             static_cast<long long>(plastic_points(parameters, triangulation))) +
-          " soil points";
+          " soil points" +
+          (hardening_elements(parameters, triangulation) > 0. ?
+             " with the iwan elements' history" :
+             "");
       }
     else if (coupled_tangent >= factorizations)
       {
