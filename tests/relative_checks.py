@@ -13,3 +13,23 @@ def check(name, value, reference, tol):
           f"(rel {err:.2e}, tol {tol:g})")
     if not ok:
         failed.append(name)
+
+
+passed = 0
+
+
+def that(ok, what):
+    """A check of a condition: prints `what` as ok or FAIL and counts it."""
+    global passed
+    print(("  ok   " if ok else "  FAIL ") + what)
+    if ok:
+        passed += 1
+    else:
+        failed.append(what)
+
+
+def finish():
+    """The summary line and the exit code of the script."""
+    import sys
+    print("%d passed, %d failed" % (passed, len(failed)))
+    sys.exit(1 if failed else 0)

@@ -86,23 +86,21 @@ namespace FourierSSI
   MultiSurfaceClay::return_map(const StrainVector      &strain,
                                const MultiSurfaceState &committed) const
   {
-    Assert(committed.size() == n_surfaces(),
-           ExcDimensionMismatch(committed.size(), n_surfaces()));
-    MultiSurfaceReturn result;
-    result.plastic_strains.resize(n_surfaces());
-    const MultiSurfaceStress r = return_map(strain,
-                                            committed.data(),
-                                            result.plastic_strains.data(),
-                                            nullptr);
-    result.stress              = r.stress;
-    result.n_yielding          = r.n_yielding;
-    return result;
+    return with_state(strain, committed, nullptr);
   }
 
   MultiSurfaceReturn
   MultiSurfaceClay::return_map_with_tangent(const StrainVector      &strain,
                                             const MultiSurfaceState &committed,
                                             StressTangent &tangent) const
+  {
+    return with_state(strain, committed, &tangent);
+  }
+
+  MultiSurfaceReturn
+  MultiSurfaceClay::with_state(const StrainVector      &strain,
+                               const MultiSurfaceState &committed,
+                               StressTangent           *tangent) const
   {
     Assert(committed.size() == n_surfaces(),
            ExcDimensionMismatch(committed.size(), n_surfaces()));
@@ -111,7 +109,7 @@ namespace FourierSSI
     const MultiSurfaceStress r = return_map(strain,
                                             committed.data(),
                                             result.plastic_strains.data(),
-                                            &tangent);
+                                            tangent);
     result.stress              = r.stress;
     result.n_yielding          = r.n_yielding;
     return result;

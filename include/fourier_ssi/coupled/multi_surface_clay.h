@@ -119,6 +119,12 @@ namespace FourierSSI
                StressTangent      *tangent) const;
 
   private:
+    /** return_map on raw arrays, into a MultiSurfaceReturn. */
+    MultiSurfaceReturn
+    with_state(const StrainVector      &strain,
+               const MultiSurfaceState &committed,
+               StressTangent           *tangent) const;
+
     MultiSurfaceBackbone backbone;
     double               bulk_modulus;
   };
