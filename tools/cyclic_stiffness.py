@@ -2,8 +2,8 @@
 """Secant foundation stiffness and soil damping at a load level, for OpenFAST.
 
     tools/cyclic_stiffness.py SCENE.prm --mean-h H --amplitudes a1,a2,... \
-        [--mean-m M] [--mean-v V] [--rotation-amplitudes r1,r2,...] \
-        [--frequency F] [--cycles N] [--steps N] [--np 2] [--exe PATH] --out DIR
+        [--mean-m M] [--mean-v V] [--lever h] [--rotation-amplitudes r1,...] \
+        [--frequency F] [--water-depth D] [--cycles N] [--steps N] [--np 2] [--exe PATH] --out DIR
 
 SCENE is a plastic scene with a Rigid foundation (e.g. prm/monopile-clay-
 iwan.prm). The tool
@@ -12,7 +12,7 @@ iwan.prm). The tool
      mean state: H, M, V held, its motions u_m, theta_m);
   2. about that state, for each amplitude a, two cyclic runs in displacement
      control, all in one --batch: drive 1 the horizontal motion between
-     u_m + a and u_m - a with the direction load H alone, drive 2 the
+     u_m + a and u_m - a with the direction load H (and M = lever H), drive 2 the
      rotation between theta_m + r and theta_m - r with M alone;
   3. from the last cycle of each, the peak-to-peak loads and motions
      (load-displacement.csv at the cycle's turning points B and A'), the
@@ -33,7 +33,6 @@ import csv
 import math
 import os
 import re
-import shutil
 import subprocess
 import sys
 import time
@@ -325,18 +324,6 @@ def write_subdyn(path, K, template, first_comment):
         f.write("\n".join(out) + "\n")
 
 
-def read_subdyn(path):
-    """The 6x6 from an SSI file, read as SubDyn does (label anywhere)."""
-    K = np.zeros((6, 6))
-    for l in open(path):
-        if not l.strip() or l.lstrip()[0] in "!#%":
-            continue
-        value, label = l.split()[:2]
-        row, col = label_position(label)
-        K[row, col] = K[col, row] = float(value)
-    return K
-
-
 def damping_matrix(K, xi, omega):
     """C = (2/omega) S K S, S = diag(sqrt(xi_i)): c_ii = 2 xi_i k_ii / omega,
     symmetric and positive semi-definite as K (a congruence)."""
@@ -367,15 +354,6 @@ def write_soildyn(path, K, C, location, header):
     open(path, "w").write("\n".join(rows))
 
 
-def read_soildyn(path):
-    lines = open(path).read().splitlines()
-    k0 = next(i for i, l in enumerate(lines) if l.startswith("-" * 22 + " STIFFNESS"))
-    c0 = next(i for i, l in enumerate(lines) if l.startswith("-" * 22 + " DAMPING"))
-    K = np.array([[float(v) for v in lines[k0 + 1 + i].split()] for i in range(6)])
-    C = np.array([[float(v) for v in lines[c0 + 1 + i].split()] for i in range(6)])
-    return K, C
-
-
 # ---------------------------------------------------------------- main
 def floats(text):
     return [float(v) for v in text.split(",") if v.strip()]
@@ -404,7 +382,9 @@ def main(argv=None):
     p.add_argument("--steps", type=int, default=0,
                    help="Load steps a segment (0: the scene's)")
     p.add_argument("--np", type=int, default=2, help="MPI ranks of the batch")
-    p.add_argument("--exe", default=shutil.which("fourier-ssi") or "/work/bin/fourier-ssi")
+    p.add_argument("--exe", default=os.path.join(
+        os.path.dirname(os.path.dirname(os.path.realpath(__file__))), "build", "fourier-ssi"),
+        help="the program (default: build/fourier-ssi of this checkout)")
     p.add_argument("--water-depth", type=float, default=0.0,
                    help="WtrDpth of the OpenFAST model, for the SoilDyn location [m]")
     p.add_argument("--out", required=True)
