@@ -1,10 +1,14 @@
 #!/usr/bin/env bash
-# One cycle of a monopile in multi-surface (iwan) clay at two mudline
-# amplitudes, 0.001 D and 0.005 D (doc/cyclic-loading.md section 5): the
-# secant stiffness, the damping ratio and the cost, side by side in one run,
-# and the loops as doc/figures/monopile-iwan-loops.png.
+# The monopile in multi-surface (iwan) clay against the same scene in Tresca
+# clay, side by side in one run (doc/cyclic-loading.md section 5):
+#   1. pushed to 0.1 D monotonically (prm/monopile-clay-iwan.prm and its
+#      Tresca twin), with the PISA p-v curves of both as a figure;
+#   2. 10 cycles of mudline displacement at 0.001 D and at 0.005 D (4 steps
+#      a segment), secant stiffness and damping ratio of the first and the
+#      last cycle, and the loops of the iwan clay as a figure.
 #   bash benchmarks/cyclic-monopile/run.sh [build/fourier-ssi]
-# Writes benchmarks/cyclic-monopile/results.md.
+# Writes benchmarks/cyclic-monopile/results.md, doc/figures/
+# monopile-iwan-loops.png and doc/figures/monopile-iwan-pisa.png.
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
@@ -12,44 +16,95 @@ exe="$(realpath "${1:-$root/build/fourier-ssi}")"
 work="$(mktemp -d)"
 trap 'rm -rf "$work"' EXIT
 cd "$work"
-# The shipped monopile (D = 9 m, L = 42 m, n <= 2, 12 theta samples) with
-# its clay made iwan: G0 = 60 MPa, s_u = 100 kPa, gamma_ref = 0.003.
-for a in 0.009 0.045; do
-  sed -e 's/0: G=30000, nu=0.49/0: G=60000, nu=0.49/' \
-      -e 's/set Laws = 0: tresca, su=100/set Laws = 0: iwan, su=100, gref=0.003, surfaces=20/' \
-      -e "s/  set Target             = 0.9/  set Targets            = $a, -$a\n  set Cycles             = 1/" \
-      -e 's/set Load steps         = 10/set Load steps         = 8/' \
-      -e "s#output/monopile-clay-lateral#amplitude-$a#" \
-      -e '/Soil reaction/d' -e '/Capacity normalisation/d' \
-      "$root/prm/monopile-clay-lateral.prm" > "amplitude-$a.prm"
-  /usr/bin/time -f "%e %M" -o "time-$a" "$exe" "amplitude-$a.prm" > "log-$a" 2>&1
+iwan="$root/prm/monopile-clay-iwan.prm"
+# The Tresca twin: the same G (60 MPa) and s_u.
+sed -e 's/set Laws = 0: iwan, su=100, gref=0.003, surfaces=20/set Laws = 0: tresca, su=100/' \
+    "$iwan" > tresca.prm
+cp "$iwan" iwan.prm
+variant() { # law amplitude: the cyclic variant of law.prm
+  sed -e "s/  set Target             = 0.9/  set Targets            = $2, -$2\n  set Cycles             = 10/" \
+      -e 's/set Load steps         = 10/set Load steps         = 4/' \
+      -e "s#output/monopile-clay-iwan#$1-$2#" \
+      -e '/Soil reaction/d' -e '/Capacity normalisation/d' "$1.prm" > "$1-$2.prm"
+}
+run() { # name: the run and its wall time and peak memory
+  /usr/bin/time -f "%e %M" -o "time-$1" "$exe" "$1.prm" > "log-$1" 2>&1 ||
+    { echo "$1 failed:"; tail -3 "log-$1"; exit 1; }
+}
+sed -i "s#output/monopile-clay-iwan#tresca-monotonic#" tresca.prm
+sed -i "s#output/monopile-clay-iwan#iwan-monotonic#" iwan.prm
+for law in iwan tresca; do
+  run "$law"
+  for a in 0.009 0.045; do variant "$law" "$a"; run "$law-$a"; done
 done
-{
-  echo "# One cycle of the monopile in iwan clay ($(date -u +%Y-%m-%d), $(nproc) cores)"
-  echo
-  echo "Script: benchmarks/cyclic-monopile/run.sh. Secant stiffness and damping ratio"
-  echo "from load-cycles.csv (the ratio's bar: the steps' error, doc/cyclic-loading.md §3);"
-  echo "wall time and peak memory of the whole run (24 steps)."
-  echo
-  echo "| amplitude | u/D | H at reversal [kN] | secant stiffness [kN/m] | damping ratio | zero-load u [m] | Newton updates per step | wall time [s] | peak memory [GB] |"
-  echo "|---|---|---|---|---|---|---|---|---|"
-  for a in 0.009 0.045; do
-    /usr/bin/python3 - "$a" <<'PY'
-import csv, sys
-a = sys.argv[1]
-c = list(csv.DictReader(open("amplitude-%s/load-cycles.csv" % a)))[0]
-steps = list(csv.DictReader(open("amplitude-%s/load-displacement.csv" % a)))
-its = [int(s["iterations"]) for s in steps]
-t, m = open("time-" + a).read().split()
-print("| %s m | %.3f | %.0f | %.4g | %.4f ± %.4f | %.3g | %d–%d | %.1f | %.2f |" % (
-    a, float(a) / 9., float(c["reversal_H_kN"]),
-    float(c["secant_stiffness_kN_per_m"]), float(c["damping_ratio"]),
-    float(c["damping_ratio_error"]), float(c["zero_load_horizontal_m"]),
-    min(its), max(its), float(t), float(m) / 1e6))
+/usr/bin/python3 - "$here/results.md" "$root/doc/figures/monopile-iwan-pisa.png" <<'PY'
+import csv, sys, datetime, os
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+out, figure = sys.argv[1:3]
+
+def cost(name):
+    t, m = open("time-" + name).read().split()
+    steps = list(csv.DictReader(open(name + "-monotonic/load-displacement.csv"
+                                     if name in ("iwan", "tresca") else
+                                     name + "/load-displacement.csv")))
+    its = [int(s["iterations"]) for s in steps]
+    return float(t), float(m) / 1e6, len(steps), min(its), max(its)
+
+lines = ["# The monopile in iwan clay against Tresca (%s, %d cores)" %
+         (datetime.date.today(), os.cpu_count()), "",
+         "Script: benchmarks/cyclic-monopile/run.sh, every run side by side in",
+         "one invocation. prm/monopile-clay-iwan.prm (G0 = 60 MPa, s_u = 100 kPa,",
+         "gamma_ref = 0.003, 20 surfaces) and its Tresca twin (same G, s_u); D = 9 m.",
+         "Wall time and peak memory of each whole run.", "",
+         "## Monotonic to 0.1 D (10 steps)", "",
+         "| law | H at 0.1 D [kN] | steps | Newton updates per step | wall time [s] | peak memory [GB] |",
+         "|---|---|---|---|---|---|"]
+for law in ("iwan", "tresca"):
+    rows = list(csv.DictReader(open(law + "-monotonic/load-displacement.csv")))
+    t, m, n, lo, hi = cost(law)
+    lines.append("| %s | %.0f | %d | %d–%d | %.1f | %.2f |" %
+                 (law, float(rows[-1]["H_kN"]), n, lo, hi, t, m))
+lines += ["", "## 10 cycles (4 steps a segment, 84 steps)", "",
+          "| law | amplitude | secant stiffness, cycle 1 / 10 [kN/m] | damping ratio, cycle 1 / 10 | u at zero load, cycle 10 [m] | Newton updates per step | wall time [s] | peak memory [GB] |",
+          "|---|---|---|---|---|---|---|---|"]
+for law in ("iwan", "tresca"):
+    for a in ("0.009", "0.045"):
+        c = list(csv.DictReader(open("%s-%s/load-cycles.csv" % (law, a))))
+        t, m, n, lo, hi = cost("%s-%s" % (law, a))
+        z = c[-1]["zero_load_horizontal_m"]
+        lines.append("| %s | %s m (%.3f D) | %.4g / %.4g | %.4f ± %.4f / %.4f | %s | %d–%d | %.1f | %.2f |" % (
+            law, a, float(a) / 9., float(c[0]["secant_stiffness_kN_per_m"]),
+            float(c[-1]["secant_stiffness_kN_per_m"]),
+            float(c[0]["damping_ratio"]), float(c[0]["damping_ratio_error"]),
+            float(c[-1]["damping_ratio"]), ("%.3g" % float(z)) if z else "–",
+            lo, hi, t, m))
+open(out, "w").write("\n".join(lines) + "\n")
+print("\n".join(lines))
+
+# The PISA p-v curves of both laws at three depths, dimensional (the
+# normalisation divides by each run's G).
+fig, ax = plt.subplots(figsize=(7, 4.5))
+for law, style in (("iwan", "-"), ("tresca", "--")):
+    rows = list(csv.DictReader(open(law + "-monotonic/soil-reaction-curves.csv")))
+    for depth, colour in (("4.5", "C0"), ("9", "C1"), ("18", "C2")):
+        pts = [(float(r["v [m]"]), float(r["p [kN/m]"])) for r in rows
+               if abs(float(r["depth [m]"]) - float(depth)) < 1e-9]
+        if not pts:
+            continue
+        pts = [(0., 0.)] + pts
+        ax.plot([p[0] for p in pts], [p[1] for p in pts], style, color=colour,
+                marker="o", ms=2, label="%s, %s m" % (law, depth))
+ax.set_xlabel("v [m]")
+ax.set_ylabel("p [kN/m]")
+ax.grid(alpha=0.3)
+ax.legend(fontsize=7)
+ax.set_title("PISA p-v curves of the monopile: iwan (G0 = 60 MPa) against "
+             "Tresca (G = 60 MPa)", fontsize=9)
+fig.tight_layout()
+fig.savefig(figure, dpi=130)
 PY
-  done
-} > "$here/results.md"
-/usr/bin/python3 "$root/tools/plot_cycles.py" amplitude-0.009 amplitude-0.045 \
-  --label "u = 0.001 D" --label "u = 0.005 D" \
+/usr/bin/python3 "$root/tools/plot_cycles.py" iwan-0.009 iwan-0.045 \
+  --label "iwan, u = 0.001 D" --label "iwan, u = 0.005 D" \
   -o "$root/doc/figures/monopile-iwan-loops.png"
-cat "$here/results.md"

@@ -273,8 +273,12 @@ namespace FourierSSI
   {
     const unsigned int N = sampling.n_samples();
     plastic.resize(strain.size());
-    // The points this rank does not own keep the committed history.
-    history = committed_history;
+    // Every sample of an owned iwan point is written below; the points
+    // other ranks own keep the committed history.
+    if (point_stride > 1)
+      history = committed_history;
+    else
+      history.resize(committed_history.size());
     SoilYieldCounts result;
     result.n_elastic           = 0;
     result.n_plastic           = 0;
