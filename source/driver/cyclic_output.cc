@@ -1,4 +1,5 @@
 #include <fourier_ssi/coupled/coupled_iteration.h>
+#include <fourier_ssi/coupled/coupled_solver.h>
 #include <fourier_ssi/driver/cyclic_output.h>
 #include <fourier_ssi/input/atomic_file.h>
 #include <fourier_ssi/postprocess/load_cycles.h>
@@ -137,35 +138,57 @@ namespace FourierSSI
                         names.motion_unit);
         }
     }
+
+    /** The cycles of the solver's path and the names they are drawn in. */
+    struct Loops
+    {
+      Motion                 motion;
+      std::vector<LoadCycle> cycles;
+      CycleQuantities        names;
+    };
+
+    Loops
+    loops_of(const CoupledSolver &solver, const AllParameters &parameters)
+    {
+      Loops loops;
+      loops.motion = cycled_motion(parameters);
+      loops.cycles = load_cycles(path_points(solver, parameters, loops.motion));
+      loops.names  = quantities_of(conjugate_load(solver.applied_loads(0.),
+                                                 parameters.rigid_foundation,
+                                                 loops.motion),
+                                  loops.motion);
+      return loops;
+    }
   } // namespace
 
   void
-  write_cyclic_output(const CoupledSolver &solver,
-                      const AllParameters &parameters,
-                      ResultFiles         &files,
-                      ResultsTable        &results,
-                      std::ostream        &log)
+  LoadCycleOutput::add_rows(const CoupledSolver     &solver,
+                            const CoupledRunContext &context,
+                            std::ostream &)
   {
-    if (!parameters.load_path.is_cyclic())
+    if (!context.parameters.load_path.is_cyclic())
       return;
-    const Motion                 motion = cycled_motion(parameters);
-    const std::vector<LoadCycle> cycles =
-      load_cycles(path_points(solver, parameters, motion));
-    const CycleQuantities names =
-      quantities_of(conjugate_load(solver.applied_loads(0.),
-                                   parameters.rigid_foundation,
-                                   motion),
-                    motion);
-    log_load_cycles(log, cycles, names);
-    if (cycles.empty())
+    const Loops loops = loops_of(solver, context.parameters);
+    add_cycle_rows(loops.cycles, loops.names, loops.motion, context.results);
+  }
+
+  void
+  LoadCycleOutput::write_files(const CoupledSolver     &solver,
+                               const CoupledRunContext &context,
+                               std::ostream            &log)
+  {
+    if (!context.writes_csv || !context.parameters.load_path.is_cyclic())
+      return;
+    const Loops loops = loops_of(solver, context.parameters);
+    log_load_cycles(log, loops.cycles, loops.names);
+    if (loops.cycles.empty())
       log << "load cycles: none complete (a cycle returns to the turning "
              "point it starts from: Targets = a, b, a, or Cycles)\n";
-    note_elastic_loops(cycles, parameters, log);
-    add_cycle_rows(cycles, names, motion, results);
-    AtomicFile file(files.claim("load-cycles.csv"));
-    write_load_cycles(file.stream(), cycles, names);
+    note_elastic_loops(loops.cycles, context.parameters, log);
+    AtomicFile file(context.result_files.claim("load-cycles.csv"));
+    write_load_cycles(file.stream(), loops.cycles, loops.names);
     file.commit();
-    log << "load cycles written to " << files.path_of("load-cycles.csv")
-        << '\n';
+    log << "load cycles written to "
+        << context.result_files.path_of("load-cycles.csv") << '\n';
   }
 } // namespace FourierSSI

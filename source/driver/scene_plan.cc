@@ -440,16 +440,37 @@ namespace FourierSSI
     }
   } // namespace
 
+  MeshSequence
+  mesh_sequence_of(const AllParameters &parameters)
+  {
+    if (parameters.discretization.target_accuracy > 0.)
+      return MeshSequence::target_accuracy;
+    if (parameters.discretization.refinement_cycles > 1)
+      return MeshSequence::refinement_cycles;
+    return MeshSequence::one_mesh;
+  }
+
   RunMode
   run_mode_of(const AllParameters &parameters)
   {
-    if (parameters.linearises_on_coupled_tangent())
+    if (parameters.soil_plasticity.any())
       return RunMode::plastic_soil;
+    // A swipe keeps w by a second multiplier, solved on the coupled tangent
+    // (AllParameters::linearises_on_coupled_tangent) with no soil points.
     if (parameters.interfaces.any_nonlinear())
-      return RunMode::load_path;
-    if (parameters.discretization.target_accuracy > 0.)
+      return parameters.rigid_foundation.swipes() ?
+               RunMode::interface_swipe :
+               RunMode::interface_load_path;
+    if (mesh_sequence_of(parameters) == MeshSequence::target_accuracy)
       return RunMode::linear_target;
     return RunMode::linear_cycles;
+  }
+
+  bool
+  is_coupled(const RunMode mode)
+  {
+    return mode == RunMode::interface_load_path ||
+           mode == RunMode::interface_swipe || mode == RunMode::plastic_soil;
   }
 
   ScenePlan
@@ -458,6 +479,7 @@ namespace FourierSSI
   {
     ScenePlan plan;
     plan.run_mode = run_mode_of(parameters);
+    plan.meshes   = mesh_sequence_of(parameters);
     HarmonicReasons reasons;
     decompose_loads(parameters, triangulation, plan, reasons);
     map_foundation_resultants(parameters, reasons);

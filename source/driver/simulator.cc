@@ -1,7 +1,11 @@
 #include <deal.II/base/timer.h>
 #include <filesystem>
 #include <fourier_ssi/coupled/linearisation_choice.h>
+#include <fourier_ssi/driver/coupled_mesh_sequence.h>
+#include <fourier_ssi/driver/coupled_tangent_run.h>
 #include <fourier_ssi/driver/input_checks.h>
+#include <fourier_ssi/driver/interface_load_path_run.h>
+#include <fourier_ssi/driver/load_path_output.h>
 #include <fourier_ssi/driver/memory_estimate.h>
 #include <fourier_ssi/driver/simulator.h>
 #include <fourier_ssi/input/messages.h>
@@ -34,10 +38,9 @@ namespace FourierSSI
         switch (plan.run_mode)
           {
             case RunMode::plastic_soil:
-              solve_plastic_soil(log);
-              break;
-            case RunMode::load_path:
-              solve_nonlinear_interfaces(log);
+            case RunMode::interface_swipe:
+            case RunMode::interface_load_path:
+              solve_coupled(log);
               break;
             case RunMode::linear_target:
               solve_to_target(log);
@@ -82,7 +85,9 @@ namespace FourierSSI
   void
   Simulator::prepare_output_directory() const
   {
-    check_output_paths();
+    const std::string path_error = decided_on_rank_0<std::string>(
+      [&]() { return output_path_error(parameters.output); });
+    AssertThrow(path_error.empty(), ExcMessage(path_error));
     if (!write_files)
       return;
     // What the checks cannot foresee (a folder the file system refuses
@@ -158,14 +163,6 @@ namespace FourierSSI
   }
 
   void
-  Simulator::check_output_paths() const
-  {
-    const std::string error = decided_on_rank_0<std::string>(
-      [&]() { return output_path_error(parameters.output); });
-    AssertThrow(error.empty(), ExcMessage(error));
-  }
-
-  void
   Simulator::remove_stale_results() const
   {
     if (!write_files)
@@ -188,9 +185,9 @@ namespace FourierSSI
     for (const auto &[id, law] : parameters.interfaces.laws)
       interface_ids.insert(id);
     // A coupled scene with a target refines its own mesh
-    // (solve_coupled_to_target); the FE_Q(4) design is for the linear
-    // scenes.
-    if (parameters.discretization.target_accuracy > 0. && !parameters.coupled())
+    // (CoupledMeshSequence::solve_to_target); the FE_Q(4) design is for the
+    // linear scenes.
+    if (run_mode_of(parameters) == RunMode::linear_target)
       DiscretizationDesign::build_member(parameters,
                                          0,
                                          interface_ids,
@@ -211,7 +208,7 @@ namespace FourierSSI
     plan = plan_scene(parameters, *triangulation);
     for (const std::string &line : plan.log_lines)
       log << line << std::endl;
-    if (plan.run_mode == RunMode::load_path)
+    if (plan.run_mode == RunMode::interface_load_path)
       log << describe_interface_linearisation(parameters) << std::endl;
     // Checks that can be made before anything is assembled (throw on bad
     // input, return warnings).
@@ -497,24 +494,54 @@ namespace FourierSSI
   {
     if (!writes_csv())
       return;
-    if (!parameters.output.lines.empty())
+    write_run_result_files(
+      parameters.output, reconstruction, results, result_files, log);
+  }
+
+  CoupledRunContext
+  Simulator::coupled_context()
+  {
+    return CoupledRunContext{parameters,
+                             communicator,
+                             *triangulation,
+                             plan,
+                             harmonic_set,
+                             results,
+                             result_files,
+                             reconstruction,
+                             writes_csv()};
+  }
+
+  void
+  Simulator::solve_coupled(std::ostream &log)
+  {
+    std::unique_ptr<CoupledSceneRun> run;
+    if (plan.run_mode == RunMode::interface_load_path)
+      run = std::make_unique<InterfaceLoadPathRun>(coupled_context());
+    else
+      run = std::make_unique<CoupledTangentRun>(coupled_context());
+    if (plan.meshes == MeshSequence::one_mesh)
       {
-        const std::string name = result_files.claim("lines-3d.csv");
-        reconstruction.write_lines_csv(parameters.output.lines,
-                                       parameters.output.theta_degrees,
-                                       name);
-        log << "3D reconstruction along " << parameters.output.lines.size()
-            << " line(s) written to " << name << std::endl;
+        run->run_on_one_mesh(log);
+        return;
       }
-    if (parameters.output.write_3d_vtu)
+    CoupledMeshSequence meshes(*run,
+                               coupled_context(),
+                               *triangulation,
+                               plan,
+                               interface_ids,
+                               target_not_reached);
+    if (plan.meshes == MeshSequence::refinement_cycles)
       {
-        const std::string name = result_files.claim("solution-3d.vtu");
-        reconstruction.write_revolved_vtu(parameters.output.theta_divisions,
-                                          name);
-        log << "revolved 3D field written to " << name << std::endl;
+        meshes.solve_cycles(log);
+        return;
       }
-    const std::string name = result_files.claim_results_file();
-    results.write_csv(name);
-    log << "results written to " << name << std::endl;
+    if (parameters.discretization.refinement_cycles != 1)
+      log << "Discretization/Refinement cycles = "
+          << parameters.discretization.refinement_cycles
+          << ": replaced by the nested meshes of Discretization/Target "
+             "accuracy"
+          << std::endl;
+    meshes.solve_to_target(log);
   }
 } // namespace FourierSSI

@@ -68,12 +68,98 @@ namespace FourierSSI
                q.rfind("reaction_moment_boundary_", 0) == 0;
       });
     }
+
+    /** The designed mesh of `member` (discretization_design.h), aside. */
+    std::unique_ptr<Triangulation<2>>
+    member_mesh(const AllParameters                &parameters,
+                const unsigned int                  member,
+                const std::set<types::boundary_id> &interface_ids)
+    {
+      auto mesh = std::make_unique<Triangulation<2>>();
+      DiscretizationDesign::build_member(parameters,
+                                         member,
+                                         interface_ids,
+                                         *mesh);
+      return mesh;
+    }
+
+    /**
+     * Cells of `next` over those of `current`: how the DoFs scale (the
+     * decision is made before the next member is set up).
+     */
+    double
+    cell_growth(const Triangulation<2> &next, const Triangulation<2> &current)
+    {
+      return static_cast<double>(next.n_active_cells()) /
+             current.n_active_cells();
+    }
+
+    /** The largest DoF count of the set's harmonics. */
+    double
+    largest_dofs(const HarmonicSet &set)
+    {
+      double dofs = 0.;
+      for (unsigned int i = 0; i < set.size(); ++i)
+        dofs =
+          std::max<double>(dofs, set.problem(i).get_dof_handler().n_dofs());
+      return dofs;
+    }
+
+    /** The cores a simulator may use: `cores`, or the rank's share. */
+    unsigned int
+    available_cores(const unsigned int cores)
+    {
+      return cores > 0 ? cores : HarmonicSet::cores_per_rank();
+    }
+
+    /**
+     * The error of one goal value against which the target is tested:
+     * relative to the value itself, except for the coupling term K_MH,
+     * whose error is relative to sqrt(K_H K_M) of the same harmonic (the
+     * scale of the H-M block: |K_MH| <= sqrt(K_H K_M) for a positive
+     * definite K). A coupling near zero (a surface disc at nu -> 0.5)
+     * then meets a target its own relative error never could.
+     */
+    double
+    goal_error(const GoalHistory              &history,
+               const std::vector<GoalHistory> &histories,
+               const double                    ratio)
+    {
+      const SequenceErrorEstimate e =
+        estimate_sequence_error(history.values, ratio);
+      if (history.quantity != "K_MH")
+        return e.relative;
+      const auto last = [&](const std::string &quantity) {
+        for (const GoalHistory &h : histories)
+          if (h.quantity == quantity && h.harmonic.n == history.harmonic.n &&
+              h.harmonic.family == history.harmonic.family)
+            return h.values.back();
+        return 0.;
+      };
+      const double scale = std::sqrt(std::abs(last("K_H") * last("K_M")));
+      return scale > 0. ? e.absolute / scale : e.relative;
+    }
+
+    /**
+     * The estimated relative error of every goal value from its nested
+     * values (eq. (1) of sequence_error_estimate.h); the largest one.
+     */
+    double
+    largest_estimated_error(const std::vector<GoalHistory> &histories,
+                            const double                    ratio)
+    {
+      double largest = 0.;
+      for (const GoalHistory &h : histories)
+        if (h.values.size() >= 2)
+          largest = std::max(largest, goal_error(h, histories, ratio));
+      return largest;
+    }
   } // namespace
 
   double
   Simulator::assumed_ratio() const
   {
-    return parameters.discretization.target_accuracy > 0. ?
+    return plan.meshes == MeshSequence::target_accuracy ?
              design_member_ratio(
                largest_poisson_ratio(parameters.materials),
                !DiscretizationDesign::slip_wedge_points(parameters).empty()) :
@@ -106,34 +192,6 @@ namespace FourierSSI
               history->values.push_back(row.value);
           }
       }
-  }
-
-  double
-  Simulator::largest_estimated_error() const
-  {
-    double largest = 0.;
-    for (const GoalHistory &h : goal_histories)
-      if (h.values.size() >= 2)
-        largest = std::max(largest, goal_error(h));
-    return largest;
-  }
-
-  double
-  Simulator::goal_error(const GoalHistory &history) const
-  {
-    const SequenceErrorEstimate e =
-      estimate_sequence_error(history.values, assumed_ratio());
-    if (history.quantity != "K_MH")
-      return e.relative;
-    const auto last = [&](const std::string &quantity) {
-      for (const GoalHistory &h : goal_histories)
-        if (h.quantity == quantity && h.harmonic.n == history.harmonic.n &&
-            h.harmonic.family == history.harmonic.family)
-          return h.values.back();
-      return 0.;
-    };
-    const double scale = std::sqrt(std::abs(last("K_H") * last("K_M")));
-    return scale > 0. ? e.absolute / scale : e.relative;
   }
 
   void
@@ -171,116 +229,41 @@ namespace FourierSSI
   }
 
   std::unique_ptr<Triangulation<2>>
-  Simulator::member_mesh(const unsigned int member) const
-  {
-    auto mesh = std::make_unique<Triangulation<2>>();
-    DiscretizationDesign::build_member(parameters,
-                                       member,
-                                       interface_ids,
-                                       *mesh);
-    return mesh;
-  }
-
-  double
-  Simulator::cell_growth(const Triangulation<2> &next) const
-  {
-    // A member's DoFs scale from the current one's by the cell count
-    // (the decision is made before the next member is set up).
-    return static_cast<double>(next.n_active_cells()) /
-           triangulation->n_active_cells();
-  }
-
-  double
-  Simulator::solved_dofs() const
-  {
-    double dofs = 0.;
-    for (unsigned int i = 0; i < harmonic_set->size(); ++i)
-      dofs =
-        std::max<double>(dofs,
-                         harmonic_set->problem(i).get_dof_handler().n_dofs());
-    return dofs;
-  }
-
-  std::string
-  Simulator::target_unmet_beginning(const unsigned int member) const
-  {
-    std::ostringstream line;
-    line << "Discretization/Target accuracy "
-         << parameters.discretization.target_accuracy
-         << " not reached: estimated relative error ";
-    if (member >= 2)
-      line << std::setprecision(2) << largest_estimated_error();
-    else
-      line << "unknown (one mesh solved)";
-    line << " with " << static_cast<long long>(solved_dofs()) << " DoFs";
-    return line.str();
-  }
-
-  void
-  Simulator::target_unmet_at_mesh_limit(const unsigned int member,
-                                        const std::string &limit,
-                                        std::ostream      &log)
-  {
-    target_not_reached =
-      target_unmet_beginning(member) + "; the next mesh: " + limit;
-    log << target_not_reached << std::endl;
-  }
-
-  void
-  Simulator::target_unmet_at_limit(const unsigned int      member,
-                                   const double            dofs,
-                                   const Triangulation<2> &next,
-                                   std::ostream           &log)
-  {
-    std::ostringstream line;
-    line << target_unmet_beginning(member) << "; the next mesh (about "
-         << static_cast<long long>(dofs * cell_growth(next))
-         << " DoFs) exceeds Adaptivity/Maximum DoFs = " << std::setprecision(6)
-         << parameters.adaptivity.maximum_dofs;
-    target_not_reached = line.str();
-    log << target_not_reached << std::endl;
-  }
-
-  std::unique_ptr<Triangulation<2>>
   Simulator::member_mesh_within_limits(const unsigned int member,
                                        std::ostream      &log)
   {
+    const double       dofs = largest_dofs(*harmonic_set);
+    std::ostringstream why;
+    why << "Discretization/Target accuracy "
+        << parameters.discretization.target_accuracy
+        << " not reached: estimated relative error ";
+    if (member >= 2)
+      why << std::setprecision(2)
+          << largest_estimated_error(goal_histories, assumed_ratio());
+    else
+      why << "unknown (one mesh solved)";
+    why << " with " << static_cast<long long>(dofs) << " DoFs";
     std::unique_ptr<Triangulation<2>> next;
     try
       {
-        next = member_mesh(member);
+        next = member_mesh(parameters, member, interface_ids);
+        if (dofs * cell_growth(*next, *triangulation) <=
+            parameters.adaptivity.maximum_dofs)
+          return next;
+        why << "; the next mesh (about "
+            << static_cast<long long>(dofs * cell_growth(*next, *triangulation))
+            << " DoFs) exceeds Adaptivity/Maximum DoFs = "
+            << std::setprecision(6) << parameters.adaptivity.maximum_dofs;
       }
     catch (const MeshExceedsMaximumDoFs &limit)
       {
         // Mesh/Maximum DoFs stops the design like Adaptivity/Maximum DoFs:
         // the meshes solved so far are the answer, with the target unmet.
-        target_unmet_at_mesh_limit(member, limit.what(), log);
-        return nullptr;
+        why << "; the next mesh: " << limit.what();
       }
-    const double dofs = solved_dofs();
-    if (dofs * cell_growth(*next) > parameters.adaptivity.maximum_dofs)
-      {
-        target_unmet_at_limit(member, dofs, *next, log);
-        return nullptr;
-      }
-    return next;
-  }
-
-  unsigned int
-  Simulator::available_cores() const
-  {
-    return cores > 0 ? cores : HarmonicSet::cores_per_rank();
-  }
-
-  unsigned int
-  Simulator::harmonics_at_once() const
-  {
-    return HarmonicSet::concurrent_harmonics(
-      parameters,
-      plan.harmonics.size(),
-      communicator,
-      parameters.discretization.concurrent_harmonics,
-      0);
+    target_not_reached = why.str();
+    log << target_not_reached << std::endl;
+    return nullptr;
   }
 
   std::unique_ptr<Triangulation<2>>
@@ -292,12 +275,18 @@ namespace FourierSSI
     // after member 0, so that the cores never change which members are
     // solved.
     if (uses_distributed_solve(parameters.solver, communicator) ||
-        available_cores() < 2 * harmonics_at_once())
+        available_cores(cores) <
+          2 * HarmonicSet::concurrent_harmonics(
+                parameters,
+                plan.harmonics.size(),
+                communicator,
+                parameters.discretization.concurrent_harmonics,
+                0))
       return nullptr;
     std::unique_ptr<Triangulation<2>> next;
     try
       {
-        next = member_mesh(1);
+        next = member_mesh(parameters, 1, interface_ids);
       }
     catch (const std::exception &)
       {
@@ -306,7 +295,7 @@ namespace FourierSSI
     DoFHandler<2> dof_handler(*triangulation);
     dof_handler.distribute_dofs(
       *make_displacement_element(parameters.discretization.degree));
-    if (dof_handler.n_dofs() * cell_growth(*next) >
+    if (dof_handler.n_dofs() * cell_growth(*next, *triangulation) >
         parameters.adaptivity.maximum_dofs)
       return nullptr;
     return next;
@@ -322,7 +311,7 @@ namespace FourierSSI
     std::vector<HarmonicOutcome> next_outcomes;
     double                       next_wall = 0.;
     std::exception_ptr           next_error, error;
-    const unsigned int           share = available_cores();
+    const unsigned int           share = available_cores(cores);
     log << "meshes 0 and 1 of the design solved side by side on " << share / 2
         << " + " << share - share / 2
         << " cores (the harmonics leave cores idle)" << std::endl;
@@ -440,9 +429,10 @@ namespace FourierSSI
         last_solved = member;
         if (member == 0)
           continue;
-        const double error = largest_estimated_error();
+        const double error =
+          largest_estimated_error(goal_histories, assumed_ratio());
         log << "target accuracy " << target << ": mesh " << member << ", "
-            << static_cast<long long>(solved_dofs())
+            << static_cast<long long>(largest_dofs(*harmonic_set))
             << " DoFs, largest estimated relative error "
             << std::setprecision(2) << error << std::endl;
         if (error <= target)
@@ -477,7 +467,7 @@ namespace FourierSSI
           {
             const SequenceErrorEstimate e =
               estimate_sequence_error(h.values, assumed_ratio());
-            const double error = goal_error(h);
+            const double error = goal_error(h, goal_histories, assumed_ratio());
             results.add(
               h.quantity + "_error", h.harmonic, row_cycle, error, "-");
             converged = target_not_reached.empty() && error <= target;
@@ -497,7 +487,7 @@ namespace FourierSSI
           log << "\n    " << h.harmonic.name() << ": " << h.quantity << " = "
               << std::setprecision(7) << h.values.back() << " " << h.unit
               << " (no estimate: one mesh)";
-        if (target > 0.)
+        if (plan.meshes == MeshSequence::target_accuracy)
           results.add(h.quantity + "_converged",
                       h.harmonic,
                       row_cycle,
@@ -507,7 +497,7 @@ namespace FourierSSI
     log << std::endl;
     const Harmonic &first = goal_histories.front().harmonic;
     results.add("time_error_estimate", first, cycle, estimate_wall_time, "s");
-    if (target > 0.)
+    if (plan.meshes == MeshSequence::target_accuracy)
       {
         results.add("target_accuracy", first, cycle, target, "-");
         results.add("target_accuracy_reached",

@@ -21,18 +21,21 @@ namespace FourierSSI
   using namespace dealii;
 
   /**
-   * How a scene is solved, decided once from the effects it calls for:
-   * plastic soil couples the harmonics through its points (the coupled soil
-   * load path, with any coulomb interfaces in it); coulomb interfaces alone
-   * couple them through the interface points; a linear scene solves each
-   * harmonic once per mesh, on the cycles of Refinement cycles or on the
-   * nested meshes a Target accuracy designs.
+   * What runs for a scene, decided once from the effects it calls for:
+   * plastic soil couples the harmonics through its points (the load path on
+   * the coupled tangent, with any coulomb interfaces in it); coulomb
+   * interfaces on elastic soil couple them through the interface points (the
+   * load path condensed onto the interfaces), except a swipe, whose second
+   * load multiplier keeps the vertical motion on the coupled tangent; a
+   * linear scene solves each harmonic once per mesh, on the cycles of
+   * Refinement cycles or on the nested meshes a Target accuracy designs.
    */
   enum class RunMode
   {
     linear_cycles,
     linear_target,
-    load_path,
+    interface_load_path,
+    interface_swipe,
     plastic_soil
   };
 
@@ -40,10 +43,35 @@ namespace FourierSSI
   RunMode
   run_mode_of(const AllParameters &parameters);
 
+  /** True for the run modes that step a coupled load path. */
+  bool
+  is_coupled(const RunMode mode);
+
+  /**
+   * The meshes a scene is solved on: its own mesh once, Discretization/
+   * Refinement cycles > 1 (a convergence study of the mesh), or the nested
+   * meshes of Discretization/Target accuracy, which replaces the cycles.
+   */
+  enum class MeshSequence
+  {
+    one_mesh,
+    refinement_cycles,
+    target_accuracy
+  };
+
+  /**
+   * The one place that reads Discretization/Target accuracy and Refinement
+   * cycles to choose the meshes (ScenePlan::meshes).
+   */
+  MeshSequence
+  mesh_sequence_of(const AllParameters &parameters);
+
   struct ScenePlan
   {
     /** How the scene is solved. */
     RunMode run_mode = RunMode::linear_cycles;
+    /** The meshes it is solved on. */
+    MeshSequence meshes = MeshSequence::one_mesh;
     /** Harmonics to solve, n ascending, symmetric before antisymmetric. */
     std::vector<Harmonic> harmonics;
     /** The theta-dependent loads with their sampling chosen. */

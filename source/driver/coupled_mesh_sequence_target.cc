@@ -3,14 +3,17 @@
 // the load at the end of the path) on nested members of the scene's own
 // mesh, with its error from the members, the harmonic truncation and the
 // plateau (doc/soil-plasticity.md section 8c). The solver-specific parts
-// come as a CoupledCurveRun (simulator_soil.cc, simulator_nonlinear.cc).
+// come from the scene run (coupled_scene_run.h).
 #include <algorithm>
 #include <cmath>
 #include <deal.II/base/timer.h>
+#include <fourier_ssi/driver/coupled_mesh_sequence.h>
+#include <fourier_ssi/driver/load_path_capacity.h>
 #include <fourier_ssi/driver/memory_estimate.h>
-#include <fourier_ssi/driver/simulator.h>
+#include <fourier_ssi/estimation/sequence_error_estimate.h>
 #include <fourier_ssi/fourier/theta_sampling.h>
 #include <fourier_ssi/input/messages.h>
+#include <fourier_ssi/mesh/adaptivity.h>
 #include <fourier_ssi/mesh/discretization_design.h>
 #include <iomanip>
 #include <limits>
@@ -115,9 +118,9 @@ namespace FourierSSI
   } // namespace
 
   void
-  Simulator::solve_fewer_harmonics(CoupledCurveRun                &run,
-                                   std::map<unsigned int, double> &known,
-                                   std::ostream                   &log)
+  CoupledMeshSequence::solve_fewer_harmonics(
+    std::map<unsigned int, double> &known,
+    std::ostream                   &log)
   {
     const std::vector<Harmonic> all = plan.harmonics;
     for (const unsigned int n_max : truncations(all))
@@ -219,7 +222,7 @@ namespace FourierSSI
   } // namespace
 
   double
-  Simulator::coupled_dofs() const
+  CoupledMeshSequence::coupled_dofs() const
   {
     double dofs = 0.;
     for (unsigned int h = 0; h < harmonic_set->size(); ++h)
@@ -228,9 +231,9 @@ namespace FourierSSI
   }
 
   void
-  Simulator::target_unmet(const double       target,
-                          const std::string &why,
-                          std::ostream      &log)
+  CoupledMeshSequence::target_unmet(const double       target,
+                                    const std::string &why,
+                                    std::ostream      &log)
   {
     target_not_reached = "Discretization/Target accuracy " + number(target) +
                          " not reached: " + why;
@@ -238,10 +241,9 @@ namespace FourierSSI
   }
 
   bool
-  Simulator::double_harmonics(CoupledCurveRun &run,
-                              const double     target,
-                              const double     truncation,
-                              std::ostream    &log)
+  CoupledMeshSequence::double_harmonics(const double  target,
+                                        const double  truncation,
+                                        std::ostream &log)
   {
     // The DoFs of all harmonics grow with their number (one coupled LU).
     const double       dofs  = coupled_dofs();
@@ -252,7 +254,7 @@ namespace FourierSSI
     ScenePlan doubled_plan      = plan;
     doubled_plan.harmonics      = doubled_harmonics(plan.harmonics);
     const std::string shortfall = memory_shortfall(
-      estimate_run_memory(parameters, *triangulation, doubled_plan),
+      estimate_run_memory(parameters, triangulation, doubled_plan),
       available_memory_on_all_ranks(communicator));
     if (!shortfall.empty())
       {
@@ -285,23 +287,23 @@ namespace FourierSSI
   }
 
   bool
-  Simulator::next_coupled_member(CoupledCurveRun             &run,
-                                 const int                    member,
-                                 const CoupledTargetProgress &progress,
-                                 std::ostream                &log)
+  CoupledMeshSequence::next_coupled_member(
+    const int                    member,
+    const CoupledTargetProgress &progress,
+    std::ostream                &log)
   {
     const double target = parameters.discretization.target_accuracy;
     // Newton's coupled tangent is one LU over all harmonics: their DoFs
     // together are what Maximum DoFs bounds here.
     const double     dofs = coupled_dofs();
     Triangulation<2> next;
-    next_coupled_mesh(run, member, next);
+    next_coupled_mesh(member, next);
     const double more = cell_growth(next);
     if (more * dofs > parameters.adaptivity.maximum_dofs)
       {
         std::ostringstream why;
         why << "estimated relative error of the "
-            << label(run.goal_prefix, progress.goal.name) << " "
+            << label(run.goal_prefix(), progress.goal.name) << " "
             << (progress.mesh_values.size() >= 2 ?
                   number(progress.relative(progress.mesh_error +
                                            progress.harmonic_error +
@@ -331,15 +333,15 @@ namespace FourierSSI
                     more * dofs,
                     next_member_time(progress.member_times, more),
                     log);
-    adopt_coupled_mesh(run, next);
+    adopt_coupled_mesh(next);
     return true;
   }
 
-  Simulator::CoarsestMember
-  Simulator::coarsest_member_harmonics(CoupledCurveRun       &run,
-                                       CoupledTargetProgress &progress,
-                                       const bool             growth,
-                                       std::ostream          &log)
+  CoupledMeshSequence::CoarsestMember
+  CoupledMeshSequence::coarsest_member_harmonics(
+    CoupledTargetProgress &progress,
+    const bool             growth,
+    std::ostream          &log)
   {
     const double target = parameters.discretization.target_accuracy;
     if (!growth)
@@ -354,8 +356,9 @@ namespace FourierSSI
     // harmonics kept.
     if (progress.relative(progress.harmonic_error) <= 0.5 * target)
       return CoarsestMember::solved;
-    if (!double_harmonics(
-          run, target, progress.relative(progress.harmonic_error), log))
+    if (!double_harmonics(target,
+                          progress.relative(progress.harmonic_error),
+                          log))
       return CoarsestMember::stop;
     progress.mesh_values.clear();
     progress.member_times.clear();
@@ -363,17 +366,16 @@ namespace FourierSSI
   }
 
   bool
-  Simulator::coupled_target_settled(const CoupledCurveRun &run,
-                                    const int              member,
-                                    CoupledTargetProgress &progress,
-                                    std::ostream          &log)
+  CoupledMeshSequence::coupled_target_settled(const int              member,
+                                              CoupledTargetProgress &progress,
+                                              std::ostream          &log)
   {
     const double target       = parameters.discretization.target_accuracy;
     progress.mesh_error       = coupled_mesh_error(progress.mesh_values);
     const double      plateau = progress.goal.plateau_error;
     const double      total   = progress.relative(progress.mesh_error +
                                            progress.harmonic_error + plateau);
-    const std::string goal    = label(run.goal_prefix, progress.goal.name);
+    const std::string goal    = label(run.goal_prefix(), progress.goal.name);
     log << "target accuracy " << target << ": mesh " << member
         << ", estimated relative error of the " << goal << " " << number(total)
         << std::endl;
@@ -396,7 +398,7 @@ namespace FourierSSI
   }
 
   void
-  Simulator::solve_coupled_to_target(std::ostream &log, CoupledCurveRun &run)
+  CoupledMeshSequence::solve_to_target(std::ostream &log)
   {
     // Members: the scene's mesh and element, 2^k cells per segment
     // (build_plastic_member); on member 0 the harmonic truncation (n_max /
@@ -411,16 +413,16 @@ namespace FourierSSI
     int                   last_solved = 0;
     for (int member = 0;; ++member)
       {
-        if (member > 0 && !next_coupled_member(run, member, progress, log))
+        if (member > 0 && !next_coupled_member(member, progress, log))
           break;
         Timer member_timer;
         log << "target accuracy " << target << ": mesh " << member << ", "
-            << triangulation->n_active_cells() << " cells" << std::endl;
+            << triangulation.n_active_cells() << " cells" << std::endl;
         // The truncation on the coarsest mesh: cheap, and the harmonics'
         // share of the error changes little with the mesh
         // (doc/verification/soil-plasticity.md 8b).
         if (member == 0 && !growth)
-          solve_fewer_harmonics(run, progress.known, log);
+          solve_fewer_harmonics(progress.known, log);
         progress.goal = run.solve(log);
         last_solved   = member;
         progress.mesh_values.push_back(progress.goal.value);
@@ -437,14 +439,14 @@ namespace FourierSSI
         if (member == 0)
           {
             const CoarsestMember next =
-              coarsest_member_harmonics(run, progress, growth, log);
+              coarsest_member_harmonics(progress, growth, log);
             if (next == CoarsestMember::stop)
               break;
             if (next == CoarsestMember::solve_again)
               --member; // member 0 again (the loop's ++ brings it back)
             continue;   // two meshes are needed for the mesh error
           }
-        if (coupled_target_settled(run, member, progress, log))
+        if (coupled_target_settled(member, progress, log))
           break;
       }
     estimate_wall_time = run_timer.wall_time() - last_member_time;
@@ -454,8 +456,7 @@ namespace FourierSSI
       progress.known.size() >= 2            ? progress.harmonic_error :
       highest_harmonic(plan.harmonics) == 0 ? 0. :
                                               std::nan("");
-    report_coupled_error(run,
-                         progress.goal,
+    report_coupled_error(progress.goal,
                          progress.mesh_values.size(),
                          progress.mesh_error,
                          harmonics,
@@ -467,13 +468,12 @@ namespace FourierSSI
   }
 
   void
-  Simulator::report_coupled_error(CoupledCurveRun   &run,
-                                  const CoupledGoal &goal,
-                                  const unsigned int n_meshes,
-                                  const double       mesh_error,
-                                  const double       harmonic_error,
-                                  const std::string &harmonic_source,
-                                  std::ostream      &log)
+  CoupledMeshSequence::report_coupled_error(const CoupledGoal &goal,
+                                            const unsigned int n_meshes,
+                                            const double       mesh_error,
+                                            const double       harmonic_error,
+                                            const std::string &harmonic_source,
+                                            std::ostream      &log)
   {
     const double target = parameters.discretization.target_accuracy;
     const double scale  = std::abs(goal.value);
@@ -486,29 +486,31 @@ namespace FourierSSI
                       nan;
     const bool reached = target_not_reached.empty() && total <= target;
     run.add_rows(log);
-    log << "error estimate of the " << label(run.goal_prefix, goal.name)
+    log << "error estimate of the " << label(run.goal_prefix(), goal.name)
         << " (relative; the mesh from " << n_meshes
         << " nested meshes, geometric tail; the harmonics " << harmonic_source
-        << (run.plateau ? "; the plateau" : "") << "):\n    " << goal.name
+        << (run.has_plateau() ? "; the plateau" : "") << "):\n    " << goal.name
         << " = " << std::setprecision(7) << goal.value << " " << goal.unit
         << " \u00b1 " << std::setprecision(2) << total << " (rel): mesh "
         << (n_meshes >= 2 ? mesh_error / scale : nan) << ", harmonics "
         << harmonic_error / scale;
-    if (run.plateau)
+    if (run.has_plateau())
       log << ", plateau " << goal.plateau_error / scale;
     log << std::setprecision(6) << std::endl;
-    if (run.goal_prefix == "capacity_")
-      report_normalised_capacity(goal.name,
+    if (run.goal_prefix() == "capacity_")
+      report_normalised_capacity(parameters.rigid_foundation,
+                                 goal.name,
                                  goal.value,
                                  goal.unit,
                                  total,
                                  "mesh, harmonics and plateau",
                                  goal.steps,
+                                 results,
                                  log);
     const Harmonic     any{0, Family::symmetric};
     const unsigned int row  = goal.steps;
-    const std::string  name = run.goal_prefix + goal.name;
-    if (run.goal_prefix != "capacity_") // the capacity has its own row
+    const std::string  name = run.goal_prefix() + goal.name;
+    if (run.goal_prefix() != "capacity_") // the capacity has its own row
       results.add(name, any, row, goal.value, goal.unit);
     results.add(name + "_error", any, row, total, "-");
     results.add(name + "_error_mesh",
@@ -518,10 +520,11 @@ namespace FourierSSI
                 "-");
     results.add(
       name + "_error_harmonics", any, row, harmonic_error / scale, "-");
-    if (run.plateau)
+    if (run.has_plateau())
       results.add(
         name + "_error_plateau", any, row, goal.plateau_error / scale, "-");
-    if (target > 0.) // Refinement cycles have none
+    // Refinement cycles have no target.
+    if (plan.meshes == MeshSequence::target_accuracy)
       {
         results.add(name + "_converged", any, row, reached ? 1. : 0., "-");
         results.add("target_accuracy", any, row, target, "-");
@@ -529,36 +532,5 @@ namespace FourierSSI
           "target_accuracy_reached", any, row, reached ? 1. : 0., "-");
       }
     results.add("time_error_estimate", any, row, estimate_wall_time, "s");
-  }
-
-  void
-  Simulator::report_normalised_capacity(const std::string &name,
-                                        const double       value,
-                                        const std::string &unit,
-                                        const double       relative_error,
-                                        const std::string &error_parts,
-                                        const unsigned int row,
-                                        std::ostream      &log)
-  {
-    const RigidFoundationParameters &foundation = parameters.rigid_foundation;
-    if (foundation.capacity_name.empty())
-      return;
-    // A capacity is a magnitude (a downward V is negative).
-    const double normalised = std::abs(value) / foundation.capacity_reference;
-    log << "    " << foundation.capacity_name << " = |" << name << "| / ("
-        << foundation.capacity_reference << " " << unit
-        << ") = " << std::setprecision(7) << normalised;
-    if (std::isfinite(relative_error))
-      log << " \u00b1 " << std::setprecision(2)
-          << relative_error * std::abs(normalised) << " (" << error_parts
-          << ")";
-    log << std::setprecision(6) << std::endl;
-    const Harmonic any{0, Family::symmetric};
-    results.add("capacity_normalised", any, row, normalised, "-");
-    results.add("capacity_normalised_error",
-                any,
-                row,
-                relative_error * std::abs(normalised),
-                "-");
   }
 } // namespace FourierSSI
