@@ -2,7 +2,8 @@
 # The monopile in multi-surface (iwan) clay against the same scene in Tresca
 # clay, side by side in one run (doc/cyclic-loading.md section 5):
 #   1. pushed to 0.1 D monotonically (prm/monopile-clay-iwan.prm and its
-#      Tresca twin), with the PISA p-v curves of both as a figure;
+#      Tresca twin), and to 0.01 D in 20 steps for the PISA p-v curves of
+#      both as a figure;
 #   2. 10 cycles of mudline displacement at 0.001 D and at 0.005 D (4 steps
 #      a segment), secant stiffness and damping ratio of the first and the
 #      last cycle, and the loops of the iwan clay as a figure.
@@ -34,6 +35,12 @@ run() { # name: the run and its wall time and peak memory
 for law in iwan tresca; do
   sed "s#output/monopile-clay-iwan#$law-monotonic#" "$law.prm" > "$law-monotonic.prm"
   run "$law-monotonic"
+  # The PISA curves at small displacement: 20 steps to 0.01 D.
+  sed -e "s#output/monopile-clay-iwan#$law-curves#" \
+      -e 's/  set Target             = 0.9/  set Target             = 0.09/' \
+      -e 's/set Load steps         = 10/set Load steps         = 20/' \
+      "$law.prm" > "$law-curves.prm"
+  run "$law-curves"
   for a in 0.009 0.045; do variant "$law" "$a"; run "$law-$a"; done
 done
 /usr/bin/python3 - "$here/results.md" "$root/doc/figures/monopile-iwan-pisa.png" <<'PY'
@@ -84,7 +91,7 @@ print("\n".join(lines))
 # normalisation divides by each run's G).
 fig, ax = plt.subplots(figsize=(7, 4.5))
 for law, style in (("iwan", "-"), ("tresca", "--")):
-    rows = list(csv.DictReader(open(law + "-monotonic/soil-reaction-curves.csv")))
+    rows = list(csv.DictReader(open(law + "-curves/soil-reaction-curves.csv")))
     for depth, colour in (("4.5", "C0"), ("9", "C1"), ("18", "C2")):
         pts = [(float(r["v [m]"]), float(r["p [kN/m]"])) for r in rows
                if abs(float(r["depth [m]"]) - float(depth)) < 1e-9]
@@ -97,8 +104,8 @@ ax.set_xlabel("v [m]")
 ax.set_ylabel("p [kN/m]")
 ax.grid(alpha=0.3)
 ax.legend(fontsize=7)
-ax.set_title("PISA p-v curves of the monopile: iwan (G0 = 60 MPa) against "
-             "Tresca (G = 60 MPa)", fontsize=9)
+ax.set_title("PISA p-v curves of the monopile to 0.01 D (20 steps): iwan "
+             "(G0 = 60 MPa) against Tresca (G = 60 MPa)", fontsize=9)
 fig.tight_layout()
 fig.savefig(figure, dpi=130)
 PY
