@@ -665,10 +665,7 @@ namespace FourierSSI
       j2 += 0.5 * (change[c] - mean) * (change[c] - mean);
     for (unsigned int c = 3; c < 6; ++c)
       j2 += change[c] * change[c];
-    double strength = 0.;
-    for (unsigned int i = 0; i < clays[point.clay].n_surfaces(); ++i)
-      strength += clays[point.clay].elements().strength(i);
-    return std::sqrt(j2) - strength;
+    return std::sqrt(j2) - clays[point.clay].elements().undrained_strength();
   }
 
   bool

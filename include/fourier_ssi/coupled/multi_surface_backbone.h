@@ -63,6 +63,13 @@ namespace FourierSSI
       return strengths[i];
     }
 
+    /** s_u [kPa]: the strengths' sum, the law's simple-shear strength. */
+    double
+    undrained_strength() const
+    {
+      return su;
+    }
+
     /** The strain gamma_i = tau_i / G_i at which sub-element i yields. */
     double
     yield_strain(const unsigned int i) const
