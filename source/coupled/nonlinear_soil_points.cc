@@ -308,8 +308,7 @@ namespace FourierSSI
                 StrainVector      *updated =
                   point.clay == numbers::invalid_unsigned_int ?
                          nullptr :
-                         &history[point.first_history +
-                             j * clays[point.clay].n_surfaces()];
+                         &history[history_index(point, j)];
                 const SoilReturn r = return_from(
                   point,
                   strain[k],
@@ -614,8 +613,7 @@ namespace FourierSSI
     if (point.clay == numbers::invalid_unsigned_int)
       return {&plastic[k], nullptr};
     const unsigned int j = k - p * sampling.n_samples();
-    return {&plastic[k],
-            &history[point.first_history + j * clays[point.clay].n_surfaces()]};
+    return {&plastic[k], &history[history_index(point, j)]};
   }
 
   SoilReturn

@@ -378,6 +378,13 @@ namespace FourierSSI
                 StrainVector        *updated,
                 StressTangent       *tangent = nullptr) const;
 
+    /** The first history entry of sample j of an iwan point. */
+    std::size_t
+    history_index(const SoilPoint &point, const unsigned int j) const
+    {
+      return point.first_history + j * clays[point.clay].n_surfaces();
+    }
+
     /** The committed state of sample k = p N + j of point p. */
     SampleHistory
     history_of(const unsigned int               p,
