@@ -286,6 +286,21 @@ namespace FourierSSI
            " (MemAvailable in /proc/meminfo)";
   }
 
+  std::string
+  describe_large_estimate(const MemoryEstimate &estimate,
+                          const double          available)
+  {
+    // Below this a run needs no word about its memory on any machine of
+    // the project's kind (24 GB).
+    constexpr double large_run_bytes = 1e9;
+    if (estimate.bytes < large_run_bytes)
+      return "";
+    return "memory: about " + gigabytes(estimate.bytes) + " estimated (" +
+           estimate.largest_part + ", set by " + estimate.driving_entry +
+           "), free " +
+           (available > 0. ? gigabytes(available) : std::string("unknown"));
+  }
+
   void
   check_memory_fits(const MemoryEstimate &estimate, const double available)
   {

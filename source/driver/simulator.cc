@@ -34,7 +34,7 @@ namespace FourierSSI
         prepare_output_directory();
         make_mesh();
         make_plan(log);
-        check_run_fits_in_memory();
+        check_run_fits_in_memory(log);
         switch (plan.run_mode)
           {
             case RunMode::plastic_soil:
@@ -101,12 +101,17 @@ namespace FourierSSI
   }
 
   void
-  Simulator::check_run_fits_in_memory() const
+  Simulator::check_run_fits_in_memory(std::ostream &log) const
   {
     // A run that cannot fit stops here, not after minutes of swapping.
-    check_memory_fits(estimate_run_memory(parameters, *triangulation, plan),
-                      decided_on_rank_0<double>(
-                        []() { return available_memory(); }));
+    const MemoryEstimate estimate =
+      estimate_run_memory(parameters, *triangulation, plan);
+    const double available =
+      decided_on_rank_0<double>([]() { return available_memory(); });
+    check_memory_fits(estimate, available);
+    const std::string line = describe_large_estimate(estimate, available);
+    if (!line.empty())
+      log << line << std::endl;
   }
 
   void

@@ -65,6 +65,15 @@ namespace FourierSSI
   memory_shortfall(const MemoryEstimate &estimate, const double available);
 
   /**
+   * The log line of a large estimate (1 GB or more), with its largest part
+   * and the free memory `available` (unknown if 0): a legal run that will
+   * take much memory says so before it starts. Empty below 1 GB.
+   */
+  std::string
+  describe_large_estimate(const MemoryEstimate &estimate,
+                          const double          available);
+
+  /**
    * Throw one line naming the estimate, the free memory and the driving
    * entry if `estimate` exceeds `available` (> 0).
    */

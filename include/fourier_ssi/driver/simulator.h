@@ -137,9 +137,12 @@ namespace FourierSSI
     void
     prepare_output_directory() const;
 
-    /** Stops with one line if the run's estimated memory exceeds the free. */
+    /**
+     * Stops with one line if the run's estimated memory exceeds the free;
+     * prints the estimate if it is large.
+     */
     void
-    check_run_fits_in_memory() const;
+    check_run_fits_in_memory(std::ostream &log) const;
 
     /**
      * A linear scene on Refinement cycles meshes (the coarser member first
