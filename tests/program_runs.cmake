@@ -123,7 +123,7 @@ fssi_expect_unconverged(target_accuracy_mesh_limit
 fssi_expect_unconverged(capacity_target_harmonics_unreachable
   ${CMAKE_SOURCE_DIR}/prm/pile-capacity.prm
   capacity_target_harmonics
-  "Discretization/Target accuracy 0.01 not reached: the harmonic truncation \\(n <= 8\\) alone is [0-9.e+-]+; doubling the harmonics \\(about [0-9]+ DoFs\\) would exceed Adaptivity/Maximum DoFs = 6000"
+  "Discretization/Target accuracy 0.01 not reached: the harmonic truncation \\(n <= 8\\) alone is [0-9.e+-]+, more than half of it; doubling the harmonics \\(about [0-9]+ DoFs\\) would exceed Adaptivity/Maximum DoFs = 6000"
   -DAPPEND=${CMAKE_CURRENT_SOURCE_DIR}/accuracy/capacity_target_harmonics_bound.prm
   -DGOAL=capacity_H)
 fssi_expect_unconverged(capacity_target_dofs_unreachable

@@ -10,8 +10,10 @@ by side in one run.
 
 Each case appends its entries to a bundled scene (a temporary copy, its own
 output folder) and runs it with NEW_EXE (Strategy = kelly, Refine fraction
-0.6) and OLD_EXE (the uniform members of Strategy = global), alternating,
-one run at a time, R times (median wall time). Per run: wall time and peak
+0.6, and the case's own entries for the new build: for the pile slice its
+harmonics grown by the solution) and OLD_EXE (the scene as shipped, the
+uniform members of Strategy = global), alternating, one run at a time, R
+times (median wall time). Per run: wall time and peak
 memory (GNU time's maximum resident set size), the capacity and its printed
 relative error bar, the true relative error against the case's reference,
 the effectivity (bar over true error) and whether the bar contains the
@@ -40,19 +42,45 @@ subsection Adaptivity
 end
 """
 
+# The pile slice's lateral load is n = 1; the solution adds the odd
+# harmonics its plastic zone calls for (doc/soil-plasticity.md 3e), where
+# the shipped scene lists n <= 8 and a target doubles them all.
+GROWN_FROM_N1 = """
+subsection Discretization
+  set Harmonics = 1
+end
+subsection Load path
+  set Maximum harmonic = 8
+end
+"""
+
 # name: (scene, target, capacity row, normalisation of the row, reference of
-# the normalised capacity, where the reference comes from)
+# the normalised capacity, where the reference comes from, the new build's
+# own entries)
 CASES = {
     "footing-capacity N_c 2e-2": (
         "prm/footing-capacity.prm", 2e-2, "capacity_V", -1. / 31.4159265,
-        6.05, "Eason & Shield (1960), rough"),
+        6.05, "Eason & Shield (1960), rough", ""),
     "footing-capacity N_c 1e-2": (
         "prm/footing-capacity.prm", 1e-2, "capacity_V", -1. / 31.4159265,
-        6.05, "Eason & Shield (1960), rough"),
+        6.05, "Eason & Shield (1960), rough", ""),
+    "pile-capacity N_p 1e-2": (
+        "prm/pile-capacity.prm", 1e-2, "capacity_H", 0.01, 9.20117,
+        "exact plane-strain limit, smooth (Geotechnique 2026)",
+        GROWN_FROM_N1),
 }
 
+# What the table does not show yet (written below it).
+NOT_YET = """The footing's and the pile slice's targets are measured. The other
+targets of the nonlinear-accuracy table are not reached yet: disc-tresca's
+finer meshes cut Newton's steps (doc/soil-plasticity.md 8d); the footing's
+torsion, the free-head pile, the caisson, the sand footing and the CalculiX
+runs are not in this table. On the pile slice the new side's time is the
+coupled tangent of n <= 16 (8 harmonics grown): its cost per harmonic is
+what bounds it now."""
 
-def run_case(exe, scene, target, adaptive, work):
+
+def run_case(exe, scene, target, new_entries, work):
     text = open(os.path.join(ROOT, scene)).read()
     text += """
 subsection Discretization
@@ -63,8 +91,8 @@ subsection Output
   set Write vtu = false
 end
 """ % target
-    if adaptive:
-        text += ADAPTIVE
+    if new_entries is not None:
+        text += ADAPTIVE + new_entries
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work)
     open(os.path.join(work, "case.prm"), "w").write(text)
@@ -108,20 +136,21 @@ def main():
     load_start = os.getloadavg()[0]
     lines = []
     for name in args.cases.split(","):
-        scene, target, row, scale, reference, source = CASES[name]
+        scene, target, row, scale, reference, source, entries = CASES[name]
         runs = {"new": [], "old": []}
         with tempfile.TemporaryDirectory() as tmp:
             for k in range(args.repeats):
-                for side, exe, adaptive in (("new", args.new, True),
-                                            ("old", args.old, False)):
+                for side, exe, new_entries in (("new", args.new, entries),
+                                               ("old", args.old, None)):
                     runs[side].append(run_case(
-                        exe, scene, target, adaptive,
+                        exe, scene, target, new_entries,
                         os.path.join(tmp, side)))
                     print(name, side, k, runs[side][-1].get(
                         "wall", runs[side][-1].get("failed")), flush=True)
         new = summarise(runs["new"], row, scale, reference)
         old = summarise(runs["old"], row, scale, reference)
-        for side, s in (("kelly (new)", new), ("uniform (old)", old)):
+        new_label = "kelly%s (new)" % (", harmonics grown" if entries else "")
+        for side, s in ((new_label, new), ("uniform (old)", old)):
             if s is None:
                 lines.append("| %s | %s | failed | | | | | | |"
                              % (name, side))
@@ -149,9 +178,10 @@ def main():
                     "(uniform); one run at a time, the two builds "
                     "alternating. Load average (1 min) %.1f at the start, "
                     "%.1f at the end, on 2 cores: the times compare within "
-                    "this table only.\n\n%s\n"
+                    "this table only.\n\n%s\n\n%s\n"
                     % (datetime.date.today(), args.new_commit,
-                       args.old_commit, load_start, load_end, table))
+                       args.old_commit, load_start, load_end, table,
+                       NOT_YET))
 
 
 if __name__ == "__main__":

@@ -67,6 +67,23 @@ namespace FourierSSI
       return result;
     }
 
+    /** n = 0 .. n_max in each family of `harmonics`. */
+    std::vector<Harmonic>
+    harmonics_up_to(const std::vector<Harmonic> &harmonics,
+                    const unsigned int           n_max)
+    {
+      std::vector<Harmonic> result;
+      for (unsigned int n = 0; n <= n_max; ++n)
+        for (const Family family : {Family::symmetric, Family::antisymmetric})
+          if (std::any_of(harmonics.begin(),
+                          harmonics.end(),
+                          [&](const Harmonic &h) {
+                            return h.family == family;
+                          }))
+            result.push_back({n, family});
+      return result;
+    }
+
     /** "capacity V", "end load H": the goal as the log names it. */
     std::string
     label(const std::string &prefix, const std::string &name)
@@ -97,10 +114,14 @@ namespace FourierSSI
     {
       if (highest_harmonic(harmonics) == 0)
         return "none (n = 0 only: an axisymmetric problem)";
+      if (estimated && growth)
+        return "from Maximum harmonic halved on the coarsest mesh (grown by "
+               "the solution)";
       if (estimated)
         return "from n_max halved on the coarsest mesh";
       if (growth)
-        return "NOT estimated (grown by the solution)";
+        return "NOT estimated (Maximum harmonic = 2 or less cannot be "
+               "halved; set 4 or more)";
       if (lateral_truncation_unseen(harmonics))
         return "NOT estimated (n_max = 2: n <= 1 and n <= 2 both lack n = 3, "
                "the first correction of a lateral response; list n <= 3 or "
@@ -117,13 +138,32 @@ namespace FourierSSI
     }
   } // namespace
 
+  bool
+  CoupledMeshSequence::grows() const
+  {
+    return run.path_parameters().load_path.maximum_harmonic >
+           highest_harmonic(plan.harmonics);
+  }
+
+  unsigned int
+  CoupledMeshSequence::truncated_n_max() const
+  {
+    return grows() ? run.path_parameters().load_path.maximum_harmonic :
+                     highest_harmonic(plan.harmonics);
+  }
+
   void
   CoupledMeshSequence::solve_fewer_harmonics(
     std::map<unsigned int, double> &known,
     std::ostream                   &log)
   {
-    const std::vector<Harmonic> all = plan.harmonics;
-    for (const unsigned int n_max : truncations(all))
+    // With growth the truncation is the Maximum harmonic's: the runs with
+    // n <= n_max / 4 and n_max / 2 grow up to those, as the answer's path
+    // grows up to n_max.
+    const std::vector<Harmonic> all     = plan.harmonics;
+    const unsigned int          maximum = truncated_n_max();
+    const bool                  growth  = grows();
+    for (const unsigned int n_max : truncations(harmonics_up_to(all, maximum)))
       {
         if (known.count(n_max) > 0)
           continue; // solved before the last doubling
@@ -131,6 +171,8 @@ namespace FourierSSI
         for (const Harmonic &h : all)
           if (h.n <= n_max)
             plan.harmonics.push_back(h);
+        if (growth)
+          run.set_maximum_harmonic(n_max);
         // Its own log: the study's curves are not the answer's.
         std::ostringstream study_log;
         CoupledGoal        goal;
@@ -142,6 +184,8 @@ namespace FourierSSI
           {
             // Say which run failed: the answer's harmonics are not these.
             plan.harmonics = all;
+            if (growth)
+              run.set_maximum_harmonic(maximum);
             AssertThrow(false,
                         ExcMessage(
                           one_line_message(e) +
@@ -152,9 +196,12 @@ namespace FourierSSI
         known[n_max]   = goal.value;
         plan.harmonics = all;
         run.release();
+        if (growth)
+          run.set_maximum_harmonic(maximum);
         harmonic_set.reset();
-        log << "  harmonics n <= " << n_max << ": " << goal.name << " = "
-            << goal.value << " " << goal.unit << std::endl;
+        log << "  harmonics n <= " << n_max << (growth ? " (grown)" : "")
+            << ": " << goal.name << " = " << goal.value << " " << goal.unit
+            << std::endl;
       }
   }
 
@@ -207,17 +254,7 @@ namespace FourierSSI
     std::vector<Harmonic>
     doubled_harmonics(const std::vector<Harmonic> &harmonics)
     {
-      const unsigned int    n_max = highest_harmonic(harmonics);
-      std::vector<Harmonic> doubled;
-      for (unsigned int n = 0; n <= 2 * n_max; ++n)
-        for (const Family family : {Family::symmetric, Family::antisymmetric})
-          if (std::any_of(harmonics.begin(),
-                          harmonics.end(),
-                          [&](const Harmonic &h) {
-                            return h.family == family;
-                          }))
-            doubled.push_back({n, family});
-      return doubled;
+      return harmonics_up_to(harmonics, 2 * highest_harmonic(harmonics));
     }
   } // namespace
 
@@ -241,48 +278,55 @@ namespace FourierSSI
   }
 
   bool
-  CoupledMeshSequence::double_harmonics(const double  target,
-                                        const double  truncation,
-                                        std::ostream &log)
+  CoupledMeshSequence::double_harmonics(const double       target,
+                                        const std::string &reason,
+                                        std::ostream      &log)
   {
     // The DoFs of all harmonics grow with their number (one coupled LU).
-    const double       dofs  = coupled_dofs();
-    const unsigned int n_max = highest_harmonic(plan.harmonics);
-    const double       more  = (2. * n_max + 1.) / (n_max + 1.);
+    const double       dofs   = coupled_dofs();
+    const unsigned int n_max  = truncated_n_max();
+    const bool         growth = grows();
+    const double       more   = (2. * n_max + 1.) / (n_max + 1.);
     // The doubled set must also fit in memory: its theta samples and its
     // coupled tangent grow with the harmonics, faster than their DoFs.
-    ScenePlan doubled_plan      = plan;
-    doubled_plan.harmonics      = doubled_harmonics(plan.harmonics);
+    // With growth the Maximum harmonic is doubled, the listed ones kept;
+    // the estimate counts every harmonic it could add.
+    AllParameters doubled_parameters = run.path_parameters();
+    ScenePlan     doubled_plan       = plan;
+    if (growth)
+      doubled_parameters.load_path.maximum_harmonic = 2 * n_max;
+    doubled_plan.harmonics =
+      doubled_harmonics(harmonics_up_to(plan.harmonics, n_max));
     const std::string shortfall = memory_shortfall(
-      estimate_run_memory(parameters, triangulation, doubled_plan),
+      estimate_run_memory(doubled_parameters, triangulation, doubled_plan),
       available_memory_on_all_ranks(communicator));
     if (!shortfall.empty())
       {
         target_unmet(target,
-                     "the harmonic truncation (n <= " + std::to_string(n_max) +
-                       ") alone is " + number(truncation) +
-                       "; doubling the harmonics: " + shortfall,
+                     reason + "; doubling the harmonics: " + shortfall,
                      log);
         return false;
       }
     if (more * dofs > parameters.adaptivity.maximum_dofs || 2 * n_max > 1024)
       {
         std::ostringstream why;
-        why << "the harmonic truncation (n <= " << n_max << ") alone is "
-            << number(truncation) << "; doubling the harmonics (about "
+        why << reason << "; doubling the harmonics (about "
             << static_cast<long long>(more * dofs)
             << " DoFs) would exceed Adaptivity/Maximum DoFs = "
             << parameters.adaptivity.maximum_dofs;
         target_unmet(target, why.str(), log);
         return false;
       }
-    plan.harmonics = doubled_plan.harmonics;
     run.release();
     harmonic_set.reset();
-    log << "target accuracy " << number(target) << ": the harmonic truncation "
-        << number(truncation)
-        << " is more than half of it: harmonics doubled to n <= " << 2 * n_max
-        << std::endl;
+    if (growth)
+      run.set_maximum_harmonic(2 * n_max);
+    else
+      plan.harmonics = doubled_plan.harmonics;
+    log << "target accuracy " << number(target) << ": " << reason << ": "
+        << (growth ? "Maximum harmonic doubled to n = " :
+                     "harmonics doubled to n <= ")
+        << 2 * n_max << std::endl;
     return true;
   }
 
@@ -318,7 +362,7 @@ namespace FourierSSI
         return false;
       }
     const std::string shortfall =
-      memory_shortfall(estimate_run_memory(parameters, next, plan),
+      memory_shortfall(estimate_run_memory(run.path_parameters(), next, plan),
                        available_memory_on_all_ranks(communicator));
     if (!shortfall.empty())
       {
@@ -340,25 +384,33 @@ namespace FourierSSI
   CoupledMeshSequence::CoarsestMember
   CoupledMeshSequence::coarsest_member_harmonics(
     CoupledTargetProgress &progress,
-    const bool             growth,
     std::ostream          &log)
   {
-    const double target = parameters.discretization.target_accuracy;
-    if (!growth)
-      progress.known[highest_harmonic(plan.harmonics)] = progress.goal.value;
-    if (progress.known.size() < 2)
+    const double       target = parameters.discretization.target_accuracy;
+    const unsigned int n_max  = truncated_n_max();
+    progress.known[n_max]     = progress.goal.value;
+    std::string reason;
+    if (progress.known.size() >= 2)
+      {
+        progress.harmonic_error =
+          estimate_sequence_error(values_of(progress.known),
+                                  harmonic_doubling_ratio)
+            .absolute;
+        if (progress.relative(progress.harmonic_error) <= 0.5 * target)
+          return CoarsestMember::solved;
+        reason = "the harmonic truncation (n <= " + std::to_string(n_max) +
+                 ") alone is " +
+                 number(progress.relative(progress.harmonic_error)) +
+                 ", more than half of it";
+      }
+    else if (lateral_truncation_unseen(harmonics_up_to(plan.harmonics, n_max)))
+      reason = "n <= 1 and n <= 2 cannot show the truncation of a lateral "
+               "response (n = 3 carries its first correction)";
+    else
       return CoarsestMember::solved;
-    progress.harmonic_error = estimate_sequence_error(values_of(progress.known),
-                                                      harmonic_doubling_ratio)
-                                .absolute;
-    // The truncation takes more than half the target: double the harmonics
-    // and solve this (the cheapest) mesh again, the values of fewer
-    // harmonics kept.
-    if (progress.relative(progress.harmonic_error) <= 0.5 * target)
-      return CoarsestMember::solved;
-    if (!double_harmonics(target,
-                          progress.relative(progress.harmonic_error),
-                          log))
+    // Double the harmonics and solve this (the cheapest) mesh again, the
+    // values of fewer harmonics kept.
+    if (!double_harmonics(target, reason, log))
       return CoarsestMember::stop;
     progress.mesh_values.clear();
     progress.member_times.clear();
@@ -387,12 +439,14 @@ namespace FourierSSI
     target_unmet(target,
                  "estimated relative error of the " + goal + " " +
                    number(total) + ", of which the harmonic truncation (n <= " +
-                   std::to_string(highest_harmonic(plan.harmonics)) + ") " +
+                   std::to_string(truncated_n_max()) + ") " +
                    number(progress.relative(progress.harmonic_error)) +
                    " and the plateau " + number(progress.relative(plateau)) +
-                   " do not fall with the mesh: list more harmonics "
-                   "(Discretization/Harmonics) or take the path further "
-                   "(Load path/Target)",
+                   " do not fall with the mesh: " +
+                   (grows() ?
+                      "raise Load path/Maximum harmonic" :
+                      "list more harmonics (Discretization/Harmonics)") +
+                   " or take the path further (Load path/Target)",
                  log);
     return true;
   }
@@ -403,10 +457,9 @@ namespace FourierSSI
     // Members: the scene's mesh and element, 2^k cells per segment
     // (build_plastic_member); on member 0 the harmonic truncation (n_max /
     // 4, n_max / 2, n_max); on every member the plateau's error (capacity
-    // runs). The answer is the last member's value.
-    const double target = parameters.discretization.target_accuracy;
-    const bool   growth =
-      parameters.load_path.maximum_harmonic > highest_harmonic(plan.harmonics);
+    // runs). With growth (Load path/Maximum harmonic above the listed)
+    // n_max is the Maximum harmonic. The answer is the last member's value.
+    const double          target = parameters.discretization.target_accuracy;
     Timer                 run_timer;
     double                last_member_time = 0.;
     CoupledTargetProgress progress;
@@ -421,7 +474,7 @@ namespace FourierSSI
         // The truncation on the coarsest mesh: cheap, and the harmonics'
         // share of the error changes little with the mesh
         // (doc/verification/soil-plasticity.md 8b).
-        if (member == 0 && !growth)
+        if (member == 0)
           solve_fewer_harmonics(progress.known, log);
         progress.goal = run.solve(log);
         last_solved   = member;
@@ -439,7 +492,7 @@ namespace FourierSSI
         if (member == 0)
           {
             const CoarsestMember next =
-              coarsest_member_harmonics(progress, growth, log);
+              coarsest_member_harmonics(progress, log);
             if (next == CoarsestMember::stop)
               break;
             if (next == CoarsestMember::solve_again)
@@ -462,7 +515,7 @@ namespace FourierSSI
                          harmonics,
                          harmonic_error_source(plan.harmonics,
                                                std::isfinite(harmonics),
-                                               growth),
+                                               grows()),
                          log);
     run.write_files(log);
   }

@@ -34,6 +34,7 @@ namespace FourierSSI
 
   CoupledSceneRun::CoupledSceneRun(const CoupledRunContext &context)
     : context(context)
+    , solver_parameters(context.parameters)
   {}
 
   CoupledSceneRun::~CoupledSceneRun() = default;
@@ -72,6 +73,19 @@ namespace FourierSSI
     postprocessors.write_files(*solver, context, log);
   }
 
+  void
+  CoupledSceneRun::set_maximum_harmonic(const unsigned int maximum_harmonic)
+  {
+    release();
+    solver_parameters.load_path.maximum_harmonic = maximum_harmonic;
+  }
+
+  const AllParameters &
+  CoupledSceneRun::path_parameters() const
+  {
+    return solver_parameters;
+  }
+
   const CoupledSolver &
   CoupledSceneRun::last_solver() const
   {
@@ -88,8 +102,8 @@ namespace FourierSSI
     log << "assembled and factorized " << context.harmonic_set->size()
         << " harmonics in " << timer.wall_time() << " s" << std::endl;
     log_harmonic_distribution(log);
-    solver = std::make_unique<CoupledSolver>(*context.harmonic_set,
-                                             context.parameters);
+    solver =
+      std::make_unique<CoupledSolver>(*context.harmonic_set, solver_parameters);
     if (on_one_mesh)
       postprocessors.observe(*solver, context);
     run_keeping_converged_steps(*solver,

@@ -137,12 +137,26 @@ namespace FourierSSI
 
     /**
      * Member 0's harmonic truncation error; doubles the harmonics where it
-     * takes more than half the target.
+     * takes more than half the target, or where n_max = 2 cannot show the
+     * truncation of a lateral response.
      */
     CoarsestMember
     coarsest_member_harmonics(CoupledTargetProgress &progress,
-                              const bool             growth,
                               std::ostream          &log);
+
+    /**
+     * The solution adds harmonics: Load path/Maximum harmonic (the run's,
+     * which a target may raise) above the listed ones.
+     */
+    bool
+    grows() const;
+
+    /**
+     * The n_max whose truncation the target estimates: the Maximum
+     * harmonic with growth, else the highest listed harmonic.
+     */
+    unsigned int
+    truncated_n_max() const;
 
     /**
      * The mesh error from the members so far: true if the target is met,
@@ -156,7 +170,8 @@ namespace FourierSSI
     /**
      * The goal values on the current mesh with the harmonics n <= n_max /
      * 4 and n_max / 2 (those that keep n = 1 and differ), into `known`
-     * (n_max -> value; the ones already there are not solved again).
+     * (n_max -> value; the ones already there are not solved again); with
+     * growth, the runs that grow up to n_max / 4 and n_max / 2.
      */
     void
     solve_fewer_harmonics(std::map<unsigned int, double> &known,
@@ -173,13 +188,15 @@ namespace FourierSSI
                  std::ostream      &log);
 
     /**
-     * plan.harmonics to n <= 2 n_max in the same families (true), or one
-     * line in target_not_reached when that would exceed Maximum DoFs.
+     * plan.harmonics to n <= 2 n_max in the same families, with growth
+     * the run's Maximum harmonic to 2 n_max (true), or one line in
+     * target_not_reached when that would exceed Maximum DoFs or the
+     * memory.
      */
     bool
-    double_harmonics(const double  target,
-                     const double  truncation,
-                     std::ostream &log);
+    double_harmonics(const double       target,
+                     const std::string &reason,
+                     std::ostream      &log);
 
     /**
      * The goal's error bar: log line and rows (NaN: not estimated;

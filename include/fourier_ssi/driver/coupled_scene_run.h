@@ -63,6 +63,20 @@ namespace FourierSSI
     void
     release();
 
+    /**
+     * Load path/Maximum harmonic of the paths solved from now on: a target
+     * studies the truncation of grown harmonics with a lower one and
+     * raises it where the truncation is too large
+     * (coupled_mesh_sequence.h). Only the solver sees it; the scene's
+     * parameters keep what the user set.
+     */
+    void
+    set_maximum_harmonic(const unsigned int maximum_harmonic);
+
+    /** The parameters the load path is solved with. */
+    const AllParameters &
+    path_parameters() const;
+
     /** The rows of the last path (results.csv, log lines). */
     void
     add_rows(std::ostream &log);
@@ -111,6 +125,8 @@ namespace FourierSSI
     void
     log_harmonic_distribution(std::ostream &log) const;
 
+    /** The scene's parameters with this run's Maximum harmonic. */
+    AllParameters                  solver_parameters;
     std::unique_ptr<CoupledSolver> solver;
   };
 } // namespace FourierSSI
