@@ -829,14 +829,17 @@ namespace FourierSSI
         const unsigned int p = cell.first_point + q;
         if (softening[p].empty())
           continue;
-        const double *s  = &softening[p][h * H + g];
-        const double  dV = points[p].dV;
+        // S_hg of this point, gathered: its 36 entries lie H^2 apart.
+        std::array<double, 36> s;
+        for (unsigned int k = 0; k < 36; ++k)
+          s[k] = softening[p][k * HH + h * H + g];
+        const double dV = points[p].dV;
         for (unsigned int j = 0; j < n_dofs; ++j)
           {
             StrainVector sb{};
             for (unsigned int a = 0; a < 6; ++a)
               for (unsigned int e = 0; e < 6; ++e)
-                sb[a] += s[(a * 6 + e) * HH] * column_strain[j][q][e];
+                sb[a] += s[a * 6 + e] * column_strain[j][q][e];
             for (unsigned int i = 0; i < n_dofs; ++i)
               {
                 double sum = 0.;

@@ -29,6 +29,68 @@ namespace FourierSSI
       return {{t[0][0], t[1][1], t[2][2], t[0][1], t[1][2], t[0][2]}};
     }
 
+    /** Principal values (s1 >= s2 >= s3) and their directions. */
+    using Principals = std::array<std::pair<double, Tensor<1, 3>>, 3>;
+
+    /**
+     * Jacobi: eigenvalues to round-off (the closed-form cubic of
+     * eigenvalues() loses about 1e-9 relative).
+     */
+    Principals
+    principals_of(const StrainVector &stress)
+    {
+      return eigenvectors(to_tensor(stress),
+                          SymmetricTensorEigenvectorMethod::jacobi);
+    }
+
+    /** The yield function from s1 and s3 (tension positive). */
+    double
+    yield_of_principals(const SoilLaw &law,
+                        const double   s1,
+                        const double   s3,
+                        const double   depth)
+    {
+      if (law.kind == SoilLaw::Kind::tresca)
+        return s1 - s3 - 2. * law.undrained_strength(depth);
+      return (s1 - s3) + (s1 + s3) * std::sin(law.friction) -
+             2. * law.cohesion * std::cos(law.friction);
+    }
+
+    /**
+     * Elastic without the eigenvalues: with the deviator's norm |d| (shears
+     * counted twice), s1 - s3 <= sqrt(2) |d| and the middle deviatoric
+     * value is at most |d| / sqrt(6), so s1 + s3 = 3 p - s2 <= 2 p + |d| /
+     * sqrt(6); the yield function is at most the bound with these, and a
+     * bound below zero (with a margin of 1e-12 for its own rounding) is a
+     * stress the eigenvalues would find elastic too. Most samples of a
+     * plastic run are elastic; this spares them the Jacobi sweeps.
+     */
+    bool
+    certainly_elastic(const SoilLaw      &law,
+                      const StrainVector &stress,
+                      const double        depth)
+    {
+      const double mean = (stress[StrainIndex::rr] + stress[StrainIndex::zz] +
+                           stress[StrainIndex::tt]) /
+                          3.;
+      double deviator = 0.;
+      for (const unsigned int c :
+           {StrainIndex::rr, StrainIndex::zz, StrainIndex::tt})
+        deviator += (stress[c] - mean) * (stress[c] - mean);
+      for (const unsigned int c :
+           {StrainIndex::rz, StrainIndex::zt, StrainIndex::rt})
+        deviator += 2. * stress[c] * stress[c];
+      deviator                 = std::sqrt(deviator);
+      const double spread      = std::sqrt(2.) * deviator;
+      const double outer_sum   = 2. * mean + deviator / std::sqrt(6.);
+      const double margin      = 1e-12 * (spread + std::abs(outer_sum));
+      const double upper_bound = law.kind == SoilLaw::Kind::tresca ?
+                                   spread - 2. * law.undrained_strength(depth) :
+                                   spread + outer_sum * std::sin(law.friction) -
+                                     2. * law.cohesion * std::cos(law.friction);
+      return upper_bound + margin < 0.;
+    }
+
     /**
      * One plane of the yield surface in principal space, f = n . s - k, with
      * the gradient m of its plastic potential.
@@ -157,17 +219,15 @@ namespace FourierSSI
      * Tresca is Mohr-Coulomb with phi = psi = 0 and 2 c cos phi = 2 s_u.
      */
     PrincipalReturn
-    principal_return(const StrainVector &trial,
-                     const double        sin_friction,
-                     const double        sin_dilation,
-                     const double        strength,
-                     const double        apex,
-                     const bool          has_apex,
-                     const double        G,
-                     const double        K)
+    principal_return(const Principals &eigen,
+                     const double      sin_friction,
+                     const double      sin_dilation,
+                     const double      strength,
+                     const double      apex,
+                     const bool        has_apex,
+                     const double      G,
+                     const double      K)
     {
-      const auto      eigen = eigenvectors(to_tensor(trial),
-                                      SymmetricTensorEigenvectorMethod::jacobi);
       PrincipalReturn r;
       for (unsigned int i = 0; i < 3; ++i)
         {
@@ -320,15 +380,8 @@ namespace FourierSSI
   SoilReturnMapping::yield_function(const StrainVector &stress,
                                     const double        depth) const
   {
-    // Jacobi: eigenvalues to round-off (the closed-form cubic of
-    // eigenvalues() loses about 1e-9 relative), the same as return_map.
-    const auto eigen =
-      eigenvectors(to_tensor(stress), SymmetricTensorEigenvectorMethod::jacobi);
-    const double s1 = eigen[0].first, s3 = eigen[2].first;
-    if (law.kind == SoilLaw::Kind::tresca)
-      return s1 - s3 - 2. * law.undrained_strength(depth);
-    return (s1 - s3) + (s1 + s3) * std::sin(law.friction) -
-           2. * law.cohesion * std::cos(law.friction);
+    const Principals eigen = principals_of(stress);
+    return yield_of_principals(law, eigen[0].first, eigen[2].first, depth);
   }
 
   SoilReturn
@@ -350,14 +403,21 @@ namespace FourierSSI
   {
     SoilReturn result;
     result.stress = trial;
-    if (yield_function(trial, depth) <= 0.)
+    if (certainly_elastic(law, trial, depth))
+      {
+        elastic_tangent(G, K, tangent);
+        return result;
+      }
+    // One decomposition for the yield test and the return.
+    const Principals eigen = principals_of(trial);
+    if (yield_of_principals(law, eigen[0].first, eigen[2].first, depth) <= 0.)
       {
         elastic_tangent(G, K, tangent);
         return result;
       }
     const bool            tresca = law.kind == SoilLaw::Kind::tresca;
     const PrincipalReturn r =
-      principal_return(trial,
+      principal_return(eigen,
                        tresca ? 0. : std::sin(law.friction),
                        tresca ? 0. : std::sin(law.dilation),
                        tresca ? 2. * law.undrained_strength(depth) :
