@@ -205,6 +205,78 @@ main()
                      0);
     }
 
+  // The return skips the eigenvalues where a bound on the deviator shows a
+  // trial elastic (s1 - s3 <= sqrt(2) |dev|, equal for a deviator (a, 0,
+  // -a)): trials 1e-9 inside and outside the surface, in random principal
+  // frames, with the middle value at zero (the bound tight) or at random,
+  // must be returned exactly when the yield function is positive.
+  std::cout << "Trials 1e-9 inside and outside the surface" << std::endl;
+  std::normal_distribution<double> normal(0., 1.);
+  for (unsigned int l = 0; l < 3; ++l)
+    {
+      unsigned int misjudged = 0, n_trials = 0;
+      for (unsigned int trial_index = 0; trial_index < 2000; ++trial_index)
+        {
+          // A random rotation: a normalised quaternion (w, x, y, z).
+          double q[4], norm = 0.;
+          for (double &c : q)
+            {
+              c = normal(rng);
+              norm += c * c;
+            }
+          for (double &c : q)
+            c /= std::sqrt(norm);
+          const double w = q[0], x = q[1], y = q[2], z = q[3];
+          const double R[3][3] = {
+            {1 - 2 * (y * y + z * z), 2 * (x * y - w * z), 2 * (x * z + w * y)},
+            {2 * (x * y + w * z), 1 - 2 * (x * x + z * z), 2 * (y * z - w * x)},
+            {2 * (x * z - w * y),
+             2 * (y * z + w * x),
+             1 - 2 * (x * x + y * y)}};
+          // Principal deviator d1 >= d2 >= d3 (sum 0) and a mean stress.
+          const double a      = 1. + std::abs(u(rng)) / 100.;
+          const double middle = trial_index % 2 == 0 ? 0. : a * u(rng) / 600.;
+          const double d[3]   = {a, middle, -a - middle};
+          const double mean   = u(rng) / 10.;
+          const double sin_phi =
+            l == 0 ? 0. : std::sin((l == 1 ? 30. : 25.) * M_PI / 180.);
+          const double strength =
+            l == 0 ? 100. :
+                     2. * (l == 1 ? 10. : 5.) *
+                       std::cos((l == 1 ? 30. : 25.) * M_PI / 180.);
+          // The deviator's scale that puts f at relative +-1e-9.
+          const double slope = (d[0] - d[2]) + (d[0] + d[2]) * sin_phi;
+          const double room  = strength - 2. * mean * sin_phi;
+          if (slope <= 0. || room <= 0.)
+            continue;
+          for (const double side : {-1e-9, 1e-9})
+            {
+              const double lambda  = room * (1. + side) / slope;
+              double       t[3][3] = {};
+              for (unsigned int i = 0; i < 3; ++i)
+                for (unsigned int j = 0; j < 3; ++j)
+                  for (unsigned int k = 0; k < 3; ++k)
+                    t[i][j] += R[i][k] * lambda * d[k] * R[j][k];
+              const StrainVector trial = {{t[0][0] + mean,
+                                           t[1][1] + mean,
+                                           t[2][2] + mean,
+                                           t[0][1],
+                                           t[1][2],
+                                           t[0][2]}};
+              const bool       yields  = laws[l].yield_function(trial, 0.) > 0.;
+              const SoilReturn r       = laws[l].return_map(trial, G, K, 0.);
+              misjudged += yields != (r.state != SoilState::elastic);
+              ++n_trials;
+            }
+        }
+      check::equal("law " + std::to_string(l) + ": of " +
+                     std::to_string(n_trials) +
+                     " trials near the surface, returned against the yield "
+                     "function's sign",
+                   misjudged,
+                   0);
+    }
+
   std::cout << "Rejected input" << std::endl;
   const std::pair<std::string, std::string> bad[] = {
     {"0: tresca, su=0", "su = 0 kPa must be > 0"},
