@@ -283,14 +283,14 @@ namespace FourierSSI
     result.n_elastic           = 0;
     result.n_plastic           = 0;
     result.largest_yield_value = -std::numeric_limits<double>::max();
-    // The points on the harmonic set's threads (every (point, theta) is
+    // The points on every core of the set (every (point, theta) is
     // independent; the counts and the largest f do not depend on the order:
     // the same bits on any number of threads).
     std::mutex merge;
     for_each_range(
       points.size(),
       16,
-      set.n_threads(),
+      set.n_point_threads(),
       [&](const unsigned int first, const unsigned int last) {
         unsigned int n_elastic = 0, n_plastic = 0;
         double       largest = -std::numeric_limits<double>::max();
@@ -701,7 +701,7 @@ namespace FourierSSI
     for_each_range(
       points.size(),
       16,
-      set.n_threads(),
+      set.n_point_threads(),
       [&](const unsigned int first, const unsigned int last) {
         std::array<double, 36> c;
         HarmonicPairIntegral   integral(harmonics, sampling, 6, 4);

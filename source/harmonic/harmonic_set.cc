@@ -100,6 +100,7 @@ namespace FourierSSI
       uses_distributed_solve(parameters.solver, communicator);
     for (const auto &problem : problems)
       problem->set_assembly_threads(distributed ? 1 : share / threads);
+    point_threads = distributed ? 1 : std::max(threads, share);
   }
 
   void

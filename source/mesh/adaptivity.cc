@@ -6,6 +6,7 @@
 #include <fourier_ssi/mesh/adaptivity.h>
 #include <fourier_ssi/mesh/coordinate_tolerance.h>
 #include <map>
+#include <sstream>
 
 namespace FourierSSI
 {
@@ -159,9 +160,29 @@ namespace FourierSSI
     for (const auto &[box, levels] : parameters.box_refinements)
       for (unsigned int pass = 0; pass < levels; ++pass)
         {
+          bool touched = false;
           for (const auto &cell : triangulation.active_cell_iterators())
             if (box.point_inside(cell->center()))
-              cell->set_refine_flag();
+              {
+                cell->set_refine_flag();
+                touched = true;
+              }
+          // A box off the mesh, or smaller than the cells it lies in,
+          // would refine nothing: say so rather than run the coarse mesh.
+          if (!touched)
+            {
+              const auto        &corners = box.get_boundary_points();
+              std::ostringstream where;
+              where << "r = " << corners.first[0] << " .. " << corners.second[0]
+                    << ", z = " << corners.first[1] << " .. "
+                    << corners.second[1] << " m";
+              AssertThrow(false,
+                          ExcMessage("Adaptivity/Box refinement: no cell "
+                                     "centre lies in the box " +
+                                     where.str() +
+                                     ", so it refines nothing; move it "
+                                     "onto the mesh or enlarge it"));
+            }
           execute_refinement_keeping_interface_twins(triangulation,
                                                      interface_ids);
         }

@@ -113,6 +113,18 @@ namespace FourierSSI
     }
 
     /**
+     * Threads for loops over independent points (the soil's return
+     * mapping and softening): every core the set may use, also where it
+     * has fewer harmonics than cores (a lone n = 0); 1 for a distributed
+     * solve.
+     */
+    unsigned int
+    n_point_threads() const
+    {
+      return point_threads;
+    }
+
+    /**
      * Run task(i) for every harmonic, up to n_threads() at once. A task
      * that throws does not stop the others; afterwards the first failure
      * (in harmonic order) is rethrown as one line naming its harmonic.
@@ -244,6 +256,7 @@ namespace FourierSSI
     std::vector<Harmonic>                         harmonics;
     std::vector<std::shared_ptr<HarmonicProblem>> problems;
     unsigned int                                  threads;
+    unsigned int                                  point_threads = 1;
     /** distribute_over(): the ranks, their number, this rank. */
     MPI_Comm     ranks   = MPI_COMM_SELF;
     unsigned int n_ranks = 1;
