@@ -15,18 +15,15 @@ last step solved, the capacity H (kN) and N_p = H / (s_u d L) = H / 100 kN.
 Writes results.md beside this script unless --no-write, with the load
 average at the start and at the end.
 """
-import argparse
-import csv
-import datetime
 import os
-import shutil
 import statistics
-import subprocess
 import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.dirname(HERE))
+import side_by_side  # noqa: E402
 SCENE = os.path.join(ROOT, "prm", "pile-capacity.prm")
 
 
@@ -73,43 +70,20 @@ kernel zeroing fresh pages for its workspace)."""
 
 
 def run_case(exe, entries, work):
-    shutil.rmtree(work, ignore_errors=True)
-    os.makedirs(work)
-    text = open(SCENE).read() + entries + """
-subsection Output
-  set Directory = out
-end
-"""
-    open(os.path.join(work, "case.prm"), "w").write(text)
-    result = subprocess.run(["/usr/bin/time", "-f", "%e %M", exe,
-                             "case.prm"], cwd=work, capture_output=True,
-                            text=True)
-    wall, rss = result.stderr.strip().splitlines()[-1].split()
-    if result.returncode != 0:
-        return {"failed": result.stderr.strip().splitlines()[-2]}
-    capacity, harmonics = None, None
-    with open(os.path.join(work, "out", "results.csv")) as f:
-        for row in csv.DictReader(f):
-            if row["quantity"] == "capacity_H":
-                capacity = float(row["value"])
-            if row["quantity"] == "step_harmonics":
-                harmonics = int(float(row["value"]))
-    if harmonics is None:  # listed: every harmonic of the scene
-        harmonics = entries.count(",") + 1
-    return {"wall": float(wall), "rss_gb": float(rss) / 1024. ** 2,
-            "capacity": capacity, "harmonics": harmonics}
+    run = side_by_side.timed_run(exe, open(SCENE).read() + entries, work)
+    if "failed" in run:
+        return run
+    rows = run.pop("rows")
+    run["capacity"] = rows["capacity_H"][-1]
+    # Grown: the last step's harmonics; listed: every harmonic of the scene.
+    run["harmonics"] = (int(rows["step_harmonics"][-1])
+                        if "step_harmonics" in rows
+                        else entries.count(",") + 1)
+    return run
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("new")
-    parser.add_argument("old")
-    parser.add_argument("--cases", default=",".join(CASES))
-    parser.add_argument("--repeats", type=int, default=1)
-    parser.add_argument("--new-commit", default="unknown")
-    parser.add_argument("--old-commit", default="unknown")
-    parser.add_argument("--no-write", action="store_true")
-    args = parser.parse_args()
+    args = side_by_side.arguments(CASES)
     load_start = os.getloadavg()[0]
     lines = []
     for name in args.cases.split(","):
@@ -135,24 +109,16 @@ def main():
         if len(walls) == 2:
             lines.append("| %s | time ratio new / old | %.2f | | | | |"
                          % (name, walls["new"] / walls["old"]))
-    load_end = os.getloadavg()[0]
     table = ("| harmonics | build | wall s (median of %d) | peak GB | "
              "harmonics solved | H [kN] | N_p |\n|---|---|---|---|---|---|"
              "---|\n" % args.repeats) + "\n".join(lines)
     print(table)
     if not args.no_write:
-        with open(os.path.join(HERE, "results.md"), "w") as f:
-            f.write("# Harmonics with plastic soil: listed against grown\n\n"
-                    "Written by `run.py` (%s): new %s, old %s; the pile "
-                    "slice of prm/pile-capacity.prm (26 cells, 6 steps to "
-                    "0.03 m), one run at a time, the two builds alternating. "
-                    "Load average (1 min) %.1f at the start, %.1f at the "
-                    "end, on 2 cores: the times compare within this table "
-                    "only. The exact plane-strain N_p is 9.20117; the "
-                    "difference is this mesh's.\n\n%s\n\n%s\n"
-                    % (datetime.date.today(), args.new_commit,
-                       args.old_commit, load_start, load_end, table,
-                       READING))
+        side_by_side.write_results(
+            HERE, "Harmonics with plastic soil: listed against grown",
+            "the pile slice of prm/pile-capacity.prm (26 cells, 6 steps to "
+            "0.03 m); the exact plane-strain N_p is 9.20117, the "
+            "difference is this mesh's.", args, load_start, table, READING)
 
 
 if __name__ == "__main__":

@@ -21,19 +21,15 @@ reference. Writes results.md beside this script unless --no-write, with
 the machine's load average at the start and at the end (the times are only
 comparable within one table).
 """
-import argparse
-import csv
-import datetime
 import os
-import re
-import shutil
 import statistics
-import subprocess
 import sys
 import tempfile
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
+sys.path.insert(0, os.path.dirname(HERE))
+import side_by_side  # noqa: E402
 
 ADAPTIVE = """
 subsection Adaptivity
@@ -87,27 +83,15 @@ subsection Discretization
   set Target accuracy = %g
 end
 subsection Output
-  set Directory = out
   set Write vtu = false
 end
 """ % target
     if new_entries is not None:
         text += ADAPTIVE + new_entries
-    shutil.rmtree(work, ignore_errors=True)
-    os.makedirs(work)
-    open(os.path.join(work, "case.prm"), "w").write(text)
-    result = subprocess.run(["/usr/bin/time", "-f", "%e %M", exe,
-                             "case.prm"], cwd=work, capture_output=True,
-                            text=True)
-    wall, rss = result.stderr.strip().splitlines()[-1].split()
-    if result.returncode != 0:
-        return {"failed": result.stderr.strip().splitlines()[-2]}
-    rows = {}
-    with open(os.path.join(work, "out", "results.csv")) as f:
-        for row in csv.DictReader(f):
-            rows[row["quantity"]] = float(row["value"])
-    return {"wall": float(wall), "rss_gb": float(rss) / 1024. ** 2,
-            "rows": rows}
+    run = side_by_side.timed_run(exe, text, work)
+    if "rows" in run:
+        run["rows"] = {name: values[-1] for name, values in run["rows"].items()}
+    return run
 
 
 def summarise(runs, row, scale, reference):
@@ -124,15 +108,7 @@ def summarise(runs, row, scale, reference):
 
 
 def main():
-    parser = argparse.ArgumentParser()
-    parser.add_argument("new")
-    parser.add_argument("old")
-    parser.add_argument("--cases", default=",".join(CASES))
-    parser.add_argument("--repeats", type=int, default=1)
-    parser.add_argument("--new-commit", default="unknown")
-    parser.add_argument("--old-commit", default="unknown")
-    parser.add_argument("--no-write", action="store_true")
-    args = parser.parse_args()
+    args = side_by_side.arguments(CASES)
     load_start = os.getloadavg()[0]
     lines = []
     for name in args.cases.split(","):
@@ -165,23 +141,17 @@ def main():
                          % (name, new["wall"] / old["wall"]))
         lines.append("| %s | reference | | | %.4f | | | | %s |"
                      % (name, reference, source))
-    load_end = os.getloadavg()[0]
     table = ("| case | members | wall s (median of %d) | peak GB | "
              "capacity | bar (rel) | true error (rel) | effectivity | "
              "bar holds the reference |\n|---|---|---|---|---|---|---|---|"
              "---|\n" % args.repeats) + "\n".join(lines)
     print(table)
     if not args.no_write:
-        with open(os.path.join(HERE, "results.md"), "w") as f:
-            f.write("# Nonlinear accuracy: adaptive against uniform members"
-                    "\n\nWritten by `run.py` (%s): new %s (kelly), old %s "
-                    "(uniform); one run at a time, the two builds "
-                    "alternating. Load average (1 min) %.1f at the start, "
-                    "%.1f at the end, on 2 cores: the times compare within "
-                    "this table only.\n\n%s\n\n%s\n"
-                    % (datetime.date.today(), args.new_commit,
-                       args.old_commit, load_start, load_end, table,
-                       NOT_YET))
+        side_by_side.write_results(
+            HERE, "Nonlinear accuracy: adaptive against uniform members",
+            "new with kelly members (and its cases' own entries), old with "
+            "the uniform members of the scenes as shipped.", args,
+            load_start, table, NOT_YET)
 
 
 if __name__ == "__main__":
