@@ -52,10 +52,18 @@ end
             "rows": rows}
 
 
-def write_results(folder, title, what, args, load_start, table, reading):
-    """results.md in `folder`: the title, which builds and how they ran,
-    the load average at the start and now, the table and what to read in
-    it."""
+def report(folder, columns, lines, title, what, args, load_start,
+           reading):
+    """The table of `columns` (the wall time's header says of how many
+    runs it is the median) and `lines`, printed, and unless --no-write
+    results.md in `folder`: the title, which builds and how they ran, the
+    load average at the start and now, the table and what to read in it."""
+    columns = [c % args.repeats if "%d" in c else c for c in columns]
+    table = ("| " + " | ".join(columns) + " |\n" +
+             "|---" * len(columns) + "|\n" + "\n".join(lines))
+    print(table)
+    if args.no_write:
+        return
     with open(os.path.join(folder, "results.md"), "w") as f:
         f.write("# %s\n\nWritten by `run.py` (%s): new %s, old %s; %s One "
                 "run at a time, the two builds alternating. Load average "

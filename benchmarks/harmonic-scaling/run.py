@@ -109,16 +109,13 @@ def main():
         if len(walls) == 2:
             lines.append("| %s | time ratio new / old | %.2f | | | | |"
                          % (name, walls["new"] / walls["old"]))
-    table = ("| harmonics | build | wall s (median of %d) | peak GB | "
-             "harmonics solved | H [kN] | N_p |\n|---|---|---|---|---|---|"
-             "---|\n" % args.repeats) + "\n".join(lines)
-    print(table)
-    if not args.no_write:
-        side_by_side.write_results(
-            HERE, "Harmonics with plastic soil: listed against grown",
-            "the pile slice of prm/pile-capacity.prm (26 cells, 6 steps to "
-            "0.03 m); the exact plane-strain N_p is 9.20117, the "
-            "difference is this mesh's.", args, load_start, table, READING)
+    side_by_side.report(
+        HERE, ["harmonics", "build", "wall s (median of %d)", "peak GB",
+               "harmonics solved", "H [kN]", "N_p"], lines,
+        "Harmonics with plastic soil: listed against grown",
+        "the pile slice of prm/pile-capacity.prm (26 cells, 6 steps to "
+        "0.03 m); the exact plane-strain N_p is 9.20117, the difference is "
+        "this mesh's.", args, load_start, READING)
 
 
 if __name__ == "__main__":

@@ -141,17 +141,14 @@ def main():
                          % (name, new["wall"] / old["wall"]))
         lines.append("| %s | reference | | | %.4f | | | | %s |"
                      % (name, reference, source))
-    table = ("| case | members | wall s (median of %d) | peak GB | "
-             "capacity | bar (rel) | true error (rel) | effectivity | "
-             "bar holds the reference |\n|---|---|---|---|---|---|---|---|"
-             "---|\n" % args.repeats) + "\n".join(lines)
-    print(table)
-    if not args.no_write:
-        side_by_side.write_results(
-            HERE, "Nonlinear accuracy: adaptive against uniform members",
-            "new with kelly members (and its cases' own entries), old with "
-            "the uniform members of the scenes as shipped.", args,
-            load_start, table, NOT_YET)
+    side_by_side.report(
+        HERE, ["case", "members", "wall s (median of %d)", "peak GB",
+               "capacity", "bar (rel)", "true error (rel)", "effectivity",
+               "bar holds the reference"], lines,
+        "Nonlinear accuracy: adaptive against uniform members",
+        "new with kelly members (and its cases' own entries), old with the "
+        "uniform members of the scenes as shipped.", args, load_start,
+        NOT_YET)
 
 
 if __name__ == "__main__":
