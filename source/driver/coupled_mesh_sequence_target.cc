@@ -32,7 +32,9 @@ namespace FourierSSI
     constexpr double harmonic_doubling_ratio = 0.5;
 
     /**
-     * n_max = 2 with n = 1 in the set (a lateral response): n <= 1 and
+     * n_max = 2 with n = 1 among the listed harmonics (a lateral
+     * response; n_max the highest listed, or the Maximum harmonic of the
+     * harmonics grown from them): n <= 1 and
      * n <= 2 both lack n = 3, which carries the first correction of a
      * lateral plastic response (odd in the lateral motion: on the pile
      * slice of prm/pile-capacity.prm n <= 1 and n <= 2 differ by 0.45 %
@@ -40,9 +42,10 @@ namespace FourierSSI
      * their difference is no estimate of the truncation.
      */
     bool
-    lateral_truncation_unseen(const std::vector<Harmonic> &harmonics)
+    lateral_truncation_unseen(const std::vector<Harmonic> &harmonics,
+                              const unsigned int           n_max)
     {
-      return highest_harmonic(harmonics) == 2 &&
+      return n_max == 2 &&
              std::any_of(harmonics.begin(),
                          harmonics.end(),
                          [](const Harmonic &h) { return h.n == 1; });
@@ -55,11 +58,11 @@ namespace FourierSSI
      * they cannot see the truncation (lateral_truncation_unseen()).
      */
     std::vector<unsigned int>
-    truncations(const std::vector<Harmonic> &harmonics)
+    truncations(const std::vector<Harmonic> &harmonics,
+                const unsigned int           n_max)
     {
-      const unsigned int        n_max = highest_harmonic(harmonics);
       std::vector<unsigned int> result;
-      if (lateral_truncation_unseen(harmonics))
+      if (lateral_truncation_unseen(harmonics, n_max))
         return result;
       for (const unsigned int n : {n_max / 4, n_max / 2})
         if (n >= 1 && n < n_max && (result.empty() || result.back() != n))
@@ -122,7 +125,7 @@ namespace FourierSSI
       if (growth)
         return "NOT estimated (Maximum harmonic = 2 or less cannot be "
                "halved; set 4 or more)";
-      if (lateral_truncation_unseen(harmonics))
+      if (lateral_truncation_unseen(harmonics, highest_harmonic(harmonics)))
         return "NOT estimated (n_max = 2: n <= 1 and n <= 2 both lack n = 3, "
                "the first correction of a lateral response; list n <= 3 or "
                "more)";
@@ -163,7 +166,7 @@ namespace FourierSSI
     const std::vector<Harmonic> all     = plan.harmonics;
     const unsigned int          maximum = truncated_n_max();
     const bool                  growth  = grows();
-    for (const unsigned int n_max : truncations(harmonics_up_to(all, maximum)))
+    for (const unsigned int n_max : truncations(all, maximum))
       {
         if (known.count(n_max) > 0)
           continue; // solved before the last doubling
@@ -403,7 +406,7 @@ namespace FourierSSI
                  number(progress.relative(progress.harmonic_error)) +
                  ", more than half of it";
       }
-    else if (lateral_truncation_unseen(harmonics_up_to(plan.harmonics, n_max)))
+    else if (lateral_truncation_unseen(plan.harmonics, n_max))
       reason = "n <= 1 and n <= 2 cannot show the truncation of a lateral "
                "response (n = 3 carries its first correction)";
     else
