@@ -1,6 +1,7 @@
 #include <cmath>
 #include <deal.II/base/symmetric_tensor.h>
 #include <fourier_ssi/coupled/soil_law.h>
+#include <optional>
 
 namespace FourierSSI
 {
@@ -80,15 +81,17 @@ namespace FourierSSI
       for (const unsigned int c :
            {StrainIndex::rz, StrainIndex::zt, StrainIndex::rt})
         deviator += 2. * stress[c] * stress[c];
-      deviator                 = std::sqrt(deviator);
-      const double spread      = std::sqrt(2.) * deviator;
-      const double outer_sum   = 2. * mean + deviator / std::sqrt(6.);
-      const double margin      = 1e-12 * (spread + std::abs(outer_sum));
-      const double upper_bound = law.kind == SoilLaw::Kind::tresca ?
-                                   spread - 2. * law.undrained_strength(depth) :
-                                   spread + outer_sum * std::sin(law.friction) -
-                                     2. * law.cohesion * std::cos(law.friction);
-      return upper_bound + margin < 0.;
+      deviator               = std::sqrt(deviator);
+      const double spread    = std::sqrt(2.) * deviator;
+      const double outer_sum = 2. * mean + deviator / std::sqrt(6.);
+      const double margin    = 1e-12 * (spread + std::abs(outer_sum));
+      // The yield function of an s1, s3 with these difference and sum.
+      return yield_of_principals(law,
+                                 (outer_sum + spread) / 2.,
+                                 (outer_sum - spread) / 2.,
+                                 depth) +
+               margin <
+             0.;
     }
 
     /**
@@ -384,6 +387,26 @@ namespace FourierSSI
     return yield_of_principals(law, eigen[0].first, eigen[2].first, depth);
   }
 
+  namespace
+  {
+    /**
+     * The principal decomposition of a trial that yields; none for an
+     * elastic one (the deviator's bound first, then the eigenvalues).
+     */
+    std::optional<Principals>
+    yielding_principals(const SoilLaw      &law,
+                        const StrainVector &trial,
+                        const double        depth)
+    {
+      if (certainly_elastic(law, trial, depth))
+        return std::nullopt;
+      Principals eigen = principals_of(trial);
+      if (yield_of_principals(law, eigen[0].first, eigen[2].first, depth) <= 0.)
+        return std::nullopt;
+      return eigen;
+    }
+  } // namespace
+
   SoilReturn
   SoilReturnMapping::return_map(const StrainVector &trial,
                                 const double        G,
@@ -403,21 +426,17 @@ namespace FourierSSI
   {
     SoilReturn result;
     result.stress = trial;
-    if (certainly_elastic(law, trial, depth))
-      {
-        elastic_tangent(G, K, tangent);
-        return result;
-      }
     // One decomposition for the yield test and the return.
-    const Principals eigen = principals_of(trial);
-    if (yield_of_principals(law, eigen[0].first, eigen[2].first, depth) <= 0.)
+    const std::optional<Principals> eigen =
+      yielding_principals(law, trial, depth);
+    if (!eigen)
       {
         elastic_tangent(G, K, tangent);
         return result;
       }
     const bool            tresca = law.kind == SoilLaw::Kind::tresca;
     const PrincipalReturn r =
-      principal_return(eigen,
+      principal_return(*eigen,
                        tresca ? 0. : std::sin(law.friction),
                        tresca ? 0. : std::sin(law.dilation),
                        tresca ? 2. * law.undrained_strength(depth) :

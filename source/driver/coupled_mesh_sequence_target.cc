@@ -144,14 +144,14 @@ namespace FourierSSI
   bool
   CoupledMeshSequence::grows() const
   {
-    return run.path_parameters().load_path.maximum_harmonic >
+    return run.get_solver_parameters().load_path.maximum_harmonic >
            highest_harmonic(plan.harmonics);
   }
 
   unsigned int
   CoupledMeshSequence::truncated_n_max() const
   {
-    return grows() ? run.path_parameters().load_path.maximum_harmonic :
+    return grows() ? run.get_solver_parameters().load_path.maximum_harmonic :
                      highest_harmonic(plan.harmonics);
   }
 
@@ -163,10 +163,16 @@ namespace FourierSSI
     // With growth the truncation is the Maximum harmonic's: the runs with
     // n <= n_max / 4 and n_max / 2 grow up to those, as the answer's path
     // grows up to n_max.
-    const std::vector<Harmonic> all     = plan.harmonics;
-    const unsigned int          maximum = truncated_n_max();
-    const bool                  growth  = grows();
-    for (const unsigned int n_max : truncations(all, maximum))
+    const std::vector<Harmonic> all = plan.harmonics;
+    const unsigned int          setting =
+      run.get_solver_parameters().load_path.maximum_harmonic;
+    const bool growth = grows();
+    // The answer's harmonics back (the solver released with them).
+    const auto restore = [&]() {
+      plan.harmonics = all;
+      run.set_maximum_harmonic(setting);
+    };
+    for (const unsigned int n_max : truncations(all, truncated_n_max()))
       {
         if (known.count(n_max) > 0)
           continue; // solved before the last doubling
@@ -174,8 +180,7 @@ namespace FourierSSI
         for (const Harmonic &h : all)
           if (h.n <= n_max)
             plan.harmonics.push_back(h);
-        if (growth)
-          run.set_maximum_harmonic(n_max);
+        run.set_maximum_harmonic(growth ? n_max : setting);
         // Its own log: the study's curves are not the answer's.
         std::ostringstream study_log;
         CoupledGoal        goal;
@@ -186,9 +191,7 @@ namespace FourierSSI
         catch (const std::exception &e)
           {
             // Say which run failed: the answer's harmonics are not these.
-            plan.harmonics = all;
-            if (growth)
-              run.set_maximum_harmonic(maximum);
+            restore();
             AssertThrow(false,
                         ExcMessage(
                           one_line_message(e) +
@@ -196,11 +199,8 @@ namespace FourierSSI
                           " that Discretization/Target accuracy "
                           "makes for the harmonic truncation)"));
           }
-        known[n_max]   = goal.value;
-        plan.harmonics = all;
-        run.release();
-        if (growth)
-          run.set_maximum_harmonic(maximum);
+        known[n_max] = goal.value;
+        restore();
         harmonic_set.reset();
         log << "  harmonics n <= " << n_max << (growth ? " (grown)" : "")
             << ": " << goal.name << " = " << goal.value << " " << goal.unit
@@ -251,16 +251,6 @@ namespace FourierSSI
     }
   } // namespace
 
-  namespace
-  {
-    /** n = 0 .. 2 n_max in each family of `harmonics`. */
-    std::vector<Harmonic>
-    doubled_harmonics(const std::vector<Harmonic> &harmonics)
-    {
-      return harmonics_up_to(harmonics, 2 * highest_harmonic(harmonics));
-    }
-  } // namespace
-
   double
   CoupledMeshSequence::coupled_dofs() const
   {
@@ -294,12 +284,11 @@ namespace FourierSSI
     // coupled tangent grow with the harmonics, faster than their DoFs.
     // With growth the Maximum harmonic is doubled, the listed ones kept;
     // the estimate counts every harmonic it could add.
-    AllParameters doubled_parameters = run.path_parameters();
+    AllParameters doubled_parameters = run.get_solver_parameters();
     ScenePlan     doubled_plan       = plan;
     if (growth)
       doubled_parameters.load_path.maximum_harmonic = 2 * n_max;
-    doubled_plan.harmonics =
-      doubled_harmonics(harmonics_up_to(plan.harmonics, n_max));
+    doubled_plan.harmonics      = harmonics_up_to(plan.harmonics, 2 * n_max);
     const std::string shortfall = memory_shortfall(
       estimate_run_memory(doubled_parameters, triangulation, doubled_plan),
       available_memory_on_all_ranks(communicator));
@@ -364,9 +353,9 @@ namespace FourierSSI
         target_unmet(target, why.str(), log);
         return false;
       }
-    const std::string shortfall =
-      memory_shortfall(estimate_run_memory(run.path_parameters(), next, plan),
-                       available_memory_on_all_ranks(communicator));
+    const std::string shortfall = memory_shortfall(
+      estimate_run_memory(run.get_solver_parameters(), next, plan),
+      available_memory_on_all_ranks(communicator));
     if (!shortfall.empty())
       {
         target_unmet(target,

@@ -81,7 +81,7 @@ namespace FourierSSI
   }
 
   const AllParameters &
-  CoupledSceneRun::path_parameters() const
+  CoupledSceneRun::get_solver_parameters() const
   {
     return solver_parameters;
   }

@@ -152,6 +152,21 @@ namespace FourierSSI
       }
   }
 
+  namespace
+  {
+    /** "r = r0 .. r1, z = z0 .. z1 m" */
+    std::string
+    extent_of(const BoundingBox<2> &box)
+    {
+      const auto        &corners = box.get_boundary_points();
+      std::ostringstream text;
+      text << "r = " << corners.first[0] << " .. " << corners.second[0]
+           << ", z = " << corners.first[1] << " .. " << corners.second[1]
+           << " m";
+      return text.str();
+    }
+  } // namespace
+
   void
   refine_a_priori(Triangulation<2>                   &triangulation,
                   const AdaptivityParameters         &parameters,
@@ -169,20 +184,12 @@ namespace FourierSSI
               }
           // A box off the mesh, or smaller than the cells it lies in,
           // would refine nothing: say so rather than run the coarse mesh.
-          if (!touched)
-            {
-              const auto        &corners = box.get_boundary_points();
-              std::ostringstream where;
-              where << "r = " << corners.first[0] << " .. " << corners.second[0]
-                    << ", z = " << corners.first[1] << " .. "
-                    << corners.second[1] << " m";
-              AssertThrow(false,
-                          ExcMessage("Adaptivity/Box refinement: no cell "
-                                     "centre lies in the box " +
-                                     where.str() +
-                                     ", so it refines nothing; move it "
-                                     "onto the mesh or enlarge it"));
-            }
+          AssertThrow(touched,
+                      ExcMessage("Adaptivity/Box refinement: no cell centre "
+                                 "lies in the box " +
+                                 extent_of(box) +
+                                 ", so it refines nothing; move it onto the "
+                                 "mesh or enlarge it"));
           execute_refinement_keeping_interface_twins(triangulation,
                                                      interface_ids);
         }

@@ -75,7 +75,7 @@ namespace FourierSSI
 
     /** The parameters the load path is solved with. */
     const AllParameters &
-    path_parameters() const;
+    get_solver_parameters() const;
 
     /** The rows of the last path (results.csv, log lines). */
     void
