@@ -50,22 +50,42 @@ subsection Load path
 end
 """
 
-# name: (scene, target, capacity row, normalisation of the row, reference of
-# the normalised capacity, where the reference comes from, the new build's
-# own entries)
+# The footing twisted instead of pushed down (doc/soil-plasticity.md 5b),
+# on both builds: the antisymmetric n = 0, the torque controlled by the
+# twist.
+TORSION = """
+subsection Discretization
+  set Family = antisymmetric
+end
+subsection Rigid foundation
+  set Vertical force = 0
+  set Torque         = 1
+  set Capacity normalisation = T/(a^3 s_u) = 10
+end
+subsection Load path
+  set Controlled motion = twist
+  set Target            = 0.02
+end
+"""
+# name: (scene, its entries on both builds, target, capacity row,
+# normalisation of the row, reference of the normalised capacity, where
+# the reference comes from, the new build's own entries)
 CASES = {
     "footing-capacity N_c 2e-2": (
-        "prm/footing-capacity.prm", 2e-2, "capacity_V", -1. / 31.4159265,
-        6.05, "Eason & Shield (1960), rough", ""),
+        "prm/footing-capacity.prm", "", 2e-2, "capacity_V",
+        -1. / 31.4159265, 6.05, "Eason & Shield (1960), rough", ""),
     "footing-capacity N_c 1e-2": (
-        "prm/footing-capacity.prm", 1e-2, "capacity_V", -1. / 31.4159265,
-        6.05, "Eason & Shield (1960), rough", ""),
+        "prm/footing-capacity.prm", "", 1e-2, "capacity_V",
+        -1. / 31.4159265, 6.05, "Eason & Shield (1960), rough", ""),
     "pile-capacity N_p 1e-2": (
-        "prm/pile-capacity.prm", 1e-2, "capacity_H", 0.01, 9.20117,
+        "prm/pile-capacity.prm", "", 1e-2, "capacity_H", 0.01, 9.20117,
         "exact plane-strain limit, smooth (Geotechnique 2026)",
         GROWN_FROM_N1),
+    "footing torsion T/(a^3 s_u) 1e-2": (
+        "prm/footing-capacity.prm", TORSION, 1e-2, "capacity_T", 0.1,
+        2.0943951, "2 pi / 3: a uniform shear s_u on the base (exact)",
+        ""),
 }
-
 # What the table does not show yet (written below it).
 NOT_YET = """The footing's and the pile slice's targets are measured. The other
 targets of the nonlinear-accuracy table are not reached yet: disc-tresca's
@@ -76,8 +96,8 @@ coupled tangent of n <= 16 (8 harmonics grown): its cost per harmonic is
 what bounds it now."""
 
 
-def run_case(exe, scene, target, new_entries, work):
-    text = open(os.path.join(ROOT, scene)).read()
+def run_case(exe, scene, scene_entries, target, new_entries, work):
+    text = open(os.path.join(ROOT, scene)).read() + scene_entries
     text += """
 subsection Discretization
   set Target accuracy = %g
@@ -112,14 +132,15 @@ def main():
     load_start = os.getloadavg()[0]
     lines = []
     for name in args.cases.split(","):
-        scene, target, row, scale, reference, source, entries = CASES[name]
+        (scene, scene_entries, target, row, scale, reference, source,
+         entries) = CASES[name]
         runs = {"new": [], "old": []}
         with tempfile.TemporaryDirectory() as tmp:
             for k in range(args.repeats):
                 for side, exe, new_entries in (("new", args.new, entries),
                                                ("old", args.old, None)):
                     runs[side].append(run_case(
-                        exe, scene, target, new_entries,
+                        exe, scene, scene_entries, target, new_entries,
                         os.path.join(tmp, side)))
                     print(name, side, k, runs[side][-1].get(
                         "wall", runs[side][-1].get("failed")), flush=True)

@@ -4,11 +4,15 @@
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <fourier_ssi/coupled/coupled_tangent.h>
 #include <fourier_ssi/input/messages.h>
+#include <numeric>
 
 namespace FourierSSI
 {
   namespace
   {
+    const std::string what_is_factorized =
+      "Soil plasticity: the coupled Newton tangent";
+
     /**
      * The distinct indices of `dofs`, sorted. deal.II's pattern and matrix
      * insertion (add_entries_local_to_global, distribute_local_to_global)
@@ -44,9 +48,11 @@ namespace FourierSSI
   CoupledTangent::CoupledTangent(
     const HarmonicSet &set,
     const std::vector<std::vector<std::vector<types::global_dof_index>>>
-      &cell_dofs)
+              &cell_dofs,
+    const bool over_ranks)
     : set(set)
-    , lu("Soil plasticity: the coupled Newton tangent")
+    , over_ranks(over_ranks)
+    , lu(what_is_factorized)
   {
     const unsigned int          H = set.size();
     BlockDynamicSparsityPattern dsp(H, H);
@@ -55,7 +61,8 @@ namespace FourierSSI
         dsp.block(h, g).reinit(set.problem(h).get_dof_handler().n_dofs(),
                                set.problem(g).get_dof_handler().n_dofs());
     dsp.collect_sizes();
-    for (unsigned int h = 0; h < H; ++h)
+    number_rows();
+    for (const unsigned int h : held)
       {
         // The elastic couplings (the interfaces, the rigid foundation's
         // constraints and the elastic materials included).
@@ -81,25 +88,56 @@ namespace FourierSSI
   }
 
   void
-  CoupledTangent::make_lu_pattern()
+  CoupledTangent::number_rows()
   {
     const unsigned int H = set.size();
-    offset.assign(H + 1, 0);
-    for (unsigned int h = 0; h < H; ++h)
-      offset[h + 1] = offset[h] + pattern.block(h, h).n_rows();
-    // Each row of the whole matrix: (column, sweep index) over its blocks,
-    // sorted by column (UMFPACK wants sorted indices).
-    std::vector<std::vector<std::pair<long, unsigned int>>> rows(offset[H]);
+    // Over the ranks the rows go rank by rank, so that each rank's are one
+    // contiguous range (what the distributed matrix wants).
+    std::vector<unsigned int> order(H);
+    std::iota(order.begin(), order.end(), 0u);
+    if (over_ranks)
+      std::stable_sort(order.begin(),
+                       order.end(),
+                       [&](const unsigned int a, const unsigned int b) {
+                         return set.owner(a) < set.owner(b);
+                       });
+    offset.assign(H, 0);
+    held.clear();
+    unsigned int next_row = 0;
+    for (const unsigned int h : order)
+      {
+        offset[h] = next_row;
+        if (!over_ranks || set.owns(h))
+          {
+            if (held.empty())
+              first_held_row = next_row;
+            held.push_back(h);
+          }
+        next_row += set.problem(h).get_dof_handler().n_dofs();
+      }
+    n_rows = next_row;
+  }
+
+  void
+  CoupledTangent::make_lu_pattern()
+  {
+    unsigned int n_held_rows = 0;
+    for (const unsigned int h : held)
+      n_held_rows += pattern.block(h, h).n_rows();
+    // Each held row: (column, sweep index) over its blocks, sorted by
+    // column (UMFPACK and MUMPS want sorted indices).
+    std::vector<std::vector<std::pair<long, unsigned int>>> rows(n_held_rows);
     unsigned int                                            sweep = 0;
-    for (unsigned int h = 0; h < H; ++h)
-      for (unsigned int g = 0; g < H; ++g)
+    for (const unsigned int h : held)
+      for (unsigned int g = 0; g < set.size(); ++g)
         {
           const SparsityPattern &block = pattern.block(h, g);
+          const unsigned int     first = offset[h] - first_held_row;
           for (unsigned int row = 0; row < block.n_rows(); ++row)
             for (auto entry = block.begin(row); entry != block.end(row);
                  ++entry)
-              rows[offset[h] + row].emplace_back(offset[g] + entry->column(),
-                                                 sweep++);
+              rows[first + row].emplace_back(offset[g] + entry->column(),
+                                             sweep++);
         }
     std::vector<long> row_start(1, 0), columns;
     position.resize(sweep);
@@ -113,15 +151,31 @@ namespace FourierSSI
           }
         row_start.push_back(columns.size());
       }
-    lu.set_pattern(std::move(row_start), std::move(columns));
+    if (!over_ranks)
+      {
+        lu.set_pattern(std::move(row_start), std::move(columns));
+        return;
+      }
+    distributed_lu = std::make_unique<DistributedSparseLU>(what_is_factorized,
+                                                           set.get_ranks());
+    distributed_lu->set_pattern(n_rows,
+                                first_held_row,
+                                std::move(row_start),
+                                std::move(columns));
+  }
+
+  std::vector<double> &
+  CoupledTangent::held_values()
+  {
+    return over_ranks ? distributed_lu->values() : lu.values();
   }
 
   void
   CoupledTangent::copy_to_lu()
   {
-    std::vector<double> &values = lu.values();
+    std::vector<double> &values = held_values();
     unsigned int         sweep  = 0;
-    for (unsigned int h = 0; h < set.size(); ++h)
+    for (const unsigned int h : held)
       for (unsigned int g = 0; g < set.size(); ++g)
         {
           const SparseMatrix<double> &block = matrix.block(h, g);
@@ -185,9 +239,14 @@ namespace FourierSSI
   CoupledTangent::factorize()
   {
     copy_to_lu();
+    ++factorizations;
+    if (over_ranks)
+      {
+        distributed_lu->factorize();
+        return;
+      }
     // The block rows of every rank's harmonics (zero elsewhere): exact.
     set.sum_over_ranks(lu.values());
-    ++factorizations;
     if (set.n_owning_ranks() == 1)
       {
         lu.factorize();
@@ -228,7 +287,18 @@ namespace FourierSSI
   void
   CoupledTangent::solve(std::vector<Vector<double>> &b_to_x) const
   {
-    std::vector<double> b(offset.back()), x(offset.back());
+    if (over_ranks)
+      solve_over_ranks(b_to_x);
+    else
+      solve_on_one_rank(b_to_x);
+    for (unsigned int h = 0; h < b_to_x.size(); ++h)
+      set.problem(h).get_homogeneous_constraints().distribute(b_to_x[h]);
+  }
+
+  void
+  CoupledTangent::solve_on_one_rank(std::vector<Vector<double>> &b_to_x) const
+  {
+    std::vector<double> b(n_rows), x(n_rows);
     for (unsigned int h = 0; h < b_to_x.size(); ++h)
       std::copy(b_to_x[h].begin(), b_to_x[h].end(), b.begin() + offset[h]);
     // The factorizing rank solves, the others receive its bits.
@@ -236,11 +306,26 @@ namespace FourierSSI
       lu.solve(b, x);
     set.broadcast_from_owner(solving_harmonic, x.data(), x.size());
     for (unsigned int h = 0; h < b_to_x.size(); ++h)
-      {
-        std::copy(x.begin() + offset[h],
-                  x.begin() + offset[h + 1],
-                  b_to_x[h].begin());
-        set.problem(h).get_homogeneous_constraints().distribute(b_to_x[h]);
-      }
+      std::copy(x.begin() + offset[h],
+                x.begin() + offset[h] + b_to_x[h].size(),
+                b_to_x[h].begin());
+  }
+
+  void
+  CoupledTangent::solve_over_ranks(std::vector<Vector<double>> &b_to_x) const
+  {
+    std::vector<double> b(distributed_lu->n_rows()), x;
+    for (const unsigned int h : held)
+      std::copy(b_to_x[h].begin(),
+                b_to_x[h].end(),
+                b.begin() + (offset[h] - first_held_row));
+    distributed_lu->solve(b, x);
+    for (const unsigned int h : held)
+      std::copy(x.begin() + (offset[h] - first_held_row),
+                x.begin() + (offset[h] - first_held_row) + b_to_x[h].size(),
+                b_to_x[h].begin());
+    // Each harmonic's increments from the rank that holds its rows.
+    for (unsigned int h = 0; h < b_to_x.size(); ++h)
+      set.broadcast_from_owner(h, b_to_x[h].data(), b_to_x[h].size());
   }
 } // namespace FourierSSI

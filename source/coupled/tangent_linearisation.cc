@@ -43,6 +43,7 @@ namespace FourierSSI
     , sources(sources)
     , control(control)
     , states(states)
+    , tangent_over_ranks(parameters.distributes_coupled_tangent())
   {}
 
   std::string
@@ -175,7 +176,9 @@ namespace FourierSSI
     // K_t = diag(K_h) - the soil's softening at the points that yield -
     // the interfaces' at the samples that slip or open.
     if (!tangent)
-      tangent = std::make_unique<CoupledTangent>(set, sources.tangent_dofs());
+      tangent = std::make_unique<CoupledTangent>(set,
+                                                 sources.tangent_dofs(),
+                                                 tangent_over_ranks);
     tangent->reset_to_elastic();
     sources.add_softening(
       strain, states.committed, relative, interface_origin, *tangent);

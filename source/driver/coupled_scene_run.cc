@@ -147,6 +147,11 @@ namespace FourierSSI
   {
     const HarmonicSet &set     = *context.harmonic_set;
     const unsigned int n_ranks = set.n_owning_ranks();
+    if (context.parameters.distributes_coupled_tangent())
+      log << "coupled Newton tangent: one matrix distributed over " << n_ranks
+          << " MPI rank(s), each the block rows of its harmonics, factorized "
+             "by MUMPS (Linear solver/Distributed = always)"
+          << std::endl;
     if (n_ranks == 1)
       return;
     log << "harmonics distributed over " << n_ranks << " MPI ranks:";

@@ -57,7 +57,11 @@ namespace FourierSSI
                       "for cg-amg, doc/scaling.md) when run on more than "
                       "one MPI rank, the serial solvers otherwise; always: "
                       "the Trilinos path on one rank too (a one-rank "
-                      "baseline for scaling measurements).");
+                      "baseline for scaling measurements). With plastic "
+                      "soil and Newton (Soil plasticity/Stiffness = "
+                      "tangent), always makes the coupled tangent of all "
+                      "harmonics one matrix over the ranks, factorized by "
+                      "MUMPS; the harmonics' own systems stay serial.");
     prm.leave_subsection();
   }
 

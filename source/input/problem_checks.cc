@@ -300,14 +300,18 @@ namespace FourierSSI
                            " (its dual problem is linear); kelly refines "
                            "where the mechanism is, global uniformly"));
     // Under mpirun the harmonics are distributed over the ranks (each
-    // harmonic's system serial); one harmonic's system over several ranks
-    // is the other kind of distribution.
-    AssertThrow(!parameters.solver.distributed_always,
+    // harmonic's system serial); what Distributed = always distributes on
+    // a coupled path is the Newton tangent of all harmonics.
+    AssertThrow(!parameters.solver.distributed_always ||
+                  parameters.distributes_coupled_tangent(),
                 ExcMessage(entry +
-                           ": not yet: Linear solver/Distributed = always (a "
-                           "harmonic's system over several ranks) with " +
+                           ": not yet: Linear solver/Distributed = always "
+                           "with " +
                            with +
-                           "; under mpirun the harmonics are distributed "
-                           "over the ranks"));
+                           " and no coupled Newton tangent (it factorizes "
+                           "that tangent over the ranks: plastic soil with "
+                           "Soil plasticity/Stiffness = tangent); under "
+                           "mpirun the harmonics are distributed over the "
+                           "ranks"));
   }
 } // namespace FourierSSI

@@ -20,6 +20,15 @@
  * then completes the matrix, exactly (each entry is non-zero on one rank:
  * x + 0 = x), so the rank that owns the first harmonic factorizes the
  * serial run's matrix bit for bit; it solves and broadcasts the solution.
+ *
+ * Over the ranks (`Linear solver/Distributed = always`, `over_ranks`) the
+ * matrix is instead one distributed matrix, factorized by MUMPS
+ * (distributed_sparse_lu.h): its rows are numbered rank by rank (the
+ * harmonics of rank 0, then of rank 1, ...), each rank builds the pattern
+ * and the values of its own harmonics' block rows only, and no sum over the
+ * ranks is needed; each harmonic's part of the solution is broadcast from
+ * its owner. The factors are shared by the ranks, and the answer is the
+ * one-rank answer to round-off, not bit for bit.
  */
 #ifndef fourier_ssi_coupled_tangent_h
 #define fourier_ssi_coupled_tangent_h
@@ -29,7 +38,9 @@
 #include <deal.II/lac/full_matrix.h>
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/harmonic/harmonic_set.h>
+#include <fourier_ssi/linear_algebra/distributed_sparse_lu.h>
 #include <fourier_ssi/linear_algebra/umfpack_lu.h>
+#include <memory>
 #include <vector>
 
 namespace FourierSSI
@@ -49,7 +60,8 @@ namespace FourierSSI
     CoupledTangent(
       const HarmonicSet &set,
       const std::vector<std::vector<std::vector<types::global_dof_index>>>
-        &cell_dofs);
+                &cell_dofs,
+      const bool over_ranks = false);
 
     /** Every block to the elastic matrices: K_t = diag(K_h). */
     void
@@ -101,12 +113,27 @@ namespace FourierSSI
     /** Its owner factorizes and solves the whole matrix under MPI. */
     static constexpr unsigned int solving_harmonic = 0;
 
-    const HarmonicSet        &set;
+    const HarmonicSet &set;
+    /** MUMPS over the ranks instead of UMFPACK on one (the class comment). */
+    const bool                over_ranks;
     BlockSparsityPattern      pattern;
     BlockSparseMatrix<double> matrix;
-    /** The whole matrix by rows (harmonic h's rows at offset[h]). */
-    UmfpackLU                 lu;
+    /**
+     * The block rows this rank builds and gives to the factorization: every
+     * harmonic's for UMFPACK (summed over the ranks), its own over the
+     * ranks, in the order of the factorized matrix.
+     */
+    std::vector<unsigned int> held;
+    /** The whole matrix by rows (one rank), or this rank's rows of it. */
+    UmfpackLU                            lu;
+    std::unique_ptr<DistributedSparseLU> distributed_lu;
+    /**
+     * Harmonic h's first row in the factorized matrix, and the first row
+     * this rank holds (0 for UMFPACK).
+     */
     std::vector<unsigned int> offset;
+    unsigned int              first_held_row = 0;
+    unsigned int              n_rows         = 0;
     /**
      * Where each entry of the blocks goes among lu.values(), in the order
      * of copy_to_lu()'s sweep (block row, block column, row, entry).
@@ -114,11 +141,22 @@ namespace FourierSSI
     std::vector<unsigned int> position;
     unsigned int              factorizations = 0;
 
-    /** The rows of the whole matrix and position[], from the pattern. */
+    /** held, offset and the rows this rank holds. */
+    void
+    number_rows();
+    /** The rows of the held block rows and position[], from the pattern. */
     void
     make_lu_pattern();
+    /** The values of the held rows, in the factorization's order. */
+    std::vector<double> &
+    held_values();
     void
     copy_to_lu();
+    /** b_to_x := K_t^-1 b_to_x, constraints not yet distributed. */
+    void
+    solve_on_one_rank(std::vector<Vector<double>> &b_to_x) const;
+    void
+    solve_over_ranks(std::vector<Vector<double>> &b_to_x) const;
   };
 } // namespace FourierSSI
 

@@ -154,6 +154,8 @@ namespace FourierSSI
     const NonlinearSources &sources;
     const LoadControl      &control;
     const LoadPathStates   &states;
+    /** MUMPS over the ranks (Linear solver/Distributed = always). */
+    const bool tangent_over_ranks;
     /** Stiffness = tangent: the coupled tangent and K_t^-1 F. */
     std::unique_ptr<CoupledTangent> tangent;
     std::vector<Vector<double>>     tangent_pattern;

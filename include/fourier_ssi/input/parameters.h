@@ -78,6 +78,20 @@ namespace FourierSSI
         }
     }
 
+    /**
+     * `Linear solver/Distributed = always` on a coupled path: the coupled
+     * Newton tangent is one distributed matrix factorized by MUMPS over the
+     * ranks (coupled_tangent.h). The harmonics' own systems stay serial
+     * there (each rank owns whole harmonics); the coupled paths without that
+     * tangent refuse it (check_coupled_path_supported).
+     */
+    bool
+    distributes_coupled_tangent() const
+    {
+      return solver.distributed_always && linearises_on_coupled_tangent() &&
+             newton_on_load_path();
+    }
+
     AllParameters();
 
     static void
