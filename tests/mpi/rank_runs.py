@@ -7,6 +7,25 @@ import shutil
 import subprocess
 import sys
 
+# prm/pile-capacity.prm cut to n = 0, 1, 2 and 4 displacement steps to
+# u = 0.02 d, with Soil plasticity/Stiffness = %s: a plastic run on 2 ranks
+# in about 2 s (rank 0 owns n = 0 and 2, rank 1 the loaded n = 1).
+PILE_SLICE_N2 = """
+subsection Discretization
+  set Harmonics = 0, 1, 2
+end
+subsection Load path
+  set Load steps = 4
+  set Target     = 0.02
+end
+subsection Soil plasticity
+  set Stiffness = %s
+end
+subsection Output
+  set Directory = out
+end
+"""
+
 
 def run(command, directory):
     """Runs command in directory, its output kept in log.txt; exits on

@@ -60,21 +60,7 @@ import sys
 
 import rank_runs
 
-OVERRIDES = """
-subsection Discretization
-  set Harmonics = 0, 1, 2
-end
-subsection Load path
-  set Load steps = 4
-  set Target     = 0.02
-end
-subsection Soil plasticity
-  set Stiffness = %s
-end
-subsection Output
-  set Directory = out
-end
-"""
+OVERRIDES = rank_runs.PILE_SLICE_N2
 
 SWIPE = """
 subsection Discretization
