@@ -790,25 +790,36 @@ namespace FourierSSI
     const unsigned int                     n_dofs = component.size();
     std::vector<std::vector<ShapeStrains>> strains(
       yielding.size(), std::vector<ShapeStrains>(set.size()));
-    set.for_each([&](const unsigned int h) {
-      for (unsigned int y = 0; y < yielding.size(); ++y)
-        {
-          const SoilCell    &cell = cells[yielding[y]];
-          const unsigned int n_q  = cell.radius.size();
-          ShapeStrains       b(n_dofs, std::vector<StrainVector>(n_q));
-          for (unsigned int i = 0; i < n_dofs; ++i)
-            {
-              for (unsigned int q = 0; q < n_q; ++q)
-                b[i][q] =
-                  operators[h].strain_of_component(component[i],
-                                                   cell.shape_value[q][i],
-                                                   cell.shape_grad[q][i],
-                                                   cell.radius[q]);
-              apply_bbar(cell.projection.get(), b[i]);
-            }
-          strains[y][h] = std::move(b);
-        }
-    });
+    // By cells, on every core (a lone n = 0 too).
+    for_each_range(yielding.size(),
+                   8,
+                   set.n_point_threads(),
+                   [&](const unsigned int first, const unsigned int last) {
+                     std::vector<StrainVector> b;
+                     for (unsigned int y = first; y < last; ++y)
+                       for (unsigned int h = 0; h < set.size(); ++h)
+                         {
+                           const SoilCell    &cell = cells[yielding[y]];
+                           const unsigned int n_q  = cell.radius.size();
+                           ShapeStrains      &flat = strains[y][h];
+                           flat.resize(n_dofs * n_q * 6);
+                           b.resize(n_q);
+                           for (unsigned int i = 0; i < n_dofs; ++i)
+                             {
+                               for (unsigned int q = 0; q < n_q; ++q)
+                                 b[q] = operators[h].strain_of_component(
+                                   component[i],
+                                   cell.shape_value[q][i],
+                                   cell.shape_grad[q][i],
+                                   cell.radius[q]);
+                               apply_bbar(cell.projection.get(), b);
+                               for (unsigned int q = 0; q < n_q; ++q)
+                                 std::copy(b[q].begin(),
+                                           b[q].end(),
+                                           flat.begin() + (i * n_q + q) * 6);
+                             }
+                         }
+                   });
     return strains;
   }
 
@@ -820,34 +831,63 @@ namespace FourierSSI
     const std::vector<std::vector<double>> &softening,
     const ShapeStrains                     &row_strain,
     const ShapeStrains                     &column_strain,
+    SofteningScratch                       &scratch,
     FullMatrix<double>                     &local) const
   {
     const unsigned int H = set.size(), HH = H * H, n_dofs = component.size();
-    local = 0.;
-    for (unsigned int q = 0; q < cell.radius.size(); ++q)
+    const unsigned int n_q = cell.radius.size();
+    // The points of the cell that yield somewhere in theta; the others add
+    // nothing.
+    scratch.yielding.clear();
+    for (unsigned int q = 0; q < n_q; ++q)
+      if (!softening[cell.first_point + q].empty())
+        scratch.yielding.push_back(q);
+    const unsigned int width = 6 * scratch.yielding.size();
+    // rows[i][k] = Bbar_h of shape function i and columns[k][j] = dV S_hg
+    // Bbar_g of shape function j, k = (yielding point, strain component):
+    // local = -rows columns, its inner loop over j contiguous (it
+    // vectorizes; a dot product over k would not, being a reduction).
+    scratch.rows.resize(n_dofs * width);
+    scratch.columns.resize(width * n_dofs);
+    for (unsigned int k = 0; k < scratch.yielding.size(); ++k)
       {
+        const unsigned int q = scratch.yielding[k];
         const unsigned int p = cell.first_point + q;
-        if (softening[p].empty())
-          continue;
         // S_hg of this point, gathered: its 36 entries lie H^2 apart.
         std::array<double, 36> s;
-        for (unsigned int k = 0; k < 36; ++k)
-          s[k] = softening[p][k * HH + h * H + g];
-        const double dV = points[p].dV;
+        for (unsigned int e = 0; e < 36; ++e)
+          s[e] = points[p].dV * softening[p][e * HH + h * H + g];
         for (unsigned int j = 0; j < n_dofs; ++j)
           {
-            StrainVector sb{};
+            const double *b = &column_strain[(j * n_q + q) * 6];
             for (unsigned int a = 0; a < 6; ++a)
-              for (unsigned int e = 0; e < 6; ++e)
-                sb[a] += s[a * 6 + e] * column_strain[j][q][e];
-            for (unsigned int i = 0; i < n_dofs; ++i)
               {
                 double sum = 0.;
-                for (unsigned int a = 0; a < 6; ++a)
-                  sum += row_strain[i][q][a] * sb[a];
-                local(i, j) -= dV * sum;
+                for (unsigned int e = 0; e < 6; ++e)
+                  sum += s[a * 6 + e] * b[e];
+                scratch.columns[(6 * k + a) * n_dofs + j] = sum;
               }
+            std::copy_n(&row_strain[(j * n_q + q) * 6],
+                        6,
+                        &scratch.rows[j * width + 6 * k]);
           }
+      }
+    scratch.row_sum.resize(n_dofs);
+    for (unsigned int i = 0; i < n_dofs; ++i)
+      {
+        double *const sum = scratch.row_sum.data();
+        std::fill_n(sum, n_dofs, 0.);
+        for (unsigned int k = 0; k < width; ++k)
+          {
+            const double b = scratch.rows[i * width + k];
+            if (b == 0.)
+              continue; // a strain this shape function does not have
+            const double *column = &scratch.columns[k * n_dofs];
+            for (unsigned int j = 0; j < n_dofs; ++j)
+              sum[j] += b * column[j];
+          }
+        for (unsigned int j = 0; j < n_dofs; ++j)
+          local(i, j) = -sum[j];
       }
   }
 
@@ -879,20 +919,88 @@ namespace FourierSSI
     const std::vector<unsigned int> yielding = yielding_cells(softening);
     const std::vector<std::vector<ShapeStrains>> strains =
       shape_strains(yielding);
-    // 3. Block row h: K_t,hg -= int Bbar_h^T S_hg Bbar_g, by harmonic h's
-    //    thread (on h's owner under MPI, coupled_tangent.h).
+    // 3. Block row h: K_t,hg -= int Bbar_h^T S_hg Bbar_g.
+    if (H >= set.n_point_threads())
+      add_softening_by_harmonics(yielding, softening, strains, tangent);
+    else
+      add_softening_by_cells(yielding, softening, strains, tangent);
+  }
+
+  void
+  NonlinearSoilPoints::add_softening_by_harmonics(
+    const std::vector<unsigned int>              &yielding,
+    const std::vector<std::vector<double>>       &softening,
+    const std::vector<std::vector<ShapeStrains>> &strains,
+    CoupledTangent                               &tangent) const
+  {
+    // Each block row on its harmonic's thread (the owner's under MPI,
+    // coupled_tangent.h): no two threads add to one row.
     set.for_each([&](const unsigned int h) {
       if (!set.owns(h))
         return;
       FullMatrix<double> local(component.size(), component.size());
+      SofteningScratch   scratch;
       for (unsigned int y = 0; y < yielding.size(); ++y)
-        for (unsigned int g = 0; g < H; ++g)
+        for (unsigned int g = 0; g < set.size(); ++g)
           {
             const SoilCell &cell = cells[yielding[y]];
-            add_cell_softening(
-              cell, h, g, softening, strains[y][h], strains[y][g], local);
+            add_cell_softening(cell,
+                               h,
+                               g,
+                               softening,
+                               strains[y][h],
+                               strains[y][g],
+                               scratch,
+                               local);
             tangent.add(h, g, local, cell.dof_indices[h], cell.dof_indices[g]);
           }
     });
+  }
+
+  void
+  NonlinearSoilPoints::add_softening_by_cells(
+    const std::vector<unsigned int>              &yielding,
+    const std::vector<std::vector<double>>       &softening,
+    const std::vector<std::vector<ShapeStrains>> &strains,
+    CoupledTangent                               &tangent) const
+  {
+    // Fewer harmonics than cores (a lone n = 0): the cells' matrices of one
+    // block row on every core at once, then added on one thread, in cell
+    // order (the same sum as by harmonics).
+    const unsigned int n_dofs = component.size();
+    for (unsigned int h = 0; h < set.size(); ++h)
+      {
+        if (!set.owns(h))
+          continue;
+        std::vector<FullMatrix<double>> locals(yielding.size() * set.size());
+        for_each_range(yielding.size(),
+                       8,
+                       set.n_point_threads(),
+                       [&](const unsigned int first, const unsigned int last) {
+                         SofteningScratch scratch;
+                         for (unsigned int y = first; y < last; ++y)
+                           for (unsigned int g = 0; g < set.size(); ++g)
+                             {
+                               FullMatrix<double> &local =
+                                 locals[y * set.size() + g];
+                               local.reinit(n_dofs, n_dofs);
+                               add_cell_softening(cells[yielding[y]],
+                                                  h,
+                                                  g,
+                                                  softening,
+                                                  strains[y][h],
+                                                  strains[y][g],
+                                                  scratch,
+                                                  local);
+                             }
+                       });
+        for (unsigned int y = 0; y < yielding.size(); ++y)
+          for (unsigned int g = 0; g < set.size(); ++g)
+            tangent.add(h,
+                        g,
+                        locals[y * set.size() + g],
+                        cells[yielding[y]].dof_indices[h],
+                        cells[yielding[y]].dof_indices[g]);
+      }
   }
 } // namespace FourierSSI

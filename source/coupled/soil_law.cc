@@ -24,12 +24,6 @@ namespace FourierSSI
       return t;
     }
 
-    StrainVector
-    to_vector(const SymmetricTensor<2, 3> &t)
-    {
-      return {{t[0][0], t[1][1], t[2][2], t[0][1], t[1][2], t[0][2]}};
-    }
-
     /** Principal values (s1 >= s2 >= s3) and their directions. */
     using Principals = std::array<std::pair<double, Tensor<1, 3>>, 3>;
 
@@ -275,15 +269,35 @@ namespace FourierSSI
       return r;
     }
 
+    /**
+     * sym(a b^T) as a stress vector (shears not doubled): also the
+     * component a . eps b of a strain given as a vector with engineering
+     * shears, eps : sym(a b^T) = w . eps_vector.
+     */
+    StrainVector
+    symmetric_product(const Tensor<1, 3> &a, const Tensor<1, 3> &b)
+    {
+      return {{a[0] * b[0],
+               a[1] * b[1],
+               a[2] * b[2],
+               0.5 * (a[0] * b[1] + a[1] * b[0]),
+               0.5 * (a[1] * b[2] + a[2] * b[1]),
+               0.5 * (a[0] * b[2] + a[2] * b[0])}};
+    }
+
     /** sum_i stress_i e_i e_i^T in (r, z, theta) as a stress vector. */
     StrainVector
     from_principal(const PrincipalReturn &r)
     {
-      SymmetricTensor<2, 3> stress;
+      StrainVector stress{};
       for (unsigned int i = 0; i < 3; ++i)
-        stress += r.stress[i] *
-                  symmetrize(outer_product(r.directions[i], r.directions[i]));
-      return to_vector(stress);
+        {
+          const StrainVector w =
+            symmetric_product(r.directions[i], r.directions[i]);
+          for (unsigned int a = 0; a < 6; ++a)
+            stress[a] += r.stress[i] * w[a];
+        }
+      return stress;
     }
 
     /**
@@ -307,11 +321,28 @@ namespace FourierSSI
       return 0.5 * (J[i][i] - J[i][j] - J[j][i] + J[j][j]);
     }
 
+    /** tangent += factor u v^T (6 x 6, row-major). */
+    void
+    add_outer(const double        factor,
+              const StrainVector &u,
+              const StrainVector &v,
+              StressTangent      &tangent)
+    {
+      for (unsigned int a = 0; a < 6; ++a)
+        for (unsigned int l = 0; l < 6; ++l)
+          tangent[a * 6 + l] += factor * u[a] * v[l];
+    }
+
     /**
-     * D_ep = d sigma / d eps column by column: a unit strain turned into the
-     * principal frame, D_e on it (the trial's change), the principal
-     * Jacobian on the normal part and the spin factors on the shears, and
-     * turned back (doc/derivations/soil_consistent_tangent.md).
+     * D_ep = d sigma / d eps in the principal frame's projections w_ij =
+     * sym(e_i e_j^T): a strain's principal-frame component is w_ij . eps,
+     * the trial's normal change D_e eps' is 2 G w_mm . eps + lambda tr eps,
+     * the principal Jacobian J maps it to the returned normal stresses and
+     * the spin factors scale the shears, so
+     *   D_ep = sum_i w_ii (sum_m J_im (2 G w_mm + lambda 1))^T
+     *        + sum_{i < j} 4 G spin_ij w_ij w_ij^T
+     * (each pair i != j counted for (i, j) and (j, i); the derivation in
+     * doc/derivations/soil_consistent_tangent.md).
      */
     void
     tangent_of(const PrincipalReturn &r,
@@ -320,43 +351,26 @@ namespace FourierSSI
                StressTangent         &tangent)
     {
       const double lambda = K - 2. * G / 3.;
-      double       spin[3][3];
+      tangent.fill(0.);
+      std::array<StrainVector, 3> normal;
       for (unsigned int i = 0; i < 3; ++i)
-        for (unsigned int j = 0; j < 3; ++j)
-          spin[i][j] = i == j ? 0. : spin_factor(r, i, j);
-      for (unsigned int l = 0; l < 6; ++l)
+        normal[i] = symmetric_product(r.directions[i], r.directions[i]);
+      for (unsigned int i = 0; i < 3; ++i)
         {
-          StrainVector unit = {{0., 0., 0., 0., 0., 0.}};
-          // Engineering shears: the tensor component is half of it.
-          unit[l]                            = l < 3 ? 1. : 0.5;
-          const SymmetricTensor<2, 3> strain = to_tensor(unit);
-          // The trial's change in the principal frame, D_e eps'.
-          double trial_change[3][3];
-          for (unsigned int i = 0; i < 3; ++i)
-            for (unsigned int j = 0; j < 3; ++j)
-              trial_change[i][j] =
-                2. * G * (r.directions[i] * (strain * r.directions[j]));
-          const double volumetric = lambda * trace(strain);
-          for (unsigned int i = 0; i < 3; ++i)
-            trial_change[i][i] += volumetric;
-          SymmetricTensor<2, 3> change;
-          for (unsigned int i = 0; i < 3; ++i)
-            for (unsigned int j = 0; j < 3; ++j)
-              {
-                double value = 0.;
-                if (i == j)
-                  for (unsigned int m = 0; m < 3; ++m)
-                    value += r.jacobian[i][m] * trial_change[m][m];
-                else
-                  value = spin[i][j] * trial_change[i][j];
-                // (e_i e_j^T + e_j e_i^T)/2 summed over both (i, j), (j, i).
-                change += value * symmetrize(outer_product(r.directions[i],
-                                                           r.directions[j]));
-              }
-          const StrainVector column = to_vector(change);
-          for (unsigned int a = 0; a < 6; ++a)
-            tangent[a * 6 + l] = column[a];
+          StrainVector change{};
+          for (unsigned int m = 0; m < 3; ++m)
+            for (unsigned int l = 0; l < 6; ++l)
+              change[l] += r.jacobian[i][m] *
+                           (2. * G * normal[m][l] + (l < 3 ? lambda : 0.));
+          add_outer(1., normal[i], change, tangent);
         }
+      for (unsigned int i = 0; i < 3; ++i)
+        for (unsigned int j = i + 1; j < 3; ++j)
+          {
+            const StrainVector w =
+              symmetric_product(r.directions[i], r.directions[j]);
+            add_outer(4. * G * spin_factor(r, i, j), w, w, tangent);
+          }
     }
 
     /** D_e in the order of StrainVector (engineering shears). */

@@ -432,12 +432,44 @@ namespace FourierSSI
     std::vector<unsigned int>
     yielding_cells(const std::vector<std::vector<double>> &softening) const;
 
-    /** Bbar strains of a cell's shape functions [i][q]. */
-    using ShapeStrains = std::vector<std::vector<StrainVector>>;
+    /**
+     * Bbar strains of a cell's shape functions, flat: component a of shape
+     * function i at quadrature point q is at (i n_q + q) 6 + a.
+     */
+    using ShapeStrains = std::vector<double>;
+
+    /** Work space of add_cell_softening, kept between its calls. */
+    struct SofteningScratch
+    {
+      std::vector<unsigned int> yielding;
+      std::vector<double>       rows, columns, row_sum;
+    };
 
     /** [yielding cell][h]: the shape strains of every harmonic. */
     std::vector<std::vector<ShapeStrains>>
     shape_strains(const std::vector<unsigned int> &yielding) const;
+
+    /**
+     * The softening of every yielding cell into the tangent, each block row
+     * on its harmonic's thread (as many harmonics as cores, or more).
+     */
+    void
+    add_softening_by_harmonics(
+      const std::vector<unsigned int>              &yielding,
+      const std::vector<std::vector<double>>       &softening,
+      const std::vector<std::vector<ShapeStrains>> &strains,
+      CoupledTangent                               &tangent) const;
+
+    /**
+     * The same with the cells on the cores (fewer harmonics than cores),
+     * the matrices added afterwards on one thread.
+     */
+    void
+    add_softening_by_cells(
+      const std::vector<unsigned int>              &yielding,
+      const std::vector<std::vector<double>>       &softening,
+      const std::vector<std::vector<ShapeStrains>> &strains,
+      CoupledTangent                               &tangent) const;
 
     /** local = -int Bbar_h^T S_hg Bbar_g over one yielding cell. */
     void
@@ -447,6 +479,7 @@ namespace FourierSSI
                        const std::vector<std::vector<double>> &softening,
                        const ShapeStrains                     &row_strain,
                        const ShapeStrains                     &column_strain,
+                       SofteningScratch                       &scratch,
                        FullMatrix<double>                     &local) const;
 
     /**
