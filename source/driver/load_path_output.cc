@@ -1,3 +1,4 @@
+#include <filesystem>
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/coupled_solver.h>
 #include <fourier_ssi/driver/load_path_output.h>
@@ -61,12 +62,34 @@ namespace FourierSSI
   }
 
   void
+  LoadDisplacementCurve::observe(CoupledSolver           &solver,
+                                 const CoupledRunContext &context)
+  {
+    if (!context.writes_csv)
+      return;
+    const std::string incomplete =
+      context.result_files.path_of("load-displacement-incomplete.csv");
+    written = false;
+    solver.add_step_observer(
+      [this, &solver, incomplete](const LoadStepResult &) {
+        if (written && since_written.wall_time() < incomplete_curve_interval)
+          return;
+        solver.write_csv(incomplete);
+        since_written.restart();
+        written = true;
+      });
+  }
+
+  void
   LoadDisplacementCurve::write_files(const CoupledSolver     &solver,
                                      const CoupledRunContext &context,
                                      std::ostream            &log)
   {
     if (!context.writes_csv)
       return;
+    // The path finished: its curve is whole.
+    std::filesystem::remove(
+      context.result_files.path_of("load-displacement-incomplete.csv"));
     const std::string curve =
       context.result_files.claim("load-displacement.csv");
     solver.write_csv(curve);

@@ -7,6 +7,7 @@
 #ifndef fourier_ssi_load_path_output_h
 #define fourier_ssi_load_path_output_h
 
+#include <deal.II/base/timer.h>
 #include <fourier_ssi/driver/coupled_run_postprocessor.h>
 
 namespace FourierSSI
@@ -38,14 +39,36 @@ namespace FourierSSI
              std::ostream            &log) override;
   };
 
-  /** load-displacement.csv and its log line. */
+  /**
+   * load-displacement.csv and its log line. While the path runs, its
+   * converged steps so far are kept in load-displacement-incomplete.csv
+   * (rewritten whole after a step, at most every
+   * incomplete_curve_interval), so that a run stopped from outside (a
+   * time limit's SIGTERM, Ctrl-C) leaves the curve it had; the finished
+   * run removes it.
+   */
   class LoadDisplacementCurve : public CoupledRunPostprocessor
   {
   public:
     void
+    observe(CoupledSolver &solver, const CoupledRunContext &context) override;
+
+    void
     write_files(const CoupledSolver     &solver,
                 const CoupledRunContext &context,
                 std::ostream            &log) override;
+
+    /**
+     * Seconds between two writes of the incomplete curve: its rewrite
+     * costs milliseconds, a step of a plastic run a tenth of a second to
+     * minutes.
+     */
+    static constexpr double incomplete_curve_interval = 2.;
+
+  private:
+    /** Wall time of the last write of the incomplete curve [s]. */
+    Timer since_written;
+    bool  written = false;
   };
 
   /**
