@@ -16,10 +16,14 @@
                    with Soil reaction depths, stopped once
                    soil-reaction-curves.csv appears (load-displacement.csv
                    written before it), while the VTU and plastic-field
-                   files are still to come.
+                   files are still to come;
+  vtu              prm/default.prm on its coarse mesh with Write vtu,
+                   stopped once the first per-harmonic solution-n*.vtu
+                   appears, while the other harmonic and the revolved 3D
+                   VTU are still to come.
 
 The scenes are shrunk by appended entries so that each run takes about a
-second; the folder is polled every 0.2 ms, and each file of the last two
+second; the folder is polled every 0.2 ms, and each file of the last three
 cases is followed by at least 0.4 s of work (measured), so the signal
 arrives while the run still writes. For each case:
 (1) the run ended by SIGTERM;
@@ -87,6 +91,15 @@ subsection Output
 end
 """, ["soil-reaction-curves.csv"],
      ["load-displacement.csv", "soil-reaction-curves.csv"]),
+    ("vtu", "prm/default.prm", """
+subsection Mesh
+  set Global refinements = 0
+end
+subsection Output
+  set Write vtu    = true
+  set Write 3D vtu = true
+end
+""", ["solution-n*-cycle0.vtu"], ["solution-n*-cycle0.vtu"]),
 ]
 
 
