@@ -34,7 +34,13 @@ For each it checks:
 (5) the interface-state panel shows the last step of load-displacement.csv;
 (6) without --prm the geometry is left out and named; on a folder without
     results.csv the tool prints one line naming the file, exits non-zero
-    and leaves no PNG.
+    and leaves no PNG;
+(7) a bar that is the plateau's error alone is one-sided (the rise still
+    to come): its goal-table entry reads "+bar", every other "bar"; on
+    the plastic page the curve panel, drawn again here as report.py draws
+    it, has the capacity's error bar from the capacity upward (its lower
+    part 0, its upper part the bar), labelled one-sided, and its title
+    says "+ bar (one-sided...".
 Usage: report_page.py FOURIER_SSI_EXE SOURCE_DIR WORK_DIR
 """
 import csv
@@ -193,6 +199,12 @@ def check_scene(name, prm, appended, panels_expected):
           all((p in panels) != any(m.startswith(p + ": ") for m in missing)
               for p in optional))
     check_goals(name, out, goals)
+    for key, fields in goals:
+        one_sided = fields["bar_from"].endswith("_plateau_error")
+        check("%s: %s's bar %s on the page %s"
+              % (name, key[0], fields["page_bar"],
+                 "one-sided (+)" if one_sided else "without a +"),
+              fields["page_bar"].startswith("+") == one_sided)
     if "interface-state" in panels:
         with open(os.path.join(out, "load-displacement.csv")) as f:
             last = int(list(csv.DictReader(f))[-1]["step"])
@@ -202,6 +214,47 @@ def check_scene(name, prm, appended, panels_expected):
 
 
 outputs = {name: check_scene(name, *spec) for name, spec in SCENES.items()}
+
+
+def check_one_sided_bar(out, scene):
+    """(7) on the plastic page's curve panel, drawn as draw_page does."""
+    sys.path.insert(0, os.path.join(source_dir, "tools"))
+    import report
+    rows = report.read_results(out)
+    goals = report.goal_values(rows)
+    curve = report.read_csv(os.path.join(out, "load-displacement.csv"))
+    motion = report.controlled_motion(report.read_prm(scene), rows) or \
+        report.largest_motion(curve)
+    fig = report.plt.figure()
+    ax = fig.add_subplot()
+    report.draw_curve(ax, curve, motion, goals, rows)
+    goal = [g for g in goals if g.row["quantity"].startswith("capacity_")]
+    bars = [c for c in ax.containers
+            if c.get_label().startswith("error bar")]
+    if len(goal) != 1 or len(bars) != 1:
+        check("plastic: one capacity (%d) with one error bar drawn (%d)"
+              % (len(goal), len(bars)), False)
+        return
+    goal, bar = goal[0], bars[0]
+    (x0, low), (x1, high) = bar.lines[2][0].get_segments()[0]
+    value = abs(goal.value)  # the panel draws the load as it rises
+    # The drawn ends are value and value + bar, rounded: a few ulps of the
+    # value (the bar of a flat plateau can be 1e-13 of it).
+    rounding = 4 * math.ulp(value)
+    check("plastic: capacity %.9g drawn with its bar from the capacity + "
+          "%.2g to the capacity + %.2g (the bar %.2g), labelled '%s'"
+          % (value, low - value, high - value, goal.bar, bar.get_label()),
+          goal.bar > 0. and low == value and
+          abs((high - low) - goal.bar) <= rounding and
+          "one-sided" in bar.get_label())
+    check("plastic: the panel's title says one-sided: %s" % ax.get_title(),
+          ("+ %s (one-sided" % (report.BAR_FORMAT % goal.bar))
+          in ax.get_title())
+    report.plt.close(fig)
+
+
+check_one_sided_bar(outputs["plastic"],
+                    os.path.join(work, "plastic", "scene.prm"))
 
 png = os.path.join(work, "no-prm.png")
 result = run_report(outputs["interface"], png)
