@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <atomic>
 #include <csignal>
 #include <cstring>
@@ -6,6 +7,7 @@
 #include <fourier_ssi/driver/result_files.h>
 #include <fourier_ssi/input/atomic_file.h>
 #include <map>
+#include <mutex>
 #include <regex>
 #include <unistd.h>
 
@@ -212,9 +214,17 @@ namespace FourierSSI
   std::string
   ResultFiles::claim(const std::string &file_name)
   {
-    claimed_paths.push_back(path_of(file_name));
-    publish_claimed(this, claimed_paths);
-    return claimed_paths.back();
+    // The harmonics' writers claim from their threads.
+    static std::mutex                 claim_mutex;
+    const std::lock_guard<std::mutex> lock(claim_mutex);
+    const std::string                 path = path_of(file_name);
+    if (std::find(claimed_paths.begin(), claimed_paths.end(), path) ==
+        claimed_paths.end())
+      {
+        claimed_paths.push_back(path);
+        publish_claimed(this, claimed_paths);
+      }
+    return path;
   }
 
   std::string

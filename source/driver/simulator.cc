@@ -391,18 +391,20 @@ namespace FourierSSI
         if (solution.unit_solutions.size() == 2)
           extra = {{"unit_H_", &solution.unit_solutions[0]},
                    {"unit_M_", &solution.unit_solutions[1]}};
-        for (const std::string &file :
-             problem.write_vtu(result_files.path_of(ResultFiles::fill(
-                                 ResultFiles::harmonic_vtu, harmonic, cycle)),
-                               extra))
+        // Claimed before it is written, so that an interrupt removes it
+        // (its rank pieces once the writer has named them).
+        const std::string name = result_files.claim(
+          ResultFiles::fill(ResultFiles::harmonic_vtu, harmonic, cycle));
+        for (const std::string &file : problem.write_vtu(name, extra))
           files.push_back(file);
+        result_files.claim_paths(files);
       }
     if (writes_csv() && problem.get_interfaces() &&
         parameters.output.write_interface_tractions)
       for (const types::boundary_id id :
            problem.get_interfaces()->boundary_ids())
         {
-          const std::string name = result_files.path_of(ResultFiles::fill(
+          const std::string name = result_files.claim(ResultFiles::fill(
             ResultFiles::interface_tractions_csv, harmonic, cycle, id));
           files.push_back(name);
           problem.get_interfaces()->write_csv(id, problem.get_solution(), name);

@@ -73,7 +73,8 @@ namespace FourierSSI
 
     /**
      * The path of `file_name` in the output folder, registered as written
-     * by this run (removed by remove_claimed()). Throws if the name is not
+     * by this run (removed by remove_claimed() and by an interrupt), once
+     * however often it is claimed; thread-safe. Throws if the name is not
      * in the catalogue.
      */
     std::string

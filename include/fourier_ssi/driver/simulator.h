@@ -350,7 +350,11 @@ namespace FourierSSI
     ResultsTable                         results;
     FieldReconstruction                  reconstruction;
     /** The result files of this run (removed again if it fails). */
-    ResultFiles result_files;
+    /**
+     * Mutable: the harmonics' writers (const, on worker threads) claim
+     * their files as they write them; ResultFiles::claim takes a lock.
+     */
+    mutable ResultFiles result_files;
   };
 } // namespace FourierSSI
 
