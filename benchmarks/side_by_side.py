@@ -12,7 +12,7 @@ import subprocess
 
 def arguments(cases):
     """NEW_EXE OLD_EXE [--cases] [--repeats] [--new-commit] [--old-commit]
-    [--no-write], parsed."""
+    [--no-write] [--tag TAG], parsed."""
     parser = argparse.ArgumentParser()
     parser.add_argument("new")
     parser.add_argument("old")
@@ -21,6 +21,8 @@ def arguments(cases):
     parser.add_argument("--new-commit", default="unknown")
     parser.add_argument("--old-commit", default="unknown")
     parser.add_argument("--no-write", action="store_true")
+    # A run of some cases only, beside the full table (results-TAG.md).
+    parser.add_argument("--tag", default="")
     return parser.parse_args()
 
 
@@ -64,7 +66,8 @@ def report(folder, columns, lines, title, what, args, load_start,
     print(table)
     if args.no_write:
         return
-    with open(os.path.join(folder, "results.md"), "w") as f:
+    name = "results-%s.md" % args.tag if args.tag else "results.md"
+    with open(os.path.join(folder, name), "w") as f:
         f.write("# %s\n\nWritten by `run.py` (%s): new %s, old %s; %s One "
                 "run at a time, the two builds alternating. Load average "
                 "(1 min) %.1f at the start, %.1f at the end, on 2 cores: "

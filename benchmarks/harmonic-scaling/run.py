@@ -7,12 +7,13 @@ solution from n = 1 up to Load path/Maximum harmonic = M
 
     python3 benchmarks/harmonic-scaling/run.py NEW_EXE OLD_EXE
         [--cases NAME,...] [--repeats R] [--new-commit C] [--old-commit C]
-        [--no-write]
+        [--no-write] [--tag TAG]
 
 One run at a time, the two builds alternating, R times (median wall
 time). Per run: wall time and peak memory (GNU time), the harmonics the
 last step solved, the capacity H (kN) and N_p = H / (s_u d L) = H / 100 kN.
-Writes results.md beside this script unless --no-write, with the load
+Writes results.md (results-TAG.md with --tag, for a run of some cases)
+beside this script unless --no-write, with the load
 average at the start and at the end.
 """
 import os

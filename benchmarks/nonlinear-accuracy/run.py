@@ -6,7 +6,7 @@ by side in one run.
 
     python3 benchmarks/nonlinear-accuracy/run.py NEW_EXE OLD_EXE
         [--cases NAME,...] [--repeats R] [--new-commit C] [--old-commit C]
-        [--no-write]
+        [--no-write] [--tag TAG]
 
 Each case appends its entries to a bundled scene (a temporary copy, its own
 output folder) and runs it with NEW_EXE (Strategy = kelly, Refine fraction
@@ -17,7 +17,8 @@ times (median wall time). Per run: wall time and peak
 memory (GNU time's maximum resident set size), the capacity and its printed
 relative error bar, the true relative error against the case's reference,
 the effectivity (bar over true error) and whether the bar contains the
-reference. Writes results.md beside this script unless --no-write, with
+reference. Writes results.md (results-TAG.md with --tag, for a run of some cases)
+beside this script unless --no-write, with
 the machine's load average at the start and at the end (the times are only
 comparable within one table).
 """
