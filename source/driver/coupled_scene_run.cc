@@ -2,6 +2,7 @@
 // scene's HarmonicSet, with its postprocessors asked in order.
 #include <deal.II/base/multithread_info.h>
 #include <deal.II/base/timer.h>
+#include <filesystem>
 #include <fourier_ssi/coupled/coupled_solver.h>
 #include <fourier_ssi/driver/coupled_scene_run.h>
 
@@ -106,12 +107,16 @@ namespace FourierSSI
       std::make_unique<CoupledSolver>(*context.harmonic_set, solver_parameters);
     if (on_one_mesh)
       postprocessors.observe(*solver, context);
-    run_keeping_converged_steps(*solver,
-                                log,
-                                on_one_mesh && context.writes_csv ?
-                                  context.result_files.path_of(
-                                    "load-displacement-incomplete.csv") :
-                                  "");
+    const std::string incomplete_curve =
+      on_one_mesh && context.writes_csv ?
+        context.result_files.path_of("load-displacement-incomplete.csv") :
+        "";
+    run_keeping_converged_steps(*solver, log, incomplete_curve);
+    // The path finished: the curve of its steps so far (LoadDisplacementCurve
+    // keeps it while the path runs) is no record of anything now, also if
+    // the output is refused later.
+    if (!incomplete_curve.empty())
+      std::filesystem::remove(incomplete_curve);
     log << "coupled solve: " << solver->get_steps().size() << " steps in "
         << timer.wall_time() << " s" << std::endl;
   }

@@ -1,4 +1,3 @@
-#include <filesystem>
 #include <fourier_ssi/coupled/coupled_iteration.h>
 #include <fourier_ssi/coupled/coupled_solver.h>
 #include <fourier_ssi/driver/load_path_output.h>
@@ -87,9 +86,6 @@ namespace FourierSSI
   {
     if (!context.writes_csv)
       return;
-    // The path finished: its curve is whole.
-    std::filesystem::remove(
-      context.result_files.path_of("load-displacement-incomplete.csv"));
     const std::string curve =
       context.result_files.claim("load-displacement.csv");
     solver.write_csv(curve);

@@ -44,8 +44,8 @@ namespace FourierSSI
    * converged steps so far are kept in load-displacement-incomplete.csv
    * (rewritten whole after a step, at most every
    * incomplete_curve_interval), so that a run stopped from outside (a
-   * time limit's SIGTERM, Ctrl-C) leaves the curve it had; the finished
-   * run removes it.
+   * time limit's SIGTERM, Ctrl-C) leaves the curve it had; the scene run
+   * removes it when the path finishes (coupled_scene_run.cc).
    */
   class LoadDisplacementCurve : public CoupledRunPostprocessor
   {
