@@ -139,6 +139,13 @@ namespace FourierSSI
       out << std::setprecision(2) << value;
       return out.str();
     }
+
+    /** A relative error as printed: two digits, or "not estimated". */
+    std::string
+    estimate_text(const double value)
+    {
+      return std::isfinite(value) ? number(value) : "not estimated";
+    }
   } // namespace
 
   bool
@@ -536,11 +543,11 @@ namespace FourierSSI
         << " nested meshes, geometric tail; the harmonics " << harmonic_source
         << (run.has_plateau() ? "; the plateau" : "") << "):\n    " << goal.name
         << " = " << std::setprecision(7) << goal.value << " " << goal.unit
-        << " \u00b1 " << std::setprecision(2) << total << " (rel): mesh "
-        << (n_meshes >= 2 ? mesh_error / scale : nan) << ", harmonics "
-        << harmonic_error / scale;
+        << " \u00b1 " << estimate_text(total) << " (rel): mesh "
+        << estimate_text(n_meshes >= 2 ? mesh_error / scale : nan)
+        << ", harmonics " << estimate_text(harmonic_error / scale);
     if (run.has_plateau())
-      log << ", plateau " << goal.plateau_error / scale;
+      log << ", plateau " << estimate_text(goal.plateau_error / scale);
     log << std::setprecision(6) << std::endl;
     if (run.goal_prefix() == "capacity_")
       report_normalised_capacity(parameters.rigid_foundation,

@@ -601,12 +601,16 @@ namespace FourierSSI
     const double  psi_base = rotation(s, toe);
     Normalisation n        = normalisation_at(z, false);
     Normalisation b        = normalisation_at(toe, true);
-    const double  nan      = std::numeric_limits<double>::quiet_NaN();
     // PISA: clay p/(s_u D), v G/(s_u D), m/(s_u D^2), psi G/s_u (Byrne et
     // al. 2020); sand p/(sigma'_v D), v G/(sigma'_v D), m/(|p| D), psi
     // G/sigma'_v (Burd et al. 2020); the base H_B/(s D^2), M_B/(s D^3).
+    // A ratio by zero (sigma'_v at the mudline, p = 0) is an empty field.
     const auto ratio = [&](const double x, const double by) {
-      return by > 0. ? x / by : nan;
+      std::ostringstream field;
+      field << std::setprecision(out.precision());
+      if (by > 0.)
+        field << x / by;
+      return field.str();
     };
     const double v_base = displacement(s, toe);
     out << s + 1 << ',' << step.applied_H << ',' << step.applied_M << ','
@@ -645,18 +649,23 @@ namespace FourierSSI
           continue;
         // The curve's end and its initial slope: the whole curve is in
         // soil-reaction-curves.csv.
-        const unsigned int last = steps.size() - 1;
-        results.add("soil_reaction_p_normalised" + at.str(),
-                    any,
-                    last + 1,
-                    shaft_reaction(last, z).first / (n.strength * D),
-                    "-");
-        results.add("soil_reaction_secant" + at.str(),
-                    any,
-                    1,
-                    shaft_reaction(0, z).first /
-                      (n.shear_modulus * displacement(0, z)),
-                    "-");
+        // Neither is defined where its normaliser is zero (sigma'_v at the
+        // mudline, a level that has not moved): no row then.
+        const unsigned int last     = steps.size() - 1;
+        const double       strength = n.strength * D;
+        const double       moved    = n.shear_modulus * displacement(0, z);
+        if (strength > 0.)
+          results.add("soil_reaction_p_normalised" + at.str(),
+                      any,
+                      last + 1,
+                      shaft_reaction(last, z).first / strength,
+                      "-");
+        if (moved != 0.)
+          results.add("soil_reaction_secant" + at.str(),
+                      any,
+                      1,
+                      shaft_reaction(0, z).first / moved,
+                      "-");
       }
   }
 
