@@ -32,7 +32,13 @@ Checks, with their reasons:
     is Tresca, so its path equals a tresca run's to 1e-9 of the torque,
     beyond failure too (two independent return mappings);
   - a tresca ring cycled below first yield gets the one-line note that
-    its loops dissipate nothing.
+    its loops dissipate nothing;
+  - a measured degradation table (iwan, table=...) instead of the
+    hyperbola: its model is the table's polygon, so the same closed form
+    holds with that polygon. The table is the hyperbola read at 7 strains
+    (4 digits), so the strains and their gradients are those of the
+    hyperbola's run: the virgin T(theta) below 0.8 of its failure twist
+    within the same 1e-4 (the mesh's error).
 Usage: iwan_torsion_ring.py FOURIER_SSI_EXE SOURCE_DIR WORK_DIR
 """
 import csv
@@ -190,5 +196,23 @@ log, _ = run("tresca_elastic", "0: tresca, su=10",
              "  set Targets = 0.0002, -0.0002\n  set Cycles = 1")
 check("note: cycle 1 dissipates nothing" in log,
       "a tresca loop below first yield gets the note")
+
+# 5. A measured degradation curve (strain : G/G0) instead of the hyperbola.
+TABLE = [(1e-6, 1.), (1e-4, 0.9901), (3e-4, 0.9709), (1e-3, 0.9091),
+         (2e-3, 0.8333), (3e-3, 0.7692), (4e-3, 0.7143)]
+table_ring = TorsionRing(3000., 10., None, None, 0.5, 5., 1., table=TABLE)
+table_failure = table_ring.virgin_twist(table_ring.failure_torque *
+                                        (1 - 1e-12))
+law = "0: iwan, su=10, table=" + " ".join("%g:%g" % p for p in TABLE)
+_, rows = run("table", law, "  set Target = %.6g" % (1.25 * table_failure))
+worst = 0.
+for r in rows:
+    theta = float(r["twist_rad"])
+    if theta < 0.8 * table_failure:
+        ref = table_ring.torque_at((0., 0.), theta)
+        worst = max(worst, abs(float(r["T_kNm"]) / ref - 1.))
+check(worst <= 1e-4, "table: virgin T(theta) below 0.8 of the failure twist "
+      "(%.4g rad) within 1e-4 of the closed form (worst %.2e)"
+      % (table_failure, worst))
 
 finish()

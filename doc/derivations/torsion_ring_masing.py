@@ -52,9 +52,31 @@ def tangent_polygon(g0, su, gref, n):
     return kinks, [model(g) for g in kinks]
 
 
+def table_polygon(g0, su, table):
+    """Kinks (gamma_k, tau_k) of a degradation table's curve: from the
+    origin through tau = G0 gamma G/G0 at the table's points, past the last
+    one with its last slope, up to s_u (doc/derivations/multi_surface_clay.md
+    section 7)."""
+    gammas, taus = [0.], [0.]
+    slope = g0
+    for gamma, ratio in table:
+        tau = g0 * gamma * ratio
+        slope = (tau - taus[-1]) / (gamma - gammas[-1])
+        if tau >= su:
+            break
+        gammas.append(gamma)
+        taus.append(tau)
+    gammas.append(gammas[-1] + (su - taus[-1]) / slope)
+    taus.append(su)
+    return gammas, taus
+
+
 class TorsionRing:
-    def __init__(self, g0, su, gref, n, a, b, h):
-        self.gamma_k, self.tau_k = tangent_polygon(g0, su, gref, n)
+    def __init__(self, g0, su, gref, n, a, b, h, table=None):
+        """The model's polygon: the tangents of the hyperbola (gref, n), or
+        a degradation table's polygon [(gamma, G/G0), ...]."""
+        self.gamma_k, self.tau_k = table_polygon(g0, su, table) if table \
+            else tangent_polygon(g0, su, gref, n)
         self.a, self.b, self.h = a, b, h
         self.failure_torque = 2. * math.pi * a * a * h * su
 

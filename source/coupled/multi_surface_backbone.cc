@@ -33,6 +33,67 @@ namespace FourierSSI
     fit_tangents(n_surfaces);
   }
 
+  MultiSurfaceBackbone::MultiSurfaceBackbone(
+    const double                                  shear_modulus,
+    const double                                  undrained_strength,
+    const std::vector<std::pair<double, double>> &degradation)
+    : g0(shear_modulus)
+    , su(undrained_strength)
+  {
+    Assert(g0 > 0. && su > 0. && degradation.size() >= 2,
+           dealii::ExcInternalError());
+    // The polygon through tau_k = G0 gamma_k (G/G0)_k from the origin,
+    // walked until it reaches s_u; past the last point the last slope goes
+    // on (derivation section 7).
+    polygon      = {{0., 0.}};
+    double slope = g0;
+    for (const auto &[gamma, ratio] : degradation)
+      {
+        const double tau                  = g0 * gamma * ratio;
+        const auto [gamma_last, tau_last] = polygon.back();
+        slope = (tau - tau_last) / (gamma - gamma_last);
+        if (tau >= su)
+          break;
+        polygon.emplace_back(gamma, tau);
+      }
+    const auto [gamma_last, tau_last] = polygon.back();
+    std::ostringstream text;
+    text << "Soil plasticity/Laws: iwan: the table's last point gives tau = "
+         << tau_last
+         << " kPa on a flat last segment: it never reaches s_u = " << su
+         << " kPa (end the table above s_u / G0 = " << su / g0
+         << " with a rising tau = G0 gamma G/G0)";
+    AssertThrow(slope > 0., dealii::ExcMessage(text.str()));
+    polygon.emplace_back(gamma_last + (su - tau_last) / slope, su);
+    fit_polygon(polygon);
+  }
+
+  void
+  MultiSurfaceBackbone::fit_polygon(
+    const std::vector<std::pair<double, double>> &vertices)
+  {
+    // Segment j has slope sum_{i >= j} G_i (eq. 2.4): G_i is the drop of
+    // slope at kink i, and it yields there. Equal slopes (collinear
+    // points) make no element.
+    const unsigned int  n = vertices.size() - 1;
+    std::vector<double> slope(n + 1, 0.);
+    for (unsigned int j = 0; j < n; ++j)
+      slope[j] = (vertices[j + 1].second - vertices[j].second) /
+                 (vertices[j + 1].first - vertices[j].first);
+    moduli.clear();
+    strengths.clear();
+    nodes.clear();
+    for (unsigned int i = 0; i < n; ++i)
+      {
+        const double modulus = slope[i] - slope[i + 1];
+        nodes.push_back(vertices[i].first);
+        if (modulus <= 0.)
+          continue;
+        moduli.push_back(modulus);
+        strengths.push_back(modulus * vertices[i + 1].first);
+      }
+  }
+
   void
   MultiSurfaceBackbone::fit_tangents(const unsigned int n_surfaces)
   {
@@ -72,7 +133,16 @@ namespace FourierSSI
   double
   MultiSurfaceBackbone::backbone_stress(const double gamma) const
   {
-    return std::min(g0 * gamma / (1. + gamma / gamma_ref), su);
+    if (polygon.empty())
+      return std::min(g0 * gamma / (1. + gamma / gamma_ref), su);
+    for (unsigned int j = 0; j + 1 < polygon.size(); ++j)
+      if (gamma <= polygon[j + 1].first)
+        {
+          const auto [g1, t1] = polygon[j];
+          const auto [g2, t2] = polygon[j + 1];
+          return t1 + (t2 - t1) * (gamma - g1) / (g2 - g1);
+        }
+    return su;
   }
 
   double
@@ -87,6 +157,7 @@ namespace FourierSSI
   double
   MultiSurfaceBackbone::failure_strain() const
   {
-    return gamma_ref * su / (g0 * gamma_ref - su);
+    return polygon.empty() ? gamma_ref * su / (g0 * gamma_ref - su) :
+                             polygon.back().first;
   }
 } // namespace FourierSSI

@@ -1,62 +1,8 @@
 #include <cmath>
-#include <deal.II/base/symmetric_tensor.h>
 #include <fourier_ssi/coupled/multi_surface_clay.h>
 
 namespace FourierSSI
 {
-  namespace
-  {
-    /** The (r, z, theta) index pairs of the StrainVector components. */
-    constexpr unsigned int component[6][2] =
-      {{0, 0}, {1, 1}, {2, 2}, {0, 1}, {1, 2}, {0, 2}};
-
-    /** The strain tensor of a strain vector with engineering shears. */
-    SymmetricTensor<2, 3>
-    strain_tensor(const StrainVector &v)
-    {
-      SymmetricTensor<2, 3> t;
-      for (unsigned int a = 0; a < 6; ++a)
-        t[component[a][0]][component[a][1]] = a < 3 ? v[a] : 0.5 * v[a];
-      return t;
-    }
-
-    /** The strain vector (engineering shears) of a strain tensor. */
-    StrainVector
-    strain_vector(const SymmetricTensor<2, 3> &t)
-    {
-      StrainVector v;
-      for (unsigned int a = 0; a < 6; ++a)
-        v[a] = (a < 3 ? 1. : 2.) * t[component[a][0]][component[a][1]];
-      return v;
-    }
-
-    /** The stress vector (shear stresses) of a stress tensor. */
-    StrainVector
-    stress_vector(const SymmetricTensor<2, 3> &t)
-    {
-      StrainVector v;
-      for (unsigned int a = 0; a < 6; ++a)
-        v[a] = t[component[a][0]][component[a][1]];
-      return v;
-    }
-
-    /**
-     * d sigma_a / d eps_b (engineering shears) of a fourth-order tensor:
-     * with its minor symmetries the entry is C_ijkl itself, because a unit
-     * engineering shear puts 1/2 on both kl and lk.
-     */
-    StressTangent
-    tangent_matrix(const SymmetricTensor<4, 3> &c)
-    {
-      StressTangent d;
-      for (unsigned int a = 0; a < 6; ++a)
-        for (unsigned int b = 0; b < 6; ++b)
-          d[a * 6 + b] = c[component[a][0]][component[a][1]][component[b][0]]
-                          [component[b][1]];
-      return d;
-    }
-  } // namespace
-
   MultiSurfaceClay::MultiSurfaceClay(const MultiSurfaceBackbone &backbone,
                                      const double                bulk_modulus)
     : backbone(backbone)
@@ -67,10 +13,14 @@ namespace FourierSSI
                                      const double   shear_modulus,
                                      const double   bulk_modulus,
                                      const double   depth)
-    : MultiSurfaceClay(MultiSurfaceBackbone(shear_modulus,
-                                            law.undrained_strength(depth),
-                                            law.reference_strain,
-                                            law.n_surfaces),
+    : MultiSurfaceClay(law.degradation.empty() ?
+                         MultiSurfaceBackbone(shear_modulus,
+                                              law.undrained_strength(depth),
+                                              law.reference_strain,
+                                              law.n_surfaces) :
+                         MultiSurfaceBackbone(shear_modulus,
+                                              law.undrained_strength(depth),
+                                              law.degradation),
                        bulk_modulus)
   {
     Assert(law.kind == SoilLaw::Kind::iwan, ExcInternalError());
@@ -121,51 +71,84 @@ namespace FourierSSI
                                StrainVector       *updated,
                                StressTangent      *tangent) const
   {
-    const SymmetricTensor<2, 3> eps   = strain_tensor(strain);
-    const SymmetricTensor<2, 3> e     = deviator(eps);
-    const SymmetricTensor<4, 3> i_dev = deviator_tensor<3>();
+    // Flat 6-vectors of tensor components (shears halved from the
+    // engineering strains; the stress vector holds the tensor's shears);
+    // the Frobenius norm weighs the shears twice. The same (C1)-(C3) as
+    // on deal.II tensors, without their fourth-order sums per element.
+    constexpr double weight[6] = {1., 1., 1., 2., 2., 2.};
+    const double     volume    = strain[0] + strain[1] + strain[2];
+    double           e[6];
+    for (unsigned int a = 0; a < 6; ++a)
+      e[a] = a < 3 ? strain[a] - volume / 3. : 0.5 * strain[a];
 
     MultiSurfaceStress result;
     // (C1): the volumetric part is elastic.
-    SymmetricTensor<2, 3> stress =
-      bulk_modulus * trace(eps) * unit_symmetric_tensor<3>();
-    SymmetricTensor<4, 3> c;
+    StrainVector stress{};
+    for (unsigned int a = 0; a < 3; ++a)
+      stress[a] = bulk_modulus * volume;
+    // (C3): sum_i 2 G_i alpha_i I_dev - sum_yielding 2 G_i alpha_i n n,
+    // alpha_i = 1 (elastic) or radius / |s_trial| (returned).
+    double deviatoric_modulus = 0.;
     if (tangent)
-      c = bulk_modulus *
-          outer_product(unit_symmetric_tensor<3>(), unit_symmetric_tensor<3>());
+      tangent->fill(0.);
     for (unsigned int i = 0; i < n_surfaces(); ++i)
       {
-        const double g                  = backbone.shear_modulus(i);
-        const double radius             = std::sqrt(2.) * backbone.strength(i);
-        const SymmetricTensor<2, 3> e_p = strain_tensor(committed[i]);
+        const double g      = backbone.shear_modulus(i);
+        const double radius = std::sqrt(2.) * backbone.strength(i);
         // (C2) with e^p_i frozen: the trial deviator of element i.
-        SymmetricTensor<2, 3> s    = 2. * g * (e - e_p);
-        const double          size = s.norm();
+        double s[6], size_sqr = 0.;
+        for (unsigned int a = 0; a < 6; ++a)
+          {
+            const double plastic =
+              a < 3 ? committed[i][a] : 0.5 * committed[i][a];
+            s[a] = 2. * g * (e[a] - plastic);
+            size_sqr += weight[a] * s[a] * s[a];
+          }
+        const double size = std::sqrt(size_sqr);
         if (size <= radius)
           {
             if (updated)
               updated[i] = committed[i];
-            if (tangent)
-              c += 2. * g * i_dev;
+            deviatoric_modulus += 2. * g;
           }
         else
           {
             // The radial return onto |s_i| = sqrt(2) tau_i; the plastic
             // strain is what the elastic part 2 G_i (e - e^p) leaves.
-            const double                scale = radius / size;
-            const SymmetricTensor<2, 3> n     = s / size;
-            s *= scale;
+            const double scale = radius / size;
+            for (unsigned int a = 0; a < 6; ++a)
+              s[a] *= scale;
             if (updated)
-              updated[i] = strain_vector(e - s / (2. * g));
+              for (unsigned int a = 0; a < 6; ++a)
+                updated[i][a] = (a < 3 ? 1. : 2.) * (e[a] - s[a] / (2. * g));
             ++result.n_yielding;
             if (tangent)
-              c += 2. * g * scale * (i_dev - outer_product(n, n));
+              {
+                // n = s / |s| of the returned (or trial) deviator.
+                const double factor = 2. * g * scale / (radius * radius);
+                deviatoric_modulus += 2. * g * scale;
+                for (unsigned int a = 0; a < 6; ++a)
+                  for (unsigned int b = 0; b < 6; ++b)
+                    (*tangent)[a * 6 + b] -= factor * s[a] * s[b];
+              }
           }
-        stress += s;
+        for (unsigned int a = 0; a < 6; ++a)
+          stress[a] += s[a];
       }
-    result.stress = stress_vector(stress);
+    result.stress = stress;
     if (tangent)
-      *tangent = tangent_matrix(c);
+      {
+        // K 1 x 1 + deviatoric_modulus I_dev as d sigma_a / d eps_b with
+        // engineering shears: I_dev is delta_ab - 1/3 on the normal
+        // block and 1/2 on the shear diagonal.
+        for (unsigned int a = 0; a < 3; ++a)
+          for (unsigned int b = 0; b < 3; ++b)
+            (*tangent)[a * 6 + b] +=
+              bulk_modulus +
+              deviatoric_modulus * ((a == b ? 1. : 0.) - 1. / 3.);
+        for (unsigned int a = 3; a < 6; ++a)
+          (*tangent)[a * 6 + a] += 0.5 * deviatoric_modulus;
+      }
     return result;
   }
 } // namespace FourierSSI

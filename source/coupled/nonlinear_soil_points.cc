@@ -190,7 +190,8 @@ namespace FourierSSI
     clays.emplace_back(law, point.shear_modulus, bulk_modulus, point.depth);
     point.clay          = clays.size() - 1;
     point.first_history = n_history;
-    n_history += std::size_t(sampling.n_samples()) * law.n_surfaces;
+    // A table's elements depend on s_u at the depth: the point's own.
+    n_history += std::size_t(sampling.n_samples()) * clays.back().n_surfaces();
   }
 
   std::vector<std::vector<StrainVector>>

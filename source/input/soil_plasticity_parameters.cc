@@ -43,7 +43,7 @@ namespace FourierSSI
           case SoilLaw::Kind::mohr_coulomb:
             return "c, phi, psi";
           case SoilLaw::Kind::iwan:
-            return "su, k, gref, surfaces";
+            return "su, k, gref, surfaces, table";
         }
       return "";
     }
@@ -81,6 +81,81 @@ namespace FourierSSI
       return true;
     }
 
+    /**
+     * iwan's `table=g1:r1 g2:r2 ...`: pairs of a shear strain and G/G0,
+     * separated by blanks.
+     */
+    std::vector<std::pair<double, double>>
+    degradation_table(const std::string &text, const std::string &where)
+    {
+      std::vector<std::pair<double, double>> table;
+      for (const std::string &pair : Utilities::split_string_list(text, ' '))
+        {
+          if (pair.empty())
+            continue; // several blanks
+          const auto colon = pair.find(':');
+          AssertThrow(colon != std::string::npos,
+                      ExcMessage(entry + ": " + where + "iwan table: '" + pair +
+                                 "' is not gamma:G/G0"));
+          table.emplace_back(number_in_entry(pair.substr(0, colon), entry),
+                             number_in_entry(pair.substr(colon + 1), entry));
+        }
+      return table;
+    }
+
+    /**
+     * What is wrong with a degradation table, or "": strains increasing
+     * in (0, 1), G/G0 in (0, 1] falling from 1, and tau = G0 gamma G/G0 a
+     * concave polygon that does not fall (its slopes are the sums of the
+     * sub-elements' moduli, which must be >= 0; derivation section 7).
+     */
+    std::string
+    table_problem(const std::vector<std::pair<double, double>> &table)
+    {
+      std::ostringstream text;
+      if (table.size() < 2 || table.size() > SoilLaw::max_surfaces)
+        {
+          text << "the table needs 2 to " << SoilLaw::max_surfaces
+               << " points (has " << table.size() << ")";
+          return text.str();
+        }
+      if (table[0].second != 1.)
+        return "table must start at G/G0 = 1 (the small-strain modulus)";
+      double last_slope = 1.;
+      for (unsigned int k = 0; k < table.size(); ++k)
+        {
+          const auto [gamma, ratio] = table[k];
+          text << "table point " << k + 1 << " (" << gamma << ":" << ratio
+               << "): ";
+          if (!(gamma > 0. && gamma < 1.))
+            return text.str() + "the strain must satisfy 0 < gamma < 1";
+          if (!(ratio > 0. && ratio <= 1.))
+            return text.str() + "G/G0 must satisfy 0 < G/G0 <= 1";
+          if (k == 0)
+            {
+              text.str("");
+              continue;
+            }
+          const auto [gamma_last, ratio_last] = table[k - 1];
+          if (!(gamma > gamma_last))
+            return text.str() + "the strains must increase";
+          if (ratio > ratio_last)
+            return text.str() + "G/G0 must not rise";
+          const double slope =
+            (gamma * ratio - gamma_last * ratio_last) / (gamma - gamma_last);
+          if (slope < 0.)
+            return text.str() + "tau = G0 gamma G/G0 falls (a softening "
+                                "curve has no iwan elements)";
+          if (slope > last_slope * (1. + 1e-12))
+            return text.str() +
+                   "tau = G0 gamma G/G0 bends upward here (its slope rises "
+                   "from the last segment's: no iwan elements fit it)";
+          last_slope = slope;
+          text.str("");
+        }
+      return "";
+    }
+
     /** What is wrong with an undrained law (tresca, iwan), or "". */
     std::string
     undrained_problem(const SoilLaw &law, const std::set<std::string> &given)
@@ -97,8 +172,18 @@ namespace FourierSSI
         return "k must be >= 0 kPa/m";
       if (law.kind != SoilLaw::Kind::iwan)
         return "";
+      if (given.count("table"))
+        {
+          if (given.count("gref"))
+            return "give gref or table, not both";
+          if (given.count("surfaces"))
+            return "surfaces come from the table (its points are the "
+                   "kinks): leave surfaces out";
+          return table_problem(law.degradation);
+        }
       if (!given.count("gref"))
-        return "gref is missing (the reference shear strain, G/G0 = 1/2)";
+        return "gref is missing (the reference shear strain, G/G0 = 1/2), "
+               "or give table=gamma:G/G0 ...";
       // gamma_ref is a strain: above 1 it is a typing error (a percentage).
       if (!(law.reference_strain > 0. && law.reference_strain < 1.))
         {
@@ -158,8 +243,12 @@ namespace FourierSSI
       "'id: iwan, su=S[, k=K], gref=G[, surfaces=N]': multi-surface "
       "kinematic hardening clay (undrained, total stress) on the hyperbolic "
       "backbone G/G0 = 1/(1 + gamma/gref) capped at s_u, G0 from the "
-      "material, N = 1..100 von Mises sub-elements (default 20; "
-      "doc/soil-plasticity.md section 10). The loading and the iteration are set in 'Load path'.");
+      "material, N = 1..100 von Mises sub-elements (default 20), or "
+      "'id: iwan, su=S[, k=K], table=g1:r1 g2:r2 ...' on a measured "
+      "degradation curve: shear strains g increasing with G/G0 = r, r = 1 "
+      "at the first, tau = G0 g r linear between the points and beyond the "
+      "last, capped at s_u (doc/soil-plasticity.md section 10). The loading "
+      "and the iteration are set in 'Load path'.");
     prm.declare_entry(
       "Stiffness",
       "tangent",
@@ -170,9 +259,9 @@ namespace FourierSSI
       "harmonics together, their coupling through the plastic points "
       "included (the tangent of the return mapping, theta-integrated for "
       "every pair of harmonics, refactorized at every update; "
-      "benchmarks/soil-plasticity). Under mpirun only elastic: the "
-      "harmonics and the soil points are distributed over the ranks "
-      "(doc/soil-plasticity.md 3c).");
+      "benchmarks/soil-plasticity). Under mpirun the tangent is factorized "
+      "on one rank, or over the ranks by MUMPS with Linear solver/"
+      "Distributed = always (doc/soil-plasticity.md 3c).");
     prm.leave_subsection();
   }
 
@@ -219,6 +308,13 @@ namespace FourierSSI
               fail(where + "'" + words[w] + "' is not key=value");
             const std::string key = Utilities::trim(words[w].substr(0, eq));
             record_key_once(keys_given, key, entry, item);
+            if (law.kind == SoilLaw::Kind::iwan && key == "table")
+              {
+                law.degradation =
+                  degradation_table(words[w].substr(eq + 1), where);
+                law.n_surfaces = law.degradation.size();
+                continue;
+              }
             const double value =
               number_in_entry(words[w].substr(eq + 1), entry);
             if (!set_key(law, key, value))

@@ -19,6 +19,16 @@
 //  - N = 1 is one von Mises element: min(G0 gamma, s_u) exactly;
 //  - s_u = su + k depth; G0 gamma_ref <= s_u refused with one line (the
 //    hyperbola never reaches s_u).
+//  - a measured degradation table (derivation section 7): the model is the
+//    polygon through tau_k = G0 gamma_k (G/G0)_k, continued with the last
+//    slope to s_u: tau at every table point equals G0 gamma_k (G/G0)_k
+//    computed here (1e-10 relative: sums of a few products), every
+//    sampled strain equals the polygon (1e-10), in simple shear and in
+//    triaxial (sqrt(3) times), the elements' moduli sum to G0 and their
+//    strengths to s_u (1e-12), one element per kink below the cap (6 for
+//    the table below with s_u = 10 kPa, 4 with s_u = 4 kPa where the cap
+//    cuts its fourth segment), and a table whose tau ends flat below s_u
+//    is refused in one line.
 #include "check.h"
 #include "multi_surface_clay_test_support.h"
 
@@ -207,6 +217,105 @@ namespace
                              "does not exceed s_u = 12 kPa") == 0 &&
                   message.find('\n') == std::string::npos);
   }
+  /** A degradation curve of a soft clay (strain : G/G0), concave tau. */
+  const std::string table =
+    "1e-5:1 1e-4:0.9 3e-4:0.75 1e-3:0.5 3e-3:0.25 1e-2:0.085";
+
+  MultiSurfaceClay
+  table_clay(const std::string &strength)
+  {
+    SoilPlasticityParameters p;
+    p.parse_law_list("0: iwan, su=" + strength + ", table=" + table);
+    return MultiSurfaceClay(p.laws.at(0), g0, bulk, 0.);
+  }
+
+  void
+  check_table()
+  {
+    const MultiSurfaceClay      law      = table_clay("10");
+    const MultiSurfaceBackbone &elements = law.elements();
+    // Kinks at the first five points and at the cap; the last point is
+    // none (its slope goes on past it).
+    check::equal("table: one element per kink below s_u",
+                 elements.n_surfaces(),
+                 6);
+    // The points themselves, from the table's numbers.
+    const std::vector<std::pair<double, double>> points = {{1e-5, 1.},
+                                                           {1e-4, 0.9},
+                                                           {3e-4, 0.75},
+                                                           {1e-3, 0.5},
+                                                           {3e-3, 0.25},
+                                                           {1e-2, 0.085}};
+    std::vector<StrainVector>                    path;
+    for (const auto &[gamma, ratio] : points)
+      path.push_back(simple_shear(gamma));
+    const std::vector<MultiSurfaceReturn> returns = drive(law, path);
+    double                                worst   = 0.;
+    for (unsigned int k = 0; k < points.size(); ++k)
+      worst = std::max(worst,
+                       std::abs(returns[k].stress[3] /
+                                  (g0 * points[k].first * points[k].second) -
+                                1.));
+    check::small("table: tau at its points = G0 gamma G/G0", worst, 1e-10);
+    for (const bool triaxial : {false, true})
+      {
+        const CurveErrors e = monotonic_errors(law, triaxial);
+        const std::string what =
+          triaxial ? "table, triaxial q(eps_a)" : "table, simple shear";
+        check::small(what + ": error at the nodes", e.at_nodes, 1e-10);
+        check::small(what + ": error between the nodes",
+                     e.between_nodes,
+                     1e-10);
+        check::small(what + ": capacity at 2 gamma_f", e.capacity, 1e-12);
+      }
+    double moduli = 0., strengths = 0.;
+    for (unsigned int i = 0; i < elements.n_surfaces(); ++i)
+      {
+        moduli += elements.shear_modulus(i);
+        strengths += elements.strength(i);
+      }
+    check::relative("table: the moduli sum to G0", moduli, g0, 1e-12);
+    check::relative("table: the strengths sum to s_u", strengths, su, 1e-12);
+    // Past the last point the last slope goes on: s_u at gamma_f.
+    const double slope = g0 * (1e-2 * 0.085 - 3e-3 * 0.25) / (1e-2 - 3e-3);
+    check::relative("table: gamma_f on the last slope",
+                    elements.failure_strain(),
+                    1e-2 + (su - g0 * 1e-2 * 0.085) / slope,
+                    1e-12);
+
+    // s_u = 4 kPa cuts the fourth segment (tau = 2.475 .. 5.5 kPa).
+    const MultiSurfaceClay capped = table_clay("4");
+    check::equal("table capped at s_u = 4 kPa: 4 elements",
+                 capped.elements().n_surfaces(),
+                 4);
+    check::relative("table capped: tau at 2 gamma_f is s_u",
+                    capped
+                      .return_map(simple_shear(
+                                    2. * capped.elements().failure_strain()),
+                                  capped.initial_state())
+                      .stress[3],
+                    4.,
+                    1e-12);
+
+    std::string message;
+    try
+      {
+        // tau = 1.1 kPa at both points: flat, below s_u = 10 kPa.
+        SoilPlasticityParameters p;
+        p.parse_law_list("0: iwan, su=10, table=1e-4:1 1e-3:0.1");
+        MultiSurfaceClay(p.laws.at(0), g0, bulk, 0.);
+      }
+    catch (const std::exception &e)
+      {
+        message = one_line_message(e);
+      }
+    std::cout << "  message: " << message << std::endl;
+    check::that("a table ending flat below s_u refused with one line",
+                message.find("Soil plasticity/Laws: iwan: the table's last "
+                             "point gives tau = 1.1 kPa on a flat last "
+                             "segment") == 0 &&
+                  message.find('\n') == std::string::npos);
+  }
 } // namespace
 
 int
@@ -218,5 +327,6 @@ main()
   check_one_element();
   check_depth_profile();
   check_unreachable_strength();
+  check_table();
   return check::summary();
 }

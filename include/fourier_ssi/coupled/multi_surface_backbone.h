@@ -21,10 +21,17 @@
  *   t_j = tan^2(j dpsi / 2), dpsi = 2 atan(sqrt(u_f)) / (N - 1),     (B3)
  * which spreads the relative error between nodes evenly; it is about
  * dpsi^2 / 4 (derivation section 3).
+ *
+ * A measured degradation curve (gamma_k, G/G0_k), k = 1..K, G/G0 = 1 at the
+ * first, is taken as the polygon through tau_k = G0 gamma_k (G/G0)_k
+ * (derivation section 7): linear between the points, continued beyond the
+ * last with the last segment's slope, capped at s_u. Its sub-elements are
+ * the polygon's kinks below the cap, so the model is that polygon exactly.
  */
 #ifndef fourier_ssi_multi_surface_backbone_h
 #define fourier_ssi_multi_surface_backbone_h
 
+#include <utility>
 #include <vector>
 
 namespace FourierSSI
@@ -42,6 +49,16 @@ namespace FourierSSI
                          const double       undrained_strength,
                          const double       reference_strain,
                          const unsigned int n_surfaces);
+
+    /**
+     * G0 [kPa], s_u [kPa] and a degradation table (gamma, G/G0), checked by
+     * the input (SoilLaw::degradation). Throws one line if the polygon
+     * cannot reach s_u (it ends below s_u on a flat last segment).
+     */
+    MultiSurfaceBackbone(
+      const double                                  shear_modulus,
+      const double                                  undrained_strength,
+      const std::vector<std::pair<double, double>> &degradation);
 
     unsigned int
     n_surfaces() const
@@ -77,14 +94,20 @@ namespace FourierSSI
       return strengths[i] / moduli[i];
     }
 
-    /** The engineering shear strains gamma_ref t_j of the nodes (B3). */
+    /**
+     * The engineering shear strains where the model meets its backbone:
+     * gamma_ref t_j of (B3), or the table's strains below the cap.
+     */
     const std::vector<double> &
     node_strains() const
     {
       return nodes;
     }
 
-    /** tau_b(gamma) of (B1) [kPa], the closed form the model fits. */
+    /**
+     * tau_b(gamma) [kPa], the curve the model fits: (B1), or the table's
+     * polygon capped at s_u.
+     */
     double
     backbone_stress(const double gamma) const;
 
@@ -92,7 +115,7 @@ namespace FourierSSI
     double
     model_stress(const double gamma) const;
 
-    /** gamma_f of (B2): where the backbone reaches s_u. */
+    /** gamma_f: where the backbone reaches s_u ((B2), or the table's). */
     double
     failure_strain() const;
 
@@ -100,8 +123,14 @@ namespace FourierSSI
     void
     fit_tangents(const unsigned int n_surfaces);
 
-    double              g0, su, gamma_ref;
+    /** The sub-elements of the polygon through `vertices` (from 0, 0). */
+    void
+    fit_polygon(const std::vector<std::pair<double, double>> &vertices);
+
+    double              g0, su, gamma_ref = 0.;
     std::vector<double> moduli, strengths, nodes;
+    /** The table's polygon (gamma, tau), up to gamma_f; empty: (B1). */
+    std::vector<std::pair<double, double>> polygon;
   };
 } // namespace FourierSSI
 

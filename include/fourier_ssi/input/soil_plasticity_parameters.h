@@ -11,6 +11,8 @@
 #include <deal.II/base/types.h>
 #include <map>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace FourierSSI
 {
@@ -38,6 +40,14 @@ namespace FourierSSI
      */
     double       reference_strain = 0.;
     unsigned int n_surfaces       = 20;
+    /**
+     * iwan: a measured degradation curve instead of the hyperbola, pairs
+     * (gamma, G/G0) with gamma increasing and G/G0 = 1 at the first
+     * (MultiSurfaceBackbone); empty: the hyperbola of reference_strain.
+     * n_surfaces is then its length: its kinks below s_u, at most one per
+     * point (the last point's slope goes on), are the elements.
+     */
+    std::vector<std::pair<double, double>> degradation;
     /** The largest number of iwan sub-elements (memory per soil point). */
     static constexpr unsigned int max_surfaces = 100;
 
