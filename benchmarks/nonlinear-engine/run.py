@@ -123,6 +123,25 @@ def run_once(exe, kappa, solver, work):
             "wall": wall, "note": ""}
 
 
+def summary_row(kappa, solver, results):
+    """One row of results.csv: the first run's answers, median times."""
+    ok = all(r["converged"] for r in results)
+    r0 = results[0]
+    row = {"kappa": label(kappa), "solver": solver, "runs": len(results),
+           "converged": int(ok), "note": r0["note"],
+           "run_wall_s": "%.2f" % statistics.median(r["wall"]
+                                                     for r in results)}
+    if ok:
+        row.update({
+            "P_over_ubar_kN_per_m": "%.12g" % r0["P"],
+            "iterations_step1": r0["it1"], "iterations_worst": r0["worst"],
+            "multiplier_updates_total": r0["updates"],
+            "iterations_total": r0["total"], "states_step1": r0["states"],
+            "solve_time_s": "%.3f" % statistics.median(r["solve"]
+                                                        for r in results)})
+    return row
+
+
 def defaults(build, runs):
     """kappa = 1e6 and contact, every Load path entry at its default."""
     exe = os.path.join(build, "fourier-ssi")
@@ -131,22 +150,7 @@ def defaults(build, runs):
         for kappa in (1e6, CONTACT):
             results = [run_once(exe, kappa, "defaults", work)
                        for _ in range(runs)]
-            ok = all(r["converged"] for r in results)
-            r0 = results[0]
-            row = {"kappa": label(kappa), "solver": "defaults",
-                   "runs": runs, "converged": int(ok), "note": r0["note"],
-                   "run_wall_s": "%.2f" % statistics.median(
-                       r["wall"] for r in results)}
-            if ok:
-                row.update({
-                    "P_over_ubar_kN_per_m": "%.12g" % r0["P"],
-                    "iterations_step1": r0["it1"],
-                    "iterations_worst": r0["worst"],
-                    "multiplier_updates_total": r0["updates"],
-                    "iterations_total": r0["total"],
-                    "states_step1": r0["states"],
-                    "solve_time_s": "%.3f" % statistics.median(
-                        r["solve"] for r in results)})
+            row = summary_row(kappa, "defaults", results)
             rows.append(row)
             print(row, flush=True)
     load.append(os.getloadavg()[0])
@@ -206,23 +210,7 @@ def main():
                 if results[0]["converged"]:
                     results += [run_once(exes[solver], kappa, solver, work)
                                 for _ in range(runs - 1)]
-                ok = all(r["converged"] for r in results)
-                r0 = results[0]
-                row = {"kappa": label(kappa), "solver": solver,
-                       "runs": len(results), "converged": int(ok),
-                       "note": r0["note"],
-                       "run_wall_s": "%.2f" % statistics.median(
-                           r["wall"] for r in results)}
-                if ok:
-                    row.update({
-                        "P_over_ubar_kN_per_m": "%.12g" % r0["P"],
-                        "iterations_step1": r0["it1"],
-                        "iterations_worst": r0["worst"],
-                        "multiplier_updates_total": r0["updates"],
-                        "iterations_total": r0["total"],
-                        "states_step1": r0["states"],
-                        "solve_time_s": "%.3f" % statistics.median(
-                            r["solve"] for r in results)})
+                row = summary_row(kappa, solver, results)
                 rows.append(row)
                 print(row, flush=True)
                 write_csv(rows)
