@@ -40,10 +40,12 @@ import subprocess
 import sys
 
 exe, source_dir, work = sys.argv[1:4]
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from relative_checks import finish, that  # noqa: E402
+
 shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)
 environment = dict(os.environ, OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1")
-failed = 0
 G, R0 = 1e5 / 2.6, 0.5
 OUTPUT = """
 subsection Output
@@ -63,10 +65,6 @@ def law(kappa):
     return "5: coulomb, kn=%.17g, ks=%.17g, c=0, phi=0, sigma_t=0" % (k, k)
 
 
-def check(what, ok):
-    global failed
-    print(("  ok   " if ok else "  FAIL ") + what)
-    failed += 0 if ok else 1
 
 
 def run(name, kappa):
@@ -78,7 +76,8 @@ def run(name, kappa):
     done = subprocess.run([exe, "scene.prm"], cwd=folder, env=environment,
                           capture_output=True, text=True)
     print("%s:" % name)
-    check("exits 0 (%s)" % done.stderr.strip()[-200:], done.returncode == 0)
+    that(done.returncode == 0,
+     "exits 0 (%s)" % done.stderr.strip()[-200:])
     path = os.path.join(folder, "out", "load-displacement.csv")
     return list(csv.DictReader(open(path))) if os.path.isfile(path) else []
 
@@ -87,29 +86,30 @@ steps = {name: run(name, kappa)
          for name, kappa in (("contact", None), ("k5", 1e5), ("k6", 1e6))}
 c = steps["contact"]
 if len(c) != 4 or any(len(s) != 4 for s in steps.values()):
-    check("4 steps in every run", False)
-    sys.exit(1)
+    that(False,
+     "4 steps in every run")
+    finish()
 H = {name: float(s[-1]["probe_H_kN"]) for name, s in steps.items()}
 limit = H["k6"] + (H["k6"] - H["k5"]) / 9.
 print("  probe_H: contact %.12g, kappa 1e5 %.12g, 1e6 %.12g, "
       "extrapolated %.12g kN; probe_M %s kN m"
       % (H["contact"], H["k5"], H["k6"], limit, c[-1]["probe_M_kNm"]))
-check("L theta = u at every step (L = 1 m), to 1e-12 m",
-      all(abs(float(r["rotation_rad"]) - float(r["horizontal_m"])) <= 1e-12
-          for r in c))
+that(all(abs(float(r["rotation_rad"]) - float(r["horizontal_m"])) <= 1e-12
+          for r in c),
+     "L theta = u at every step (L = 1 m), to 1e-12 m")
 ratios = [float(r["probe_H_kN"]) / float(r["horizontal_m"]) for r in c]
-check("probe_H / u equal at every step to 1e-8 (%s kN/m)" % ratios[-1],
-      max(ratios) - min(ratios) <= 1e-8 * abs(ratios[-1]))
-check("the penalties open the same samples at kappa = 1e5 and 1e6 (%s, %s)"
-      % (steps["k5"][-1]["open"], steps["k6"][-1]["open"]),
-      steps["k5"][-1]["open"] == steps["k6"][-1]["open"])
-check("contact probe_H = the penalties' 1/kappa limit to 1e-7 (%.2e)"
-      % (abs(H["contact"] - limit) / abs(limit)),
-      abs(H["contact"] - limit) <= 1e-7 * abs(limit))
-check("0 < probe_M <= 1e3 kN m",
-      0. < float(c[-1]["probe_M_kNm"]) <= 1e3)
+that(max(ratios) - min(ratios) <= 1e-8 * abs(ratios[-1]),
+     "probe_H / u equal at every step to 1e-8 (%s kN/m)" % ratios[-1])
+that(steps["k5"][-1]["open"] == steps["k6"][-1]["open"],
+     "the penalties open the same samples at kappa = 1e5 and 1e6 (%s, %s)"
+      % (steps["k5"][-1]["open"], steps["k6"][-1]["open"]))
+that(abs(H["contact"] - limit) <= 1e-7 * abs(limit),
+     "contact probe_H = the penalties' 1/kappa limit to 1e-7 (%.2e)"
+      % (abs(H["contact"] - limit) / abs(limit)))
+that(0. < float(c[-1]["probe_M_kNm"]) <= 1e3,
+     "0 < probe_M <= 1e3 kN m")
 updates = {name: [int(r["iterations"]) for r in s]
            for name, s in steps.items()}
-check("Newton updates per step in [1, 15] (%s)" % updates,
-      all(1 <= n <= 15 for u in updates.values() for n in u))
-sys.exit(1 if failed else 0)
+that(all(1 <= n <= 15 for u in updates.values() for n in u),
+     "Newton updates per step in [1, 15] (%s)" % updates)
+finish()

@@ -34,10 +34,12 @@ import subprocess
 import sys
 
 exe, source_dir, work = sys.argv[1:4]
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from relative_checks import finish, that  # noqa: E402
+
 shutil.rmtree(work, ignore_errors=True)
 os.makedirs(work)
 environment = dict(os.environ, OPENBLAS_NUM_THREADS="1", OMP_NUM_THREADS="1")
-failed = 0
 OUTPUT = "\nsubsection Output\n  set Directory = out\nend\n"
 NON_FINITE = re.compile(r"(?i)(?<![a-z_])(nan|inf|infinity)(?![a-z_])")
 
@@ -67,10 +69,6 @@ CASES = {
 }
 
 
-def check(what, ok):
-    global failed
-    print(("  ok   " if ok else "  FAIL ") + what)
-    failed += 0 if ok else 1
 
 
 for name, (scene, extra, code, present, absent) in CASES.items():
@@ -81,18 +79,20 @@ for name, (scene, extra, code, present, absent) in CASES.items():
     run = subprocess.run([exe, "scene.prm"], cwd=folder, env=environment,
                          capture_output=True, text=True)
     print("%s:" % name)
-    check("exit %d (got %d: %s)" % (code, run.returncode,
-                                     run.stderr.strip()[-200:]),
-          run.returncode == code)
+    that(run.returncode == code,
+     "exit %d (got %d: %s)" % (code, run.returncode,
+                                     run.stderr.strip()[-200:]))
     out = os.path.join(folder, "out")
     files = sorted(f for f in os.listdir(out)
                    if f.endswith((".csv", ".dat", ".txt"))) \
         if os.path.isdir(out) else []
-    check("results.csv written", "results.csv" in files)
+    that("results.csv" in files,
+     "results.csv written")
     for f in files:
         bad = [line.strip() for line in open(os.path.join(out, f))
                if NON_FINITE.search(line)]
-        check("%s: no nan or inf token (%s)" % (f, bad[:2]), not bad)
+        that(not bad,
+     "%s: no nan or inf token (%s)" % (f, bad[:2]))
     if "results.csv" not in files:
         continue
     rows = list(csv.DictReader(open(os.path.join(out, "results.csv"))))
@@ -102,13 +102,15 @@ for name, (scene, extra, code, present, absent) in CASES.items():
             values.append(float(row["value"]))
         except ValueError:
             values.append(float("nan"))
-    check("results.csv: all %d values finite" % len(rows),
-          all(math.isfinite(v) for v in values))
+    that(all(math.isfinite(v) for v in values),
+     "results.csv: all %d values finite" % len(rows))
     quantities = {row["quantity"] for row in rows}
     for q in present:
-        check("row %s present" % q, q in quantities)
+        that(q in quantities,
+     "row %s present" % q)
     for q in absent:
-        check("row %s absent (not estimated)" % q, q not in quantities)
+        that(q not in quantities,
+     "row %s absent (not estimated)" % q)
     if name == "sand_mudline":
         curves = list(csv.reader(open(os.path.join(
             out, "soil-reaction-curves.csv"))))
@@ -116,7 +118,7 @@ for name, (scene, extra, code, present, absent) in CASES.items():
         column = header.index("p/(s D) [-]")
         at_mudline = [r for r in body if float(r[header.index("depth [m]")])
                       == 0.]
-        check("soil-reaction curves at the mudline: p/(s D) empty where "
-              "sigma'_v = 0 (%d rows)" % len(at_mudline),
-              at_mudline and all(r[column] == "" for r in at_mudline))
-sys.exit(1 if failed else 0)
+        that(at_mudline and all(r[column] == "" for r in at_mudline),
+     "soil-reaction curves at the mudline: p/(s D) empty where "
+              "sigma'_v = 0 (%d rows)" % len(at_mudline))
+finish()
