@@ -112,46 +112,40 @@ namespace FourierSSI
     std::string
     table_problem(const std::vector<std::pair<double, double>> &table)
     {
-      std::ostringstream text;
       if (table.size() < 2 || table.size() > SoilLaw::max_surfaces)
-        {
-          text << "the table needs 2 to " << SoilLaw::max_surfaces
-               << " points (has " << table.size() << ")";
-          return text.str();
-        }
+        return "the table needs 2 to " + std::to_string(SoilLaw::max_surfaces) +
+               " points (has " + std::to_string(table.size()) + ")";
       if (table[0].second != 1.)
         return "table must start at G/G0 = 1 (the small-strain modulus)";
       double last_slope = 1.;
       for (unsigned int k = 0; k < table.size(); ++k)
         {
           const auto [gamma, ratio] = table[k];
-          text << "table point " << k + 1 << " (" << gamma << ":" << ratio
-               << "): ";
+          std::ostringstream point;
+          point << "table point " << k + 1 << " (" << gamma << ":" << ratio
+                << "): ";
+          const std::string at = point.str();
           if (!(gamma > 0. && gamma < 1.))
-            return text.str() + "the strain must satisfy 0 < gamma < 1";
+            return at + "the strain must satisfy 0 < gamma < 1";
           if (!(ratio > 0. && ratio <= 1.))
-            return text.str() + "G/G0 must satisfy 0 < G/G0 <= 1";
+            return at + "G/G0 must satisfy 0 < G/G0 <= 1";
           if (k == 0)
-            {
-              text.str("");
-              continue;
-            }
+            continue;
           const auto [gamma_last, ratio_last] = table[k - 1];
           if (!(gamma > gamma_last))
-            return text.str() + "the strains must increase";
+            return at + "the strains must increase";
           if (ratio > ratio_last)
-            return text.str() + "G/G0 must not rise";
+            return at + "G/G0 must not rise";
           const double slope =
             (gamma * ratio - gamma_last * ratio_last) / (gamma - gamma_last);
           if (slope < 0.)
-            return text.str() + "tau = G0 gamma G/G0 falls (a softening "
-                                "curve has no iwan elements)";
+            return at + "tau = G0 gamma G/G0 falls (a softening curve has "
+                        "no iwan elements)";
           if (slope > last_slope * (1. + 1e-12))
-            return text.str() +
-                   "tau = G0 gamma G/G0 bends upward here (its slope rises "
-                   "from the last segment's: no iwan elements fit it)";
+            return at + "tau = G0 gamma G/G0 bends upward here (its slope "
+                        "rises from the last segment's: no iwan elements fit "
+                        "it)";
           last_slope = slope;
-          text.str("");
         }
       return "";
     }
