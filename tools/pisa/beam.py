@@ -13,11 +13,12 @@ two-node elements with linear v and psi: bending integrated exactly, shear
 with one Gauss point (reduced: no shear locking).  The soil works on the
 pile through
 
-    p(v, z)  [kN/m]    and  m(psi, z) [kN m/m]  (two Gauss points per element),
+    p(v, z)  [kN/m]    and  m(psi, z, v) [kN m/m]  (two Gauss points per element),
     H_B(v_tip) [kN]    and  M_B(psi_tip) [kN m] at the tip node,
 
-each given as a function returning (value, derivative); they resist, so
-they enter the internal force with a + sign.  The head takes H = lam and
+each given as a function returning (value, derivative); m returns (value,
+dm/dpsi, dm/dv), since a sand's m scales with the local p(v).  They
+resist, so they enter the internal force with a + sign.  The head takes H = lam and
 M = lam h (a load at height h above the mudline), driven either by lam
 (load control) or by the mudline's v (displacement control; lam then
 follows from the head's equation, a bordered Newton system)."""
@@ -77,18 +78,33 @@ class Beam:
         T = np.zeros((nd, nd))
         e = self._ge
         Na, w, zg = self._gN, self._gw, self._gz
-        for off, spring in ((0, self.p), (1, self.m)):
-            if spring is None:
-                continue
-            ia, ib = 2 * e + off, 2 * e + 2 + off
-            val, der = spring(Na * u[ia] + (1 - Na) * u[ib], zg)
+        va, vb = 2 * e, 2 * e + 2
+        v_gauss = Na * u[va] + (1 - Na) * u[vb]
+
+        def add(rows, cols, val, der):
+            """The spring's force on DoFs `rows` (a, b) and its derivative
+            with respect to the DoFs `cols` (a, b), interpolated alike."""
             der = np.broadcast_to(der, Na.shape)
-            np.add.at(f, ia, w * val * Na)
-            np.add.at(f, ib, w * val * (1 - Na))
-            np.add.at(T, (ia, ia), w * der * Na * Na)
-            np.add.at(T, (ia, ib), w * der * Na * (1 - Na))
-            np.add.at(T, (ib, ia), w * der * Na * (1 - Na))
-            np.add.at(T, (ib, ib), w * der * (1 - Na) * (1 - Na))
+            ra, rb = rows
+            ca, cb = cols
+            if val is not None:
+                np.add.at(f, ra, w * val * Na)
+                np.add.at(f, rb, w * val * (1 - Na))
+            np.add.at(T, (ra, ca), w * der * Na * Na)
+            np.add.at(T, (ra, cb), w * der * Na * (1 - Na))
+            np.add.at(T, (rb, ca), w * der * Na * (1 - Na))
+            np.add.at(T, (rb, cb), w * der * (1 - Na) * (1 - Na))
+
+        if self.p is not None:
+            val, der = self.p(v_gauss, zg)
+            add((va, vb), (va, vb), val, der)
+        if self.m is not None:
+            # m may depend on v as well (sand: m scales with |p|), which
+            # makes the tangent unsymmetric
+            pa, pb = va + 1, vb + 1
+            val, der_psi, der_v = self.m(Na * u[pa] + (1 - Na) * u[pb], zg, v_gauss)
+            add((pa, pb), (pa, pb), val, der_psi)
+            add((pa, pb), (va, vb), None, der_v)
         it = 2 * self.ne
         if self.HB is not None:
             val, der = self.HB(u[it])

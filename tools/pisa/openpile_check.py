@@ -7,9 +7,11 @@ Usage: PYTHONPATH=<pydantic 2>:<openpile>/src /usr/bin/python3 \\
            tools/pisa/openpile_check.py DIR PILE
 DIR: calibrate.py's --out; PILE: a pile name (openpile-PILE.json there).
 The pile stands h = stick-up above the mudline (its top loaded by H: M = H h
-at the mudline) and the soil is one Custom_pisa_clay layer from the mudline
-to the tip (one Layer per exported layer; weight 18 kN/m3, not used by
-Custom_pisa_clay).  Prints, at 20-90 % of the 1D model's H at the end of its push,
+at the mudline) and the soil is one Custom_pisa_clay or Custom_pisa_sand
+Layer per exported layer from the mudline to the tip, under water (the
+water line above the mudline): a sand layer's weight is the export's
+(gamma' + 10 kN/m^3, so that OpenPile's sigma'_v is the FE's); a clay's is
+18 kN/m^3, which Custom_pisa_clay does not use.  Prints, at 20-90 % of the 1D model's H at the end of its push,
 OpenPile's and the 1D model's mudline deflection [m] and their ratio."""
 import json
 import os
@@ -27,7 +29,7 @@ def main():
     out, name = sys.argv[1:3]
     try:
         from openpile.construct import Pile, SoilProfile, Layer, Model
-        from openpile.soilmodels import Custom_pisa_clay
+        import openpile.soilmodels as soilmodels
     except ImportError as e:
         sys.exit(f"openpile_check.py: OpenPile cannot be imported ({e}); see doc/pisa-design-model.md")
     try:
@@ -42,9 +44,12 @@ def main():
     top = max(h, 1e-3)
     p = Pile.create_tubular(name=name, top_elevation=top, bottom_elevation=pile["bottom_elevation"],
                             diameter=pile["diameter"], wt=pile["wt"])
+    with open(os.path.join(out, f"openpile-{name}.json")) as f:
+        kind = json.load(f).get("soil_kind", "clay")
+    lateral = getattr(soilmodels, export.OPENPILE_MODEL[kind])
     sp = SoilProfile(name="calibrated", top_elevation=0.0, water_line=10.0,
-                     layers=[Layer(name=ly["name"], top=ly["top"], bottom=ly["bottom"], weight=18.0,
-                                   lateral_model=Custom_pisa_clay(**ly["Custom_pisa_clay"])) for ly in layers])
+                     layers=[Layer(name=ly["name"], top=ly["top"], bottom=ly["bottom"], weight=ly.get("weight", 18.0),
+                                   lateral_model=lateral(**ly[export.OPENPILE_MODEL[kind]])) for ly in layers])
     print(f"{'H [kN]':>10} {'v OpenPile [m]':>15} {'v 1D [m]':>10} {'ratio':>7}")
     for frac in (0.2, 0.4, 0.6, 0.8, 0.9):
         H = frac * H1[-1]
