@@ -14,7 +14,7 @@ left out, against the FE's pile-head curve, and writes
 
     DIR/fits.csv           every fitted value with its fit error
     DIR/model.json         the calibrated model (linear in z/D and L/D)
-    DIR/openpile-<pile>.json  OpenPile Custom_pisa_clay arguments per pile
+    DIR/openpile-<pile>.json  OpenPile Custom_pisa_clay or _sand arguments per pile
     DIR/head-curves.csv    FE and 1D pile-head H-v, M-theta per pile
     DIR/sheet.png          the plot sheet (plot_sheet.py)
 

@@ -69,7 +69,7 @@ def linear(top, bottom, s, s0, s1):
     return top + (bottom - top) * w
 
 
-def fit_linear_family(curves, s0, s1, start=None, xu_max_factor=10.0, shared_xu=False):
+def fit_linear_family(curves, s0, s1, start=None, xu_max_factor=10.0, shared_xu=False, yu_range=None):
     """One fit of all `curves` (list of dicts with s, x, y; x > 0) with each
     parameter linear in s between its values at s0 and s1.  Returns dict
     with 'top' and 'bottom' (k, n, xu, yu at s0 and s1), 'rms' per curve
@@ -78,7 +78,9 @@ def fit_linear_family(curves, s0, s1, start=None, xu_max_factor=10.0, shared_xu=
     s by a penalty.  A curve's residuals are divided by its 'scale' (default
     its own largest |y|).  shared_xu: one x_u for all s (as PISA's clay
     p-v and m-psi, Byrne et al. 2020), when the curves do not resolve its
-    variation."""
+    variation.  yu_range = (t0, t1): y_u linear in each curve's 't'
+    instead of s (z/L, as PISA's sand p-v and m-psi, Burd et al. 2020), its
+    'top' and 'bottom' values then at t0 and t1."""
     xmax = max(c["x"].max() for c in curves)
     ymax = max(np.abs(c["y"]).max() for c in curves)
     scale = [c.get("scale") or max(np.abs(c["y"]).max(), 1e-12) for c in curves]
@@ -86,19 +88,25 @@ def fit_linear_family(curves, s0, s1, start=None, xu_max_factor=10.0, shared_xu=
     lo = [np.log(ymax / xmax) - 6] * 2 + [0.0, 0.0] + [np.log(xmax) - 8] * 2 + [np.log(ymax) - 6] * 2
     hi = [np.log(ymax / xmax) + 12] * 2 + [1.0, 1.0] + [np.log(xmax * xu_max_factor)] * 2 + [np.log(ymax) + 3] * 2
 
-    def params(q, s):
+    def params(q, s, t=None):
         if shared_xu:
             q = np.concatenate([q[:5], q[4:5], q[5:]])
         k = linear(np.exp(q[0]), np.exp(q[1]), s, s0, s1)
         n = linear(q[2], q[3], s, s0, s1)
         xu = linear(np.exp(q[4]), np.exp(q[5]), s, s0, s1)
-        yu = linear(np.exp(q[6]), np.exp(q[7]), s, s0, s1)
+        if yu_range is None:
+            yu = linear(np.exp(q[6]), np.exp(q[7]), s, s0, s1)
+        else:
+            yu = linear(np.exp(q[6]), np.exp(q[7]), t, *yu_range)
         return k, n, xu, yu
+
+    def at_curve(q, c):
+        return params(q, c["s"], c.get("t"))
 
     def resid(q):
         out = []
         for c, sc in zip(curves, scale):
-            k, n, xu, yu = params(q, c["s"])
+            k, n, xu, yu = at_curve(q, c)
             out.append((conic(c["x"], k, n, xu, yu) - c["y"]) / sc)
             out.append([10.0 * max(0.0, 1.0 - k * xu / yu)])
         return np.concatenate(out)
@@ -124,11 +132,12 @@ def fit_linear_family(curves, s0, s1, start=None, xu_max_factor=10.0, shared_xu=
     q = best.x
     rms = []
     for c in curves:
-        k, n, xu, yu = params(q, c["s"])
+        k, n, xu, yu = at_curve(q, c)
         rms.append(float(np.sqrt(np.mean((conic(c["x"], k, n, xu, yu) - c["y"]) ** 2)) / yu))
     names = ("k", "n", "xu", "yu")
-    top = dict(zip(names, [float(v) for v in params(q, s0)]))
-    bottom = dict(zip(names, [float(v) for v in params(q, s1)]))
+    ends = (None, None) if yu_range is None else yu_range
+    top = dict(zip(names, [float(v) for v in params(q, s0, ends[0])]))
+    bottom = dict(zip(names, [float(v) for v in params(q, s1, ends[1])]))
     # the penalty holds k x_u >= y_u to about 1e-3; make it exact at the ends
     for end in (top, bottom):
         end["k"] = max(end["k"], end["yu"] / end["xu"])

@@ -11,8 +11,8 @@ import numpy as np
 
 from beam import Beam, Pile
 from conic import conic
-from fit import prepare, fit_curve, fit_linear_family, linear
-from model import Model, OwnCurvesModel, COMPONENTS
+from fit import prepare, fit_curve, fit_linear_family
+from model import Model, OwnCurvesModel, COMPONENTS, SOIL_KINDS
 import export
 
 # component: (x column, y column) of soil-reaction-curves.csv
@@ -22,8 +22,17 @@ COLUMNS = {
     "Hb": ("v_base G/(s D) [-]", "H_B/(s D^2) [-]"),
     "Mb": ("psi G/s_base [-]", "M_B/(s D^3) [-]"),
 }
-LABEL = {"py": "p/(s_u D) vs v G0/(s_u D)", "mt": "m/(s_u D^2) vs psi G0/s_u",
-         "Hb": "H_B/(s_u D^2) vs v G0/(s_u D)", "Mb": "M_B/(s_u D^3) vs psi G0/s_u"}
+# the normalisations of Byrne et al. 2020 (clay) and Burd et al. 2020 (sand)
+LABELS = {
+    "clay": {"py": "p/(s_u D) vs v G0/(s_u D)", "mt": "m/(s_u D^2) vs psi G0/s_u",
+             "Hb": "H_B/(s_u D^2) vs v G0/(s_u D)", "Mb": "M_B/(s_u D^3) vs psi G0/s_u"},
+    "sand": {"py": "p/(sigma'_v D) vs v G0/(sigma'_v D)", "mt": "m/(|p| D) vs psi G0/sigma'_v",
+             "Hb": "H_B/(sigma'_v D^2) vs v G0/(sigma'_v D)", "Mb": "M_B/(sigma'_v D^3) vs psi G0/sigma'_v"},
+}
+# y_u of p-v and m-psi varies with this depth variable unless the site says
+# otherwise (y_u with depth): clay z/D as Byrne et al. 2020, sand z/L as
+# Burd et al. 2020
+YU_DEPTH_VARIABLE = {"clay": "z/D", "sand": "z/L"}
 # A distributed curve whose largest |x| is below this fraction of its
 # pile's largest (the depths next to the rotation point) stays out of the
 # depth fit: it carries almost no information on y_u and x_u.
@@ -34,13 +43,34 @@ class InputError(Exception):
     pass
 
 
+def soil_kind(piles, data):
+    """'clay' or 'sand', from the normaliser of the runs' curves (every
+    pile's the same)."""
+    kinds = {}
+    for name, d in data.items():
+        by = {r.get("normalised by") for r in d["curves"]}
+        if len(by) != 1 or next(iter(by)) not in SOIL_KINDS:
+            raise InputError(f"pile {name}: the curves are normalised by {', '.join(map(str, sorted(by, key=str)))}; "
+                             f"a calibration needs one of {', '.join(SOIL_KINDS)} (a Tresca or iwan clay, "
+                             "a Mohr-Coulomb sand)")
+        kinds[name] = SOIL_KINDS[next(iter(by))]
+    if len(set(kinds.values())) > 1:
+        raise InputError("the piles' curves mix clay and sand normalisations: "
+                         + ", ".join(f"{n} {k}" for n, k in sorted(kinds.items())))
+    return next(iter(kinds.values()))
+
+
+def points(rows, xc, yc):
+    """x, y of a curve's rows, without the rows whose normalised value is
+    empty (a normaliser of zero: p = 0 for a sand's m/(|p| D))."""
+    use = [r for r in rows if isinstance(r[xc], float) and isinstance(r[yc], float)]
+    return np.array([r[xc] for r in use]), np.array([r[yc] for r in use])
+
+
 def pile_curves(pile, d):
     """{component: [dict(depth, zD, x, y)]} of one pile, the initial run's
     point first when there is one."""
     rows = d["curves"]
-    if rows and rows[0].get("normalised by") != "s_u":
-        raise InputError(f"pile {pile['name']}: the curves are normalised by "
-                         f"'{rows[0].get('normalised by')}'; only clay (s_u, a Tresca law) is calibrated yet")
     init = d["initial"]["curves"] if d.get("initial") else []
     L = pile["L_over_D"] * pile["D"]
     out = {c: [] for c in COMPONENTS}
@@ -50,28 +80,33 @@ def pile_curves(pile, d):
             raise InputError(f"pile {pile['name']}: a curve at depth {depth:g} m lies outside the pile (0, {L:g}] m")
         sel = sorted([r for r in init if abs(r["depth [m]"] - depth) < 1e-9] +
                      [r for r in rows if abs(r["depth [m]"] - depth) < 1e-9],
-                     key=lambda r: abs(r[COLUMNS["py"][0]]))
+                     key=lambda r: abs(r["v [m]"]))
         for c in ("py", "mt"):
-            xc, yc = COLUMNS[c]
-            out[c].append(dict(depth=depth, zD=depth / pile["D"],
-                               x=np.array([r[xc] for r in sel]), y=np.array([r[yc] for r in sel])))
+            x, y = points(sel, *COLUMNS[c])
+            out[c].append(dict(depth=depth, zD=depth / pile["D"], x=x, y=y))
     first = depths[0]
     sel = [r for r in init if abs(r["depth [m]"] - first) < 1e-9] + \
           [r for r in rows if abs(r["depth [m]"] - first) < 1e-9]
     for c in ("Hb", "Mb"):
-        xc, yc = COLUMNS[c]
-        out[c].append(dict(depth=L, zD=L / pile["D"],
-                           x=np.array([r[xc] for r in sel]), y=np.array([r[yc] for r in sel])))
+        x, y = points(sel, *COLUMNS[c])
+        out[c].append(dict(depth=L, zD=L / pile["D"], x=x, y=y))
     return out
 
 
-def soil_profile(data):
-    """(depth, s_u, G0) points from every run's CSV, the tips' included."""
+def soil_profile(data, piles):
+    """(depth, s, G0) points from every run's CSV: at the curves' depths,
+    and at each pile's tip (s_base, with G0 from the base's normalised
+    displacement where the base has moved)."""
     pts = {}
-    for d in data.values():
+    for name, d in data.items():
         for r in d["curves"]:
             pts[round(r["depth [m]"], 9)] = (r["s [kPa]"], r["G [kPa]"])
-            v, xb = r["v_base [m]"], r["v_base G/(s D) [-]"]
+        D, L = piles[name]["D"], piles[name]["L_over_D"] * piles[name]["D"]
+        moved = [r for r in d["curves"] if isinstance(r["v_base G/(s D) [-]"], float) and r["v_base [m]"] != 0.0]
+        if moved:
+            r = moved[-1]
+            pts.setdefault(round(L, 9), (r["s_base [kPa]"], r["v_base G/(s D) [-]"] * r["s_base [kPa]"] * D /
+                                         r["v_base [m]"]))
     depth = sorted(pts)
     return dict(depth=depth, s=[pts[z][0] for z in depth], G=[pts[z][1] for z in depth])
 
@@ -124,10 +159,11 @@ def resample(x, y):
     return xs, np.interp(xs, x[order], y[order])
 
 
-def regression_start(fam, s0, s1):
+def regression_start(fam, s0, s1, yu_over="z/D"):
     """A start for the family fit: each parameter of the per-curve fits
-    regressed linearly on s, weighted by the curve's largest reaction (the
-    curves whose k is 100 times the median, or n = 1, left out)."""
+    regressed linearly on s (y_u on z/L where it varies with z/L), weighted
+    by the curve's largest reaction (the curves whose k is 100 times the
+    median, or n = 1, left out)."""
     fits = [f for f in fam if f.get("fit")]
     if len(fits) < 2:
         return None
@@ -140,30 +176,46 @@ def regression_start(fam, s0, s1):
     start = {}
     for q in ("k", "n", "xu", "yu"):
         v = np.array([f["fit"][q] for f in use])
-        b, a = np.polyfit(s, v, 1, w=w)
+        over_L = q == "yu" and yu_over == "z/L"
+        var, ends = (np.array([f["t"] for f in use]), (0.0, 1.0)) if over_L else (s, (s0, s1))
+        b, a = np.polyfit(var, v, 1, w=w)
         lo = 0.0 if q == "n" else 0.05 * np.median(v)
         hi = 1.0 if q == "n" else np.inf
-        start[q] = tuple(float(np.clip(a + b * x, lo, hi)) for x in (s0, s1))
+        start[q] = tuple(float(np.clip(a + b * x, lo, hi)) for x in ends)
     return start
 
 
-def best_family(fam, s0, s1, component):
+def yu_variable(spec, kind):
+    """The depth variable of the distributed components' y_u: z/D, or z/L
+    (the toe's flow raises p at the same z/L of every pile; PISA's sand
+    form, Burd et al. 2020)."""
+    chosen = spec.get("yu_depth_variable", "auto")
+    return YU_DEPTH_VARIABLE[kind] if chosen == "auto" else chosen
+
+
+def best_family(fam, s0, s1, component, kind, yu_over):
     """The family fit from the default starts and from the regression of
-    the per-curve fits.  x_u is one value for p-v and m-psi (PISA's clay
-    form, Byrne et al. 2020): a linear x_u was tried and lowers the curves'
-    cost a little by running to x_u -> 0 at depth with k in the thousands,
-    which makes the pile head 15-50 % stiffer than the FE."""
-    start = regression_start(fam, s0, s1)
-    return fit_linear_family(fam, s0, s1, start=start, shared_xu=component in ("py", "mt"))
+    the per-curve fits.  x_u is one value for clay's p-v and m-psi (PISA's
+    clay form, Byrne et al. 2020): a linear x_u was tried and lowers the
+    curves' cost a little by running to x_u -> 0 at depth with k in the
+    thousands, which makes the pile head 15-50 % stiffer than the FE.  A
+    sand's m/(|p| D) is near its plateau from the first step (m and p grow
+    together), so its x_u is left linear in z/D."""
+    start = regression_start(fam, s0, s1, yu_over)
+    shared = component == "py" or (component == "mt" and kind == "clay")
+    yu_range = (0.0, 1.0) if yu_over == "z/L" else None
+    return fit_linear_family(fam, s0, s1, start=start, shared_xu=shared, yu_range=yu_range)
 
 
 def calibrate_and_compare(spec, data, out, plot=True):
     start = time.time()
     piles = {p["name"]: p for p in spec["piles"] if p["name"] in data}
     try:
+        kind = soil_kind(piles, data)
         curves = {name: pile_curves(p, data[name]) for name, p in piles.items()}
     except InputError as e:
         sys.exit(f"calibrate.py: {e}")
+    LABEL = LABELS[kind]
     fitted = [n for n, p in piles.items() if p["fitted"]]
     # 1. one conic per curve
     rows = []
@@ -188,19 +240,27 @@ def calibrate_and_compare(spec, data, out, plot=True):
             cvs = [cv for cv in curves[name][c] if cv["xp"].size >= 3]
             if not cvs:
                 continue
-            top = max(cv["xp"].max() for cv in cvs)
+            # the rotation point is where the lateral displacement is
+            # small: the p-v curves tell it for both distributed components
+            lateral = {cv["depth"]: cv["xp"].max() if cv["xp"].size else 0.0 for cv in curves[name]["py"]}
+            top = max(lateral.values())
             for cv in cvs:
-                if c in ("py", "mt") and cv["xp"].max() < NEAR_ROTATION_POINT * top:
+                if c in ("py", "mt") and lateral[cv["depth"]] < NEAR_ROTATION_POINT * top:
                     cv["in_family"] = False
                     continue
                 cv["in_family"] = True
                 s = cv["zD"] if c in ("py", "mt") else piles[name]["L_over_D"]
                 xr, yr = resample(cv["xp"], cv["yp"])
-                fam.append(dict(s=s, x=xr, y=yr, x_fe=cv["xp"], y_fe=cv["yp"], pile=name, depth=cv["depth"],
+                fam.append(dict(s=s, t=cv["depth"] / (piles[name]["L_over_D"] * piles[name]["D"]),
+                                x=xr, y=yr, x_fe=cv["xp"], y_fe=cv["yp"], pile=name, depth=cv["depth"],
                                 k0=cv["fit"]["k"] if cv["fit"] else None, fit=cv["fit"]))
+        yu_over = yu_variable(spec, kind) if c in ("py", "mt") else "L/D"
         if c in ("py", "mt"):
             edges = list(spec["layers"]) if spec["layers"] else [0.0, max(LDs)]
             edges[-1] = max(edges[-1], max(LDs))
+            if yu_over == "z/L" and len(edges) > 2:
+                sys.exit("calibrate.py: y_u linear in z/L takes one model layer ('model layers z/D = auto'); "
+                         "set 'y_u with depth = z/D' for layers")
         else:
             edges = [min(LDs), max(LDs)]
         for f in fam:
@@ -219,14 +279,15 @@ def calibrate_and_compare(spec, data, out, plot=True):
                 sys.exit(f"calibrate.py: component {c}, {'z/D' if c in ('py', 'mt') else 'L/D'} "
                          f"{s0:g}..{s1:g}: {len(sub)} usable curve(s) at fewer than 2 depths or lengths; "
                          "a linear fit needs 2 (more piles, more depths or fewer model layers)")
-            r = best_family(sub, s0, s1, c)
+            r = best_family(sub, s0, s1, c, kind, yu_over)
+            layer = dict(top=r["top"], bottom=r["bottom"], s0=s0, s1=s1, yu_over=yu_over)
             # the error over the FE's own points
             rms = []
             for f in sub:
-                k, n, xu, yu = (linear(r["top"][q], r["bottom"][q], f["s"], s0, s1) for q in ("k", "n", "xu", "yu"))
+                k, n, xu, yu = Model({c: dict(layers=[layer])}, {}, kind).at(c, f["s"], piles[f["pile"]]["L_over_D"])
                 rms.append(float(np.sqrt(np.mean((conic(f["x_fe"], k, n, xu, yu) - f["y_fe"]) ** 2)) / yu))
-            layers.append(dict(top=r["top"], bottom=r["bottom"], s0=s0, s1=s1,
-                               rms_all=float(np.sqrt(np.mean(np.square(rms)))), rms_max=max(rms)))
+            layer.update(rms_all=float(np.sqrt(np.mean(np.square(rms)))), rms_max=max(rms))
+            layers.append(layer)
             family_err[c] += [(f["pile"], f["depth"], e) for f, e in zip(sub, rms)]
             xmax_all = max(f["x"].max() for f in sub)
             for which, s in (("top", s0), ("bottom", s1)):
@@ -237,7 +298,7 @@ def calibrate_and_compare(spec, data, out, plot=True):
         errs = np.array([e for _, _, e in family_err[c]])
         params[c] = dict(layers=layers, variable="z/D" if c in ("py", "mt") else "L/D",
                          rms_all=float(np.sqrt(np.mean(errs ** 2))), rms_max=float(errs.max()))
-    model = Model(params, soil_profile(data))
+    model = Model(params, soil_profile(data, piles), kind)
     model.to_json(os.path.join(out, "model.json"),
                   extra=dict(normalisation={c: LABEL[c] for c in COMPONENTS},
                              t_over_D=spec["t_over_D"], h_over_D=spec["h_over_D"]))
@@ -255,21 +316,27 @@ def calibrate_and_compare(spec, data, out, plot=True):
             for i, ly in enumerate(params[c]["layers"]):
                 for which, s in (("top", ly["s0"]), ("bottom", ly["s1"])):
                     q = ly[which]
-                    w.writerow([f"model layer {i + 1} {which}", "all fitted", c, "", f"{s:.6g}", f"{q['k']:.6g}",
+                    # y_u over z/L: its top and bottom are at z/L = 0 and 1
+                    w.writerow([f"model layer {i + 1} {which}" + (" (y_u at z/L = 0, 1)" if ly["yu_over"] == "z/L"
+                                                                  else ""),
+                                "all fitted", c, "", f"{s:.6g}", f"{q['k']:.6g}",
                                 f"{q['n']:.6g}", f"{q['xu']:.6g}", f"{q['yu']:.6g}",
                                 f"{ly['rms_all']:.3g}", "", ""])
     print("conic fits, one per curve (fitted piles), error = RMS of (y_fit - y_FE)/y_u over the curve:")
     for c in COMPONENTS:
         e = [r["rms"] for r in rows if r["component"] == c]
         print(f"  {c:2s} ({LABEL[c]}): {len(e)} curves, error median {np.median(e):.3g}, max {max(e):.3g}")
-    print("the model (each parameter linear in z/D for py, mt; in L/D for Hb, Mb), error over its curves:")
+    print("the model (each parameter linear in z/D for py, mt, y_u where marked in z/L; in L/D for Hb, Mb), "
+          "error over its curves:")
     for c in COMPONENTS:
         P = params[c]
         for ly in P["layers"]:
             t, b = ly["top"], ly["bottom"]
+            yu_span = "z/L = 0 -> 1: " if ly["yu_over"] == "z/L" else ""
             print(f"  {c:2s} {P['variable']} = {ly['s0']:g} -> {ly['s1']:g}: k {t['k']:.4g} -> {b['k']:.4g}, "
                   f"n {t['n']:.3f} -> {b['n']:.3f}, x_u {t['xu']:.4g} -> {b['xu']:.4g}, "
-                  f"y_u {t['yu']:.4g} -> {b['yu']:.4g}; error RMS {ly['rms_all']:.3g}, max {ly['rms_max']:.3g}")
+                  f"y_u {yu_span}{t['yu']:.4g} -> {b['yu']:.4g}; error RMS {ly['rms_all']:.3g}, "
+                  f"max {ly['rms_max']:.3g}")
     # 3. the 1D model against the FE's pile head
     head_rows, summary = [], {}
     print("1D model against the FE at the pile head (mudline), at the FE's displacements:")
@@ -290,9 +357,9 @@ def calibrate_and_compare(spec, data, out, plot=True):
                        for cv in curves[name][c] if cv.get("fit")] for c in ("py", "mt")}
             for c in ("Hb", "Mb"):
                 f0 = curves[name][c][0].get("fit")
-                own[c] = tuple(f0[q] for q in ("k", "n", "xu", "yu")) if f0 else model.at(c, p["L_over_D"])
+                own[c] = tuple(f0[q] for q in ("k", "n", "xu", "yu")) if f0 else model.at(c, p["L_over_D"], p["L_over_D"])
             try:
-                own_1d = run_1d(OwnCurvesModel(own, model.profile, p["D"]), spec, p)
+                own_1d = run_1d(OwnCurvesModel(own, model.profile, p["D"], kind), spec, p)
                 dH_own = compare(fe, own_1d)[0]
                 summary[name]["own_max_dH"] = float(np.max(np.abs(dH_own)))
                 summary[name]["own_end_dH"] = float(dH_own[-1])
@@ -325,5 +392,5 @@ def calibrate_and_compare(spec, data, out, plot=True):
           f"({time.time() - start:.1f} s of fits and 1D runs)")
     if plot:
         import plot_sheet
-        plot_sheet.sheet(curves, model, summary, piles, os.path.join(out, "sheet.png"))
+        plot_sheet.sheet(curves, model, summary, piles, LABEL, os.path.join(out, "sheet.png"))
         print(f"plot sheet: {os.path.join(out, 'sheet.png')}")

@@ -8,10 +8,9 @@ import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
 from conic import conic  # noqa: E402
-from pipeline import LABEL  # noqa: E402
 
 
-def sheet(curves, model, summary, piles, path):
+def sheet(curves, model, summary, piles, labels, path):
     fitted = [n for n, p in piles.items() if p["fitted"]]
     fig, axes = plt.subplots(3, 4, figsize=(20, 14))
     colours = plt.rcParams["axes.prop_cycle"].by_key()["color"]
@@ -27,8 +26,8 @@ def sheet(curves, model, summary, piles, path):
                 f = cv["fit"]
                 ax.plot(xs, conic(xs, f["k"], f["n"], f["xu"], f["yu"]), "-", lw=0.8, color=col)
                 s = cv["zD"] if c in ("py", "mt") else piles[name]["L_over_D"]
-                ax.plot(xs, conic(xs, *model.at(c, s)), ":", lw=0.8, color=col)
-        ax.set_title(f"{c}: {LABEL[c]}\nFE (dots), conic per curve (-), model (:)", fontsize=9)
+                ax.plot(xs, conic(xs, *model.at(c, s, piles[name]["L_over_D"])), ":", lw=0.8, color=col)
+        ax.set_title(f"{c}: {labels[c]}\nFE (dots), conic per curve (-), model (:)", fontsize=9)
         ax.set_xlabel("x (normalised, see title)")
         ax.set_ylabel("y (normalised)")
         ax.set_xscale("symlog", linthresh=0.1)
@@ -42,9 +41,13 @@ def sheet(curves, model, summary, piles, path):
                 ax.plot(zs, vs, mk, ms=4, color=colours[i % len(colours)],
                         mfc="none" if c == "mt" else None, label=f"{c} {name}")
             P = model.params[c]
-            ss = np.linspace(P["layers"][0]["s0"], P["layers"][-1]["s1"], 200)
-            ax.plot(ss, [model.at(c, s)[("k", "n", "xu", "yu").index(q)] for s in ss], "k-" if c == "py" else "k--",
-                    lw=1, label=f"{c} model")
+            # y_u over z/L: one model line per fitted pile, to its tip
+            lines = [piles[name]["L_over_D"] for name in fitted] \
+                if q == "yu" and P["layers"][0].get("yu_over") == "z/L" else [P["layers"][-1]["s1"]]
+            for j_line, LD in enumerate(lines):
+                ss = np.linspace(P["layers"][0]["s0"], min(LD, P["layers"][-1]["s1"]), 200)
+                ax.plot(ss, [model.at(c, s, LD)[("k", "n", "xu", "yu").index(q)] for s in ss],
+                        "k-" if c == "py" else "k--", lw=1, label=f"{c} model" if j_line == 0 else None)
         ax.set_xlabel("z/D [-]")
         ax.set_ylabel(f"{q} [-]")
         ax.set_yscale("log" if q != "n" else "linear")

@@ -18,6 +18,8 @@ The spec is a list of `key = value` lines (`#` starts a comment):
     model layers z/D = auto          # edges of the layers in z/D within which the
                                      # p-v and m-psi parameters are linear (OpenPile
                                      # layers); auto: one, 0 to the largest L/D
+    y_u with depth = auto            # z/D, z/L, or auto: z/D for clay (Byrne et
+                                     # al. 2020), z/L for sand (Burd et al. 2020)
 
 The base scene must be a monopile scene in the form of
 prm/monopile-clay-lateral.prm: a steel wall (material 1), a tied ring on its
@@ -42,6 +44,7 @@ DEFAULTS = {
     "depths": "20",
     "cells along pile": "10",
     "model layers z/D": "auto",
+    "y_u with depth": "auto",
 }
 
 
@@ -142,6 +145,9 @@ def read_spec(path):
         if len(edges) < 2 or edges[0] != 0 or any(b <= a for a, b in zip(edges, edges[1:])):
             raise SpecError(f"{path}: 'model layers z/D = {ml}' must start at 0 and increase")
         spec["layers"] = edges
+    spec["yu_depth_variable"] = entries["y_u with depth"].strip()
+    if spec["yu_depth_variable"] not in ("auto", "z/D", "z/L"):
+        raise SpecError(f"{path}: 'y_u with depth = {spec['yu_depth_variable']}' is not auto, z/D or z/L")
     if spec["t_over_D"] >= 0.5:
         raise SpecError(f"{path}: 'wall t/D' must be below 0.5")
     return spec

@@ -26,14 +26,14 @@ class Mixed(Model):
     from one pile's own conics."""
 
     def __init__(self, model, own_model, own_components):
-        super().__init__(model.params, model.profile)
+        super().__init__(model.params, model.profile, model.soil_kind)
         self.own_model = own_model
         self.own_components = own_components
 
-    def at(self, component, s):
+    def at(self, component, s, L_over_D=None):
         if component in self.own_components:
-            return self.own_model.at(component, s)
-        return Model.at(self, component, s)
+            return self.own_model.at(component, s, L_over_D)
+        return Model.at(self, component, s, L_over_D)
 
 
 def own_conics(curves):
@@ -72,7 +72,7 @@ def main():
             print(f"  {p['name']}: no curves")
             continue
         d["initial"] = runs.read_pile(os.path.join(out, "runs", p["name"] + "-initial"))
-        own = OwnCurvesModel(own_conics(pipeline.pile_curves(p, d)), model.profile, p["D"])
+        own = OwnCurvesModel(own_conics(pipeline.pile_curves(p, d)), model.profile, p["D"], model.soil_kind)
         fe = pipeline.head_fe(d)
         for use in ((), ("py",), ("mt",), ("Hb", "Mb"), ("py", "mt", "Hb", "Mb")):
             dH = pipeline.compare(fe, pipeline.run_1d(Mixed(model, own, use), spec, p))[0]
