@@ -36,20 +36,14 @@ class Mixed(Model):
         return Model.at(self, component, s, L_over_D)
 
 
-def own_conics(curves):
-    own = {}
-    for c in ("py", "mt"):
-        own[c] = []
+def fitted_curves(curves):
+    """The pile's curves with each one's conic fit ('fit', None below 3
+    points), as calibrate.py fits them."""
+    for c in ("py", "mt", "Hb", "Mb"):
         for cv in curves[c]:
             _, x, y = prepare(cv["x"], cv["y"])
-            if x.size >= 3:
-                f = fit_curve(x, y)
-                own[c].append((cv["zD"], (f["k"], f["n"], f["xu"], f["yu"])))
-    for c in ("Hb", "Mb"):
-        _, x, y = prepare(curves[c][0]["x"], curves[c][0]["y"])
-        f = fit_curve(x, y)
-        own[c] = (f["k"], f["n"], f["xu"], f["yu"])
-    return own
+            cv["fit"] = fit_curve(x, y) if x.size >= 3 else None
+    return curves
 
 
 def main():
@@ -72,7 +66,9 @@ def main():
             print(f"  {p['name']}: no curves")
             continue
         d["initial"] = runs.read_pile(os.path.join(out, "runs", p["name"] + "-initial"))
-        own = OwnCurvesModel(own_conics(pipeline.pile_curves(p, d)), model.profile, p["D"], model.soil_kind)
+        conics = pipeline.own_conics(fitted_curves(pipeline.pile_curves(p, d)),
+                                     lambda c: model.at(c, p["L_over_D"], p["L_over_D"]))
+        own = OwnCurvesModel(conics, model.profile, p["D"], model.soil_kind)
         fe = pipeline.head_fe(d)
         for use in ((), ("py",), ("mt",), ("Hb", "Mb"), ("py", "mt", "Hb", "Mb")):
             dH = pipeline.compare(fe, pipeline.run_1d(Mixed(model, own, use), spec, p))[0]
