@@ -112,17 +112,25 @@ check("export: Hb_X at L/D = 4 (top = bottom)", args["Hb_X"][0], 4.0, 1e-12)
 check("export: Su at the mudline (constant above the shallowest FE depth) [kPa]", args["Su"][0], 50.0, 1e-12)
 check("export: G0 at the tip (depth 8 m) [kPa]", args["G0"][1], 15000 + 12000 * 7 / 8, 1e-12)
 check("export: layer bottom = -L [m]", layer["bottom"], -8.0, 1e-15)
-with open(path) as f:
-    doc = json.load(f)
-del doc["layers"][0]["Custom_pisa_clay"]["mt_k"]
-with open(path, "w") as f:
-    json.dump(doc, f)
-try:
-    export.read_openpile(path)
-    failed.append("a file without mt_k is refused")
-    print("FAIL a file without mt_k is refused")
-except ValueError as e:
-    print(f"ok   a file without mt_k is refused: {e}")
+
+
+def refused_after(spoil, what):
+    """The export at `path`, changed by spoil(doc), is refused by the reader
+    with a ValueError."""
+    with open(path) as f:
+        doc = json.load(f)
+    spoil(doc)
+    with open(path, "w") as f:
+        json.dump(doc, f)
+    try:
+        export.read_openpile(path)
+        failed.append(what)
+        print(f"FAIL {what}")
+    except ValueError as e:
+        print(f"ok   {what}: {e}")
+
+
+refused_after(lambda doc: doc["layers"][0]["Custom_pisa_clay"].pop("mt_k"), "a file without mt_k is refused")
 # two model layers: the export splits the pile at z/D = 2
 params["py"]["layers"] = [dict(top=dict(k=8.0, n=0.4, xu=20.0, yu=10.0), bottom=dict(k=7.0, n=0.5, xu=20.0, yu=11.0),
                                s0=0.0, s1=2.0),
@@ -206,16 +214,6 @@ check("sand export: no Su field", float("Su" in args), 0.0, 0)
 check("sand export: weight = gamma' + 10 [kN/m^3]", layers[0]["weight"], unit_weight + 10.0, 1e-12)
 check("sand export: sigma'_v at the tip [kPa]", layers[0]["sigma_v"][1], unit_weight * Ls, 1e-12)
 check("sand export: mt_Y at the tip (z/D = 4)", args["mt_Y"][1], 0.2, 1e-9)
-with open(path) as f:
-    doc = json.load(f)
-doc["layers"][0]["weight"] = 9.0
-with open(path, "w") as f:
-    json.dump(doc, f)
-try:
-    export.read_openpile(path)
-    failed.append("a sand layer of weight 9 is refused")
-    print("FAIL a sand layer of weight 9 is refused")
-except ValueError as e:
-    print(f"ok   a sand layer of weight 9 is refused: {e}")
+refused_after(lambda doc: doc["layers"][0].update(weight=9.0), "a sand layer of weight 9 is refused")
 print(f"{len(failed)} failed")
 sys.exit(1 if failed else 0)
