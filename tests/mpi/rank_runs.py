@@ -26,6 +26,28 @@ subsection Output
 end
 """
 
+# The same slice in multi-surface (iwan) clay through one cycle, u = +0.02,
+# -0.02, +0.02 m in 3 Newton steps a segment: every soil point carries its
+# surfaces' back-stresses from step to step, and the reversals exercise
+# Masing's rules (doc/soil-plasticity.md section 10). G0 gref = 3 s_u.
+PILE_SLICE_N2_IWAN_CYCLE = """
+subsection Discretization
+  set Harmonics = 0, 1, 2
+end
+subsection Load path
+  set Load steps = 3
+  set Target     = 0
+  set Targets    = 0.02, -0.02, 0.02
+end
+subsection Soil plasticity
+  set Laws      = 0: iwan, su=10, gref=0.01, surfaces=8
+  set Stiffness = tangent
+end
+subsection Output
+  set Directory = out
+end
+"""
+
 
 def run(command, directory):
     """Runs command in directory, its output kept in log.txt; exits on

@@ -26,8 +26,14 @@ Checks:
     (2e-14 measured on 1 and 2 ranks). A wrong factorization (a missing
     block row, a rank's rows misplaced) moves the curve by far more than
     1e-10 or changes the update counts.
+With a fifth argument `iwan`, the slice is in multi-surface (iwan) clay
+through one cycle (rank_runs.PILE_SLICE_N2_IWAN_CYCLE): the hysteretic
+points' consistent tangent in the distributed matrix, and load-cycles.csv
+(the loop's loads and motions on their families' scales, its energies,
+stiffness and damping ratio each on its own largest value) within 1e-10
+as well.
 Usage: soil_mumps_ranks.py "MPIEXEC;-np;2;..." FOURIER_SSI_EXE SOURCE_DIR
-       WORK_DIR
+       WORK_DIR [iwan]
 """
 import os
 import shutil
@@ -35,7 +41,8 @@ import sys
 
 import rank_runs
 
-OVERRIDES = rank_runs.PILE_SLICE_N2 % "tangent"
+OVERRIDES = {"tresca": rank_runs.PILE_SLICE_N2 % "tangent",
+             "iwan": rank_runs.PILE_SLICE_N2_IWAN_CYCLE}
 
 MUMPS = """
 subsection Linear solver
@@ -93,6 +100,23 @@ def curve_cells(rows):
     return cells
 
 
+def cycle_cells(rows):
+    """load-cycles.csv's numbers with the unit of their column's suffix:
+    a load at zero motion (or a motion at zero load: the pile's rotation is
+    round-off again) on its family's scale, an energy, a stiffness or a
+    damping ratio on its own largest value."""
+    cells = []
+    for row in rows:
+        for column, text in row.items():
+            unit = next((u for u in ("kN", "m", "rad")
+                         if column.endswith("_" + u)), "-")
+            try:
+                cells.append((column, unit, float(text)))
+            except (TypeError, ValueError):
+                pass
+    return cells
+
+
 def result_cells(rows):
     cells = []
     for row in rows:
@@ -105,12 +129,13 @@ def result_cells(rows):
 
 def main():
     mpiexec, exe, source, work = sys.argv[1].split(";"), *sys.argv[2:5]
+    law = sys.argv[5] if len(sys.argv) > 5 else "tresca"
     shutil.rmtree(work, ignore_errors=True)
     with open(os.path.join(source, "prm/pile-capacity.prm")) as f:
-        scene = f.read() + OVERRIDES
+        scene = f.read() + OVERRIDES[law]
     runs = {"serial": ([], ""), "mumps1": ([], MUMPS),
             "mumps2": (mpiexec, MUMPS)}
-    curves, results, failures = {}, {}, 0
+    curves, results, cycles, failures = {}, {}, {}, 0
     for name, (launcher, appended) in runs.items():
         directory = os.path.join(work, name)
         os.makedirs(directory)
@@ -129,6 +154,8 @@ def main():
         curves[name] = rank_runs.table(os.path.join(out,
                                                     "load-displacement.csv"))
         results[name] = rank_runs.table(os.path.join(out, "results.csv"))
+        if law == "iwan":
+            cycles[name] = rank_runs.table(os.path.join(out, "load-cycles.csv"))
     serial = curves["serial"]
     iterations = [int(row["iterations"]) for row in serial]
     plastic = int(serial[-1]["plastic"])
@@ -157,6 +184,14 @@ def main():
         print(f"  {'ok  ' if ok else 'FAIL'} {name}: results.csv within "
               f"{worst:.2e} of serial (bound {TOLERANCE:g}; at {where})")
         failures += not ok
+        if law == "iwan":
+            worst, where = largest_difference(cycle_cells(cycles["serial"]),
+                                              cycle_cells(cycles[name]))
+            ok = worst <= TOLERANCE and len(cycles[name]) == 1
+            print(f"  {'ok  ' if ok else 'FAIL'} {name}: load-cycles.csv "
+                  f"({len(cycles[name])} cycle) within {worst:.2e} of serial "
+                  f"(bound {TOLERANCE:g}; at {where})")
+            failures += not ok
     sys.exit(1 if failures else 0)
 
 

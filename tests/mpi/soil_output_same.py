@@ -48,12 +48,17 @@ stress calls for n = 3 at the first step, the set grows on both runs
 (n = 3 on rank 1), and the text must again be the same: the spectrum is
 summed over the ranks (every rank takes the same decision) and the added
 harmonic runs the distributed Newton above.
+With STIFFNESS = iwan, the same pile slice in multi-surface (iwan) clay
+through one cycle (u = +0.02, -0.02, +0.02 m, Newton): each point's
+back-stresses live on the rank that owns the point, and the loop's
+load-cycles.csv (its dissipated energy and damping ratio) must be the same
+text as well.  The cycle must reverse H and dissipate energy.
 With a sixth argument, the scene is prm/pile-adhesion.prm (plastic soil
 and a coulomb shaft, doc/soil-plasticity.md section 6b) with that interface
 law: the relative displacements are summed over the ranks too, and
 interface-state.csv must also be written once and be the same text.
 Usage: soil_output_same.py "MPIEXEC;-np;2;..." FOURIER_SSI_EXE SOURCE_DIR
-       WORK_DIR STIFFNESS|swipe [INTERFACE_LAW]
+       WORK_DIR STIFFNESS|swipe|growth|iwan [INTERFACE_LAW]
 """
 import os
 import sys
@@ -144,6 +149,10 @@ def main():
         overrides = GROWTH
         distribution = ("harmonics distributed over 2 MPI ranks: rank 0 "
                         "n=1 symmetric; rank 1")
+    iwan = sys.argv[5] == "iwan"
+    if iwan:
+        overrides = rank_runs.PILE_SLICE_N2_IWAN_CYCLE
+        files.add("load-cycles.csv")
     if len(sys.argv) > 6:
         scene = "prm/pile-adhesion.prm"
         overrides += ("subsection Interfaces\n  set Interfaces = %s\nend\n"
@@ -174,6 +183,18 @@ def main():
         print(f"  {'ok  ' if ok else 'FAIL'} the set grows: harmonics per "
               f"step {solved}")
         failures += not ok
+    if iwan:
+        cycles = {r: rank_runs.table(os.path.join(outputs[r], "load-cycles.csv"))
+                  for r in (1, 2)}
+        H = [float(row["H_kN"]) for row in curve[1]]
+        damping = [float(row["damping_ratio"]) for row in cycles[1]]
+        ok = min(H) < 0 < max(H) and len(damping) == 1 and damping[0] > 0
+        print(f"  {'ok  ' if ok else 'FAIL'} the cycle reverses H "
+              f"({min(H):.6g} to {max(H):.6g} kN) and dissipates: damping "
+              f"ratio {damping}")
+        failures += not ok
+        failures += same_text("load-cycles.csv", cycles[1], cycles[2],
+                              lambda row: False, set())
     failures += same_text("load-displacement.csv", curve[1], curve[2],
                           lambda row: False, {"time_s"})
     failures += same_text(
