@@ -40,7 +40,16 @@ Checks, with the reason for each tolerance:
 - the SoilDyn file has CalcOption 1, its stiffness block equals the CSV 6x6
   to 1e-6 (7 digits printed) and its damping block the table's c to 1e-6;
 - above first yield the lateral secant stiffness is below the elastic one
-  and the lateral damping ratio is positive (the loop opens).
+  and the lateral damping ratio is positive (the loop opens);
+- the tangent at the mean state (--tangent-step 0.0004 m): at the elastic
+  mean state its drives stay elastic, so the tangent block is the elastic
+  one within 1e-7 of its largest term (the same solver tolerance as the
+  secant) with error bars below 1e-7 of it; at a mean state that yields
+  (H = 400 kN, M = 600 kN m: plastic samples at the mean state), the bar
+  of the 0.0004 m steps contains the tangent from steps 20 times smaller
+  (the reference: its bar is below 0.1 of the coarse one, so it has
+  converged that much further), and the tangent lies below the elastic
+  one. About 10 s more.
 Usage: cyclic_stiffness.py FOURIER_SSI_EXE SOURCE_DIR WORK_DIR
 """
 import csv
@@ -66,7 +75,7 @@ H_m, M_m = 100.0, 100.0
 status = subprocess.call(
     ["/usr/bin/python3", tool, scene, "--mean-h", repr(H_m), "--mean-m", repr(M_m),
      "--amplitudes", "0.0004,0.004", "--lever", "1.5", "--exe", exe, "--np", "2", "--out", out,
-     "--no-plot"], cwd=work)
+     "--no-plot", "--tangent-step", "0.0004"], cwd=work)
 rc.that(status == 0, "the tool runs (exit %d)" % status)
 if status != 0:
     rc.finish()
@@ -223,4 +232,51 @@ rc.that(abs(Csd[0, 0] - float(d2["c_x_x_N_s_per_m"])) <= 1e-6 * abs(Csd[0, 0]) a
         abs(Csd[4, 4] - float(d2["c_ry_ry_N_m_s_per_rad"])) <= 1e-6 * abs(Csd[4, 4]) and
         np.allclose(Csd, Csd.T, rtol=0, atol=1e-12 * np.abs(Csd).max()),
         "SoilDyn damping block: the table's c on the diagonal, symmetric")
+
+
+def tangent_matrix(path):
+    """The tangent 6x6 and its error bars (0 where none) from its CSV."""
+    K, E = np.zeros((6, 6)), np.zeros((6, 6))
+    for r in csv.DictReader(open(path)):
+        _, i, j = r["term"].split("_")
+        i, j = DOFS.index(i), DOFS.index(j)
+        K[i, j] = K[j, i] = float(r["value"])
+        E[i, j] = E[j, i] = float(r["error_bar"] or 0.0)
+    return K, E
+
+
+# The tangent at the elastic mean state.
+Kt, Et = tangent_matrix(os.path.join(out, "tangent-stiffness.csv"))
+for drive in ("tangent-horizontal-1", "tangent-rotation-1"):
+    steps = rows(os.path.join(runs, drive, "load-displacement.csv"))
+    rc.that(all(int(s["plastic"]) == 0 for s in steps), "%s: elastic (no plastic sample)" % drive)
+block = np.ix_([0, 4], [0, 4])
+worst = np.abs(Kt[block] - K_el[block]).max() / np.abs(K_el[block]).max()
+rc.that(worst <= 1e-7 and Et[block].max() <= 1e-7 * np.abs(K_el[block]).max(),
+        "elastic mean state: tangent = elastic 2x2 within %.2e of the largest term, bars up to %.2e "
+        "of it (tol 1e-7)" % (worst, Et[block].max() / np.abs(K_el[block]).max()))
+
+# The tangent at a mean state that yields, against steps 20 times smaller.
+tangents = {}
+for step in ("0.0004", "0.00002"):
+    target = os.path.join(work, "tangent-" + step)
+    status = subprocess.call(
+        ["/usr/bin/python3", tool, scene, "--mean-h", "400", "--mean-m", "600", "--amplitudes", "0.0004",
+         "--lever", "1.5", "--exe", exe, "--np", "2", "--out", target, "--no-plot", "--tangent-step", step],
+        cwd=work, stdout=subprocess.DEVNULL)
+    rc.that(status == 0, "the tool with --tangent-step %s at H = 400 kN, M = 600 kN m (exit %d)" % (step, status))
+    if status != 0:
+        rc.finish()
+    tangents[step] = tangent_matrix(os.path.join(target, "tangent-stiffness.csv"))
+mean_steps = rows(os.path.join(work, "tangent-0.0004", "runs", "mean-state", "load-displacement.csv"))
+rc.that(int(mean_steps[-1]["plastic"]) > 0, "the mean state H = 400 kN yields (%s plastic samples)"
+        % mean_steps[-1]["plastic"])
+(K_c, E_c), (K_f, E_f) = tangents["0.0004"], tangents["0.00002"]
+for i, j in ((0, 0), (0, 4), (4, 4)):
+    rc.that(abs(K_c[i, j] - K_f[i, j]) <= E_c[i, j] and E_f[i, j] <= 0.1 * E_c[i, j],
+            "yielded mean state: tangent K_%s_%s %.6g +- %.3g (steps 4e-4 m) holds %.6g +- %.3g "
+            "(steps 2e-5 m)" % (DOFS[i], DOFS[j], K_c[i, j], E_c[i, j], K_f[i, j], E_f[i, j]))
+rc.that(K_f[0, 0] < K_el[0, 0] and K_f[4, 4] < K_el[4, 4],
+        "yielded mean state: tangent below elastic (K_xx %.4f, K_ryry %.4f of it)"
+        % (K_f[0, 0] / K_el[0, 0], K_f[4, 4] / K_el[4, 4]))
 rc.finish()

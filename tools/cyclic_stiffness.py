@@ -20,6 +20,16 @@ iwan.prm). The tool
      D the motion changes, one column per drive; doc/foundation-stiffness-
      at-load.md section 3) and the secant 6x6 in the layout of
      foundation-stiffness.csv, the vertical and torsional terms elastic;
+  3b. with --tangent-step d: the tangent 2x2 at the mean state, from two
+     monotonic drives per step size that continue the mean state's motion
+     (u_m + d with the direction load, theta_m + r_d with M alone, one load
+     step each) at d and d/2: K(d) = L D^-1 of their load and motion
+     changes, the tangent K(d/2) with the error bar |K(d/2) - K(d)| /
+     (sqrt(2) - 1), which holds while the error falls at least as d^0.5
+     (points that start to yield within the step make it fall unevenly:
+     d^0.5 to d^1 measured on the test caisson), written as a 6x6 like the
+     secant one (tangent-stiffness.csv with its error bars, and a SubDyn
+     file);
   4. writes per amplitude the 6x6 as CSV and as OpenFAST SubDyn's SSI file,
      the damping table (load-cycles.csv's damping ratio of each drive with
      its error, c = 2 xi k / omega) and a SoilDyn CalcOption 1 input file,
@@ -184,6 +194,20 @@ def drive_scene(text, out_dir, mean, motion, low, high, cycles, steps, lever):
     return text
 
 
+# K(d) - K_tangent ~ d^p with p >= 1/2: K(d/2)'s error is at most
+# |K(d/2) - K(d)| / (2^p - 1) <= |K(d/2) - K(d)| / (sqrt(2) - 1).
+TANGENT_ERROR_DIVISOR = math.sqrt(2.0) - 1.0
+
+
+def tangent_scene(text, out_dir, mean, motion, target, lever):
+    """One monotonic load step from the mean state to the motion target,
+    with the drive loads of drive_scene."""
+    text = drive_scene(text, out_dir, mean, motion, target, target, 0, 1, lever)
+    text = drop_entry(text, "Load path", "Targets")
+    text = drop_entry(text, "Load path", "Cycles")
+    return set_entry(text, "Load path", "Target", "%.12g" % target)
+
+
 # ---------------------------------------------------------------- runs
 def run_batch(exe, prms, n_ranks, work, log):
     """The cases in one --batch over n_ranks (serial when 1)."""
@@ -228,6 +252,16 @@ def last_cycle(directory):
     def end_of(segment):
         return [s for s in steps if int(s["segment"]) == segment][-1]
     return cycles[-1], end_of(2 * j), end_of(2 * j + 1)
+
+
+def from_mean_state(directory):
+    """dH [kN], dM [kN m], du [m], dtheta [rad] from the end of the held
+    stage (the state at rest without held loads) to the last step."""
+    steps = read_rows(os.path.join(directory, "load-displacement.csv"))
+    keys = ("H_kN", "M_kNm", "horizontal_m", "rotation_rad")
+    held_rows = [r for r in steps if float(r["held_fraction"]) == 1.0]
+    start = {k: float(held_rows[0][k]) for k in keys} if held_rows else dict.fromkeys(keys, 0.0)
+    return {k: float(steps[-1][k]) - start[k] for k in keys}
 
 
 def peak_to_peak(directory):
@@ -281,14 +315,17 @@ def unit(i, j):
     return ("N/m", "N/rad", "N*m/rad")[t]
 
 
-def write_stiffness_csv(path, K, source):
+def write_stiffness_csv(path, K, source, errors=None):
+    """The 6x6 [SI] as foundation-stiffness.csv lays it out; errors: the
+    error bars of the terms that have one (NaN: none)."""
     with open(path, "w") as f:
         f.write("term,value,unit,error_bar,source\n")
         for j in range(6):
             for i in range(j + 1):
                 src = source(i, j)
-                f.write("K_%s_%s,%.12g,%s,,%s\n" % (DOFS[i], DOFS[j], K[i, j],
-                                                   unit(i, j), src))
+                bar = "" if errors is None or math.isnan(errors[i, j]) else "%.3g" % errors[i, j]
+                f.write("K_%s_%s,%.12g,%s,%s,%s\n" % (DOFS[i], DOFS[j], K[i, j],
+                                                     unit(i, j), bar, src))
 
 
 SUBDYN_LABELS = ["K%s%s" % (("x", "y", "z", "tx", "ty", "tz")[i],
@@ -387,6 +424,10 @@ def main(argv=None):
         help="the program (default: build/fourier-ssi of this checkout)")
     p.add_argument("--water-depth", type=float, default=0.0,
                    help="WtrDpth of the OpenFAST model, for the SoilDyn location [m]")
+    p.add_argument("--tangent-step", type=float, default=0.0,
+                   help="also the tangent at the mean state: monotonic drives of this "
+                        "horizontal motion [m] (the rotation drive's of the same elastic "
+                        "ratio as its amplitudes) and of half of it; 0: none")
     p.add_argument("--out", required=True)
     p.add_argument("--no-plot", action="store_true")
     args = p.parse_args(argv)
@@ -399,6 +440,8 @@ def main(argv=None):
     amplitudes = floats(args.amplitudes)
     if not amplitudes or min(amplitudes) <= 0:
         sys.exit("cyclic_stiffness: --amplitudes: positive values [m]")
+    if not args.tangent_step >= 0:
+        sys.exit("cyclic_stiffness: --tangent-step: a motion >= 0 [m] (0: no tangent)")
     if get_entry(scene, "Rigid foundation", "Enabled") != "true":
         sys.exit("cyclic_stiffness: %s: Rigid foundation/Enabled must be true" % args.scene)
     if get_entry(scene, "Soil plasticity", "Laws") in (None, ""):
@@ -439,6 +482,20 @@ def main(argv=None):
                 drive_scene(scene, name, mean, motion, centre - amp,
                             centre + amp, args.cycles, args.steps, args.lever))
             prms.append(name + ".prm")
+    # the tangent's drives continue the mean state's motion (forward where
+    # the mean state has not moved)
+    tangent_steps = {}
+    if args.tangent_step > 0:
+        rotation_step = args.tangent_step * abs(ratio)
+        for k, fraction in ((1, 1.0), (2, 0.5)):
+            for motion, centre, step in (("horizontal", u_m, args.tangent_step),
+                                         ("rotation", th_m, rotation_step)):
+                name = "tangent-%s-%d" % (motion, k)
+                target = centre + math.copysign(fraction * step, centre or 1.0)
+                open(os.path.join(work, name + ".prm"), "w").write(
+                    tangent_scene(scene, name, mean, motion, target, args.lever))
+                prms.append(name + ".prm")
+                tangent_steps[name] = fraction * step
     cost["cycles"] = run_batch(exe, prms, args.np, work,
                                os.path.join(work, "stage2.log"))
 
@@ -492,6 +549,30 @@ def main(argv=None):
             c_x_x_N_s_per_m=C[0, 0], c_x_ry_N_s_per_rad=C[0, 4],
             c_ry_ry_N_m_s_per_rad=C[4, 4]))
 
+    tangent = None
+    if tangent_steps:
+        K_d, K_half = (secant_block(from_mean_state(os.path.join(work, "tangent-horizontal-%d" % k)),
+                                    from_mean_state(os.path.join(work, "tangent-rotation-%d" % k)))
+                       for k in (1, 2))
+        k2 = K_half
+        e2 = np.abs(K_half - K_d) / TANGENT_ERROR_DIVISOR
+        K = secant_6x6(k2, K_el)
+        E = np.full((6, 6), np.nan)
+        for (i, j), (a, b) in (((0, 0), (0, 0)), ((1, 1), (0, 0)), ((3, 3), (1, 1)), ((4, 4), (1, 1)),
+                               ((0, 4), (0, 1)), ((4, 0), (0, 1)), ((1, 3), (0, 1)), ((3, 1), (0, 1))):
+            E[i, j] = max(e2[a, b], e2[b, a]) * 1e3
+
+        def tangent_source(i, j):
+            return source(i, j).replace("secant (cycles)", "tangent (continued loading)")
+        write_stiffness_csv(os.path.join(out, "tangent-stiffness.csv"), K, tangent_source, E)
+        write_subdyn(os.path.join(out, "tangent-stiffness-subdyn.txt"), K, template,
+                     "fourier-ssi: tangent rigid foundation stiffness at (x, y, z) = (0, 0, %g) m "
+                     "(tools/cyclic_stiffness.py, %s, mean H %g kN, M %g kN m, V %g kN, continued "
+                     "loading, steps %g and %g m; Kzz, Ktztz elastic)" % (
+                         z_ref, os.path.basename(args.scene), *mean, args.tangent_step,
+                         args.tangent_step / 2))
+        tangent = dict(K=K, E=E, asymmetry=abs(k2[0, 1] - k2[1, 0]) / math.sqrt(abs(k2[0, 0] * k2[1, 1])))
+
     def table(path, rows):
         with open(path, "w") as f:
             w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
@@ -515,6 +596,12 @@ def main(argv=None):
                   s["K_x_x_elastic"], s["K_x_ry"], s["K_ry_x"], s["K_ry_ry"],
                   s["K_ry_ry_elastic"], s["asymmetry"], d["xi_lateral"],
                   d["xi_lateral_error"], d["xi_rocking"], d["xi_rocking_error"]))
+    if tangent:
+        K, E = tangent["K"], tangent["E"]
+        print("tangent at the mean state (continued loading, steps %g and %g m): K_xx %.5g +- %.2g N/m "
+              "(elastic %.5g), K_x_ry %.5g +- %.2g N/rad, K_ryry %.5g +- %.2g N m/rad (elastic %.5g), "
+              "asymmetry %.2g" % (args.tangent_step, args.tangent_step / 2, K[0, 0], E[0, 0], K_el[0, 0],
+                                  K[0, 4], E[0, 4], K[4, 4], E[4, 4], K_el[4, 4], tangent["asymmetry"]))
     print("wall time: %.1f s (elastic and mean state), %.1f s (cycles, %d ranks)" % (
         cost["elastic 6x6 and mean state"], cost["cycles"], args.np))
     if not args.no_plot:
