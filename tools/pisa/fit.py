@@ -11,16 +11,19 @@ from scipy.optimize import least_squares
 from conic import conic
 
 
-def prepare(x, y):
+def prepare(x, y, resisting_only=False):
     """The curve's monotonic branch in the direction of its largest |x|:
-    returns (sign, x >= 0, y) without the points that move against it."""
+    returns (sign, x >= 0, y) without the points that move against it, and
+    with resisting_only without those whose reaction does not resist the
+    motion (y < 0: above a rotation point that moves down during the push,
+    the soil can push the pile along at the first steps)."""
     x = np.asarray(x, float)
     y = np.asarray(y, float)
     if x.size == 0 or not np.any(x != 0):
         return 0.0, x[:0], y[:0]
     sgn = np.sign(x[np.argmax(np.abs(x))])
     xs, ys = sgn * x, sgn * y
-    keep = xs > 0
+    keep = (xs > 0) & ((ys >= 0) | (not resisting_only))
     return sgn, xs[keep], ys[keep]
 
 

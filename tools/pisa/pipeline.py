@@ -33,8 +33,8 @@ LABELS = {
 # otherwise (y_u with depth): clay z/D as Byrne et al. 2020, sand z/L as
 # Burd et al. 2020
 YU_DEPTH_VARIABLE = {"clay": "z/D", "sand": "z/L"}
-# A distributed curve at a depth whose largest normalised lateral
-# displacement (p-v's |x|) is below this fraction of its pile's largest (the
+# A distributed curve at a depth whose largest lateral displacement |v| [m]
+# is below this fraction of its pile's largest (the
 # depths next to the rotation point) stays out of the depth fit and of the
 # pile's own conics: it carries almost no information on y_u and x_u, and a
 # sand's m/(|p| D) is ill-conditioned there (p -> 0).
@@ -69,14 +69,27 @@ def soil_kind(piles, data):
 SMALL_LATERAL_REACTION = 0.1
 
 
+# Whether a curve's points whose reaction does not resist the motion are
+# left out of its fits (fit.prepare).  Sand: yes; without it the 4-depth
+# end-to-end space's p-v model collapsed (y_u 20 -> 0.05 over the pile, the
+# 1D head 41 % low); on the benchmark it changes the largest head errors by
+# at most 0.03.  Clay: no; there it dropped 1-3 early points of the curves
+# just above the rotation point and made the largest head errors
+# 0.004-0.017 worse (x_u 76 -> 25).
+RESISTING_ONLY = {"clay": False, "sand": True}
+
+
 def scaled_by_lateral_reaction(rows):
     """The rows of one depth's m-psi curve in sand that keep a defined
     m/(|p| D): p of the sign of its largest |p| and at least
-    SMALL_LATERAL_REACTION of it."""
+    SMALL_LATERAL_REACTION of it, and m of the sign of its largest |m| (at
+    the toe m changes sign during the push)."""
     if not rows:
         return rows
     peak = max((r["p [kN/m]"] for r in rows), key=abs)
-    return [r for r in rows if r["p [kN/m]"] * peak >= SMALL_LATERAL_REACTION * peak * peak]
+    moment_peak = max((r["m [kN m/m]"] for r in rows), key=abs)
+    return [r for r in rows if r["p [kN/m]"] * peak >= SMALL_LATERAL_REACTION * peak * peak
+            and r["m [kN m/m]"] * moment_peak >= 0.0]
 
 
 def points(rows, xc, yc):
@@ -100,10 +113,11 @@ def pile_curves(pile, d):
         sel = sorted([r for r in init if abs(r["depth [m]"] - depth) < 1e-9] +
                      [r for r in rows if abs(r["depth [m]"] - depth) < 1e-9],
                      key=lambda r: abs(r["v [m]"]))
+        v_max = max(abs(r["v [m]"]) for r in sel)
         for c in ("py", "mt"):
             use = scaled_by_lateral_reaction(sel) if c == "mt" and sel[0]["normalised by"] == "sigma'_v" else sel
             x, y = points(use, *COLUMNS[c])
-            out[c].append(dict(depth=depth, zD=depth / pile["D"], x=x, y=y))
+            out[c].append(dict(depth=depth, zD=depth / pile["D"], x=x, y=y, v_max=v_max))
     first = depths[0]
     sel = [r for r in init if abs(r["depth [m]"] - first) < 1e-9] + \
           [r for r in rows if abs(r["depth [m]"] - first) < 1e-9]
@@ -114,17 +128,14 @@ def pile_curves(pile, d):
 
 
 def near_rotation_point(pile_curves_of_one):
-    """The depths [m] of one pile whose largest normalised lateral
-    displacement is below NEAR_ROTATION_POINT of the pile's largest.  In
-    sand G0/sigma'_v grows towards the mudline, so this also leaves out the
-    deepest curves of a long pile.  The dimensional |v| was tried: it keeps
-    them, which lowers the benchmark's largest head errors by 0.01-0.04,
-    but with 4 depths the toe's m/(|p| D) curves (m changing sign along
-    the push) then take m-psi's y_u at the toe to 0.01 and the 1D head
-    40 % below the FE."""
-    x_max = {cv["depth"]: np.abs(cv["x"]).max() if cv["x"].size else 0.0 for cv in pile_curves_of_one["py"]}
-    top = max(x_max.values())
-    return {depth for depth, x in x_max.items() if x < NEAR_ROTATION_POINT * top}
+    """The depths [m] of one pile whose largest lateral displacement |v| [m]
+    is below NEAR_ROTATION_POINT of the pile's largest.  The dimensional v,
+    not the normalised x: in sand G0/sigma'_v grows towards the mudline, and
+    the normalised x left out every curve below z/D = 2 of the benchmark's
+    piles (so the sand's depth model saw only the top 2 D)."""
+    v_max = {cv["depth"]: cv["v_max"] for cv in pile_curves_of_one["py"]}
+    top = max(v_max.values())
+    return {depth for depth, v in v_max.items() if v < NEAR_ROTATION_POINT * top}
 
 
 def own_conics(pile_curves_of_one, base_fallback):
@@ -271,7 +282,7 @@ def calibrate_and_compare(spec, data, out, plot=True):
     for name in fitted:
         for c in COMPONENTS:
             for cv in curves[name][c]:
-                sgn, x, y = prepare(cv["x"], cv["y"])
+                sgn, x, y = prepare(cv["x"], cv["y"], RESISTING_ONLY[kind])
                 cv.update(sgn=sgn, xp=x, yp=y)
                 if x.size < 3:
                     cv["fit"] = None

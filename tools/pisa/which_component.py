@@ -36,12 +36,12 @@ class Mixed(Model):
         return Model.at(self, component, s, L_over_D)
 
 
-def fitted_curves(curves):
+def fitted_curves(curves, kind):
     """The pile's curves with each one's conic fit ('fit', None below 3
     points), as calibrate.py fits them."""
     for c in ("py", "mt", "Hb", "Mb"):
         for cv in curves[c]:
-            _, x, y = prepare(cv["x"], cv["y"])
+            _, x, y = prepare(cv["x"], cv["y"], pipeline.RESISTING_ONLY[kind])
             cv["fit"] = fit_curve(x, y) if x.size >= 3 else None
     return curves
 
@@ -66,13 +66,17 @@ def main():
             print(f"  {p['name']}: no curves")
             continue
         d["initial"] = runs.read_pile(os.path.join(out, "runs", p["name"] + "-initial"))
-        conics = pipeline.own_conics(fitted_curves(pipeline.pile_curves(p, d)),
+        conics = pipeline.own_conics(fitted_curves(pipeline.pile_curves(p, d), model.soil_kind),
                                      lambda c: model.at(c, p["L_over_D"], p["L_over_D"]))
         own = OwnCurvesModel(conics, model.profile, p["D"], model.soil_kind)
         fe = pipeline.head_fe(d)
         for use in ((), ("py",), ("mt",), ("Hb", "Mb"), ("py", "mt", "Hb", "Mb")):
-            dH = pipeline.compare(fe, pipeline.run_1d(Mixed(model, own, use), spec, p))[0]
             name = "+".join(use) if use else "none (the model)"
+            try:
+                dH = pipeline.compare(fe, pipeline.run_1d(Mixed(model, own, use), spec, p))[0]
+            except RuntimeError as e:
+                print(f"  {p['name']:10s} own {name:18s}: FAILED, {e}")
+                continue
             print(f"  {p['name']:10s} own {name:18s}: first step {dH[0]:+.3f}, end {dH[-1]:+.3f}, "
                   f"max |.| {np.abs(dH).max():.3f}")
 
