@@ -20,11 +20,11 @@ iwan.prm). The tool
      D the motion changes, one column per drive; doc/foundation-stiffness-
      at-load.md section 3) and the secant 6x6 in the layout of
      foundation-stiffness.csv, the vertical and torsional terms elastic;
-  3b. with --tangent-step d: the tangent 2x2 at the mean state, from two
-     monotonic drives per step size that continue the mean state's motion
-     (u_m + d with the direction load, theta_m + r_d with M alone, one load
-     step each) at d and d/2: K(d) = L D^-1 of their load and motion
-     changes, the tangent K(d/2) with the error bar |K(d/2) - K(d)| /
+  3b. with --tangent-step d: the tangent 3x3 (x, z, ry) at the mean state,
+     from three monotonic drives per step size that continue the mean
+     state's motion (u_m + d with the direction load, theta_m + r_d with M
+     alone, w_m + d with V alone, one load step each) at d and d/2:
+     K(d) = L D^-1 of their load and motion changes, the tangent K(d/2) with the error bar |K(d/2) - K(d)| /
      (sqrt(2) - 1), which holds while the error falls at least as d^0.5
      (points that start to yield within the step make it fall unevenly:
      d^0.5 to d^1 measured on the test caisson), written as a 6x6 like the
@@ -177,12 +177,15 @@ def mean_state_scene(text, out_dir, mean):
 def drive_scene(text, out_dir, mean, motion, low, high, cycles, steps, lever):
     """A cyclic run about the mean state: motion between high and low. The
     horizontal drive's direction load is H = 1 kN with M = lever kN m (the
-    load ratio M/H of the structure above), the rotation drive's M alone."""
+    load ratio M/H of the structure above), the rotation drive's M alone,
+    the vertical drive's V alone."""
     text = held(base_scene(text, out_dir), mean)
     if motion == "horizontal":
         text = set_entry(text, "Rigid foundation", "Horizontal force", "1")
         if lever:
             text = set_entry(text, "Rigid foundation", "Moment", repr(lever))
+    elif motion == "vertical":
+        text = set_entry(text, "Rigid foundation", "Vertical force", "1")
     else:
         text = set_entry(text, "Rigid foundation", "Moment", "1")
     text = set_entry(text, "Load path", "Control", "displacement")
@@ -243,6 +246,13 @@ def held_state(directory):
     return float(r["horizontal_m"]), float(r["rotation_rad"])
 
 
+def held_vertical(directory):
+    """w at the end of the held stage (0 without held loads)."""
+    rows = [r for r in read_rows(os.path.join(directory, "load-displacement.csv"))
+            if float(r["held_fraction"]) == 1.0]
+    return float(rows[0]["vertical_m"]) if rows else 0.0
+
+
 def last_cycle(directory):
     """The last cycle: its load-cycles.csv row and the steps at B and A'."""
     cycles = read_rows(os.path.join(directory, "load-cycles.csv"))
@@ -255,10 +265,10 @@ def last_cycle(directory):
 
 
 def from_mean_state(directory):
-    """dH [kN], dM [kN m], du [m], dtheta [rad] from the end of the held
-    stage (the state at rest without held loads) to the last step."""
+    """dH, dV [kN], dM [kN m], du, dw [m], dtheta [rad] from the end of the
+    held stage (the state at rest without held loads) to the last step."""
     steps = read_rows(os.path.join(directory, "load-displacement.csv"))
-    keys = ("H_kN", "M_kNm", "horizontal_m", "rotation_rad")
+    keys = ("H_kN", "V_kN", "M_kNm", "horizontal_m", "vertical_m", "rotation_rad")
     held_rows = [r for r in steps if float(r["held_fraction"]) == 1.0]
     start = {k: float(held_rows[0][k]) for k in keys} if held_rows else dict.fromkeys(keys, 0.0)
     return {k: float(steps[-1][k]) - start[k] for k in keys}
@@ -282,6 +292,40 @@ def secant_block(horizontal, rotation):
     D = np.array([[horizontal["horizontal_m"], rotation["horizontal_m"]],
                   [horizontal["rotation_rad"], rotation["rotation_rad"]]])
     return L @ np.linalg.inv(D)
+
+
+# The tangent's block: x, z, ry; its loads and motions in from_mean_state's
+# names, and its rows and columns in the 6x6.
+TANGENT_LOADS = ("H_kN", "V_kN", "M_kNm")
+TANGENT_MOTIONS = ("horizontal_m", "vertical_m", "rotation_rad")
+TANGENT_DOFS = (0, 2, 4)
+
+
+def tangent_block(drives):
+    """K = L D^-1 [kN units] of the x, z, ry block from the load and
+    motion changes of the horizontal, vertical and rotation drives (one
+    column each)."""
+    L = np.array([[d[key] for d in drives] for key in TANGENT_LOADS])
+    D = np.array([[d[key] for d in drives] for key in TANGENT_MOTIONS])
+    return L @ np.linalg.inv(D)
+
+
+def tangent_6x6(k3, e3, elastic):
+    """The tangent 6x6 [SI] and its error bars from the x, z, ry block
+    [kN units] (symmetric part; the bar the larger of the two): the y and rx
+    terms copy the loading plane's (K_yy = K_xx, K_y,rx = -K_x,ry), the y-z
+    and z-rx couplings are zero (the state is symmetric about the x-z
+    plane), and K_rz,rz is elastic."""
+    K, E = np.zeros((6, 6)), np.full((6, 6), np.nan)
+    for a, i in enumerate(TANGENT_DOFS):
+        for b, j in enumerate(TANGENT_DOFS):
+            K[i, j] = 0.5 * (k3[a, b] + k3[b, a]) * 1e3
+            E[i, j] = max(e3[a, b], e3[b, a]) * 1e3
+    for (i, j), (k, l, sign) in (((1, 1), (0, 0, 1)), ((3, 3), (4, 4, 1)),
+                                 ((1, 3), (0, 4, -1)), ((3, 1), (0, 4, -1))):
+        K[i, j], E[i, j] = sign * K[k, l], E[k, l]
+    K[5, 5] = elastic[5, 5]
+    return K, E
 
 
 def read_stiffness_csv(path):
@@ -461,6 +505,7 @@ def main(argv=None):
     K_el, E_el = read_stiffness_csv(os.path.join(work, "elastic", "foundation-stiffness.csv"))
     template = os.path.join(work, "elastic", "foundation-stiffness-subdyn.txt")
     u_m, th_m = held_state(os.path.join(work, "mean-state"))
+    w_m = held_vertical(os.path.join(work, "mean-state"))
     F_el = np.linalg.inv(K_el[np.ix_([0, 4], [0, 4])])
     # theta/u of the horizontal drive's load (H, lever H), elastic [rad/m];
     # K_el is in N, m: lever in m is the same ratio in kN m / kN.
@@ -482,16 +527,18 @@ def main(argv=None):
                 drive_scene(scene, name, mean, motion, centre - amp,
                             centre + amp, args.cycles, args.steps, args.lever))
             prms.append(name + ".prm")
-    # the tangent's drives continue the mean state's motion (forward where
-    # the mean state has not moved)
     tangent_steps = {}
     if args.tangent_step > 0:
         rotation_step = args.tangent_step * abs(ratio)
         for k, fraction in ((1, 1.0), (2, 0.5)):
             for motion, centre, step in (("horizontal", u_m, args.tangent_step),
+                                         ("vertical", w_m, args.tangent_step),
                                          ("rotation", th_m, rotation_step)):
                 name = "tangent-%s-%d" % (motion, k)
-                target = centre + math.copysign(fraction * step, centre or 1.0)
+                # where the mean state has not moved: forward, and down
+                # (compression) for the vertical drive
+                start = centre or (-1.0 if motion == "vertical" else 1.0)
+                target = centre + math.copysign(fraction * step, start)
                 open(os.path.join(work, name + ".prm"), "w").write(
                     tangent_scene(scene, name, mean, motion, target, args.lever))
                 prms.append(name + ".prm")
@@ -551,27 +598,26 @@ def main(argv=None):
 
     tangent = None
     if tangent_steps:
-        K_d, K_half = (secant_block(from_mean_state(os.path.join(work, "tangent-horizontal-%d" % k)),
-                                    from_mean_state(os.path.join(work, "tangent-rotation-%d" % k)))
+        K_d, K_half = (tangent_block([from_mean_state(os.path.join(work, "tangent-%s-%d" % (motion, k)))
+                                      for motion in ("horizontal", "vertical", "rotation")])
                        for k in (1, 2))
-        k2 = K_half
-        e2 = np.abs(K_half - K_d) / TANGENT_ERROR_DIVISOR
-        K = secant_6x6(k2, K_el)
-        E = np.full((6, 6), np.nan)
-        for (i, j), (a, b) in (((0, 0), (0, 0)), ((1, 1), (0, 0)), ((3, 3), (1, 1)), ((4, 4), (1, 1)),
-                               ((0, 4), (0, 1)), ((4, 0), (0, 1)), ((1, 3), (0, 1)), ((3, 1), (0, 1))):
-            E[i, j] = max(e2[a, b], e2[b, a]) * 1e3
+        k3 = K_half
+        K, E = tangent_6x6(k3, np.abs(K_half - K_d) / TANGENT_ERROR_DIVISOR, K_el)
 
         def tangent_source(i, j):
-            return source(i, j).replace("secant (cycles)", "tangent (continued loading)")
+            if i == j == 5:
+                return "elastic (Stiffness matrix = true, no plasticity)"
+            if {i, j} <= {0, 2, 4} or {i, j} in ({1}, {3}, {1, 3}):
+                return "tangent (continued loading)"
+            return "zero (symmetry about the loading plane)"
         write_stiffness_csv(os.path.join(out, "tangent-stiffness.csv"), K, tangent_source, E)
         write_subdyn(os.path.join(out, "tangent-stiffness-subdyn.txt"), K, template,
                      "fourier-ssi: tangent rigid foundation stiffness at (x, y, z) = (0, 0, %g) m "
                      "(tools/cyclic_stiffness.py, %s, mean H %g kN, M %g kN m, V %g kN, continued "
-                     "loading, steps %g and %g m; Kzz, Ktztz elastic)" % (
+                     "loading, steps %g and %g m; Ktztz elastic)" % (
                          z_ref, os.path.basename(args.scene), *mean, args.tangent_step,
                          args.tangent_step / 2))
-        tangent = dict(K=K, E=E, asymmetry=abs(k2[0, 1] - k2[1, 0]) / math.sqrt(abs(k2[0, 0] * k2[1, 1])))
+        tangent = dict(K=K, E=E, asymmetry=abs(k3[0, 2] - k3[2, 0]) / math.sqrt(abs(k3[0, 0] * k3[2, 2])))
 
     def table(path, rows):
         with open(path, "w") as f:
@@ -600,8 +646,11 @@ def main(argv=None):
         K, E = tangent["K"], tangent["E"]
         print("tangent at the mean state (continued loading, steps %g and %g m): K_xx %.5g +- %.2g N/m "
               "(elastic %.5g), K_x_ry %.5g +- %.2g N/rad, K_ryry %.5g +- %.2g N m/rad (elastic %.5g), "
-              "asymmetry %.2g" % (args.tangent_step, args.tangent_step / 2, K[0, 0], E[0, 0], K_el[0, 0],
-                                  K[0, 4], E[0, 4], K[4, 4], E[4, 4], K_el[4, 4], tangent["asymmetry"]))
+              "K_zz %.5g +- %.2g N/m (elastic %.5g), K_x_z %.3g +- %.2g N/m, K_z_ry %.3g +- %.2g N/rad; "
+              "asymmetry (x, ry) %.2g" % (
+                  args.tangent_step, args.tangent_step / 2, K[0, 0], E[0, 0], K_el[0, 0], K[0, 4], E[0, 4],
+                  K[4, 4], E[4, 4], K_el[4, 4], K[2, 2], E[2, 2], K_el[2, 2], K[0, 2], E[0, 2], K[2, 4],
+                  E[2, 4], tangent["asymmetry"]))
     print("wall time: %.1f s (elastic and mean state), %.1f s (cycles, %d ranks)" % (
         cost["elastic 6x6 and mean state"], cost["cycles"], args.np))
     if not args.no_plot:
