@@ -51,7 +51,9 @@ Checks, with the reason for each tolerance:
   (the reference: its bar is below 0.1 of the coarse one, so it has
   converged that much further), and the tangent lies below the elastic
   one, also for K_zz; the x-z and z-ry terms that plasticity couples are
-  held by the same bars. About 12 s more.
+  held by the same bars. About 12 s more;
+- bad input (--tangent-step -1) into the first run's folder: one line,
+  exit 1, and none of that run's result files left.
 Usage: cyclic_stiffness.py FOURIER_SSI_EXE SOURCE_DIR WORK_DIR
 """
 import csv
@@ -282,4 +284,15 @@ for i, j in ((0, 0), (0, 4), (4, 4), (2, 2), (0, 2), (2, 4)):
 rc.that(K_f[0, 0] < K_el[0, 0] and K_f[4, 4] < K_el[4, 4] and K_f[2, 2] < K_el[2, 2],
         "yielded mean state: tangent below elastic (K_xx %.4f, K_ryry %.4f, K_zz %.4f of it)"
         % (K_f[0, 0] / K_el[0, 0], K_f[4, 4] / K_el[4, 4], K_f[2, 2] / K_el[2, 2]))
+
+# Bad input into the folder of the first run: one line, exit 1, and none of
+# that run's result files left behind (runs/ aside).
+bad = subprocess.run(["/usr/bin/python3", tool, scene, "--mean-h", "100", "--amplitudes", "0.0004",
+                      "--exe", exe, "--out", out, "--tangent-step", "-1"], cwd=work,
+                     capture_output=True, text=True)
+lines = (bad.stdout + bad.stderr).strip().splitlines()
+left = sorted(f for f in os.listdir(out) if f != "runs")
+rc.that(bad.returncode == 1 and len(lines) == 1 and not left,
+        "--tangent-step -1: exit %d, %d line(s) (%s), result files left: %s"
+        % (bad.returncode, len(lines), lines[:1], left))
 rc.finish()

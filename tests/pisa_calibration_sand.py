@@ -13,7 +13,8 @@ prm/monopile-sand-lateral.prm, 6 cells along the pile, 4 steps to 0.05 D,
 - the OpenPile export is a Custom_pisa_sand per layer, its weight
   gamma' + 10 kN/m^3 with the scene's gamma' = 10, read back;
 - bad input gets one line and exit 1: y_u in z/L with two model layers, an
-  unknown y_u depth variable.
+  unknown y_u depth variable; and it leaves no result file in the output
+  folder, also not the good run's before it (runs/ with the FE runs stays).
 Usage: pisa_calibration_sand.py EXE SOURCE_DIR WORK_DIR."""
 import json
 import os
@@ -73,4 +74,7 @@ for text, what in (("model layers z/D = 0, 2, 5\ny_u with depth = z/L\n", "y_u i
     r = calibrate(space + text, "out", "--reuse")
     lines = (r.stdout + r.stderr).strip().splitlines()
     that(r.returncode == 1 and len(lines) == 1, f"bad input ({what}): exit 1 and one line (exit {r.returncode}: {lines})")
+    left = sorted(f for f in os.listdir(out) if f != "runs")
+    that(not left, f"bad input ({what}): no result file left in the output folder, the good run's "
+                   f"included ({left})")
 finish()

@@ -24,8 +24,9 @@ iwan.prm). The tool
      from three monotonic drives per step size that continue the mean
      state's motion (u_m + d with the direction load, theta_m + r_d with M
      alone, w_m + d with V alone, one load step each) at d and d/2:
-     K(d) = L D^-1 of their load and motion changes, the tangent K(d/2) with the error bar |K(d/2) - K(d)| /
-     (sqrt(2) - 1), which holds while the error falls at least as d^0.5
+     K(d) = L D^-1 of their load and motion changes, the tangent K(d/2)
+     with the error bar |K(d/2) - K(d)| / (sqrt(2) - 1), which holds while
+     the error falls at least as d^0.5
      (points that start to yield within the step make it fall unevenly:
      d^0.5 to d^1 measured on the test caisson), written as a 6x6 like the
      secant one (tangent-stiffness.csv with its error bars, and a SubDyn
@@ -40,6 +41,7 @@ OpenFAST files and the 6x6 CSVs.
 """
 import argparse
 import csv
+import glob
 import math
 import os
 import re
@@ -236,21 +238,16 @@ def read_rows(path):
         return list(csv.DictReader(f))
 
 
-def held_state(directory):
-    """u, theta at the end of the held stage (segment 0, held fraction 1)."""
-    rows = read_rows(os.path.join(directory, "load-displacement.csv"))
-    rows = [r for r in rows if float(r["held_fraction"]) == 1.0]
-    if not rows:  # no held loads: the state at rest
-        return 0.0, 0.0
-    r = rows[0]
-    return float(r["horizontal_m"]), float(r["rotation_rad"])
+# The loads and motions of load-displacement.csv that the drives change.
+STATE_KEYS = ("H_kN", "V_kN", "M_kNm", "horizontal_m", "vertical_m", "rotation_rad")
 
 
-def held_vertical(directory):
-    """w at the end of the held stage (0 without held loads)."""
-    rows = [r for r in read_rows(os.path.join(directory, "load-displacement.csv"))
-            if float(r["held_fraction"]) == 1.0]
-    return float(rows[0]["vertical_m"]) if rows else 0.0
+def held_state(steps):
+    """STATE_KEYS at the end of the held stage (segment 0, held fraction 1)
+    of a run's load-displacement.csv rows; zeros without held loads (the
+    state at rest)."""
+    rows = [r for r in steps if float(r["held_fraction"]) == 1.0]
+    return {k: float(rows[0][k]) if rows else 0.0 for k in STATE_KEYS}
 
 
 def last_cycle(directory):
@@ -266,12 +263,10 @@ def last_cycle(directory):
 
 def from_mean_state(directory):
     """dH, dV [kN], dM [kN m], du, dw [m], dtheta [rad] from the end of the
-    held stage (the state at rest without held loads) to the last step."""
+    held stage to the last step."""
     steps = read_rows(os.path.join(directory, "load-displacement.csv"))
-    keys = ("H_kN", "V_kN", "M_kNm", "horizontal_m", "vertical_m", "rotation_rad")
-    held_rows = [r for r in steps if float(r["held_fraction"]) == 1.0]
-    start = {k: float(held_rows[0][k]) for k in keys} if held_rows else dict.fromkeys(keys, 0.0)
-    return {k: float(steps[-1][k]) - start[k] for k in keys}
+    start = held_state(steps)
+    return {k: float(steps[-1][k]) - start[k] for k in STATE_KEYS}
 
 
 def peak_to_peak(directory):
@@ -436,6 +431,20 @@ def write_soildyn(path, K, C, location, header):
 
 
 # ---------------------------------------------------------------- main
+# What the tool writes in --out (runs/ aside): an earlier run's files are
+# removed first, so that a run that stops leaves none that looks like its
+# result.
+RESULT_FILES = ("secant-stiffness*.csv", "secant-stiffness-subdyn-*.txt", "soildyn-*.dat",
+                "damping.csv", "cost.csv", "secant-stiffness-and-damping.png",
+                "tangent-stiffness.csv", "tangent-stiffness-subdyn.txt")
+
+
+def remove_results(out):
+    for pattern in RESULT_FILES:
+        for path in glob.glob(os.path.join(out, pattern)):
+            os.remove(path)
+
+
 def floats(text):
     return [float(v) for v in text.split(",") if v.strip()]
 
@@ -469,9 +478,10 @@ def main(argv=None):
     p.add_argument("--water-depth", type=float, default=0.0,
                    help="WtrDpth of the OpenFAST model, for the SoilDyn location [m]")
     p.add_argument("--tangent-step", type=float, default=0.0,
-                   help="also the tangent at the mean state: monotonic drives of this "
-                        "horizontal motion [m] (the rotation drive's of the same elastic "
-                        "ratio as its amplitudes) and of half of it; 0: none")
+                   help="also the tangent (x, z, ry) at the mean state: monotonic drives "
+                        "of this horizontal and vertical motion [m] (the rotation drive's "
+                        "of the same elastic ratio as its amplitudes) and of half of it; "
+                        "0: none")
     p.add_argument("--out", required=True)
     p.add_argument("--no-plot", action="store_true")
     args = p.parse_args(argv)
@@ -480,6 +490,7 @@ def main(argv=None):
     out = os.path.realpath(args.out)
     work = os.path.join(out, "runs")
     os.makedirs(work, exist_ok=True)
+    remove_results(out)
     scene = open(args.scene).read()
     amplitudes = floats(args.amplitudes)
     if not amplitudes or min(amplitudes) <= 0:
@@ -504,8 +515,8 @@ def main(argv=None):
         exe, prms, min(args.np, 2), work, os.path.join(work, "stage1.log"))
     K_el, E_el = read_stiffness_csv(os.path.join(work, "elastic", "foundation-stiffness.csv"))
     template = os.path.join(work, "elastic", "foundation-stiffness-subdyn.txt")
-    u_m, th_m = held_state(os.path.join(work, "mean-state"))
-    w_m = held_vertical(os.path.join(work, "mean-state"))
+    mean_state = held_state(read_rows(os.path.join(work, "mean-state", "load-displacement.csv")))
+    u_m, w_m, th_m = (mean_state[k] for k in ("horizontal_m", "vertical_m", "rotation_rad"))
     F_el = np.linalg.inv(K_el[np.ix_([0, 4], [0, 4])])
     # theta/u of the horizontal drive's load (H, lever H), elastic [rad/m];
     # K_el is in N, m: lever in m is the same ratio in kN m / kN.
@@ -527,7 +538,6 @@ def main(argv=None):
                 drive_scene(scene, name, mean, motion, centre - amp,
                             centre + amp, args.cycles, args.steps, args.lever))
             prms.append(name + ".prm")
-    tangent_steps = {}
     if args.tangent_step > 0:
         rotation_step = args.tangent_step * abs(ratio)
         for k, fraction in ((1, 1.0), (2, 0.5)):
@@ -542,7 +552,6 @@ def main(argv=None):
                 open(os.path.join(work, name + ".prm"), "w").write(
                     tangent_scene(scene, name, mean, motion, target, args.lever))
                 prms.append(name + ".prm")
-                tangent_steps[name] = fraction * step
     cost["cycles"] = run_batch(exe, prms, args.np, work,
                                os.path.join(work, "stage2.log"))
 
@@ -597,7 +606,7 @@ def main(argv=None):
             c_ry_ry_N_m_s_per_rad=C[4, 4]))
 
     tangent = None
-    if tangent_steps:
+    if args.tangent_step > 0:
         K_d, K_half = (tangent_block([from_mean_state(os.path.join(work, "tangent-%s-%d" % (motion, k)))
                                       for motion in ("horizontal", "vertical", "rotation")])
                        for k in (1, 2))

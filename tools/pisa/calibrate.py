@@ -22,6 +22,7 @@ left out, against the FE's pile-head curve, and writes
 line naming it; the others are kept.  Bad input: one line, exit 1.
 """
 import argparse
+import glob
 import json
 import os
 import sys
@@ -30,6 +31,17 @@ import time
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from space import read_spec, SpecError, ROOT  # noqa: E402
 import runs  # noqa: E402
+
+
+# What calibrate.py writes in --out (runs/ aside, the FE runs that --reuse
+# reads): an earlier calibration's files are removed first.
+RESULT_FILES = ("fits.csv", "model.json", "head-curves.csv", "summary.json", "openpile-*.json", "sheet.png")
+
+
+def remove_results(out):
+    for pattern in RESULT_FILES:
+        for path in glob.glob(os.path.join(out, pattern)):
+            os.remove(path)
 
 
 def main():
@@ -41,12 +53,13 @@ def main():
     ap.add_argument("--no-plot", action="store_true")
     args = ap.parse_args()
     args.exe = os.path.abspath(args.exe)
+    out = os.path.abspath(args.out)
+    os.makedirs(out, exist_ok=True)
+    remove_results(out)
     try:
         spec = read_spec(args.site)
     except SpecError as e:
         sys.exit(f"calibrate.py: {e}")
-    out = os.path.abspath(args.out)
-    os.makedirs(out, exist_ok=True)
     listing = runs.write_cases(spec, out)
     n_cases = sum(1 for _ in open(listing))
     if not args.reuse:
@@ -70,7 +83,13 @@ def main():
     if len({p["L_over_D"] for p in fitted}) < 2:
         sys.exit("calibrate.py: fewer than 2 fitted piles of different L/D ran; nothing to fit")
     from pipeline import calibrate_and_compare  # noqa: E402
-    calibrate_and_compare(spec, data, out, plot=not args.no_plot)
+    try:
+        calibrate_and_compare(spec, data, out, plot=not args.no_plot)
+    except BaseException:
+        # a calibration that stops (bad input, a failed fit) leaves no
+        # file that looks like its result
+        remove_results(out)
+        raise
 
 
 if __name__ == "__main__":

@@ -34,10 +34,10 @@ LABELS = {
 # Burd et al. 2020
 YU_DEPTH_VARIABLE = {"clay": "z/D", "sand": "z/L"}
 # A distributed curve at a depth whose largest lateral displacement |v| [m]
-# is below this fraction of its pile's largest (the
-# depths next to the rotation point) stays out of the depth fit and of the
-# pile's own conics: it carries almost no information on y_u and x_u, and a
-# sand's m/(|p| D) is ill-conditioned there (p -> 0).
+# is below this fraction of its pile's largest (the depths next to the
+# rotation point) stays out of the depth fit and of the pile's own conics:
+# it carries almost no information on y_u and x_u, and a sand's m/(|p| D)
+# is ill-conditioned there (p -> 0).
 NEAR_ROTATION_POINT = 0.1
 
 
@@ -99,9 +99,9 @@ def points(rows, xc, yc):
     return np.array([r[xc] for r in use]), np.array([r[yc] for r in use])
 
 
-def pile_curves(pile, d):
-    """{component: [dict(depth, zD, x, y)]} of one pile, the initial run's
-    point first when there is one."""
+def pile_curves(pile, d, kind):
+    """{component: [dict(depth, zD, x, y)]} of one pile whose soil is kind
+    (clay or sand), the initial run's point first when there is one."""
     rows = d["curves"]
     init = d["initial"]["curves"] if d.get("initial") else []
     L = pile["L_over_D"] * pile["D"]
@@ -115,7 +115,7 @@ def pile_curves(pile, d):
                      key=lambda r: abs(r["v [m]"]))
         v_max = max(abs(r["v [m]"]) for r in sel)
         for c in ("py", "mt"):
-            use = scaled_by_lateral_reaction(sel) if c == "mt" and sel[0]["normalised by"] == "sigma'_v" else sel
+            use = scaled_by_lateral_reaction(sel) if c == "mt" and kind == "sand" else sel
             x, y = points(use, *COLUMNS[c])
             out[c].append(dict(depth=depth, zD=depth / pile["D"], x=x, y=y, v_max=v_max))
     first = depths[0]
@@ -272,7 +272,7 @@ def calibrate_and_compare(spec, data, out, plot=True):
     piles = {p["name"]: p for p in spec["piles"] if p["name"] in data}
     try:
         kind = soil_kind(piles, data)
-        curves = {name: pile_curves(p, data[name]) for name, p in piles.items()}
+        curves = {name: pile_curves(p, data[name], kind) for name, p in piles.items()}
     except InputError as e:
         sys.exit(f"calibrate.py: {e}")
     LABEL = LABELS[kind]

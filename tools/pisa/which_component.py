@@ -66,7 +66,7 @@ def main():
             print(f"  {p['name']}: no curves")
             continue
         d["initial"] = runs.read_pile(os.path.join(out, "runs", p["name"] + "-initial"))
-        conics = pipeline.own_conics(fitted_curves(pipeline.pile_curves(p, d), model.soil_kind),
+        conics = pipeline.own_conics(fitted_curves(pipeline.pile_curves(p, d, model.soil_kind), model.soil_kind),
                                      lambda c: model.at(c, p["L_over_D"], p["L_over_D"]))
         own = OwnCurvesModel(conics, model.profile, p["D"], model.soil_kind)
         fe = pipeline.head_fe(d)
