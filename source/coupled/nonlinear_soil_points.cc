@@ -105,6 +105,9 @@ namespace FourierSSI
         law_index[id] = laws.size();
         laws.emplace_back(law);
         law_data.push_back(&law);
+        sands.push_back(law.kind == SoilLaw::Kind::iwan_sand ?
+                          std::make_shared<const MultiSurfaceSand>(law) :
+                          nullptr);
       }
     const DoFHandler<2> &dofs0 = set.problem(0).get_dof_handler();
     const auto          &fe    = dofs0.get_fe();
@@ -182,16 +185,24 @@ namespace FourierSSI
   NonlinearSoilPoints::add_hardening_elements(const SoilLaw &law,
                                               SoilPoint     &point)
   {
-    if (law.kind != SoilLaw::Kind::iwan)
+    if (!law.hardening())
       return;
-    // The elements follow G0 and s_u at the point's depth (their profiles);
-    // K is the material's, the volume change stays elastic (C1).
-    const double bulk_modulus = point.lambda + 2. * point.shear_modulus / 3.;
-    clays.emplace_back(law, point.shear_modulus, bulk_modulus, point.depth);
-    point.clay          = clays.size() - 1;
+    if (law.kind == SoilLaw::Kind::iwan)
+      {
+        // The elements follow G0 and s_u at the point's depth (their
+        // profiles); K is the material's, the volume change stays elastic
+        // (C1).
+        const double bulk_modulus =
+          point.lambda + 2. * point.shear_modulus / 3.;
+        clays.emplace_back(law, point.shear_modulus, bulk_modulus, point.depth);
+        point.clay = clays.size() - 1;
+        // A table's elements depend on s_u at the depth: the point's own.
+        point.n_elements = clays.back().n_surfaces();
+      }
+    else
+      point.n_elements = sands[point.law]->n_surfaces();
     point.first_history = n_history;
-    // A table's elements depend on s_u at the depth: the point's own.
-    n_history += std::size_t(sampling.n_samples()) * clays.back().n_surfaces();
+    n_history += std::size_t(sampling.n_samples()) * point.n_elements;
   }
 
   std::vector<std::vector<StrainVector>>
@@ -307,7 +318,7 @@ namespace FourierSSI
                 // int Bbar^T (sigma - sigma_0) = K u - c.
                 const StrainVector elastic = elastic_stress(point, strain[k]);
                 StrainVector      *updated =
-                  point.clay == numbers::invalid_unsigned_int ?
+                  point.n_elements == 0 ?
                          nullptr :
                          &history[history_index(point, j)];
                 const SoilReturn r = return_from(
@@ -611,7 +622,7 @@ namespace FourierSSI
     const std::vector<StrainVector> &history) const
   {
     const SoilPoint &point = points[p];
-    if (point.clay == numbers::invalid_unsigned_int)
+    if (point.n_elements == 0)
       return {&plastic[k], nullptr};
     const unsigned int j = k - p * sampling.n_samples();
     return {&plastic[k], &history[history_index(point, j)]};
@@ -636,11 +647,28 @@ namespace FourierSSI
         result.state = r.n_yielding > 0 ? SoilState::plane : SoilState::elastic;
         return result;
       }
+    const double G = point.shear_modulus, K = point.lambda + 2. * G / 3.;
+    if (sands[point.law])
+      {
+        // (S1): the elements start from their shares of sigma_0.
+        const MultiSurfaceStress r =
+          sands[point.law]->return_map(strain,
+                                       point.initial_stress,
+                                       G,
+                                       K,
+                                       point.depth,
+                                       committed.elements,
+                                       updated,
+                                       tangent);
+        SoilReturn result;
+        result.stress = r.stress;
+        result.state = r.n_yielding > 0 ? SoilState::plane : SoilState::elastic;
+        return result;
+      }
     // Trial: sigma_0 + D (eps - eps_p,committed) = elastic - s_p,committed.
     StrainVector trial = elastic_stress(point, strain);
     for (unsigned int c = 0; c < 6; ++c)
       trial[c] -= (*committed.plastic)[c];
-    const double G = point.shear_modulus, K = point.lambda + 2. * G / 3.;
     const SoilReturnMapping &law = laws[point.law];
     return tangent == nullptr ?
              law.return_map(trial, G, K, point.depth) :
@@ -651,6 +679,8 @@ namespace FourierSSI
   NonlinearSoilPoints::yield_value(const SoilPoint    &point,
                                    const StrainVector &stress) const
   {
+    if (sands[point.law])
+      return sands[point.law]->yield_function(stress, point.depth);
     if (point.clay == numbers::invalid_unsigned_int)
       return laws[point.law].yield_function(stress, point.depth);
     // sqrt(J2) of sigma - sigma_0: |dev| / sqrt(2) with the shears doubled

@@ -82,7 +82,7 @@ namespace FourierSSI
     {
       bool hardening = false;
       for (const auto &[id, law] : parameters.soil_plasticity.laws)
-        hardening = hardening || law.kind == SoilLaw::Kind::iwan;
+        hardening = hardening || law.hardening();
       for (unsigned int j = 0; j < cycles.size(); ++j)
         if (!hardening && std::abs(cycles[j].dissipated_energy) <=
                             1e-6 * cycles[j].stored_energy)
@@ -90,7 +90,7 @@ namespace FourierSSI
             log << "note: cycle " << j + 1
                 << " dissipates nothing: it stays below first yield of "
                    "the perfectly plastic laws, which have no small-strain "
-                   "hysteresis (an iwan clay has)\n";
+                   "hysteresis (an iwan clay or sand has)\n";
             return;
           }
     }

@@ -195,7 +195,7 @@ namespace FourierSSI
       if (parameters.initial_stress.enabled())
         return;
       for (const auto &[id, law] : parameters.soil_plasticity.laws)
-        if (law.kind == SoilLaw::Kind::mohr_coulomb && law.cohesion == 0.)
+        if (law.frictional() && law.cohesion == 0.)
           notes.push_back(
             "warning: Soil plasticity/Laws: material " + std::to_string(id) +
             ": mohr-coulomb with c = 0 and no Initial stress has no strength "

@@ -129,7 +129,7 @@ namespace FourierSSI
           const auto law =
             parameters.soil_plasticity.laws.find(cell->material_id());
           if (law != parameters.soil_plasticity.laws.end() &&
-              law->second.kind == SoilLaw::Kind::iwan)
+              law->second.hardening())
             elements += law->second.n_surfaces;
         }
       return elements * (p + 2.) * (p + 2.);

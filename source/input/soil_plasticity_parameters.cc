@@ -20,7 +20,8 @@ namespace FourierSSI
       static const Choices<SoilLaw::Kind> choices{
         {"tresca", SoilLaw::Kind::tresca},
         {"mohr-coulomb", SoilLaw::Kind::mohr_coulomb},
-        {"iwan", SoilLaw::Kind::iwan}};
+        {"iwan", SoilLaw::Kind::iwan},
+        {"iwan-sand", SoilLaw::Kind::iwan_sand}};
       return choices;
     }
 
@@ -44,6 +45,8 @@ namespace FourierSSI
             return "c, phi, psi";
           case SoilLaw::Kind::iwan:
             return "su, k, gref, surfaces, table";
+          case SoilLaw::Kind::iwan_sand:
+            return "c, phi, psi, rf, surfaces";
         }
       return "";
     }
@@ -52,15 +55,18 @@ namespace FourierSSI
     bool
     set_key(SoilLaw &law, const std::string &key, const double value)
     {
-      const bool undrained = law.kind != SoilLaw::Kind::mohr_coulomb;
+      const bool undrained = !law.frictional();
       const bool iwan      = law.kind == SoilLaw::Kind::iwan;
+      const bool sand      = law.kind == SoilLaw::Kind::iwan_sand;
       if (undrained && key == "su")
         law.su0 = value;
       else if (undrained && key == "k")
         law.su_gradient = value;
       else if (iwan && key == "gref")
         law.reference_strain = value;
-      else if (iwan && key == "surfaces")
+      else if (sand && key == "rf")
+        law.failure_ratio = value;
+      else if (law.hardening() && key == "surfaces")
         {
           // Checked as a real number first: 2.5 or 1e9 must not be cut to
           // an integer that passes.
@@ -211,13 +217,42 @@ namespace FourierSSI
       return "";
     }
 
+    /** What is wrong with an iwan-sand law, or "". */
+    std::string
+    sand_problem(const SoilLaw &law, const std::set<std::string> &given)
+    {
+      const std::string surface = mohr_coulomb_problem(law, given);
+      if (!surface.empty())
+        return surface;
+      std::ostringstream text;
+      // R_f = 1 is the hyperbola that reaches q_f only at infinite strain
+      // (S3): no last element.
+      if (!(law.failure_ratio > 0. && law.failure_ratio < 1.))
+        {
+          text << "rf = " << law.failure_ratio
+               << " must satisfy 0 < rf < 1 (the failure ratio q_f / q_ult "
+                  "of the hyperbola)";
+          return text.str();
+        }
+      if (law.n_surfaces == 0)
+        return "surfaces must be a whole number from 1 to " +
+               std::to_string(SoilLaw::max_surfaces);
+      return "";
+    }
+
     /** What is wrong with a law as given, or "". */
     std::string
     problem_of(const SoilLaw &law, const std::set<std::string> &given)
     {
-      return law.kind == SoilLaw::Kind::mohr_coulomb ?
-               mohr_coulomb_problem(law, given) :
-               undrained_problem(law, given);
+      switch (law.kind)
+        {
+          case SoilLaw::Kind::mohr_coulomb:
+            return mohr_coulomb_problem(law, given);
+          case SoilLaw::Kind::iwan_sand:
+            return sand_problem(law, given);
+          default:
+            return undrained_problem(law, given);
+        }
     }
   } // namespace
 
@@ -241,8 +276,14 @@ namespace FourierSSI
       "'id: iwan, su=S[, k=K], table=g1:r1 g2:r2 ...' on a measured "
       "degradation curve: shear strains g increasing with G/G0 = r, r = 1 "
       "at the first, tau = G0 g r linear between the points and beyond the "
-      "last, capped at s_u (doc/soil-plasticity.md section 10). The loading "
-      "and the iteration are set in 'Load path'.");
+      "last, capped at s_u (doc/soil-plasticity.md section 10), or "
+      "'id: iwan-sand, c=C, phi=PHI[, psi=PSI][, rf=R][, surfaces=N]': "
+      "multi-surface drained sand, N = 1..100 Mohr-Coulomb elements "
+      "(default 20) staggered on the Duncan-Chang hyperbola "
+      "q/q_f = x/(1 + R x), x = 3 G0 eps_q/q_f, failure ratio R "
+      "(0 < R < 1, default 0.9), G0 from the material, Mohr-Coulomb with "
+      "c', phi', psi at failure (doc/soil-plasticity.md section 11). The "
+      "loading and the iteration are set in 'Load path'.");
     prm.declare_entry(
       "Stiffness",
       "tangent",

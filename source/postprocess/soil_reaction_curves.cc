@@ -581,7 +581,7 @@ namespace FourierSSI
     result.shear_modulus = parameters.materials.get(id).shear_modulus(depth);
     // Undrained laws (Tresca, iwan) normalise by s_u, drained ones by
     // sigma'_v (the PISA clay and sand forms).
-    result.clay     = law.kind != SoilLaw::Kind::mohr_coulomb;
+    result.clay     = !law.frictional();
     result.strength = result.clay ?
                         law.undrained_strength(depth) :
                         parameters.initial_stress.vertical_stress(depth);

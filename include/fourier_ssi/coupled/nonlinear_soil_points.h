@@ -35,6 +35,7 @@
 #include <deal.II/lac/vector.h>
 #include <fourier_ssi/coupled/coupled_tangent.h>
 #include <fourier_ssi/coupled/multi_surface_clay.h>
+#include <fourier_ssi/coupled/multi_surface_sand.h>
 #include <fourier_ssi/coupled/soil_law.h>
 #include <fourier_ssi/fourier/harmonic_operator.h>
 #include <fourier_ssi/fourier/theta_sampling.h>
@@ -309,10 +310,15 @@ namespace FourierSSI
       /** The geostatic stress sigma_0 (Initial stress; zero without). */
       StrainVector initial_stress;
       /**
-       * An iwan point: its elements (index into clays) and the first entry
-       * of its samples' histories; invalid_unsigned_int otherwise.
+       * An iwan point: its elements (index into clays); invalid_unsigned_int
+       * otherwise.
        */
-      unsigned int clay          = numbers::invalid_unsigned_int;
+      unsigned int clay = numbers::invalid_unsigned_int;
+      /**
+       * A multi-surface point (iwan, iwan-sand): its elements per sample
+       * and the first entry of its samples' histories; 0 otherwise.
+       */
+      unsigned int n_elements    = 0;
       std::size_t  first_history = 0;
     };
 
@@ -382,7 +388,7 @@ namespace FourierSSI
     std::size_t
     history_index(const SoilPoint &point, const unsigned int j) const
     {
-      return point.first_history + j * clays[point.clay].n_surfaces();
+      return point.first_history + j * point.n_elements;
     }
 
     /** The committed state of sample k = p N + j of point p. */
@@ -508,6 +514,11 @@ namespace FourierSSI
     std::vector<SoilReturnMapping> laws;
     /** The elements of every iwan point (SoilPoint::clay). */
     std::vector<MultiSurfaceClay> clays;
+    /**
+     * Per law: the elements of an iwan-sand law (the same at every point:
+     * G0, K and sigma_0 scale them there); null for the other laws.
+     */
+    std::vector<std::shared_ptr<const MultiSurfaceSand>> sands;
     /** history_size(). */
     std::size_t            n_history = 0;
     std::vector<SoilCell>  cells;

@@ -26,13 +26,15 @@ namespace FourierSSI
       tresca,
       mohr_coulomb,
       /** Multi-surface kinematic hardening clay (multi_surface_clay.h). */
-      iwan
+      iwan,
+      /** Multi-surface drained sand (multi_surface_sand.h). */
+      iwan_sand
     };
     Kind kind = Kind::tresca;
     /** Tresca and iwan: s_u = su0 + su_gradient depth [kPa, kPa/m]. */
     double su0         = 0.;
     double su_gradient = 0.;
-    /** Mohr-Coulomb: c' [kPa], phi', psi [rad]. */
+    /** Mohr-Coulomb and iwan-sand: c' [kPa], phi', psi [rad]. */
     double cohesion = 0., friction = 0., dilation = 0.;
     /**
      * iwan: the reference shear strain gamma_ref of the hyperbolic backbone
@@ -48,8 +50,30 @@ namespace FourierSSI
      * point (the last point's slope goes on), are the elements.
      */
     std::vector<std::pair<double, double>> degradation;
+    /**
+     * iwan-sand: the Duncan-Chang failure ratio R_f of its hyperbola (S3),
+     * 0 < R_f < 1: G / G0 = 1/2 where the elastic stress is q_f / R_f.
+     */
+    double failure_ratio = 0.9;
     /** The largest number of iwan sub-elements (memory per soil point). */
     static constexpr unsigned int max_surfaces = 100;
+
+    /** A frictional law in effective stress (mohr-coulomb, iwan-sand). */
+    bool
+    frictional() const
+    {
+      return kind == Kind::mohr_coulomb || kind == Kind::iwan_sand;
+    }
+
+    /**
+     * A multi-surface law: hysteresis below failure, a plastic state of
+     * n_surfaces elements per point.
+     */
+    bool
+    hardening() const
+    {
+      return kind == Kind::iwan || kind == Kind::iwan_sand;
+    }
 
     /** Undrained strength s_u at a depth [kPa] (Tresca, iwan). */
     double
@@ -72,7 +96,8 @@ namespace FourierSSI
 
     /**
      * "id: tresca, su=..., k=...; id: mohr-coulomb, c=..., phi=...,
-     * psi=...; id: iwan, su=..., k=..., gref=..., surfaces=..."; throws one
+     * psi=...; id: iwan, su=..., k=..., gref=..., surfaces=...; id:
+     * iwan-sand, c=..., phi=..., psi=..., rf=..., surfaces=..."; throws one
      * line naming the entry and the offending text.
      */
     void
