@@ -48,7 +48,13 @@ namespace FourierSSI
                                StrainVector       *updated,
                                StressTangent      *tangent) const
   {
+    // sigma = sigma_0 + sum_i (D_i (eps - eps^p_i) + the return's
+    // correction): summed as changes from sigma_0, so that an elastic step
+    // of any size gives sigma_0 + D eps to the round-off of D eps, not of
+    // sigma_0 (the s_p of a step of 1e-7 m would otherwise be 1e-14 kPa of
+    // noise against 1e-4 kPa of stress).
     MultiSurfaceStress result;
+    result.stress = initial_stress;
     if (tangent != nullptr)
       tangent->fill(0.);
     StressTangent element_tangent;
@@ -61,7 +67,8 @@ namespace FourierSSI
         StrainVector elastic_strain;
         for (unsigned int c = 0; c < 6; ++c)
           elastic_strain[c] = strain[c] - committed[i][c];
-        StrainVector trial = hooke_stress(elastic_strain, lambda, G);
+        const StrainVector change = hooke_stress(elastic_strain, lambda, G);
+        StrainVector       trial  = change;
         for (unsigned int c = 0; c < 6; ++c)
           trial[c] += strength_fraction[i] * initial_stress[c];
         const SoilReturn r =
@@ -72,7 +79,7 @@ namespace FourierSSI
         if (r.state != SoilState::elastic)
           ++result.n_yielding;
         for (unsigned int c = 0; c < 6; ++c)
-          result.stress[c] += r.stress[c];
+          result.stress[c] += change[c] + (r.stress[c] - trial[c]);
         if (tangent != nullptr)
           for (unsigned int a = 0; a < 36; ++a)
             (*tangent)[a] += element_tangent[a];
