@@ -384,7 +384,7 @@ namespace FourierSSI
       const double                 surface = materials.surface_elevation;
       std::set<types::material_id> graded;
       for (const auto &cell : triangulation.active_cell_iterators())
-        if (materials.get(cell->material_id()).alpha > 0.)
+        if (materials.get(cell->material_id()).graded())
           {
             graded.insert(cell->material_id());
             AssertThrow(cell->center()[1] < surface + extent.tolerance,

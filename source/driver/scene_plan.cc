@@ -402,7 +402,12 @@ namespace FourierSSI
           const ElasticMaterial &m = parameters.materials.get(id);
           plan.log_lines.push_back(
             "material " + std::to_string(id) +
-            (m.alpha == 0. ?
+            (m.hardin() ?
+               ": G0 = G_ref (p'0/" + format(m.hardin_reference_stress) +
+                 " kPa)^" + format(m.hardin_exponent) +
+                 " (Hardin), p'0 the geostatic mean effective stress, "
+                 "evaluated at every quadrature point" :
+             m.alpha == 0. ?
                ": homogeneous (alpha = 0), constant moduli" :
                ": G(depth) = G_ref (depth/" + format(m.depth_ref) + ")^" +
                  format(m.alpha) + " evaluated at every quadrature point"));

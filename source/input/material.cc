@@ -12,6 +12,11 @@ namespace FourierSSI
   double
   ElasticMaterial::shear_modulus(const double depth) const
   {
+    if (hardin())
+      return shear_modulus_ref *
+             std::pow((mean_at_surface + mean_gradient * depth) /
+                        hardin_reference_stress,
+                      hardin_exponent);
     if (alpha == 0.)
       return shear_modulus_ref;
     return shear_modulus_ref * std::pow(depth / depth_ref, alpha);
@@ -36,7 +41,10 @@ namespace FourierSSI
       "'id: key=value, ...' with keys E or G [kPa] (modulus at depth_ref), "
       "nu (-1 < nu < 0.5), alpha (power-law exponent of G with depth, "
       "thesis eq. 4.3; default 0 = homogeneous, 1 = Gibson) and depth_ref [m] "
-      "(depth where G equals the given value; default 1).");
+      "(depth where G equals the given value; default 1); or, instead of "
+      "alpha and depth_ref, Hardin's pref [kPa] and m (default 0.5): "
+      "G0 = G (p'0/pref)^m with p'0 = (1 + 2 K0) sigma'_v / 3 the "
+      "geostatic mean effective stress of Initial stress.");
     prm.declare_entry("Ground surface elevation",
                       "0",
                       Patterns::Double(),
@@ -107,6 +115,7 @@ namespace FourierSSI
     {
       std::optional<double> E, G;
       bool                  has_nu = false;
+      std::set<std::string> keys;
     };
 
     /** The key=value pairs after the colon of one entry. */
@@ -117,7 +126,7 @@ namespace FourierSSI
                        ElasticMaterial   &material)
     {
       GivenModuli           given;
-      std::set<std::string> keys_given;
+      std::set<std::string> &keys_given = given.keys;
       for (const std::string &pair :
            Utilities::split_string_list(entry.substr(colon + 1), ','))
         {
@@ -144,10 +153,15 @@ namespace FourierSSI
             material.alpha = value;
           else if (key == "depth_ref")
             material.depth_ref = value;
+          else if (key == "pref")
+            material.hardin_reference_stress = value;
+          else if (key == "m")
+            material.hardin_exponent = value;
           else
             refuse_materials(text,
                              "unknown key '" + key +
-                               "' (expected E, G, nu, alpha, depth_ref)");
+                               "' (expected E, G, nu, alpha, depth_ref, "
+                               "pref, m)");
         }
       return given;
     }
@@ -171,6 +185,30 @@ namespace FourierSSI
                            " kPa is outside " + number_text(smallest_modulus) +
                            " ... " + number_text(largest_modulus) +
                            " kPa (units: kN, m, kPa)");
+    }
+
+    /** Hardin's keys: pref > 0, 0 <= m <= 1, not with the depth law. */
+    void
+    check_hardin(const ElasticMaterial &material,
+                 const GivenModuli     &given,
+                 const std::string     &where,
+                 const std::string     &text)
+    {
+      const bool hardin = given.keys.count("pref") > 0;
+      if (given.keys.count("m") && !hardin)
+        refuse_materials(text,
+                         where + "m without pref (Hardin's G0 = G "
+                                 "(p'0/pref)^m needs both)");
+      if (!hardin)
+        return;
+      if (given.keys.count("alpha") || given.keys.count("depth_ref"))
+        refuse_materials(text,
+                         where + "give alpha and depth_ref (G with depth) "
+                                 "or pref and m (G with p'0), not both");
+      if (!(material.hardin_reference_stress > 0.))
+        refuse_materials(text, where + "pref must be > 0 kPa");
+      if (!(material.hardin_exponent >= 0. && material.hardin_exponent <= 1.))
+        refuse_materials(text, where + "m must satisfy 0 <= m <= 1");
     }
 
     /** Check the given data and set the shear modulus (from E or G). */
@@ -202,6 +240,7 @@ namespace FourierSSI
         refuse_materials(text, where + "alpha must be >= 0");
       if (!(material.depth_ref > 0.))
         refuse_materials(text, where + "depth_ref must be > 0");
+      check_hardin(material, given, where, text);
     }
   } // namespace
 
@@ -226,6 +265,27 @@ namespace FourierSSI
       }
     if (materials.empty())
       refuse_materials(text, "no material given");
+  }
+
+  void
+  MaterialLibrary::use_geostatic_stress(
+    const InitialStressParameters &initial_stress)
+  {
+    // p'0 = (sigma'_v + 2 K0 sigma'_v) / 3, sigma'_v = q + gamma' depth.
+    const double mean = (1. + 2. * initial_stress.earth_pressure_coefficient) / 3.;
+    for (auto &[id, material] : materials)
+      {
+        if (!material.hardin())
+          continue;
+        AssertThrow(initial_stress.enabled(),
+                    ExcMessage("Materials/Materials: material " +
+                               std::to_string(id) +
+                               ": pref (Hardin's G0 from the mean effective "
+                               "stress) needs Initial stress (Effective unit "
+                               "weight or Surcharge, K0)"));
+        material.mean_at_surface = mean * initial_stress.surcharge;
+        material.mean_gradient   = mean * initial_stress.unit_weight;
+      }
   }
 
   const ElasticMaterial &

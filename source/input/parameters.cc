@@ -156,6 +156,7 @@ namespace FourierSSI
                            "are read from the soil's stress at each step"));
     choose_element(*this);
     initial_stress.parse_parameters(prm);
+    materials.use_geostatic_stress(initial_stress);
     load_path.parse_parameters(prm);
     check_laws(*this);
     check_target_accuracy(*this);

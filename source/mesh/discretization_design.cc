@@ -134,7 +134,7 @@ namespace FourierSSI
         }
       bool graded_soil = false;
       for (const auto &[id, material] : parameters.materials.all())
-        graded_soil |= material.alpha > 0.;
+        graded_soil |= material.graded();
       const double top = parameters.mesh.z_breakpoints.back();
       if (graded_soil && parameters.mesh.type == MeshType::rectangle &&
           std::abs(parameters.materials.surface_elevation - top) <

@@ -3,12 +3,17 @@
  * non-homogeneity of thesis eq. 4.3 (Booker et al. 1985):
  *   G(depth) = G_ref (depth / depth_ref)^alpha,  nu constant,
  * alpha = 0 homogeneous, alpha = 1 Gibson soil. depth = surface elevation - z.
+ * Or Hardin's small-strain modulus from the geostatic mean effective stress
+ * p'0 of Initial stress (Hardin & Black 1968):
+ *   G(depth) = G_ref (p'0(depth) / p_ref)^m,
+ *   p'0 = (1 + 2 K0) (q + gamma' depth) / 3.
  */
 #ifndef fourier_ssi_material_h
 #define fourier_ssi_material_h
 
 #include <deal.II/base/parameter_handler.h>
 #include <deal.II/base/types.h>
+#include <fourier_ssi/input/initial_stress_parameters.h>
 #include <map>
 #include <string>
 
@@ -22,8 +27,27 @@ namespace FourierSSI
     double poisson_ratio     = 0.;
     double alpha             = 0.; // non-homogeneity exponent
     double depth_ref         = 1.; // depth at which G = shear_modulus_ref
+    /** Hardin: p_ref [kPa] (G = shear_modulus_ref at p'0 = p_ref); 0: off. */
+    double hardin_reference_stress = 0.;
+    /** Hardin's exponent m. */
+    double hardin_exponent = 0.5;
+    /** Hardin: p'0(depth) = mean_at_surface + mean_gradient depth [kPa]. */
+    double mean_at_surface = 0., mean_gradient = 0.;
 
-    /** Shear modulus at depth d >= 0 (thesis eq. 4.3). */
+    bool
+    hardin() const
+    {
+      return hardin_reference_stress > 0.;
+    }
+
+    /** G varies with depth (a power law or Hardin's). */
+    bool
+    graded() const
+    {
+      return alpha > 0. || hardin();
+    }
+
+    /** Shear modulus at depth d >= 0 (thesis eq. 4.3, or Hardin's). */
     double
     shear_modulus(const double depth) const;
 
@@ -48,6 +72,13 @@ namespace FourierSSI
      */
     void
     parse_material_list(const std::string &text);
+
+    /**
+     * Hardin's materials take p'0(depth) from the geostatic stress; one
+     * line if one is given without Initial stress.
+     */
+    void
+    use_geostatic_stress(const InitialStressParameters &initial_stress);
 
     bool
     has(const types::material_id id) const
