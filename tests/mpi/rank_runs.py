@@ -48,6 +48,13 @@ subsection Output
 end
 """
 
+# The same cycle in multi-surface sand (iwan-sand, doc/soil-plasticity.md
+# section 11): 6 Mohr-Coulomb elements whose strength c' = 10 kPa needs no
+# initial stress; each sample carries its elements' plastic strains.
+PILE_SLICE_N2_IWAN_SAND_CYCLE = PILE_SLICE_N2_IWAN_CYCLE.replace(
+    "0: iwan, su=10, gref=0.01, surfaces=8",
+    "0: iwan-sand, c=10, phi=20, psi=0, rf=0.9, surfaces=6")
+
 
 def run(command, directory):
     """Runs command in directory, its output kept in log.txt; exits on

@@ -48,7 +48,8 @@ stress calls for n = 3 at the first step, the set grows on both runs
 (n = 3 on rank 1), and the text must again be the same: the spectrum is
 summed over the ranks (every rank takes the same decision) and the added
 harmonic runs the distributed Newton above.
-With STIFFNESS = iwan, the same pile slice in multi-surface (iwan) clay
+With STIFFNESS = iwan (or iwan-sand), the same pile slice in multi-surface
+(iwan) clay (or sand)
 through one cycle (u = +0.02, -0.02, +0.02 m, Newton): each point's
 back-stresses live on the rank that owns the point, and the loop's
 load-cycles.csv (its dissipated energy and damping ratio) must be the same
@@ -58,7 +59,7 @@ and a coulomb shaft, doc/soil-plasticity.md section 6b) with that interface
 law: the relative displacements are summed over the ranks too, and
 interface-state.csv must also be written once and be the same text.
 Usage: soil_output_same.py "MPIEXEC;-np;2;..." FOURIER_SSI_EXE SOURCE_DIR
-       WORK_DIR STIFFNESS|swipe|growth|iwan [INTERFACE_LAW]
+       WORK_DIR STIFFNESS|swipe|growth|iwan|iwan-sand [INTERFACE_LAW]
 """
 import os
 import sys
@@ -149,9 +150,10 @@ def main():
         overrides = GROWTH
         distribution = ("harmonics distributed over 2 MPI ranks: rank 0 "
                         "n=1 symmetric; rank 1")
-    iwan = sys.argv[5] == "iwan"
+    iwan = sys.argv[5] in ("iwan", "iwan-sand")
     if iwan:
-        overrides = rank_runs.PILE_SLICE_N2_IWAN_CYCLE
+        overrides = (rank_runs.PILE_SLICE_N2_IWAN_CYCLE if sys.argv[5] == "iwan"
+                     else rank_runs.PILE_SLICE_N2_IWAN_SAND_CYCLE)
         files.add("load-cycles.csv")
     if len(sys.argv) > 6:
         scene = "prm/pile-adhesion.prm"
