@@ -38,10 +38,20 @@ Checks, with their reasons:
     holds with that polygon. The table is the hyperbola read at 7 strains
     (4 digits), so the strains and their gradients are those of the
     hyperbola's run: the virgin T(theta) below 0.8 of its failure twist
-    within the same 1e-4 (the mesh's error).
+    within the same 1e-4 (the mesh's error);
+  - the multi-surface sand (iwan-sand, c' = 2 kPa, phi' = 30, psi = 0,
+    R_f = 0.9, 20 surfaces) from an isotropic p'0 = 20 kPa (Surcharge,
+    K0 = 1): in pure shear at a constant mean stress it is the clay's
+    polygon with s_u = tau_f = p'0 sin phi + c cos phi and gamma_ref =
+    tau_f / (R_f G0) (doc/derivations/multi_surface_sand.md section 1), so
+    the same closed form holds: the virgin T(theta) below 0.8 of the
+    failure twist within the same 1e-4, on 48 graded cells (its R_f = 0.9
+    bends the polygon more than the clay's 1/3 does, and 24 cells gave
+    2.7e-4, 48 cells 4.8e-5: the mesh's error).
 Usage: iwan_torsion_ring.py FOURIER_SSI_EXE SOURCE_DIR WORK_DIR
 """
 import csv
+import math
 import os
 import shutil
 import subprocess
@@ -103,9 +113,9 @@ end
 IWAN = "0: iwan, su=10, gref=0.01, surfaces={n}"
 
 
-def run(name, law, path):
+def run(name, law, path, extra=""):
     open(os.path.join(work, name + ".prm"), "w").write(
-        SCENE.format(law=law, path=path, name=name))
+        SCENE.format(law=law, path=path, name=name) + extra)
     r = subprocess.run([exe, name + ".prm"], cwd=work, capture_output=True,
                        text=True)
     if r.returncode != 0:
@@ -216,5 +226,30 @@ worst, _ = virgin_error(table_ring, rows)
 check(worst <= 1e-4, "table: virgin T(theta) below 0.8 of the failure twist "
       "(%.4g rad) within 1e-4 of the closed form (worst %.2e)"
       % (table_failure, worst))
+
+# 6. The multi-surface sand: the clay's closed form with s_u = tau_f.
+P0, C, PHI, RF = 20., 2., math.radians(30.), 0.9
+TAU_F = P0 * math.sin(PHI) + C * math.cos(PHI)
+sand_ring = TorsionRing(3000., TAU_F, TAU_F / (RF * 3000.), 20, 0.5, 5., 1.)
+sand_failure = sand_ring.virgin_twist(sand_ring.failure_torque * (1 - 1e-12))
+GEOSTATIC = """
+subsection Mesh
+  set R cells  = 2, 48
+  set R growth = 1, 1.058
+end
+subsection Materials
+  set Ground surface elevation = 0.5
+end
+subsection Initial stress
+  set Surcharge = 20
+  set K0        = 1
+end
+"""
+_, rows = run("sand", "0: iwan-sand, c=2, phi=30, psi=0, rf=0.9, surfaces=20",
+              "  set Target = %.6g" % (1.25 * sand_failure), GEOSTATIC)
+worst, _ = virgin_error(sand_ring, rows)
+check(worst <= 1e-4, "iwan-sand: virgin T(theta) below 0.8 of the failure "
+      "twist (%.4g rad) within 1e-4 of the clay's closed form with s_u = "
+      "tau_f = %.4g kPa (worst %.2e)" % (sand_failure, TAU_F, worst))
 
 finish()
