@@ -60,8 +60,8 @@ namespace FourierSSI
     StressTangent element_tangent;
     for (unsigned int i = 0; i < n_surfaces(); ++i)
       {
-        const double G = stiffness_fraction[i] * shear_modulus,
-                     K = strength_fraction[i] * bulk_modulus,
+        const double G      = stiffness_fraction[i] * shear_modulus,
+                     K      = strength_fraction[i] * bulk_modulus,
                      lambda = K - 2. * G / 3.;
         // (S1): the trial w_i sigma_0 + D_i (eps - eps^p_i,n).
         StrainVector elastic_strain;
@@ -71,11 +71,10 @@ namespace FourierSSI
         StrainVector       trial  = change;
         for (unsigned int c = 0; c < 6; ++c)
           trial[c] += strength_fraction[i] * initial_stress[c];
-        const SoilReturn r =
-          tangent == nullptr ?
-            elements[i].return_map(trial, G, K, depth) :
-            elements[i].return_map_with_tangent(
-              trial, G, K, depth, element_tangent);
+        const SoilReturn r = tangent == nullptr ?
+                               elements[i].return_map(trial, G, K, depth) :
+                               elements[i].return_map_with_tangent(
+                                 trial, G, K, depth, element_tangent);
         if (r.state != SoilState::elastic)
           ++result.n_yielding;
         for (unsigned int c = 0; c < 6; ++c)

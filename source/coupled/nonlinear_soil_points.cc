@@ -317,11 +317,10 @@ namespace FourierSSI
                 // s_p = sigma_0 + D eps - sigma keeps the internal force
                 // int Bbar^T (sigma - sigma_0) = K u - c.
                 const StrainVector elastic = elastic_stress(point, strain[k]);
-                StrainVector      *updated =
-                  point.n_elements == 0 ?
-                         nullptr :
-                         &history[history_index(point, j)];
-                const SoilReturn r = return_from(
+                StrainVector      *updated = point.n_elements == 0 ?
+                                               nullptr :
+                                               &history[history_index(point, j)];
+                const SoilReturn   r       = return_from(
                   point,
                   strain[k],
                   history_of(p, k, committed_plastic, committed_history),

@@ -125,7 +125,7 @@ namespace FourierSSI
                        const std::string &text,
                        ElasticMaterial   &material)
     {
-      GivenModuli           given;
+      GivenModuli            given;
       std::set<std::string> &keys_given = given.keys;
       for (const std::string &pair :
            Utilities::split_string_list(entry.substr(colon + 1), ','))
@@ -272,7 +272,8 @@ namespace FourierSSI
     const InitialStressParameters &initial_stress)
   {
     // p'0 = (sigma'_v + 2 K0 sigma'_v) / 3, sigma'_v = q + gamma' depth.
-    const double mean = (1. + 2. * initial_stress.earth_pressure_coefficient) / 3.;
+    const double mean =
+      (1. + 2. * initial_stress.earth_pressure_coefficient) / 3.;
     for (auto &[id, material] : materials)
       {
         if (!material.hardin())

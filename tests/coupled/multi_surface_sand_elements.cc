@@ -16,15 +16,15 @@
 //  - failure is Mohr-Coulomb's: at 40 x_ref, beyond the last element's
 //    yield, the three paths carry their Mohr-Coulomb strengths to 1e-12,
 //    extension 22 % below compression as Mohr-Coulomb's Lode dependence
-//    gives it (the same round-off bounds); and a drained triaxial compression at constant sigma'_r
-//    with dilation (psi = 10 degrees) ends on sigma'_a = sigma'_r N_phi +
-//    2 c sqrt(N_phi) to 1e-9 (the lateral stress held by Newton on the
-//    law's own tangent to 1e-10 kPa);
+//    gives it (the same round-off bounds); and a drained triaxial compression
+//    at constant sigma'_r with dilation (psi = 10 degrees) ends on sigma'_a =
+//    sigma'_r N_phi + 2 c sqrt(N_phi) to 1e-9 (the lateral stress held by
+//    Newton on the law's own tangent to 1e-10 kPa);
 //  - Masing's rules in simple shear cycles +-gamma_a: the loop closes after
-//    one cycle (1e-10 of tau_a, 10000 returns), and its damping ratio matches the closed
-//    form of the hyperbola xi(x) = (4/pi)(1 + 1/x)(1 - ln(1 + x)/x) - 2/pi,
-//    x = gamma_a / gamma_ref, within 2 % at x = 1, 3 and 9 (N = 20) and at
-//    x = 0.1, 0.3 (N = 40): the clay's polygon, the same error
+//    one cycle (1e-10 of tau_a, 10000 returns), and its damping ratio matches
+//    the closed form of the hyperbola xi(x) = (4/pi)(1 + 1/x)(1 - ln(1 + x)/x)
+//    - 2/pi, x = gamma_a / gamma_ref, within 2 % at x = 1, 3 and 9 (N = 20) and
+//    at x = 0.1, 0.3 (N = 40): the clay's polygon, the same error
 //    (multi_surface_clay_masing).
 #include "check.h"
 #include "multi_surface_sand_test_support.h"
@@ -36,10 +36,10 @@ using namespace sand_test;
 
 namespace
 {
-  const double tau_f   = p0 * std::sin(phi) + cohesion * std::cos(phi);
-  const double q_f_tc  = 6. * tau_f / (3. - std::sin(phi));
-  const double q_f_te  = 6. * tau_f / (3. + std::sin(phi));
-  constexpr double rf  = 0.9;
+  const double     tau_f  = p0 * std::sin(phi) + cohesion * std::cos(phi);
+  const double     q_f_tc = 6. * tau_f / (3. - std::sin(phi));
+  const double     q_f_te = 6. * tau_f / (3. + std::sin(phi));
+  constexpr double rf     = 0.9;
   /** x_ref: G / G0 = 1/2 on (S3). */
   constexpr double x_ref = 1. / rf;
 
@@ -52,15 +52,15 @@ namespace
   void
   check_one_element_is_mohr_coulomb()
   {
-    const SoilLaw           law = sand_law("psi=10, surfaces=1");
-    const MultiSurfaceSand  sand(law);
-    SoilLaw                 mc = law;
-    mc.kind                    = SoilLaw::Kind::mohr_coulomb;
+    const SoilLaw          law = sand_law("psi=10, surfaces=1");
+    const MultiSurfaceSand sand(law);
+    SoilLaw                mc = law;
+    mc.kind                   = SoilLaw::Kind::mohr_coulomb;
     const SoilReturnMapping mohr_coulomb(mc);
     SandPoint               point{sand};
     const double            lambda = bulk - 2. * g0 / 3.;
     StrainVector            strain{}, s_p{};
-    double                  worst = 0.;
+    double                  worst   = 0.;
     unsigned int            plastic = 0;
     for (unsigned int k = 0; k < 60; ++k)
       {
@@ -72,7 +72,7 @@ namespace
         StrainVector trial = hooke_stress(strain, lambda, g0);
         for (unsigned int c = 0; c < 6; ++c)
           trial[c] += isotropic_stress()[c] - s_p[c];
-        const SoilReturn r = mohr_coulomb.return_map(trial, g0, bulk, 0.);
+        const SoilReturn   r = mohr_coulomb.return_map(trial, g0, bulk, 0.);
         const StrainVector elastic = hooke_stress(strain, lambda, g0);
         for (unsigned int c = 0; c < 6; ++c)
           s_p[c] = isotropic_stress()[c] + elastic[c] - r.stress[c];
@@ -108,14 +108,14 @@ namespace
     // steps sum them (measured 3.5e-13); the triaxial paths stay on the
     // axes (1e-15).
     const double round_off = shear ? 1e-10 : 1e-12;
-    SandPoint                   point{sand};
+    SandPoint    point{sand};
     // x = G0 gamma / tau_f (shear), 3 G0 eps_q / q_f (triaxial).
-    const double unit = shear ? strength / g0 : strength / (3. * g0);
-    double       own = 0., fit = 0.;
+    const double       unit = shear ? strength / g0 : strength / (3. * g0);
+    double             own = 0., fit = 0.;
     const unsigned int n = 2400;
     for (unsigned int k = 1; k <= n; ++k)
       {
-        const double x = 12. * x_ref * k / n;
+        const double       x = 12. * x_ref * k / n;
         const StrainVector strain =
           shear ? simple_shear(x * unit) : isochoric_triaxial(sign * x * unit);
         const double value =
@@ -129,9 +129,9 @@ namespace
     check::small(name + ": |stress - hyperbola| / hyperbola up to 12 x_ref",
                  fit,
                  5e-3);
-    const StrainVector far =
-      shear ? simple_shear(40. * x_ref * unit) :
-              isochoric_triaxial(sign * 40. * x_ref * unit);
+    const StrainVector far = shear ?
+                               simple_shear(40. * x_ref * unit) :
+                               isochoric_triaxial(sign * 40. * x_ref * unit);
     check::relative(name + ": the stress at 40 x_ref vs Mohr-Coulomb's",
                     sign * measure(point.step(far).stress, shear),
                     strength,
@@ -158,8 +158,8 @@ namespace
         for (unsigned int it = 0; it < 30; ++it)
           {
             StressTangent            d;
-            const MultiSurfaceStress s = at(lateral, &d);
-            const double residual      = s.stress[0] + p0;
+            const MultiSurfaceStress s        = at(lateral, &d);
+            const double             residual = s.stress[0] + p0;
             if (std::abs(residual) < 1e-10)
               break;
             lateral -= residual / (d[0 * 6 + 0] + d[0 * 6 + 2]);
@@ -193,12 +193,12 @@ namespace
   {
     const MultiSurfaceSand sand(
       sand_law("surfaces=" + std::to_string(n_surfaces)));
-    SandPoint          point{sand};
-    const double       gamma_ref = x_ref * tau_f / g0;
-    const double       gamma_a   = x * gamma_ref;
-    const unsigned int steps     = 4000;
+    SandPoint           point{sand};
+    const double        gamma_ref = x_ref * tau_f / g0;
+    const double        gamma_a   = x * gamma_ref;
+    const unsigned int  steps     = 4000;
     std::vector<double> gamma, tau;
-    const auto go_to = [&](const double target, const unsigned int n) {
+    const auto          go_to = [&](const double target, const unsigned int n) {
       const double from = gamma.empty() ? 0. : gamma.back();
       for (unsigned int k = 1; k <= n; ++k)
         {

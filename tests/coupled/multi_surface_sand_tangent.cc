@@ -63,10 +63,10 @@ namespace
   double
   tangent_error(const SandPoint &point, const StrainVector &strain)
   {
-    StressTangent          d;
+    StressTangent d;
     point.trial(strain, &d);
-    const std::vector<SoilState> key = regions(point, strain);
-    double                 error = 0.;
+    const std::vector<SoilState> key   = regions(point, strain);
+    double                       error = 0.;
     for (unsigned int b = 0; b < 6; ++b)
       {
         StrainVector plus = strain, minus = strain;
@@ -74,11 +74,12 @@ namespace
         minus[b] -= h;
         if (regions(point, plus) != key || regions(point, minus) != key)
           return -1.;
-        const StrainVector up = point.trial(plus).stress,
+        const StrainVector up   = point.trial(plus).stress,
                            down = point.trial(minus).stress;
         for (unsigned int a = 0; a < 6; ++a)
-          error = std::max(error,
-                           std::abs(d[a * 6 + b] - (up[a] - down[a]) / (2. * h)));
+          error =
+            std::max(error,
+                     std::abs(d[a * 6 + b] - (up[a] - down[a]) / (2. * h)));
       }
     for (const SoilState state : key)
       ++element_regions[state];
@@ -89,11 +90,11 @@ namespace
 int
 main()
 {
-  const MultiSurfaceSand sand(sand_law("psi=10, surfaces=10"));
-  std::mt19937           rng(11);
+  const MultiSurfaceSand           sand(sand_law("psi=10, surfaces=10"));
+  std::mt19937                     rng(11);
   std::normal_distribution<double> step(0., 1.);
-  double       worst[3] = {0., 0., 0.}, largest_f = -1e300;
-  unsigned int count[3] = {0, 0, 0}, skipped = 0;
+  double                           worst[3] = {0., 0., 0.}, largest_f = -1e300;
+  unsigned int                     count[3] = {0, 0, 0}, skipped = 0;
   for (unsigned int path = 0; path < 30; ++path)
     {
       SandPoint point{sand};
@@ -134,11 +135,12 @@ main()
                    worst[c],
                    1e-5);
     }
-  const char *region[4] = {"elastic", "on a plane", "on an edge", "at the apex"};
-  for (const SoilState state : {SoilState::elastic,
-                                SoilState::plane,
-                                SoilState::edge,
-                                SoilState::apex})
+  const char *region[4] = {"elastic",
+                           "on a plane",
+                           "on an edge",
+                           "at the apex"};
+  for (const SoilState state :
+       {SoilState::elastic, SoilState::plane, SoilState::edge, SoilState::apex})
     check::that(std::string("element returns ") +
                   region[static_cast<int>(state)] + ": at least 20 (" +
                   std::to_string(element_regions[state]) + ")",

@@ -60,9 +60,9 @@ namespace sand_test
   {
     const MultiSurfaceSand   &law;
     StrainVector              initial_stress = isotropic_stress();
-    std::vector<StrainVector> plastic = std::vector<StrainVector>(
-      law.n_surfaces(),
-      StrainVector{{0., 0., 0., 0., 0., 0.}});
+    std::vector<StrainVector> plastic =
+      std::vector<StrainVector>(law.n_surfaces(),
+                                StrainVector{{0., 0., 0., 0., 0., 0.}});
 
     /** The stress at `strain` from the committed state; commits. */
     MultiSurfaceStress
@@ -85,14 +85,8 @@ namespace sand_test
     MultiSurfaceStress
     trial(const StrainVector &strain, StressTangent *tangent = nullptr) const
     {
-      return law.return_map(strain,
-                            initial_stress,
-                            g0,
-                            bulk,
-                            0.,
-                            plastic.data(),
-                            nullptr,
-                            tangent);
+      return law.return_map(
+        strain, initial_stress, g0, bulk, 0., plastic.data(), nullptr, tangent);
     }
   };
 } // namespace sand_test
