@@ -68,6 +68,11 @@ import matplotlib.pyplot as plt
 out, figure, twin, site, about = sys.argv[1:6]
 soil = {"clay": "iwan clay", "sand": "iwan-sand"}[site]
 
+
+def name(law):
+    """The law as the table names it: the runs' files say iwan."""
+    return {"clay": "iwan", "sand": "iwan-sand"}[site] if law == "iwan" else law
+
 def cost(name):
     t, m = open("time-" + name).read().split()
     steps = list(csv.DictReader(open(name + "/load-displacement.csv")))
@@ -86,7 +91,7 @@ for law in ("iwan", twin):
     rows = list(csv.DictReader(open(law + "-monotonic/load-displacement.csv")))
     t, m, n, lo, hi = cost(law + "-monotonic")
     lines.append("| %s | %.0f | %d | %d–%d | %.1f | %.2f |" %
-                 (law, float(rows[-1]["H_kN"]), n, lo, hi, t, m))
+                 (name(law), float(rows[-1]["H_kN"]), n, lo, hi, t, m))
 lines += ["", "## 10 cycles (4 steps a segment, 84 steps)", "",
           "| law | amplitude | secant stiffness, cycle 1 / 10 [kN/m] | damping ratio, cycle 1 / 10 | u at zero load, cycle 10 [m] | Newton updates per step | wall time [s] | peak memory [GB] |",
           "|---|---|---|---|---|---|---|---|"]
@@ -96,7 +101,7 @@ for law in ("iwan", twin):
         t, m, n, lo, hi = cost("%s-%s" % (law, a))
         z = c[-1]["zero_load_horizontal_m"]
         lines.append("| %s | %s m (%.3f D) | %.4g / %.4g | %.4f ± %.4f / %.4f | %s | %d–%d | %.1f | %.2f |" % (
-            law, a, float(a) / 9., float(c[0]["secant_stiffness_kN_per_m"]),
+            name(law), a, float(a) / 9., float(c[0]["secant_stiffness_kN_per_m"]),
             float(c[-1]["secant_stiffness_kN_per_m"]),
             float(c[0]["damping_ratio"]), float(c[0]["damping_ratio_error"]),
             float(c[-1]["damping_ratio"]), ("%.3g" % float(z)) if z else "–",
@@ -116,7 +121,7 @@ for law, style in (("iwan", "-"), (twin, "--")):
             continue
         pts = [(0., 0.)] + pts
         ax.plot([p[0] for p in pts], [p[1] for p in pts], style, color=colour,
-                marker="o", ms=2, label="%s, %s m" % (law, depth))
+                marker="o", ms=2, label="%s, %s m" % (name(law), depth))
 ax.set_xlabel("v [m]")
 ax.set_ylabel("p [kN/m]")
 ax.grid(alpha=0.3)
