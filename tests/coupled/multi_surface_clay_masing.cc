@@ -31,6 +31,7 @@
 //    to round-off (1e-9 relative: two sums of 16000 trapezoids).
 #include "check.h"
 #include "multi_surface_clay_test_support.h"
+#include "multi_surface_test_support.h"
 
 #include <deal.II/base/numbers.h>
 #include <sstream>
@@ -155,14 +156,6 @@ namespace
                    5e-3);
   }
 
-  /** The closed-form damping of the Masing hyperbola (section 6). */
-  double
-  hyperbola_damping(const double x)
-  {
-    const double pi = numbers::PI;
-    return 4. / pi * (1. + 1. / x) * (1. - std::log1p(x) / x) - 2. / pi;
-  }
-
   /** The loop's damping ratio; checks its area against the exact one. */
   double
   loop_damping(const MultiSurfaceClay &law,
@@ -201,7 +194,7 @@ namespace
         check_closure(c, gamma_a, at);
         check_masing(law, c, gamma_a, at);
         const double xi    = loop_damping(law, c, gamma_a, at),
-                     exact = hyperbola_damping(x);
+                     exact = multi_surface_test::hyperbola_damping(x);
         std::cout << "  " << x << "  " << xi << "  " << exact << "  "
                   << xi / exact - 1. << std::endl;
         if ((n == 20 && x >= 1.) || (n == 40 && x >= 0.03))

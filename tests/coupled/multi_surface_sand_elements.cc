@@ -28,6 +28,7 @@
 //    (multi_surface_clay_masing).
 #include "check.h"
 #include "multi_surface_sand_test_support.h"
+#include "multi_surface_test_support.h"
 
 #include <deal.II/base/numbers.h>
 #include <fourier_ssi/harmonic/stress_postprocessor.h>
@@ -180,12 +181,6 @@ namespace
                     1e-9);
   }
 
-  double
-  hyperbola_damping(const double x)
-  {
-    const double pi = numbers::PI;
-    return 4. / pi * (1. + 1. / x) * (1. - std::log1p(x) / x) - 2. / pi;
-  }
 
   /** Simple shear cycles at x = gamma_a / gamma_ref: closure and damping. */
   void
@@ -224,7 +219,7 @@ namespace
     const double xi = area / (4. * numbers::PI * 0.5 * tau[first] * gamma_a);
     check::relative(at + ": damping ratio vs the Masing hyperbola",
                     xi,
-                    hyperbola_damping(x),
+                    multi_surface_test::hyperbola_damping(x),
                     0.02);
   }
 } // namespace

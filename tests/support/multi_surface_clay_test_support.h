@@ -6,6 +6,8 @@
 #ifndef fourier_ssi_tests_multi_surface_clay_test_support_h
 #define fourier_ssi_tests_multi_surface_clay_test_support_h
 
+#include "multi_surface_test_support.h"
+
 #include <cmath>
 #include <fourier_ssi/coupled/multi_surface_clay.h>
 #include <string>
@@ -41,12 +43,7 @@ namespace clay_test
     return MultiSurfaceClay(iwan_law(n_surfaces), g0, bulk, 0.);
   }
 
-  /** Simple shear in the rz plane: gamma_rz = gamma, nothing else. */
-  inline StrainVector
-  simple_shear(const double gamma)
-  {
-    return {{0., 0., 0., gamma, 0., 0.}};
-  }
+  using multi_surface_test::simple_shear;
 
   /**
    * Undrained (isochoric) triaxial compression along z of axial strain

@@ -6,6 +6,8 @@
 #ifndef fourier_ssi_tests_multi_surface_sand_test_support_h
 #define fourier_ssi_tests_multi_surface_sand_test_support_h
 
+#include "multi_surface_test_support.h"
+
 #include <cmath>
 #include <fourier_ssi/coupled/multi_surface_sand.h>
 #include <string>
@@ -38,12 +40,7 @@ namespace sand_test
     return p.laws.at(0);
   }
 
-  /** Simple shear in the rz plane: gamma_rz = gamma, nothing else. */
-  inline StrainVector
-  simple_shear(const double gamma)
-  {
-    return {{0., 0., 0., gamma, 0., 0.}};
-  }
+  using multi_surface_test::simple_shear;
 
   /**
    * Isochoric triaxial strain along z, eps_q = |eps| (tension positive):
